@@ -1,0 +1,121 @@
+// The error policy of curvebench and the validation helpers every family uses.
+//
+// Policy (DESIGN.md): bad input is rejected at construction with `curvebench::invalid_input`
+// (derived from std::invalid_argument). The message names the argument, the index and the
+// offending value, and says what is allowed, e.g.
+//   "knots must be non-decreasing: knots[3] = 0.5 < knots[2] = 0.7".
+// Evaluation outside a curve's domain throws std::domain_error with the value and the domain.
+// No silent clamping, no "return something".
+#pragma once
+
+#include "curvebench/core/point.hpp"
+#include "curvebench/core/real.hpp"
+
+#include <cstddef>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace curvebench {
+
+/// Thrown for invalid construction data or arguments. The message says what, where and why.
+class invalid_input : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+namespace validate {
+
+/// "name[i]" (or "name" when index is npos).
+[[nodiscard]] inline std::string indexed(std::string_view name, std::size_t index = std::string::npos) {
+  std::string s(name);
+  if (index != std::string::npos) s += "[" + std::to_string(index) + "]";
+  return s;
+}
+
+[[noreturn]] inline void fail(const std::string& message) { throw invalid_input(message); }
+
+/// At least `minimum` items: "points: 1 given, at least 2 required (what needs them)".
+inline void count_at_least(std::string_view name, std::size_t count, std::size_t minimum, std::string_view why = {}) {
+  if (count >= minimum) return;
+  std::string m = std::string(name) + ": " + std::to_string(count) + " given, at least " + std::to_string(minimum) +
+                  " required";
+  if (!why.empty()) m += " (" + std::string(why) + ")";
+  fail(m);
+}
+
+/// Two sequences of matching length: "weights: 3 given, must match points: 4".
+inline void same_count(std::string_view name, std::size_t count, std::string_view other, std::size_t other_count) {
+  if (count == other_count) return;
+  fail(std::string(name) + ": " + std::to_string(count) + " given, must match " + std::string(other) + ": " +
+       std::to_string(other_count));
+}
+
+/// A finite scalar: "tension = nan: must be finite".
+template <class Real>
+void finite(std::string_view name, const Real& value, std::size_t index = std::string::npos) {
+  if (is_finite(value)) return;
+  fail(indexed(name, index) + " = " + to_text(value) + ": must be finite");
+}
+
+/// Every coordinate finite: "points[3][1] = inf: coordinates must be finite".
+template <class Real, int Dim>
+void finite_point(std::string_view name, std::size_t index, const point<Real, Dim>& p) {
+  for (int d = 0; d < Dim; ++d)
+    if (!is_finite(p[d]))
+      fail(indexed(name, index) + "[" + std::to_string(d) + "] = " + to_text(p[d]) + ": coordinates must be finite");
+}
+
+/// Every point of a list finite.
+template <class Real, int Dim>
+void finite_points(std::string_view name, std::span<const point<Real, Dim>> ps) {
+  for (std::size_t i = 0; i < ps.size(); ++i) finite_point<Real, Dim>(name, i, ps[i]);
+}
+
+/// A strictly positive finite scalar: "weights[2] = -1: must be > 0".
+template <class Real>
+void positive(std::string_view name, const Real& value, std::size_t index = std::string::npos) {
+  finite(name, value, index);
+  if (value > Real(0)) return;
+  fail(indexed(name, index) + " = " + to_text(value) + ": must be > 0");
+}
+
+/// A finite scalar in [lo, hi]: "alpha = 2: must be in [0, 1]".
+template <class Real>
+void in_range(std::string_view name, const Real& value, const Real& lo, const Real& hi,
+              std::size_t index = std::string::npos) {
+  finite(name, value, index);
+  if (lo <= value && value <= hi) return;
+  fail(indexed(name, index) + " = " + to_text(value) + ": must be in [" + to_text(lo) + ", " + to_text(hi) + "]");
+}
+
+/// Finite and strictly increasing: "knots must be increasing: knots[3] = 0.5 <= knots[2] = 0.7".
+template <class Real>
+void increasing(std::string_view name, std::span<const Real> values) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    finite(name, values[i], i);
+    if (i > 0 && !(values[i] > values[i - 1]))
+      fail(std::string(name) + " must be increasing: " + indexed(name, i) + " = " + to_text(values[i]) +
+           " <= " + indexed(name, i - 1) + " = " + to_text(values[i - 1]));
+  }
+}
+
+/// Finite and non-decreasing: "knots must be non-decreasing: knots[3] = 0.5 < knots[2] = 0.7".
+template <class Real>
+void non_decreasing(std::string_view name, std::span<const Real> values) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    finite(name, values[i], i);
+    if (i > 0 && values[i] < values[i - 1])
+      fail(std::string(name) + " must be non-decreasing: " + indexed(name, i) + " = " + to_text(values[i]) +
+           " < " + indexed(name, i - 1) + " = " + to_text(values[i - 1]));
+  }
+}
+
+/// A derivative order: 0 is the value, negative orders are rejected.
+inline void derivative_order(int order) {
+  if (order < 0) fail("order = " + std::to_string(order) + ": derivative order must be >= 0");
+}
+
+}  // namespace validate
+}  // namespace curvebench

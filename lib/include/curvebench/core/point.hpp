@@ -1,0 +1,61 @@
+// Points and vectors of curvebench: Eigen fixed-size column vectors.
+//
+// `point<Real, Dim>` is `Eigen::Matrix<Real, Dim, 1>` for Dim in 1..4. Fixed size keeps every
+// evaluation allocation-free; C++17 aligned new makes std::vector<point<...>> safe for the
+// vectorizable sizes. Control data are stored as std::vector<point<Real, Dim>>.
+#pragma once
+
+#include "curvebench/core/real.hpp"
+
+#include <Eigen/Core>
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace curvebench {
+
+/// Largest dimension the library is instantiated and tested for.
+inline constexpr int max_dimension = 4;
+
+template <class Real, int Dim>
+  requires(Dim >= 1 && Dim <= max_dimension)
+using point = Eigen::Matrix<Real, Dim, 1>;
+
+/// A list of control points.
+template <class Real, int Dim>
+using point_list = std::vector<point<Real, Dim>>;
+
+/// The zero vector of the given type (Eigen's Zero() spelled once for generic code).
+template <class Real, int Dim>
+[[nodiscard]] point<Real, Dim> zero_point() {
+  return point<Real, Dim>::Zero();
+}
+
+/// True when every coordinate of p is finite.
+template <class Real, int Dim>
+[[nodiscard]] bool is_finite_point(const point<Real, Dim>& p) {
+  for (int d = 0; d < Dim; ++d)
+    if (!is_finite(p[d])) return false;
+  return true;
+}
+
+/// Converts a point to another Real type (e.g. double control data to the 50-digit reference).
+/// Conversion from a narrower binary type to a wider one is exact.
+template <class To, class From, int Dim>
+[[nodiscard]] point<To, Dim> point_cast(const point<From, Dim>& p) {
+  point<To, Dim> q;
+  for (int d = 0; d < Dim; ++d) q[d] = To(p[d]);
+  return q;
+}
+
+/// Converts a list of points to another Real type.
+template <class To, class From, int Dim>
+[[nodiscard]] point_list<To, Dim> points_cast(std::span<const point<From, Dim>> ps) {
+  point_list<To, Dim> out;
+  out.reserve(ps.size());
+  for (const auto& p : ps) out.push_back(point_cast<To>(p));
+  return out;
+}
+
+}  // namespace curvebench

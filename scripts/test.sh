@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# The test command: set-up, configure, build and run every test with ctest.
+#   scripts/test.sh             tests (warnings are errors), benchmarks and tool compiled too
+#   scripts/test.sh --sanitize  the same tests under AddressSanitizer + UndefinedBehaviorSanitizer
+# Exits non-zero on any failure.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+sanitize=0
+for arg in "$@"; do
+  case "$arg" in
+    --sanitize) sanitize=1 ;;
+    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
+    *) echo "test.sh: unknown argument '$arg' (allowed: --sanitize)" >&2; exit 2 ;;
+  esac
+done
+
+bash "$root/scripts/setup.sh"
+jobs=$(nproc)
+
+if [[ $sanitize -eq 1 ]]; then
+  build="$root/build-sanitize"
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+        -DCURVEBENCH_SANITIZE=ON -DCURVEBENCH_BUILD_BENCH=OFF -DCURVEBENCH_BUILD_TESTS=ON >/dev/null
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+else
+  build="$root/build-test"
+  # -O2 without NDEBUG: optimized enough for 50-digit references, assertions (Eigen's too) kept.
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2" \
+        -DCURVEBENCH_BUILD_BENCH=ON -DCURVEBENCH_BUILD_TESTS=ON >/dev/null
+fi
+
+cmake --build "$build" --parallel "$jobs"
+ctest --test-dir "$build" --output-on-failure --parallel "$jobs"

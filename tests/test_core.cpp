@@ -1,0 +1,113 @@
+// Core types: the curve concept, domain checks, validation messages and Real utilities.
+#include "support/accuracy.hpp"
+
+#include "curvebench/core/curve.hpp"
+#include "curvebench/core/error.hpp"
+
+#include <gmock/gmock.h>
+
+#include <array>
+#include <vector>
+
+namespace cb = curvebench;
+using ::testing::HasSubstr;
+
+namespace {
+
+// A minimal curve (the unit circle, trigonometric) to check the concept is satisfiable and usable.
+template <class Real>
+struct circle {
+  using real_type = Real;
+  static constexpr int dimension = 2;
+  using point_type = cb::point<Real, 2>;
+  std::array<Real, 2> breaks{Real(0), Real(1)};
+  [[nodiscard]] cb::interval<Real> domain() const { return {Real(0), Real(1)}; }
+  [[nodiscard]] point_type operator()(const Real& u) const { return derivative(u, 0); }
+  [[nodiscard]] point_type derivative(const Real& u, int order) const {
+    cb::check_parameter(u, domain());
+    using std::cos;
+    using std::sin;
+    const Real w = Real(2) * boost::math::constants::pi<Real>();
+    Real a = w * u;
+    Real scale(1);
+    for (int k = 0; k < order; ++k) scale *= w;
+    const int phase = order % 4;  // derivatives of (cos, sin) rotate by 90 degrees
+    point_type p;
+    p << cos(a), sin(a);
+    for (int k = 0; k < phase; ++k) p = point_type(-p[1], p[0]);
+    return scale * p;
+  }
+  [[nodiscard]] std::span<const Real> breakpoints() const { return breaks; }
+};
+
+static_assert(cb::curve<circle<double>>);
+static_assert(cb::curve<circle<cb::real50>>);
+static_assert(!cb::curve<int>);
+
+}  // namespace
+
+TEST(core, domain_error_names_value_and_domain) {
+  circle<double> c;
+  EXPECT_NO_THROW((void)c(1.0));
+  try {
+    (void)c(1.5);
+    FAIL() << "expected std::domain_error";
+  } catch (const std::domain_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("u = 1.5"));
+    EXPECT_THAT(e.what(), HasSubstr("[0, 1]"));
+  }
+}
+
+TEST(core, validation_messages_name_argument_index_value) {
+  std::vector<double> knots{0.0, 0.2, 0.7, 0.5};
+  try {
+    cb::validate::non_decreasing<double>("knots", knots);
+    FAIL();
+  } catch (const cb::invalid_input& e) {
+    EXPECT_STREQ(e.what(), "knots must be non-decreasing: knots[3] = 0.5 < knots[2] = 0.69999999999999996");
+  }
+  EXPECT_THROW(cb::validate::positive("weights", -1.0, 2), cb::invalid_input);
+  try {
+    cb::validate::positive("weights", -1.0, 2);
+  } catch (const std::invalid_argument& e) {  // invalid_input is-a std::invalid_argument
+    EXPECT_STREQ(e.what(), "weights[2] = -1: must be > 0");
+  }
+  cb::point_list<double, 3> pts{{0, 0, 0}, {1, std::numeric_limits<double>::quiet_NaN(), 0}};
+  try {
+    cb::validate::finite_points<double, 3>("points", pts);
+    FAIL();
+  } catch (const cb::invalid_input& e) {
+    EXPECT_STREQ(e.what(), "points[1][1] = nan: coordinates must be finite");
+  }
+  try {
+    cb::validate::count_at_least("points", 1, 2, "a polyline needs two vertices");
+    FAIL();
+  } catch (const cb::invalid_input& e) {
+    EXPECT_STREQ(e.what(), "points: 1 given, at least 2 required (a polyline needs two vertices)");
+  }
+  EXPECT_THROW(cb::validate::increasing<double>("knots", std::vector<double>{0, 1, 1}), cb::invalid_input);
+  EXPECT_THROW(cb::validate::same_count("weights", 3, "points", 4), cb::invalid_input);
+  EXPECT_THROW(cb::validate::derivative_order(-1), cb::invalid_input);
+  EXPECT_THROW(cb::validate::finite("tension", std::numeric_limits<cb::real50>::infinity()), cb::invalid_input);
+}
+
+TEST(core, binomial_is_exact) {
+  // C(62, 31) = 465428353255261088 needs 59 bits: exact through the split multiplicative formula.
+  EXPECT_EQ(cb::binomial<cb::real50>(62, 31), cb::real50("465428353255261088"));
+  EXPECT_EQ(cb::binomial<double>(20, 10), 184756.0);
+  EXPECT_EQ(cb::binomial<double>(5, 7), 0.0);
+  for (int n = 0; n <= 40; ++n)
+    for (int k = 1; k < n; ++k)  // Pascal's rule, exact in 50 digits
+      ASSERT_EQ(cb::binomial<cb::real50>(n, k), cb::binomial<cb::real50>(n - 1, k - 1) + cb::binomial<cb::real50>(n - 1, k));
+}
+
+TEST(core, circle_derivatives_are_exact) {
+  // The concept's derivative contract, checked on the test curve against its closed form at 50 digits.
+  circle<cb::real50> c;
+  const cb::real50 u("0.3");
+  const cb::real50 w = 2 * boost::math::constants::pi<cb::real50>();
+  const auto d2 = c.derivative(u, 2);
+  const auto p = c(u);
+  EXPECT_TRUE(cb::testing::within_ulps<cb::real50>(d2[0], -w * w * p[0], 8));
+  EXPECT_TRUE(cb::testing::within_ulps<cb::real50>(d2[1], -w * w * p[1], 8));
+}
