@@ -3,6 +3,7 @@
 
 #include "curvebench/core/curve.hpp"
 #include "curvebench/core/error.hpp"
+#include "curvebench/core/any_curve.hpp"
 
 #include <gmock/gmock.h>
 
@@ -110,4 +111,22 @@ TEST(core, circle_derivatives_are_exact) {
   const auto p = c(u);
   EXPECT_TRUE(cb::testing::within_ulps<cb::real50>(d2[0], -w * w * p[0], 8));
   EXPECT_TRUE(cb::testing::within_ulps<cb::real50>(d2[1], -w * w * p[1], 8));
+}
+
+TEST(core, any_curve_wraps_and_satisfies_the_concept) {
+  static_assert(cb::curve<cb::any_curve<double, 2>>);
+  static_assert(cb::curve<cb::any_curve<cb::real50, 2>>);
+  const cb::any_curve<double, 2> a(circle<double>{}, "circle");
+  const circle<double> c;
+  EXPECT_EQ(a.family(), "circle");
+  for (double u : {0.0, 0.25, 0.7, 1.0}) {
+    EXPECT_EQ(a(u), c(u));  // the same code runs: bit-identical
+    for (int k = 1; k <= 3; ++k) EXPECT_EQ(a.derivative(u, k), c.derivative(u, k));
+  }
+  EXPECT_EQ(a.breakpoints().size(), 2u);
+  EXPECT_EQ(a.domain().hi, 1.0);
+  EXPECT_NE(a.target<circle<double>>(), nullptr);
+  EXPECT_THROW((void)a(-0.5), std::domain_error);
+  const cb::any_curve<double, 2> copy = a;  // copies share the wrapped curve
+  EXPECT_EQ(copy(0.3), a(0.3));
 }
