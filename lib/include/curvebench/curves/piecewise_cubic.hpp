@@ -1,0 +1,365 @@
+// piecewise_cubic: the shared evaluation engine of every cubic spline family in curvebench
+// (Hermite, cardinal/Catmull-Rom, Kochanek-Bartels, natural/C2 splines, cubic B-splines).
+//
+// Representation. Knots u_0 < u_1 < ... < u_n; segment i covers [u_i, u_{i+1}], h_i = u_{i+1} - u_i,
+// with the LOCAL parameter t = (u - u_i) / h_i in [0, 1]. Each segment is given as a geometry G_i
+// (4 x Dim, one control item per row) and a basis matrix M_i, P_i(t) = T(t) · M_i · G_i with
+// T(t) = [1 t t^2 t^3] (basis/cubic_matrices.hpp; seeds 000, 001, 002). At construction the engine
+// stores, per segment:
+//   - the power coefficients a_i = M_i G_i (rows a0..a3: P_i(t) = a0 + a1 t + a2 t^2 + a3 t^3),
+//   - G_i and M_i themselves (for the matrix algorithm),
+//   - the Bezier control points b_i = M_bezier^{-1} M_i G_i (for the de Casteljau algorithm).
+// A parameter u exactly at an interior knot u_i belongs to segment i (the right one); u_n belongs
+// to the last segment.
+//
+// Algorithms (cubic_algorithm), all exact in exact arithmetic, selectable per call:
+//   power   Horner on the precomputed power coefficients       ~ 3 fma per coordinate, O(1)
+//   matrix  T(t) · M · G evaluated per call (16 + 4 Dim mults)  the textbook form, O(1)
+//   bezier  de Casteljau on the precomputed Bezier points       6 lerps per coordinate, O(1)
+// Derivatives of order k <= 3 are exact: d^k P / du^k = h_i^{-k} d^k P_i / dt^k (chain rule);
+// order > 3 is zero. Error: O(eps · scale) for all three, where scale is the size of the
+// coefficients (power) or of the control items (matrix, bezier); de Casteljau is the most stable
+// (convex combinations), power form may lose digits when |a_k| >> |P|.
+//
+// Segment lookup: O(1) when the knots are uniform (detected at construction; the floating index
+// is corrected against the neighbouring knots, so lookup is exact even for nearly uniform knots),
+// binary search O(log n) otherwise. Batched evaluation writes into caller storage and never
+// allocates; `evaluate_sorted` walks non-decreasing parameters segment by segment, hoisting each
+// segment's coefficients.
+#pragma once
+
+#include "curvebench/basis/cubic_matrices.hpp"
+#include "curvebench/core/curve.hpp"
+#include "curvebench/core/error.hpp"
+#include "curvebench/core/point.hpp"
+#include "curvebench/core/real.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace curvebench {
+
+/// How piecewise_cubic evaluates a segment (see the header comment).
+enum class cubic_algorithm { power, matrix, bezier };
+
+/// Text name of an algorithm (benchmark and report labels).
+[[nodiscard]] inline const char* to_string(cubic_algorithm a) {
+  switch (a) {
+    case cubic_algorithm::power:
+      return "power";
+    case cubic_algorithm::matrix:
+      return "matrix";
+    case cubic_algorithm::bezier:
+      return "bezier";
+  }
+  return "unknown";
+}
+
+/// n + 1 uniform knots u0, u0 + h, ..., u0 + n h (each computed as u0 + i h, no accumulation).
+template <class Real>
+[[nodiscard]] std::vector<Real> uniform_knots(std::size_t segments, const Real& u0 = Real(0), const Real& h = Real(1)) {
+  validate::finite("u0", u0);
+  validate::positive("h", h);
+  std::vector<Real> k(segments + 1);
+  for (std::size_t i = 0; i <= segments; ++i) k[i] = u0 + Real(static_cast<long long>(i)) * h;
+  return k;
+}
+
+template <class Real, int Dim>
+class piecewise_cubic {
+ public:
+  using real_type = Real;
+  using point_type = point<Real, Dim>;
+  static constexpr int dimension = Dim;
+  /// One segment's geometry: row r is the r-th control item (a point or a tangent).
+  using geometry_type = Eigen::Matrix<Real, 4, Dim>;
+  using matrix_type = basis::matrix4<Real>;
+
+  /// knots: n + 1 strictly increasing finite values; geometries and bases: n each (segment i on
+  /// [knots[i], knots[i+1]] is T(t) · bases[i] · geometries[i]).
+  piecewise_cubic(std::vector<Real> knots, std::vector<geometry_type> geometries, std::vector<matrix_type> bases)
+      : knots_(std::move(knots)), geometry_(std::move(geometries)), basis_(std::move(bases)) {
+    validate::count_at_least("knots", knots_.size(), 2, "one segment needs two knots");
+    validate::same_count("geometries", geometry_.size(), "segments (knots - 1)", knots_.size() - 1);
+    validate::same_count("bases", basis_.size(), "segments (knots - 1)", knots_.size() - 1);
+    build();
+  }
+
+  /// The same basis matrix for every segment.
+  piecewise_cubic(std::vector<Real> knots, std::vector<geometry_type> geometries, const matrix_type& basis)
+      : knots_(std::move(knots)), geometry_(std::move(geometries)), basis_(geometry_.size(), basis) {
+    validate::count_at_least("knots", knots_.size(), 2, "one segment needs two knots");
+    validate::same_count("geometries", geometry_.size(), "segments (knots - 1)", knots_.size() - 1);
+    build();
+  }
+
+  /// Power coefficients given directly: coefficients[i] rows are a0..a3 of segment i (basis = identity).
+  [[nodiscard]] static piecewise_cubic from_power(std::vector<Real> knots, std::vector<geometry_type> coefficients) {
+    return piecewise_cubic(std::move(knots), std::move(coefficients), matrix_type::Identity());
+  }
+
+  /// Cubic Hermite segments from values and slopes per unit of the GLOBAL parameter u:
+  /// segment i interpolates values[i] -> values[i+1] with dP/du = outgoing[i] at u_i and
+  /// dP/du = incoming[i+1] at u_{i+1}. Its Hermite geometry is [P_i, P_{i+1}, h_i out_i, h_i in_{i+1}]
+  /// (local tangents dP/dt = h dP/du). All three lists have n + 1 entries; incoming[0] and
+  /// outgoing[n] do not enter any segment (they are still validated). Equal lists give a C1 curve.
+  [[nodiscard]] static piecewise_cubic from_hermite(std::vector<Real> knots, std::span<const point_type> values,
+                                                    std::span<const point_type> outgoing,
+                                                    std::span<const point_type> incoming) {
+    validate::count_at_least("knots", knots.size(), 2, "one segment needs two knots");
+    validate::same_count("values", values.size(), "knots", knots.size());
+    validate::same_count("outgoing slopes", outgoing.size(), "knots", knots.size());
+    validate::same_count("incoming slopes", incoming.size(), "knots", knots.size());
+    validate::increasing<Real>("knots", knots);
+    validate::finite_points<Real, Dim>("values", values);
+    validate::finite_points<Real, Dim>("outgoing slopes", outgoing);
+    validate::finite_points<Real, Dim>("incoming slopes", incoming);
+    const std::size_t n = knots.size() - 1;
+    std::vector<geometry_type> g(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Real h = knots[i + 1] - knots[i];
+      g[i].row(0) = values[i].transpose();
+      g[i].row(1) = values[i + 1].transpose();
+      g[i].row(2) = (h * outgoing[i]).transpose();
+      g[i].row(3) = (h * incoming[i + 1]).transpose();
+    }
+    return piecewise_cubic(std::move(knots), std::move(g), basis::hermite_matrix<Real>());
+  }
+
+  // ---- the curve concept ----
+  [[nodiscard]] interval<Real> domain() const { return {knots_.front(), knots_.back()}; }
+  [[nodiscard]] std::span<const Real> breakpoints() const { return knots_; }
+  [[nodiscard]] point_type operator()(const Real& u) const { return evaluate(u, 0, cubic_algorithm::power); }
+  [[nodiscard]] point_type derivative(const Real& u, int order) const {
+    return evaluate(u, order, cubic_algorithm::power);
+  }
+
+  /// d^order P / du^order at u by the chosen algorithm. Throws std::domain_error outside the domain,
+  /// invalid_input for a negative order.
+  [[nodiscard]] point_type evaluate(const Real& u, int order, cubic_algorithm algorithm) const {
+    validate::derivative_order(order);
+    check_parameter(u, domain());
+    const std::size_t i = locate(u);
+    return eval_segment(i, (u - knots_[i]) / h_[i], order, algorithm);
+  }
+
+  /// out[k] = d^order P / du^order (us[k]) for any order of parameters (each looked up on its own).
+  /// No allocation. Throws invalid_input when the spans differ in size, std::domain_error for a
+  /// parameter outside the domain (out[0..k) is then already written).
+  void evaluate_batch(std::span<const Real> us, std::span<point_type> out, int order = 0,
+                      cubic_algorithm algorithm = cubic_algorithm::power) const {
+    validate::same_count("out", out.size(), "us", us.size());
+    validate::derivative_order(order);
+    const interval<Real> d = domain();
+    for (std::size_t k = 0; k < us.size(); ++k) {
+      check_parameter(us[k], d);
+      const std::size_t i = locate(us[k]);
+      out[k] = eval_segment(i, (us[k] - knots_[i]) / h_[i], order, algorithm);
+    }
+  }
+
+  /// As evaluate_batch for non-decreasing parameters: walks the segments forward, hoisting each
+  /// segment's data. Throws invalid_input at the first us[k] < us[k-1] (out[0..k) already written).
+  void evaluate_sorted(std::span<const Real> us, std::span<point_type> out, int order = 0,
+                       cubic_algorithm algorithm = cubic_algorithm::power) const {
+    validate::same_count("out", out.size(), "us", us.size());
+    validate::derivative_order(order);
+    if (us.empty()) return;
+    const interval<Real> d = domain();
+    check_parameter(us.front(), d);
+    std::size_t i = locate(us.front());
+    const std::size_t last = segment_count() - 1;
+    for (std::size_t k = 0; k < us.size(); ++k) {
+      const Real& u = us[k];
+      if (k > 0 && u < us[k - 1])
+        validate::fail("us must be non-decreasing for evaluate_sorted: " + validate::indexed("us", k) + " = " +
+                       to_text(u) + " < " + validate::indexed("us", k - 1) + " = " + to_text(us[k - 1]));
+      if (u > d.hi) check_parameter(u, d);
+      while (i < last && !(u < knots_[i + 1])) ++i;
+      if (algorithm == cubic_algorithm::power && order == 0) {
+        // The hot loop of the fast path: coefficients of segment i hoisted, Horner in t.
+        const auto& a = power_[i];
+        const Real t = (u - knots_[i]) / h_[i];
+        out[k] = a[0] + t * (a[1] + t * (a[2] + t * a[3]));
+      } else {
+        out[k] = eval_segment(i, (u - knots_[i]) / h_[i], order, algorithm);
+      }
+    }
+  }
+
+  // ---- structure ----
+  [[nodiscard]] std::size_t segment_count() const { return h_.size(); }
+  [[nodiscard]] std::span<const Real> knots() const { return knots_; }
+  /// True when the knots were detected uniform (segment lookup is then O(1)).
+  [[nodiscard]] bool uniform() const { return uniform_; }
+  /// The segment holding u (u in the domain; an interior knot u_i maps to segment i).
+  [[nodiscard]] std::size_t segment_index(const Real& u) const {
+    check_parameter(u, domain());
+    return locate(u);
+  }
+  /// Power coefficients a0..a3 of segment i in the local parameter t.
+  [[nodiscard]] const std::array<point_type, 4>& power_coefficients(std::size_t i) const { return power_.at(i); }
+  /// Bezier control points of segment i (same curve, local parameter t).
+  [[nodiscard]] const std::array<point_type, 4>& bezier_points(std::size_t i) const { return bezier_.at(i); }
+  [[nodiscard]] const geometry_type& geometry(std::size_t i) const { return geometry_.at(i); }
+  [[nodiscard]] const matrix_type& basis_matrix(std::size_t i) const { return basis_.at(i); }
+
+ private:
+  void build() {
+    validate::increasing<Real>("knots", knots_);
+    const std::size_t n = knots_.size() - 1;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int r = 0; r < 4; ++r)
+        for (int d = 0; d < Dim; ++d)
+          if (!is_finite(geometry_[i](r, d)))
+            validate::fail(validate::indexed("geometries", i) + "(" + std::to_string(r) + ", " + std::to_string(d) +
+                           ") = " + to_text(geometry_[i](r, d)) + ": geometry must be finite");
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+          if (!is_finite(basis_[i](r, c)))
+            validate::fail(validate::indexed("bases", i) + "(" + std::to_string(r) + ", " + std::to_string(c) +
+                           ") = " + to_text(basis_[i](r, c)) + ": basis matrix must be finite");
+    }
+    h_.resize(n);
+    power_.resize(n);
+    bezier_.resize(n);
+    // 3 M_bezier^{-1}: Bezier points from power coefficients are b = M_bezier^{-1} a; the integer
+    // form keeps C = M_bezier^{-1} M exact for integer M up to one final division by 3.
+    static constexpr int bezier_inverse3[4][4] = {{3, 0, 0, 0}, {3, 1, 0, 0}, {3, 2, 1, 0}, {3, 3, 3, 3}};
+    const matrix_type binv3 = basis::detail::integer_matrix<Real>(bezier_inverse3, Real(1));
+    for (std::size_t i = 0; i < n; ++i) {
+      h_[i] = knots_[i + 1] - knots_[i];
+      const geometry_type a = basis_[i] * geometry_[i];
+      const matrix_type c = (binv3 * basis_[i]) / Real(3);
+      const geometry_type b = c * geometry_[i];
+      for (int r = 0; r < 4; ++r) {
+        power_[i][static_cast<std::size_t>(r)] = a.row(r).transpose();
+        bezier_[i][static_cast<std::size_t>(r)] = b.row(r).transpose();
+      }
+    }
+    // Uniform detection: every knot within a few ulps of u0 + i h. The lookup corrects the guess
+    // against the actual knots, so this tolerance only decides speed, never correctness.
+    using std::abs;
+    using std::max;
+    const Real hbar = (knots_.back() - knots_.front()) / Real(static_cast<long long>(n));
+    const Real tol = Real(16) * epsilon<Real>() * max(abs(knots_.front()), abs(knots_.back()));
+    uniform_ = true;
+    for (std::size_t i = 0; i <= n && uniform_; ++i)
+      if (abs(knots_[i] - (knots_.front() + Real(static_cast<long long>(i)) * hbar)) > tol) uniform_ = false;
+    inv_hbar_ = Real(1) / hbar;
+  }
+
+  // u must lie in the domain.
+  [[nodiscard]] std::size_t locate(const Real& u) const {
+    const std::size_t last = h_.size() - 1;
+    if (uniform_) {
+      const Real x = (u - knots_.front()) * inv_hbar_;
+      // Guard the floating index: x is in [0, n(1 + O(eps))]; clamp before converting.
+      std::size_t i = x <= Real(0) ? 0 : (x >= Real(static_cast<long long>(last)) ? last : to_index(x));
+      while (i > 0 && u < knots_[i]) --i;
+      while (i < last && !(u < knots_[i + 1])) ++i;
+      return i;
+    }
+    // First knot > u, minus one; u_n maps to the last segment.
+    const auto it = std::upper_bound(knots_.begin() + 1, knots_.end() - 1, u);
+    return static_cast<std::size_t>(it - knots_.begin()) - 1;
+  }
+
+  [[nodiscard]] static std::size_t to_index(const Real& x) {
+    if constexpr (std::is_floating_point_v<Real>) {
+      return static_cast<std::size_t>(x);
+    } else {
+      return static_cast<std::size_t>(x.template convert_to<long long>());
+    }
+  }
+
+  [[nodiscard]] Real chain_scale(std::size_t i, int order) const {
+    Real s(1);
+    for (int k = 0; k < order; ++k) s /= h_[i];
+    return s;
+  }
+
+  [[nodiscard]] point_type eval_segment(std::size_t i, const Real& t, int order, cubic_algorithm algorithm) const {
+    if (order > 3) return point_type::Zero();
+    const point_type p = algorithm == cubic_algorithm::power    ? eval_power(power_[i], t, order)
+                         : algorithm == cubic_algorithm::matrix ? eval_matrix(basis_[i], geometry_[i], t, order)
+                                                                : eval_bezier(bezier_[i], t, order);
+    if (order == 0) return p;
+    return point_type(p * chain_scale(i, order));
+  }
+
+  [[nodiscard]] static point_type eval_power(const std::array<point_type, 4>& a, const Real& t, int order) {
+    switch (order) {
+      case 0:
+        return a[0] + t * (a[1] + t * (a[2] + t * a[3]));
+      case 1:
+        return a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]));
+      case 2:
+        return Real(2) * a[2] + (Real(6) * t) * a[3];
+      default:
+        return Real(6) * a[3];
+    }
+  }
+
+  [[nodiscard]] static point_type eval_matrix(const matrix_type& m, const geometry_type& g, const Real& t,
+                                              int order) {
+    // T(t) (or its derivative) as a row, then (T · M) · G: the blending functions weight the items.
+    Eigen::Matrix<Real, 1, 4> row;
+    const Real t2 = t * t;
+    switch (order) {
+      case 0:
+        row << Real(1), t, t2, t2 * t;
+        break;
+      case 1:
+        row << Real(0), Real(1), Real(2) * t, Real(3) * t2;
+        break;
+      case 2:
+        row << Real(0), Real(0), Real(2), Real(6) * t;
+        break;
+      default:
+        row << Real(0), Real(0), Real(0), Real(6);
+        break;
+    }
+    const Eigen::Matrix<Real, 1, 4> blend = row * m;
+    const Eigen::Matrix<Real, 1, Dim> p = blend * g;
+    return p.transpose();
+  }
+
+  [[nodiscard]] static point_type eval_bezier(const std::array<point_type, 4>& b, const Real& t, int order) {
+    const Real s = Real(1) - t;
+    if (order == 3) return Real(6) * ((b[3] - b[0]) + Real(3) * (b[1] - b[2]));
+    if (order == 2) {
+      // P'' = 6 Σ B_k^1 Δ²b_k: the second differences blended linearly.
+      const point_type d0 = (b[2] - b[1]) - (b[1] - b[0]);
+      const point_type d1 = (b[3] - b[2]) - (b[2] - b[1]);
+      return Real(6) * (s * d0 + t * d1);
+    }
+    // de Casteljau: three levels of convex combinations.
+    const point_type r0 = s * b[0] + t * b[1];
+    const point_type r1 = s * b[1] + t * b[2];
+    const point_type r2 = s * b[2] + t * b[3];
+    const point_type q0 = s * r0 + t * r1;
+    const point_type q1 = s * r1 + t * r2;
+    if (order == 1) return Real(3) * (q1 - q0);
+    return s * q0 + t * q1;
+  }
+
+  std::vector<Real> knots_;
+  std::vector<geometry_type> geometry_;
+  std::vector<matrix_type> basis_;
+  std::vector<Real> h_;
+  std::vector<std::array<point_type, 4>> power_;
+  std::vector<std::array<point_type, 4>> bezier_;
+  bool uniform_ = false;
+  Real inv_hbar_ = Real(1);
+};
+
+}  // namespace curvebench
