@@ -1,0 +1,96 @@
+// Results of the arc-length methods: every value comes with what it cost and how sure it is.
+//
+// DESIGN.md: "Results of numerical methods carry what they cost and how sure they are: the value,
+// an error estimate, and the number of curve/derivative evaluations." Iterative methods have caps
+// and say when they hit them. The status vocabulary is shared by quadrature, length methods and
+// inversion:
+//   converged       the error estimate is <= the requested tolerance (and, for the adaptive
+//                   methods, the estimate is an upper bound on every test curve of the suite);
+//   cap_hit         an iteration / interval / depth / table-size cap stopped the method first;
+//                   the estimate is still reported and still meant as a bound;
+//   rounding_limited the estimate is dominated by the rounding floor of Real: the tolerance asked
+//                   for is below what Real resolves; the estimate includes that floor;
+//   not_guaranteed  the method has no error bound for this result (a fixed rule asked for no
+//                   comparison, a table without a coarser table, a step that could not be checked);
+//                   the error estimate is then +infinity, never a made-up number.
+// Cost: O(1); these are plain aggregates.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <string_view>
+
+namespace curvebench::arclength {
+
+enum class result_status { converged, cap_hit, rounding_limited, not_guaranteed };
+
+/// "converged", "cap_hit", "rounding_limited", "not_guaranteed".
+[[nodiscard]] constexpr std::string_view to_string(result_status s) {
+  switch (s) {
+    case result_status::converged: return "converged";
+    case result_status::cap_hit: return "cap_hit";
+    case result_status::rounding_limited: return "rounding_limited";
+    case result_status::not_guaranteed: return "not_guaranteed";
+  }
+  return "unknown";
+}
+
+/// The less certain of two statuses (converged < rounding_limited < cap_hit < not_guaranteed).
+[[nodiscard]] constexpr result_status worst(result_status a, result_status b) {
+  auto rank = [](result_status s) {
+    switch (s) {
+      case result_status::converged: return 0;
+      case result_status::rounding_limited: return 1;
+      case result_status::cap_hit: return 2;
+      case result_status::not_guaranteed: return 3;
+    }
+    return 3;
+  };
+  return rank(a) >= rank(b) ? a : b;
+}
+
+/// An integral or a length: value, error estimate (an intended upper bound on |value - exact|),
+/// curve-derivative (or position) evaluations, status.
+template <class Real>
+struct quadrature_result {
+  Real value{0};
+  Real error_estimate{0};
+  std::size_t evaluations{0};
+  result_status status{result_status::converged};
+
+  [[nodiscard]] bool converged() const { return status == result_status::converged; }
+
+  /// Sum of two pieces (e.g. the segments of a curve): values and estimates add, costs add, the
+  /// status is the worse of the two.
+  quadrature_result& operator+=(const quadrature_result& o) {
+    value += o.value;
+    error_estimate += o.error_estimate;
+    evaluations += o.evaluations;
+    status = worst(status, o.status);
+    return *this;
+  }
+};
+
+/// u with s(u) = s_target: the parameter found, the residual s(u) - s_target as computed, an
+/// error estimate in arc length (|s_exact(u) - s_target| <= s_error_estimate is intended),
+/// iterations, curve-derivative evaluations, status.
+template <class Real>
+struct inversion_result {
+  Real u{0};
+  Real residual{0};
+  Real s_error_estimate{0};
+  int iterations{0};
+  std::size_t evaluations{0};
+  result_status status{result_status::converged};
+
+  [[nodiscard]] bool converged() const { return status == result_status::converged; }
+};
+
+/// +infinity of Real: the error estimate of a result that has no bound.
+template <class Real>
+[[nodiscard]] Real no_bound() {
+  return std::numeric_limits<Real>::infinity();
+}
+
+}  // namespace curvebench::arclength
