@@ -1,0 +1,194 @@
+// NURBS curves (non-uniform rational B-splines) of any order m <= 16:
+//   C(u) = sum_i N_{i,m}(u) w_i P_i / sum_i N_{i,m}(u) w_i,   weights w_i > 0.
+//
+// Source: seed 000 (rational quadratic: w < 1 ellipse, w = 1 parabola, w > 1 hyperbola), seed 001
+// ("only rational bases can be perspective transformed (see NURBS)"); Piegl & Tiller, "The NURBS
+// Book", ch. 4 (homogeneous form, eq. 4.8 derivatives), ch. 7 (circles).
+//
+// Representation: the homogeneous curve H(u) = (A(u), W(u)) = sum_i N_{i,m}(u) (w_i P_i, w_i) is an
+// ordinary B-spline in Dim + 1 dimensions on the same knots (indexing, domain [t_{m-1}, t_n],
+// half-open spans and the right-end rule as in curves/bspline.hpp). It shares the B-spline engine
+// (detail/bspline_core.hpp): de Boor or the Cox-de Boor basis sum in Dim + 1, then C = A / W.
+// Derivatives of any order k, exact, by the quotient rule in Leibniz form: from A = W C,
+//   A^(k) = sum_{i=0..k} C(k, i) W^(i) C^(k-i)  =>  C^(k) = (A^(k) - sum_{i=1..k} C(k, i) W^(i) C^(k-i)) / W,
+// with A^(j), W^(j) the homogeneous B-spline derivatives (zero for j >= m).
+// Cost: one homogeneous de Boor, O(m^2 (Dim + 1)), plus a division for the value; O(k m^2 + k^2)
+// for derivative k. No allocation for k < 32 (stack buffers); higher orders use a heap buffer.
+// Accuracy: value ~ m ulps of the control scale times max w / min w (the division by W adds one
+// rounding); derivatives lose a factor ~ (m / h)^k like any B-spline derivative.
+// Circles: `nurbs_circle_9` (square of 9 control points, weights 1 and sqrt(2)/2, knots at quarter
+// turns) and `nurbs_circle_7` (circumscribed equilateral triangle, weights 1 and 1/2) are exact
+// circles in exact arithmetic; in floating point |C(u) - c| = r to a few ulps (tests/test_nurbs.cpp).
+// Errors (invalid_input at construction): those of the B-spline, weights count != points count,
+// a weight that is not finite or not > 0.
+#pragma once
+
+#include "curvebench/core/curve.hpp"
+#include "curvebench/core/error.hpp"
+#include "curvebench/core/point.hpp"
+#include "curvebench/core/real.hpp"
+#include "curvebench/curves/detail/bspline_core.hpp"
+
+#include <boost/math/constants/constants.hpp>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace curvebench {
+
+template <class Real, int Dim>
+class nurbs {
+ public:
+  using real_type = Real;
+  using point_type = point<Real, Dim>;
+  static constexpr int dimension = Dim;
+  /// (w P, w): a homogeneous control point / curve value.
+  using homogeneous_type = Eigen::Matrix<Real, Dim + 1, 1>;
+
+  /// order m in [1, 16], knots: control_points.size() + m values, one weight > 0 per point.
+  nurbs(int order, std::vector<Real> knots, point_list<Real, Dim> control_points, std::vector<Real> weights)
+      : points_(std::move(control_points)), weights_(std::move(weights)) {
+    validate::finite_points<Real, Dim>("control_points", points_);
+    validate::same_count("weights", weights_.size(), "control_points", points_.size());
+    for (std::size_t i = 0; i < weights_.size(); ++i) validate::positive("weights", weights_[i], i);
+    std::vector<homogeneous_type> h(points_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      h[i].template head<Dim>() = weights_[i] * points_[i];
+      h[i][Dim] = weights_[i];
+    }
+    core_ = detail::bspline_core<Real, homogeneous_type>(order, std::move(knots), std::move(h));
+  }
+
+  [[nodiscard]] int order() const { return core_.order(); }
+  [[nodiscard]] int degree() const { return core_.order() - 1; }
+  [[nodiscard]] std::span<const Real> knots() const { return core_.knots(); }
+  [[nodiscard]] std::span<const point_type> control_points() const { return points_; }
+  [[nodiscard]] std::span<const Real> weights() const { return weights_; }
+
+  // ---- the curve concept ----
+  [[nodiscard]] interval<Real> domain() const { return {core_.lo(), core_.hi()}; }
+  [[nodiscard]] std::span<const Real> breakpoints() const { return core_.breakpoints(); }
+  [[nodiscard]] point_type operator()(const Real& u) const { return evaluate(u, 0, bspline_evaluation::de_boor); }
+  [[nodiscard]] point_type derivative(const Real& u, int order) const {
+    return evaluate(u, order, bspline_evaluation::de_boor);
+  }
+
+  /// The homogeneous curve (A, W) or its derivative of the given order at u.
+  [[nodiscard]] homogeneous_type homogeneous(const Real& u, int order,
+                                             bspline_evaluation algorithm = bspline_evaluation::de_boor) const {
+    validate::derivative_order(order);
+    check_parameter(u, domain());
+    return algorithm == bspline_evaluation::de_boor ? core_.de_boor(u, order) : core_.basis_sum(u, order);
+  }
+
+  /// d^order C / du^order at u, the homogeneous derivatives computed by the chosen algorithm.
+  [[nodiscard]] point_type evaluate(const Real& u, int order, bspline_evaluation algorithm) const {
+    validate::derivative_order(order);
+    check_parameter(u, domain());
+    const auto k = static_cast<std::size_t>(order);
+    if (k < small) {
+      std::array<point_type, small> c;
+      return quotient_rule(u, k, algorithm, c.data());
+    }
+    std::vector<point_type> c(k + 1);
+    return quotient_rule(u, k, algorithm, c.data());
+  }
+
+ private:
+  static constexpr std::size_t small = 32;
+
+  [[nodiscard]] homogeneous_type level(const Real& u, std::size_t j, std::size_t span, bspline_evaluation a) const {
+    if (j >= static_cast<std::size_t>(order())) return homogeneous_type::Zero();
+    if (a == bspline_evaluation::de_boor) return core_.de_boor_at(u, static_cast<int>(j), span);
+    return core_.basis_sum(u, static_cast<int>(j));
+  }
+
+  // c[0..k] receives C, C', ..., C^(k); returns C^(k).
+  point_type quotient_rule(const Real& u, std::size_t k, bspline_evaluation a, point_type* c) const {
+    const std::size_t span = core_.find_span(u);
+    const homogeneous_type h0 = level(u, 0, span, a);
+    const Real w = h0[Dim];
+    c[0] = h0.template head<Dim>() / w;
+    const std::size_t m = static_cast<std::size_t>(order());
+    std::array<Real, bspline_max_order> wd;  // W^(j), j < m
+    wd[0] = w;
+    for (std::size_t j = 1; j <= k; ++j) {
+      const homogeneous_type hj = level(u, j, span, a);
+      if (j < m) wd[j] = hj[Dim];
+      point_type acc = hj.template head<Dim>();
+      Real binom(1);  // C(j, i), built incrementally (exact while it fits in the significand)
+      for (std::size_t i = 1; i <= j; ++i) {
+        binom = binom * Real(static_cast<long long>(j - i + 1)) / Real(static_cast<long long>(i));
+        if (i >= m) break;  // W^(i) = 0 from here on
+        acc -= (binom * wd[i]) * c[j - i];
+      }
+      c[j] = acc / w;
+    }
+    return c[k];
+  }
+
+  point_list<Real, Dim> points_;
+  std::vector<Real> weights_;
+  detail::bspline_core<Real, homogeneous_type> core_;
+};
+
+/// The full circle of center c and radius r as a quadratic NURBS on [0, 1]: 9 control points on
+/// the circumscribed square (start at c + (r, 0), counter-clockwise), weights 1 at the 4 points on
+/// the circle and sqrt(2)/2 at the corners, knots 0 0 0 1/4 1/4 1/2 1/2 3/4 3/4 1 1 1.
+/// Each quarter is a rational quadratic Bezier arc with w = cos(45 deg). Not arc-length parameterized.
+template <class Real>
+[[nodiscard]] nurbs<Real, 2> nurbs_circle_9(const point<Real, 2>& center, const Real& radius) {
+  validate::finite_point<Real, 2>("center", 0, center);
+  validate::positive("radius", radius);
+  const Real s = boost::math::constants::half_root_two<Real>();
+  const int dx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1};
+  const int dy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+  point_list<Real, 2> p;
+  std::vector<Real> w;
+  for (int i = 0; i < 9; ++i) {
+    p.emplace_back(center[0] + Real(dx[i]) * radius, center[1] + Real(dy[i]) * radius);
+    w.push_back(i % 2 == 0 ? Real(1) : s);
+  }
+  const Real q = Real(1) / Real(4);
+  const Real h = Real(1) / Real(2);
+  const Real tq = Real(3) / Real(4);
+  std::vector<Real> t{Real(0), Real(0), Real(0), q, q, h, h, tq, tq, Real(1), Real(1), Real(1)};
+  return nurbs<Real, 2>(3, std::move(t), std::move(p), std::move(w));
+}
+
+/// The full circle as a quadratic NURBS on [0, 1] with 7 control points on the circumscribed
+/// equilateral triangle (vertices at distance 2r, mid-sides on the circle, start at c + (r, 0)),
+/// weights 1 on the circle and 1/2 at the vertices (cos 60 deg), knots 0 0 0 1/3 1/3 2/3 2/3 1 1 1.
+template <class Real>
+[[nodiscard]] nurbs<Real, 2> nurbs_circle_7(const point<Real, 2>& center, const Real& radius) {
+  validate::finite_point<Real, 2>("center", 0, center);
+  validate::positive("radius", radius);
+  const Real r3 = boost::math::constants::root_three<Real>();
+  const Real h = Real(1) / Real(2);
+  // Unit-circle control points: (1, 0), (1, sqrt3), (-1/2, sqrt3/2), (-2, 0), (-1/2, -sqrt3/2), (1, -sqrt3), (1, 0).
+  const std::array<std::array<Real, 2>, 7> unit{{{Real(1), Real(0)},
+                                                 {Real(1), r3},
+                                                 {-h, r3 * h},
+                                                 {Real(-2), Real(0)},
+                                                 {-h, -(r3 * h)},
+                                                 {Real(1), -r3},
+                                                 {Real(1), Real(0)}}};
+  point_list<Real, 2> p;
+  std::vector<Real> w;
+  for (std::size_t i = 0; i < 7; ++i) {
+    p.emplace_back(center[0] + unit[i][0] * radius, center[1] + unit[i][1] * radius);
+    w.push_back(i % 2 == 0 ? Real(1) : h);
+  }
+  const Real a = Real(1) / Real(3);
+  const Real b = Real(2) / Real(3);
+  std::vector<Real> t{Real(0), Real(0), Real(0), a, a, b, b, Real(1), Real(1), Real(1)};
+  return nurbs<Real, 2>(3, std::move(t), std::move(p), std::move(w));
+}
+
+}  // namespace curvebench
