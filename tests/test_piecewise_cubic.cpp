@@ -254,7 +254,7 @@ TEST(engine, hermite_assembly_is_c1_and_broken_slopes_break_it) {
   cb::point_list<double, 1> in = s;
   in[2] = cb::point<double, 1>(5.0);
   const auto smooth = cb::piecewise_cubic<double, 1>::from_hermite(knots, v, s, s);
-  const auto broken = cb::piecewise_cubic<double, 1>::from_hermite(knots, v, s, in);
+  const auto broken = cb::piecewise_cubic<double, 1>::from_hermite(knots, v, in, s);
   const double eps = std::numeric_limits<double>::epsilon();
   for (std::size_t i = 1; i + 1 < knots.size(); ++i) {
     const double left = std::nextafter(knots[i], 0.0);  // evaluates segment i-1 at t ~ 1
@@ -289,7 +289,7 @@ TEST(engine, bad_input_is_rejected_with_a_message) {
               HasSubstr("geometries[1](2, 1) = inf: geometry must be finite"));
   cb::point_list<double, 2> v(3, cb::point<double, 2>::Zero());
   cb::point_list<double, 2> s2(2, cb::point<double, 2>::Zero());
-  EXPECT_THAT(msg([&] { (void)pc::from_hermite({0.0, 1.0, 2.0}, v, s2, v); }),
+  EXPECT_THAT(msg([&] { (void)pc::from_hermite({0.0, 1.0, 2.0}, v, v, s2); }),
               HasSubstr("outgoing slopes: 2 given, must match knots: 3"));
   cb::point_list<double, 2> vn = v;
   vn[1][0] = std::nan("");

@@ -40,6 +40,7 @@
 #include <array>
 #include <cstddef>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -112,16 +113,16 @@ class piecewise_cubic {
   /// (local tangents dP/dt = h dP/du). All three lists have n + 1 entries; incoming[0] and
   /// outgoing[n] do not enter any segment (they are still validated). Equal lists give a C1 curve.
   [[nodiscard]] static piecewise_cubic from_hermite(std::vector<Real> knots, std::span<const point_type> values,
-                                                    std::span<const point_type> outgoing,
-                                                    std::span<const point_type> incoming) {
+                                                    std::span<const point_type> incoming,
+                                                    std::span<const point_type> outgoing) {
     validate::count_at_least("knots", knots.size(), 2, "one segment needs two knots");
     validate::same_count("values", values.size(), "knots", knots.size());
-    validate::same_count("outgoing slopes", outgoing.size(), "knots", knots.size());
     validate::same_count("incoming slopes", incoming.size(), "knots", knots.size());
+    validate::same_count("outgoing slopes", outgoing.size(), "knots", knots.size());
     validate::increasing<Real>("knots", knots);
     validate::finite_points<Real, Dim>("values", values);
-    validate::finite_points<Real, Dim>("outgoing slopes", outgoing);
     validate::finite_points<Real, Dim>("incoming slopes", incoming);
+    validate::finite_points<Real, Dim>("outgoing slopes", outgoing);
     const std::size_t n = knots.size() - 1;
     std::vector<geometry_type> g(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -149,6 +150,19 @@ class piecewise_cubic {
     check_parameter(u, domain());
     const std::size_t i = locate(u);
     return eval_segment(i, (u - knots_[i]) / h_[i], order, algorithm);
+  }
+
+  /// d^order P / du^order of segment i at its local parameter t in [0, 1] (t = 1 gives the left
+  /// limit at knot i + 1, t = 0 the right limit at knot i: what continuity checks need).
+  /// Throws std::out_of_range for i >= segment_count(), std::domain_error for t outside [0, 1].
+  [[nodiscard]] point_type evaluate_segment(std::size_t i, const Real& t, int order,
+                                            cubic_algorithm algorithm = cubic_algorithm::power) const {
+    validate::derivative_order(order);
+    if (i >= segment_count())
+      throw std::out_of_range("segment " + std::to_string(i) + " does not exist (" + std::to_string(segment_count()) +
+                              " segments)");
+    check_parameter(t, interval<Real>{Real(0), Real(1)});
+    return eval_segment(i, t, order, algorithm);
   }
 
   /// out[k] = d^order P / du^order (us[k]) for any order of parameters (each looked up on its own).
