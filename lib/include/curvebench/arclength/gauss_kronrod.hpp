@@ -309,10 +309,19 @@ template <class Real, class F>
     for (const auto& h : heap) value += h.r.kronrod, err += h.r.error_estimate, floor += h.r.rounding_floor;
     for (const auto& h : frozen) value += h.r.kronrod, err += h.r.error_estimate, floor += h.r.rounding_floor;
   };
+  // Summing the panels rounds once per panel: that term is part of every estimate.
+  auto estimate = [&](const Real& e, const Real& v) {
+    return e + static_cast<Real>(static_cast<long long>(heap.size() + frozen.size())) * epsilon<Real>() * abs(v);
+  };
+  auto target = [&](const Real& v) { return max(opt.absolute_tolerance, opt.relative_tolerance * abs(v)); };
   Real value, err, floor;
   totals(value, err, floor);
   out.status = result_status::converged;
-  while (err > max(opt.absolute_tolerance, opt.relative_tolerance * abs(value))) {
+  while (true) {
+    if (estimate(err, value) <= target(value)) {
+      totals(value, err, floor);  // confirm with exact sums (the running ones drift by rounding)
+      if (estimate(err, value) <= target(value)) break;
+    }
     if (heap.empty()) {
       out.status = result_status::rounding_limited;
       break;
@@ -341,15 +350,8 @@ template <class Real, class F>
     std::push_heap(heap.begin(), heap.end(), less);
   }
   totals(value, err, floor);
-  // Summing the panels rounds once per panel: add that to the bound.
-  const Real panels = static_cast<Real>(static_cast<long long>(heap.size() + frozen.size()));
   out.value = value;
-  out.error_estimate = err + panels * epsilon<Real>() * abs(value);
-  if (out.status == result_status::converged &&
-      out.error_estimate > max(opt.absolute_tolerance, opt.relative_tolerance * abs(value)))
-    out.status = Real(2) * floor >= max(opt.absolute_tolerance, opt.relative_tolerance * abs(value))
-                     ? result_status::rounding_limited
-                     : result_status::converged;
+  out.error_estimate = estimate(err, value);
   return out;
 }
 
