@@ -32,7 +32,7 @@ namespace {
 // - derivative_ulps: sin/cos of a rounded argument (pi t: ~2 roundings, so ~|arg| * 2 eps absolute
 //   at |arg| <= pi), times a rounded factor; the key cubics' c2, c3 come from differences of slopes
 //   divided by h and h^2, which carries ~|secant| eps relative to the piece's derivative scale;
-//   32 eps of scale bounds both with room;
+//   16 eps of scale bounds both (observed: <= 4);
 // - fd_relative: real50 central differences with step 1e-12: truncation h^2 |S'''| / 6 <= 1e-21
 //   (|S'''| < 1e3 here), rounding 1e-49 / 1e-12; 1e-18 relative to the scale is far below any
 //   formula error (a wrong coefficient shows up at 1e-1);
@@ -43,7 +43,7 @@ namespace {
 //   O(scale) (e.g. the parabolic acceleration jumps by its full size), so 1% cannot be met by
 //   rounding and cannot be missed by a genuine jump.
 constexpr double value_ulps = 8;
-constexpr double derivative_ulps = 32;
+constexpr double derivative_ulps = 16;
 const real50 fd_relative("1e-18");
 constexpr double joint_ulps = 2 * derivative_ulps;
 constexpr double jump_fraction = 0.01;
