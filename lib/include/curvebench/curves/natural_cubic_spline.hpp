@@ -1,0 +1,180 @@
+// natural_cubic_spline: the C2 interpolating cubic spline on non-uniform knots (the draftsman's
+// spline of seed 001), with the end conditions natural (P'' = 0), clamped (given end slopes),
+// not-a-knot (P''' continuous at u_1 and u_{n-1}) and periodic (closed, C2 across the seam).
+//
+// Algorithm: the slopes m_i = dP/du at the knots solve the C2 conditions, for interior knots
+//     h_i m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_{i-1} m_{i+1} = 3 (h_i D_{i-1} + h_{i-1} D_i),
+// D_i = (P_{i+1} - P_i)/h_i (second derivatives of adjacent Hermite segments equal at u_i), plus
+// one row per end: natural 2 m_0 + m_1 = 3 D_0; clamped m_0 = given; not-a-knot
+// h_1 m_0 + (h_0 + h_1) m_1 = (h_1 (3 h_0 + 2 h_1) D_0 + h_0^2 D_1)/(h_0 + h_1) (the P''' condition
+// with m_2 eliminated through the first interior row, de Boor, "A Practical Guide to Splines",
+// ch. IV), mirrored at the other end; periodic: the interior row wraps around (m_n = m_0).
+// The tridiagonal system is solved by Thomas elimination, the cyclic one by Sherman-Morrison
+// (detail/tridiagonal.hpp), O(n), any Real, no dense solve. The spline is then a Hermite spline
+// on the piecewise_cubic engine. Accuracy: interpolates to rounding; reproduces cubics
+// (not-a-knot; clamped with exact end slopes), and for natural ends, linear functions; O(h^4)
+// away from natural ends for smooth data.
+#pragma once
+
+#include "curvebench/core/error.hpp"
+#include "curvebench/core/point.hpp"
+#include "curvebench/curves/detail/cubic_family.hpp"
+#include "curvebench/curves/detail/tridiagonal.hpp"
+#include "curvebench/curves/piecewise_cubic.hpp"
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace curvebench {
+
+/// End conditions of the C2 cubic spline.
+enum class spline_end { natural, clamped, not_a_knot, periodic };
+
+[[nodiscard]] inline const char* to_string(spline_end e) {
+  switch (e) {
+    case spline_end::natural:
+      return "natural";
+    case spline_end::clamped:
+      return "clamped";
+    case spline_end::not_a_knot:
+      return "not_a_knot";
+    case spline_end::periodic:
+      return "periodic";
+  }
+  return "unknown";
+}
+
+template <class Real, int Dim>
+class natural_cubic_spline : public detail::cubic_family<Real, Dim> {
+  using base = detail::cubic_family<Real, Dim>;
+
+ public:
+  using typename base::point_type;
+
+  /// natural (>= 2 points), not_a_knot (>= 4 points), periodic (>= 3 points, values.front() ==
+  /// values.back()). For clamped ends use the constructor with end slopes.
+  natural_cubic_spline(const std::vector<Real>& knots, const point_list<Real, Dim>& values,
+                       spline_end end = spline_end::natural)
+      : natural_cubic_spline(build(knots, values, not_clamped(end), point_type::Zero(), point_type::Zero()), values,
+                             end) {}
+
+  /// Clamped ends: dP/du = start_slope at u_0 and end_slope at u_n (>= 2 points).
+  natural_cubic_spline(const std::vector<Real>& knots, const point_list<Real, Dim>& values,
+                       const point_type& start_slope, const point_type& end_slope)
+      : natural_cubic_spline(build(knots, values, spline_end::clamped, start_slope, end_slope), values,
+                             spline_end::clamped) {}
+
+  [[nodiscard]] const point_list<Real, Dim>& values() const { return values_; }
+  /// The solved slopes dP/du at the knots.
+  [[nodiscard]] const point_list<Real, Dim>& slopes() const { return slopes_; }
+  [[nodiscard]] spline_end end_condition() const { return end_; }
+
+ private:
+  struct built {
+    typename base::engine_type engine;
+    point_list<Real, Dim> slopes;
+  };
+
+  natural_cubic_spline(built b, const point_list<Real, Dim>& values, spline_end end)
+      : base(std::move(b.engine)), values_(values), slopes_(std::move(b.slopes)), end_(end) {}
+
+  static spline_end not_clamped(spline_end end) {
+    if (end == spline_end::clamped)
+      validate::fail("end = clamped needs the end slopes: use the constructor with start_slope and end_slope");
+    return end;
+  }
+
+  static built build(const std::vector<Real>& knots, const point_list<Real, Dim>& v, spline_end end,
+                     const point_type& start_slope, const point_type& end_slope) {
+    const std::size_t minimum = end == spline_end::not_a_knot ? 4 : (end == spline_end::periodic ? 3 : 2);
+    const char* why = end == spline_end::not_a_knot ? "not-a-knot ends need four points"
+                      : end == spline_end::periodic ? "a periodic spline needs three points (first = last)"
+                                                    : "a segment needs two points";
+    validate::count_at_least("values", v.size(), minimum, why);
+    validate::same_count("knots", knots.size(), "values", v.size());
+    validate::increasing<Real>("knots", knots);
+    validate::finite_points<Real, Dim>("values", v);
+    validate::finite_point<Real, Dim>("start_slope", 0, start_slope);
+    validate::finite_point<Real, Dim>("end_slope", 0, end_slope);
+    const std::size_t n = v.size() - 1;  // segments
+    if (end == spline_end::periodic) {
+      for (int d = 0; d < Dim; ++d)
+        if (v[n][d] != v[0][d])
+          validate::fail("periodic spline: " + validate::indexed("values", n) + "[" + std::to_string(d) + "] = " +
+                         to_text(v[n][d]) + " differs from values[0][" + std::to_string(d) + "] = " + to_text(v[0][d]) +
+                         ": the last value must equal the first");
+    }
+    std::vector<Real> h(n);
+    point_list<Real, Dim> dd(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      h[i] = knots[i + 1] - knots[i];
+      dd[i] = (v[i + 1] - v[i]) / h[i];
+    }
+    const Real two(2), three(3);
+    point_list<Real, Dim> m(n + 1, point_type::Zero());
+    if (end == spline_end::periodic) {
+      // Unknowns m_0..m_{n-1}; row i couples m_{i-1}, m_i, m_{i+1} cyclically.
+      std::vector<Real> a(n), b(n), c(n);
+      point_list<Real, Dim> r(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t p = (i + n - 1) % n;
+        a[i] = h[i];
+        b[i] = two * (h[p] + h[i]);
+        c[i] = h[p];
+        r[i] = three * (h[i] * dd[p] + h[p] * dd[i]);
+      }
+      detail::solve_cyclic_tridiagonal<Real, point_type>(a, b, c, std::span<point_type>(r));
+      for (std::size_t i = 0; i < n; ++i) m[i] = r[i];
+      m[n] = m[0];
+    } else {
+      std::vector<Real> a(n + 1, Real(0)), b(n + 1), c(n + 1, Real(0));
+      for (std::size_t i = 1; i < n; ++i) {
+        a[i] = h[i];
+        b[i] = two * (h[i - 1] + h[i]);
+        c[i] = h[i - 1];
+        m[i] = three * (h[i] * dd[i - 1] + h[i - 1] * dd[i]);
+      }
+      switch (end) {
+        case spline_end::natural:
+          b[0] = two;
+          c[0] = Real(1);
+          m[0] = three * dd[0];
+          a[n] = Real(1);
+          b[n] = two;
+          m[n] = three * dd[n - 1];
+          break;
+        case spline_end::clamped:
+          b[0] = Real(1);
+          m[0] = start_slope;
+          b[n] = Real(1);
+          m[n] = end_slope;
+          break;
+        case spline_end::not_a_knot: {
+          const Real s0 = h[0] + h[1];
+          b[0] = h[1];
+          c[0] = s0;
+          m[0] = (h[1] * (three * h[0] + two * h[1]) * dd[0] + h[0] * h[0] * dd[1]) / s0;
+          const Real s1 = h[n - 2] + h[n - 1];
+          a[n] = s1;
+          b[n] = h[n - 2];
+          m[n] = (h[n - 1] * h[n - 1] * dd[n - 2] + h[n - 2] * (three * h[n - 1] + two * h[n - 2]) * dd[n - 1]) / s1;
+          break;
+        }
+        case spline_end::periodic:
+          break;
+      }
+      detail::solve_tridiagonal<Real, point_type>(a, b, c, std::span<point_type>(m));
+    }
+    auto engine = base::engine_type::from_hermite(knots, v, m, m);
+    return built{std::move(engine), std::move(m)};
+  }
+
+  point_list<Real, Dim> values_;
+  point_list<Real, Dim> slopes_;
+  spline_end end_;
+};
+
+}  // namespace curvebench
