@@ -1,0 +1,187 @@
+// The 50-digit references: Boost.Math integration of the speed, split at breakpoints and at the
+// interior zeros/minima of the speed, agrees with every closed form to 1e-40 (lines in power and
+// Bezier form, traversed monotonically and back and forth; circular arcs as rational quadratics;
+// parabolas as quadratic Beziers, including the collinear back-tracking case; helices; the
+// semicubical cusp); u(s) round trips; exact conversion of double control data and its checks.
+#include "support/accuracy.hpp"
+
+#include "curvebench/curves/bezier.hpp"
+#include "curvebench/reference/analytic_curves.hpp"
+#include "curvebench/reference/arc_length.hpp"
+#include "curvebench/reference/closed_forms.hpp"
+#include "curvebench/reference/convert.hpp"
+
+#include <gmock/gmock.h>
+
+#include <array>
+#include <vector>
+
+namespace cb = curvebench;
+namespace ref = curvebench::reference;
+namespace cbt = curvebench::testing;
+using R = cb::real50;
+using ::testing::HasSubstr;
+
+namespace {
+
+// Tolerances: the 1e-40 relative agreement between the 50-digit reference and each closed
+// form (both are good to ~1e-45; the margin absorbs the closed forms' own cancellation, e.g. the
+// asinh form of the parabola). The cusp location by Brent + Newton on P'.P'' is good to ~1e-48.
+const R agreement("1e-40");
+const R cusp_location("1e-40");
+
+using p2 = cb::point<R, 2>;
+using p3 = cb::point<R, 3>;
+
+template <class C>
+void expect_length(const ref::reference_arc_length<C>& r, const R& exact, const char* what) {
+  EXPECT_TRUE(cbt::within_relative(r.length(), exact, static_cast<double>(agreement))) << what;
+  EXPECT_LE(r.length_error(), agreement * exact) << what;
+}
+
+}  // namespace
+
+static_assert(cb::curve<ref::rational_quadratic<R, 2>>);
+static_assert(cb::curve<ref::helix<R>>);
+
+TEST(reference, straight_lines_in_power_and_bezier_form) {
+  // p0 + x(t) d with d = (3, 4, 0)/5, monotone x(t) = t + t^3 and back-tracking x(t) = t + 2t^2 - 2.5t^3
+  // (x' = 1 + 4t - 7.5t^2 vanishes at t = (4 + sqrt(46)) / 15 inside: the speed is zero there).
+  const p3 d(R(3) / 5, R(4) / 5, R(0));
+  const p3 p0(1, -2, R("0.5"));
+  const std::array<std::array<R, 4>, 2> xs{{{R(0), R(1), R(0), R(1)}, {R(0), R(1), R(2), R("-2.5")}}};
+  for (const auto& x : xs) {
+    const ref::piecewise_polynomial<R, 3> line(R(0), R(1), {p3(p0 + x[0] * d), p3(x[1] * d), p3(x[2] * d), p3(x[3] * d)});
+    const ref::reference_arc_length<ref::piecewise_polynomial<R, 3>> r(line);
+    expect_length(r, ref::straight_polynomial_length<R>(x, R(0), R(1)), "straight power form");
+  }
+  // The back-tracking line has an interior zero of the speed: it must be found and split at.
+  const ref::piecewise_polynomial<R, 3> back(R(0), R(1), {p0, p3(d), p3(2 * d), p3(R("-2.5") * d)});
+  const ref::reference_arc_length<ref::piecewise_polynomial<R, 3>> rb(back);
+  ASSERT_EQ(rb.speed_minima().size(), 1u);
+  EXPECT_LT(abs(rb.speed_minima()[0] - (4 + sqrt(R(46))) / 15), cusp_location);
+  // A cubic Bezier with collinear control points, non-uniform but monotone: length |P3 - P0|.
+  const std::vector<p2> cps{p2(0, 0), p2(R("0.1"), R("0.2")), p2(R("2.5"), R(5)), p2(3, 6)};
+  const cb::bezier<R, 2> bz(cps);
+  const ref::reference_arc_length<cb::bezier<R, 2>> rz(bz);
+  expect_length(rz, ref::segment_length<R, 2>(cps.front(), cps.back()), "straight Bezier");
+}
+
+TEST(reference, circular_arcs_as_rational_quadratics) {
+  const R pi = boost::math::constants::pi<R>();
+  for (const R& theta : {pi / 3, 2 * pi / 3, 9 * pi / 10}) {
+    const R radius("1.75");
+    const auto arc = ref::circular_arc_rational<R>(p2(R("0.5"), R(-1)), radius, R("0.3"), theta);
+    const ref::rational_quadratic<R, 2> c(arc.p0, arc.p1, arc.p2, arc.weight);
+    // the construction is on the circle: every point at distance r from the center
+    for (int k = 0; k <= 8; ++k) {
+      const p2 q = c(R(k) / 8) - p2(R("0.5"), R(-1));
+      EXPECT_LT(abs(sqrt(q.squaredNorm()) - radius), R("1e-45"));
+    }
+    const ref::reference_arc_length<ref::rational_quadratic<R, 2>> r(c);
+    expect_length(r, ref::circular_arc_length(radius, theta), "circle");
+    for (int k = 1; k < 8; ++k) {
+      const R u = R(k) / 8;
+      EXPECT_TRUE(cbt::within_relative(r.s(u), ref::circular_arc_rational_s(radius, theta, u),
+                                       static_cast<double>(agreement)))
+          << "u=" << k << "/8";
+    }
+  }
+}
+
+TEST(reference, parabolas_as_quadratic_beziers) {
+  // Generic 2D parabola (h2's bezier), a 3D one in power form, and the collinear back-tracking one
+  // (P1 beyond P2: the speed vanishes inside, the closed form's D = 0 branch).
+  const std::vector<p2> cps{p2(0, 0), p2(R("1.25"), R(2)), p2(R(3), R("-0.5"))};
+  const cb::bezier<R, 2> bz(cps);
+  const ref::reference_arc_length<cb::bezier<R, 2>> r(bz);
+  expect_length(r, ref::quadratic_bezier_length(cps[0], cps[1], cps[2]), "parabola");
+  for (int k = 1; k < 10; ++k) {
+    const R t = R(k) / 10;
+    EXPECT_TRUE(cbt::within_relative(r.s(t), ref::quadratic_bezier_length(cps[0], cps[1], cps[2], t),
+                                     static_cast<double>(agreement)));
+    // u(s) round trip against the closed form
+    const R s = ref::quadratic_bezier_length(cps[0], cps[1], cps[2], t);
+    EXPECT_LT(abs(r.u(s) - t), R("1e-38")) << "k=" << k;
+  }
+  const p3 q0(1, 2, 3), q1(R(-1), R("0.5"), R(4)), q2(R(2), R(2), R(-1));
+  // power form of the quadratic Bezier: q0 + 2 (q1 - q0) t + (q0 - 2 q1 + q2) t^2
+  const ref::piecewise_polynomial<R, 3> p3d(R(0), R(1), {q0, p3(2 * (q1 - q0)), p3(q0 - 2 * q1 + q2)});
+  const ref::reference_arc_length<ref::piecewise_polynomial<R, 3>> r3(p3d);
+  expect_length(r3, ref::quadratic_bezier_length(q0, q1, q2), "3D parabola");
+  const std::vector<p2> back{p2(0, 0), p2(2, 1), p2(1, R("0.5"))};
+  const cb::bezier<R, 2> bb(back);
+  const ref::reference_arc_length<cb::bezier<R, 2>> rb(bb);
+  ASSERT_EQ(rb.speed_minima().size(), 1u);
+  EXPECT_LT(abs(rb.speed_minima()[0] - R(2) / 3), cusp_location);  // P' = 2 (a + t b) = 0 at t = 2/3
+  expect_length(rb, ref::quadratic_bezier_length(back[0], back[1], back[2]), "back-tracking parabola");
+}
+
+TEST(reference, helix_and_semicubical_cusp) {
+  const ref::helix<R> h(R("1.5"), R(3), R("0.4"), R(0), R(2));
+  const ref::reference_arc_length<ref::helix<R>> rh(h);
+  expect_length(rh, ref::helix_length(R("1.5"), R(3), R("0.4"), R(0), R(2)), "helix");
+  EXPECT_TRUE(cbt::within_relative(rh.s(R("0.7")), ref::helix_length(R("1.5"), R(3), R("0.4"), R(0), R("0.7")),
+                                   static_cast<double>(agreement)));
+  // (t^2, t^3) on [-1, 1.5]: exact cusp at t = 0, an asymmetric interval so 0 is not a sample point's midpoint.
+  // In the local variable t = u + 1 of piecewise_polynomial: u^2 = t^2 - 2t + 1, u^3 = t^3 - 3t^2 + 3t - 1.
+  const ref::piecewise_polynomial<R, 2> cusp(R(-1), R("1.5"), {p2(1, -1), p2(-2, 3), p2(1, -3), p2(0, 1)});
+  for (auto integrator : {ref::reference_integrator::gauss_kronrod, ref::reference_integrator::tanh_sinh}) {
+    ref::reference_options<R> opt;
+    opt.integrator = integrator;
+    const ref::reference_arc_length<ref::piecewise_polynomial<R, 2>> rc(cusp, opt);
+    ASSERT_EQ(rc.speed_minima().size(), 1u);
+    EXPECT_LT(abs(rc.speed_minima()[0]), cusp_location);
+    expect_length(rc, ref::semicubical_length(R(-1), R("1.5")), "cusp");
+    EXPECT_TRUE(cbt::within_relative(rc.s(R("0.25")), ref::semicubical_length(R(-1), R("0.25")),
+                                     static_cast<double>(agreement)));
+  }
+}
+
+TEST(reference, closed_forms_are_consistent) {
+  // Uniform straight quadratic (A = 0) and the D = 0 branch against the segment length; the cusp
+  // form is additive across the cusp.
+  EXPECT_EQ(ref::quadratic_bezier_length(p2(0, 0), p2(R("1.5"), 2), p2(3, 4)), R(5));
+  EXPECT_TRUE(cbt::within_relative(ref::quadratic_bezier_length(p2(0, 0), p2(1, 0), p2(3, 0)), R(3), 1e-48));
+  EXPECT_TRUE(cbt::within_relative(ref::semicubical_length(R(-1), R(2)),
+                                    ref::semicubical_length(R(-1), R(0)) + ref::semicubical_length(R(0), R(2)), 1e-48));
+  EXPECT_TRUE(cbt::within_relative(ref::semicubical_length(R(-1), R(0)), ref::semicubical_length(R(0), R(1)), 1e-48));
+  const std::array<R, 4> x{R(0), R(1), R(0), R(-1)};  // x = t - t^3 on [0, 2]: up to 2/(3 sqrt 3), down to -6
+  const R peak = 2 / (3 * sqrt(R(3)));
+  EXPECT_TRUE(cbt::within_relative(ref::straight_polynomial_length<R>(x, R(0), R(2)), peak + (peak + 6), 1e-48));
+  EXPECT_THROW((void)ref::circular_arc_rational<R>(p2(0, 0), R(1), R(0), R(4)), cb::invalid_input);
+}
+
+TEST(reference, double_curves_convert_exactly_and_conversion_is_checked) {
+  const std::vector<cb::point<double, 2>> cps{{0.1, 0.2}, {1.3, 2.7}, {2.9, -0.4}, {4.1, 1.1}};
+  const cb::bezier<double, 2> bd(cps);
+  auto rebuild = [](const cb::bezier<double, 2>& c, auto to) {
+    using To = typename decltype(to)::type;
+    return cb::bezier<To, 2>(ref::exact_points<To>(c.control_points()));
+  };
+  const cb::bezier<R, 2> b50 = ref::convert_curve<R>(bd, rebuild);
+  for (std::size_t i = 0; i < cps.size(); ++i)
+    for (int d = 0; d < 2; ++d) EXPECT_EQ(b50.control_points()[i][d], R(cps[i][d]));  // exact: 0.1 stays the double 0.1
+  EXPECT_NE(b50.control_points()[0][0], R("0.1"));
+  // A rebuild from other data is caught at the breakpoints.
+  auto wrong = [](const cb::bezier<double, 2>& c, auto to) {
+    using To = typename decltype(to)::type;
+    auto p = ref::exact_points<To>(c.control_points());
+    p[0][0] += To(1) / 1000;
+    return cb::bezier<To, 2>(p);
+  };
+  try {
+    (void)ref::convert_curve<R>(bd, wrong);
+    FAIL();
+  } catch (const cb::invalid_input& e) {
+    EXPECT_THAT(e.what(), HasSubstr("converted curve differs at breakpoints[0][0]"));
+  }
+  // A narrowing conversion that is not exact is rejected with the value named.
+  try {
+    (void)ref::exact_value<float>(0.1, "control_points", 3);
+    FAIL();
+  } catch (const cb::invalid_input& e) {
+    EXPECT_STREQ(e.what(), "control_points[3] = 0.10000000000000001: does not convert exactly to the target Real");
+  }
+  EXPECT_EQ(ref::exact_value<float>(0.5), 0.5f);
+}
