@@ -1,0 +1,153 @@
+// Composite Bezier curves: a chain of Bezier segments (bezier.hpp), each of its own degree (mixed
+// degrees allowed), on strictly increasing knots u_0 < u_1 < ... < u_n. Segment i is the Bezier
+// curve of its control points on [u_i, u_{i+1}], i.e. local t = (u - u_i) / (u_{i+1} - u_i).
+//
+// Source: seed 000 and seed 002 (piecewise curves, continuity at joins); Farin, "Curves and Surfaces
+// for CAGD", ch. 7 (piecewise Bezier curves, C1 and G1 conditions).
+//
+// Evaluation: binary search for the segment (O(log n)), then the segment's de Casteljau (O(L^2)).
+// Derivatives of any order by the chain rule: the local t-derivative divided by h_i^k (done by the
+// segment, whose hodograph levels are precomputed); order > L_i gives zero. Accuracy as bezier.hpp:
+// ~L ulps of the segment's control-point scale.
+// Convention at a knot: an interior knot u_i (0 < i < n) belongs to the RIGHT segment i (whose value
+// there is its first control point), the last knot u_n to the last segment. So the value at a knot
+// where the chain is discontinuous is the right-hand limit, and derivatives at a knot are right
+// derivatives (left ones at u_n).
+// Segment ends that do not meet are ALLOWED (a chain may jump, e.g. stepped keys); the join check
+// `continuity_at_joins(tol)` reports, per interior knot, whether the chain is C0, C1 and G1 there.
+// Errors: no segment, a segment with fewer than 2 or more than bezier_max_degree + 1 points,
+// non-finite coordinates, knots.size() != segments + 1, knots not finite and strictly increasing ->
+// invalid_input; u outside [u_0, u_n] -> std::domain_error.
+#pragma once
+
+#include "curvebench/core/curve.hpp"
+#include "curvebench/core/error.hpp"
+#include "curvebench/core/point.hpp"
+#include "curvebench/core/real.hpp"
+#include "curvebench/curves/bezier.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace curvebench {
+
+/// The continuity found at one interior knot of a composite curve (see continuity_at_joins).
+template <class Real>
+struct join_continuity {
+  std::size_t join = 0;         ///< index i of the knot u_i, 0 < i < n
+  Real knot{};                  ///< u_i
+  Real gap{};                   ///< |P_left(u_i) - P_right(u_i)| / scale
+  Real derivative_jump{};       ///< |P'_left - P'_right| / max(|P'_left|, |P'_right|) (0 if both vanish)
+  Real tangent_jump{};          ///< |T_left - T_right| of the unit tangents (0 unless `regular`)
+  bool regular = false;         ///< both one-sided first derivatives are non-zero
+  bool c0 = false;              ///< gap <= tol
+  bool c1 = false;              ///< c0 and derivative_jump <= tol
+  bool g1 = false;              ///< c0 and (c1 or (regular and tangent_jump <= tol))
+};
+
+template <class Real, int Dim>
+class composite_bezier {
+ public:
+  using real_type = Real;
+  using point_type = point<Real, Dim>;
+  static constexpr int dimension = Dim;
+  using segment_type = bezier<Real, Dim>;
+
+  /// segments[i] are the control points of segment i (any degree >= 1), on [knots[i], knots[i+1]].
+  composite_bezier(std::span<const point_list<Real, Dim>> segments, std::span<const Real> knots) {
+    validate::count_at_least("segments", segments.size(), 1);
+    validate::same_count("knots", knots.size(), "segments + 1", segments.size() + 1);
+    validate::increasing("knots", knots);
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const std::string name = validate::indexed("segments", i);
+      validate::count_at_least(name, segments[i].size(), 2, "a Bezier segment of degree L >= 1 has L + 1 points");
+      validate::finite_points<Real, Dim>(name, segments[i]);
+    }
+    knots_.assign(knots.begin(), knots.end());
+    segments_.reserve(segments.size());
+    using std::abs;
+    scale_ = Real(0);
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      segments_.emplace_back(std::span<const point_type>(segments[i]), interval<Real>{knots_[i], knots_[i + 1]});
+      for (const auto& p : segments[i])
+        for (int d = 0; d < Dim; ++d) scale_ = std::max(scale_, Real(abs(p[d])));
+    }
+    if (scale_ == Real(0)) scale_ = Real(1);
+  }
+
+  [[nodiscard]] interval<Real> domain() const { return {knots_.front(), knots_.back()}; }
+  [[nodiscard]] std::span<const Real> breakpoints() const { return knots_; }
+  [[nodiscard]] std::span<const Real> knots() const { return knots_; }
+  [[nodiscard]] std::size_t segment_count() const { return segments_.size(); }
+  [[nodiscard]] const segment_type& segment(std::size_t i) const {
+    if (i >= segments_.size())
+      validate::fail("i = " + std::to_string(i) + ": segment index must be < " + std::to_string(segments_.size()));
+    return segments_[i];
+  }
+  /// The position scale of the join check: the largest absolute control coordinate (1 if all are 0).
+  [[nodiscard]] Real scale() const { return scale_; }
+
+  /// The segment holding u: the i with u_i <= u < u_{i+1}, or the last one at u = u_n (binary search).
+  [[nodiscard]] std::size_t segment_index(const Real& u) const {
+    check_parameter(u, domain());
+    const auto it = std::upper_bound(knots_.begin(), knots_.end(), u);
+    const auto i = static_cast<std::size_t>(it - knots_.begin());
+    return std::min(i == 0 ? std::size_t{0} : i - 1, segments_.size() - 1);
+  }
+
+  [[nodiscard]] point_type operator()(const Real& u) const { return segments_[segment_index(u)](u); }
+
+  /// d^order P / du^order: the segment's derivative (chain rule 1 / h_i^order included).
+  [[nodiscard]] point_type derivative(const Real& u, int order) const {
+    validate::derivative_order(order);
+    return segments_[segment_index(u)].derivative(u, order);
+  }
+
+  /// Per interior knot u_i (i = 1..n-1): the one-sided values and first derivatives of segments i-1
+  /// and i compared with the relative tolerance `tol` (>= 0): C0 when the gap is <= tol * scale(),
+  /// C1 when also the derivatives differ by <= tol relative to the larger, G1 when C0 and the unit
+  /// tangents differ by <= tol (C1 implies G1, also when both derivatives vanish).
+  [[nodiscard]] std::vector<join_continuity<Real>> continuity_at_joins(const Real& tol) const {
+    validate::finite("tol", tol);
+    if (tol < Real(0)) validate::fail("tol = " + to_text(tol) + ": must be >= 0");
+    std::vector<join_continuity<Real>> out;
+    out.reserve(segments_.size() - 1);
+    for (std::size_t i = 1; i < segments_.size(); ++i) {
+      const segment_type& left = segments_[i - 1];
+      const segment_type& right = segments_[i];
+      const Real u = knots_[i];
+      join_continuity<Real> j;
+      j.join = i;
+      j.knot = u;
+      const point_type dp = left(u) - right(u);
+      j.gap = dp.norm() / scale_;
+      const point_type dl = left.derivative(u, 1);
+      const point_type dr = right.derivative(u, 1);
+      const Real nl = dl.norm();
+      const Real nr = dr.norm();
+      const Real nmax = std::max(nl, nr);
+      const point_type dd = dl - dr;
+      j.derivative_jump = nmax > Real(0) ? Real(dd.norm() / nmax) : Real(0);
+      j.regular = nl > Real(0) && nr > Real(0);
+      if (j.regular) {
+        const point_type dt = dl / nl - dr / nr;
+        j.tangent_jump = dt.norm();
+      }
+      j.c0 = j.gap <= tol;
+      j.c1 = j.c0 && j.derivative_jump <= tol;
+      j.g1 = j.c0 && (j.c1 || (j.regular && j.tangent_jump <= tol));
+      out.push_back(j);
+    }
+    return out;
+  }
+
+ private:
+  std::vector<Real> knots_;
+  std::vector<segment_type> segments_;
+  Real scale_{};
+};
+
+}  // namespace curvebench
