@@ -1,0 +1,288 @@
+// JSON curve specs -> curves: the format the `curvebench` tool and the case suite read.
+//
+// A spec is an object {"type": "...", "points": [[x, y(, z)], ...], <the family's own fields>}.
+// Every spec may also carry the metadata fields "name", "group" and "reason" (the case suite
+// uses them); any other unknown field is an error, so a misspelled option never passes silently.
+// The dimension is the length of the points (circle and arc specs are 2D). The README documents
+// each type with an example; `spec_types()` lists them.
+//
+// Numbers are JSON doubles converted exactly to Real, so a spec instantiated at real50 is the
+// exact 50-digit twin of the double curve (the harness's reference). Errors: io::spec_error
+// (an invalid_input) naming the field path; family constructors' own invalid_input messages
+// are prefixed with the spec's path. Cost: one construction of the family.
+#pragma once
+
+#include "curvebench/core/any_curve.hpp"
+#include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/bspline.hpp"
+#include "curvebench/curves/cardinal_spline.hpp"
+#include "curvebench/curves/hermite_spline.hpp"
+#include "curvebench/curves/kochanek_bartels.hpp"
+#include "curvebench/curves/natural_cubic_spline.hpp"
+#include "curvebench/curves/nurbs.hpp"
+#include "curvebench/curves/polyline.hpp"
+#include "curvebench/curves/rational_bezier.hpp"
+#include "curvebench/io/json_fields.hpp"
+
+#include <boost/math/constants/constants.hpp>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace curvebench::io {
+
+/// One line per spec type: its name and its fields (required first, [optional] after).
+struct spec_type_info {
+  std::string_view type;
+  std::string_view fields;
+};
+
+[[nodiscard]] inline std::span<const spec_type_info> spec_types() {
+  static constexpr spec_type_info types[] = {
+      {"polyline", "points [params]"},
+      {"bezier", "points [domain]"},
+      {"rational_bezier", "points weights [domain]"},
+      {"conic", "points (3) w"},
+      {"arc", "center radius start sweep   (2D rational quadratic, sweep in (0, pi))"},
+      {"circle", "center radius [control: 9|7]   (2D quadratic NURBS)"},
+      {"hermite", "points (slopes | incoming outgoing) [knots]"},
+      {"cardinal", "points [s | tension] [alpha] [end: phantom|one_sided|tangents|closed] [start_tangent end_tangent] [knots]"},
+      {"catmull_rom", "points [alpha] [end] [start_tangent end_tangent] [knots]   (cardinal with s = 1/2)"},
+      {"kochanek_bartels", "points [tension continuity bias: number or one per key] [closed] [time_adjust] [knots]"},
+      {"natural_cubic", "points [end: natural|clamped|not_a_knot|periodic] [start_slope end_slope] [knots]"},
+      {"bspline", "points degree [knots | knot_vector: clamped|uniform|periodic]"},
+      {"nurbs", "points weights degree [knots | knot_vector: clamped|uniform]"},
+  };
+  return types;
+}
+
+/// The dimension of the curve a spec describes (1..4).
+[[nodiscard]] inline int spec_dimension(const field& spec) {
+  const std::string type = spec.member("type").string();
+  if (type == "circle" || type == "arc") return 2;
+  return spec.member("points", "every spec of type \"" + type + "\" has points").point_dimension();
+}
+
+namespace detail {
+
+inline constexpr std::string_view metadata[] = {"type", "name", "group", "reason"};
+
+/// only_members with the metadata fields added.
+inline void allow(const field& spec, std::initializer_list<std::string_view> fields) {
+  std::vector<std::string_view> all(std::begin(metadata), std::end(metadata));
+  all.insert(all.end(), fields.begin(), fields.end());
+  if (!spec.value.is_object()) spec.fail("expected an object, got " + spec.shown());
+  for (const auto& [key, v] : spec.value.items())
+    if (std::find(all.begin(), all.end(), key) == all.end()) {
+      std::string list;
+      for (auto a : all) list += (list.empty() ? "" : ", ") + std::string(a);
+      spec.fail("unknown field \"" + key + "\" for type \"" + spec.member("type").string() + "\" (allowed: " + list +
+                ")");
+    }
+}
+
+template <class Real>
+std::vector<Real> knots_or_uniform(const field& spec, std::size_t count) {
+  if (spec.has("knots")) return spec.member("knots").reals<Real>();
+  std::vector<Real> k(count);
+  for (std::size_t i = 0; i < count; ++i) k[i] = Real(static_cast<long long>(i));
+  return k;
+}
+
+template <class Real>
+Real real_or(const field& spec, std::string_view key, const Real& fallback) {
+  return spec.has(key) ? Real(spec.member(key).number()) : fallback;
+}
+
+template <class Real, int Dim>
+point<Real, Dim> one_point(const field& f) {
+  const json wrapped = json::array({f.value});
+  const field list{wrapped, f.path};
+  const point_list<Real, Dim> p = list.points<Real, Dim>();
+  return p[0];
+}
+
+/// tension/continuity/bias: absent (0), one number for every key, or one per key.
+template <class Real>
+std::vector<Real> per_key(const field& spec, std::string_view key, std::size_t keys) {
+  if (!spec.has(key)) return std::vector<Real>(keys, Real(0));
+  const field f = spec.member(key);
+  if (f.value.is_number()) return std::vector<Real>(keys, Real(f.number()));
+  std::vector<Real> v = f.reals<Real>();
+  if (v.size() != keys)
+    f.fail("expected a number or " + std::to_string(keys) + " numbers (one per key), got " + std::to_string(v.size()));
+  return v;
+}
+
+template <class Real, int Dim>
+any_curve<Real, Dim> build(const field& spec, const std::string& type) {
+  using pl = point_list<Real, Dim>;
+  const auto pts = [&] { return spec.member("points").points<Real, Dim>(); };
+  if (type == "polyline") {
+    allow(spec, {"points", "params"});
+    const pl p = pts();
+    if (spec.has("params")) {
+      const std::vector<Real> u = spec.member("params").reals<Real>();
+      return {polyline<Real, Dim>(std::span<const point<Real, Dim>>(p), std::span<const Real>(u)), type};
+    }
+    return {polyline<Real, Dim>(std::span<const point<Real, Dim>>(p)), type};
+  }
+  if (type == "bezier" || type == "rational_bezier") {
+    const bool rational = type == "rational_bezier";
+    if (rational)
+      allow(spec, {"points", "weights", "domain"});
+    else
+      allow(spec, {"points", "domain"});
+    const pl p = pts();
+    interval<Real> dom{Real(0), Real(1)};
+    if (spec.has("domain")) {
+      const std::vector<Real> d = spec.member("domain").reals<Real>();
+      if (d.size() != 2) spec.member("domain").fail("expected [lo, hi], got " + spec.member("domain").shown());
+      dom = {d[0], d[1]};
+    }
+    if (!rational) return {bezier<Real, Dim>(std::span<const point<Real, Dim>>(p), dom), type};
+    const std::vector<Real> w = spec.member("weights", "a rational Bezier curve has one weight per point").reals<Real>();
+    return {rational_bezier<Real, Dim>(std::span<const point<Real, Dim>>(p), std::span<const Real>(w), dom), type};
+  }
+  if (type == "conic") {
+    allow(spec, {"points", "w"});
+    const pl p = pts();
+    if (p.size() != 3) spec.member("points").fail("a conic has exactly 3 points, got " + std::to_string(p.size()));
+    return {conic<Real, Dim>(p[0], p[1], p[2], Real(spec.member("w").number())), type};
+  }
+  if (type == "hermite") {
+    allow(spec, {"points", "slopes", "incoming", "outgoing", "knots"});
+    const pl p = pts();
+    std::vector<Real> k = knots_or_uniform<Real>(spec, p.size());
+    if (spec.has("slopes")) {
+      if (spec.has("incoming") || spec.has("outgoing"))
+        spec.member("slopes").fail("give either slopes or incoming and outgoing, not both");
+      return {hermite_spline<Real, Dim>(std::move(k), p, spec.member("slopes").points<Real, Dim>()), type};
+    }
+    pl in = spec.member("incoming", "give slopes, or incoming and outgoing").points<Real, Dim>();
+    pl out = spec.member("outgoing", "give slopes, or incoming and outgoing").points<Real, Dim>();
+    return {hermite_spline<Real, Dim>(std::move(k), p, std::move(in), std::move(out)), type};
+  }
+  if (type == "cardinal" || type == "catmull_rom") {
+    if (type == "cardinal")
+      allow(spec, {"points", "s", "tension", "alpha", "end", "start_tangent", "end_tangent", "knots"});
+    else
+      allow(spec, {"points", "alpha", "end", "start_tangent", "end_tangent", "knots"});
+    const pl p = pts();
+    cardinal_options<Real, Dim> opt;
+    if (spec.has("s") && spec.has("tension")) spec.member("s").fail("give either s or tension (s = (1 - tension)/2)");
+    if (spec.has("s")) opt.s = Real(spec.member("s").number());
+    if (spec.has("tension")) opt.s = (Real(1) - Real(spec.member("tension").number())) / Real(2);
+    opt.alpha = real_or<Real>(spec, "alpha", Real(0));
+    if (spec.has("end")) {
+      const std::string e = spec.member("end").one_of({"phantom", "one_sided", "tangents", "closed"});
+      opt.end = e == "phantom"     ? cardinal_end::phantom
+                : e == "one_sided" ? cardinal_end::one_sided
+                : e == "tangents"  ? cardinal_end::given_tangents
+                                   : cardinal_end::closed;
+    }
+    if (opt.end == cardinal_end::given_tangents) {
+      opt.start_tangent = one_point<Real, Dim>(spec.member("start_tangent", "end is \"tangents\""));
+      opt.end_tangent = one_point<Real, Dim>(spec.member("end_tangent", "end is \"tangents\""));
+    }
+    if (spec.has("knots")) return {cardinal_spline<Real, Dim>(spec.member("knots").reals<Real>(), p, opt), type};
+    return {cardinal_spline<Real, Dim>(p, opt), type};
+  }
+  if (type == "kochanek_bartels") {
+    allow(spec, {"points", "tension", "continuity", "bias", "closed", "time_adjust", "knots"});
+    const pl p = pts();
+    const std::vector<Real> t = per_key<Real>(spec, "tension", p.size());
+    const std::vector<Real> c = per_key<Real>(spec, "continuity", p.size());
+    const std::vector<Real> b = per_key<Real>(spec, "bias", p.size());
+    std::vector<tcb<Real>> keys(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) keys[i] = {t[i], c[i], b[i]};
+    typename kochanek_bartels<Real, Dim>::options opt;
+    if (spec.has("closed")) opt.closed = spec.member("closed").boolean();
+    if (spec.has("time_adjust")) opt.time_adjust = spec.member("time_adjust").boolean();
+    if (spec.has("knots")) return {kochanek_bartels<Real, Dim>(spec.member("knots").reals<Real>(), p, keys, opt), type};
+    return {kochanek_bartels<Real, Dim>(p, keys, opt), type};
+  }
+  if (type == "natural_cubic") {
+    allow(spec, {"points", "end", "start_slope", "end_slope", "knots"});
+    const pl p = pts();
+    const std::vector<Real> k = knots_or_uniform<Real>(spec, p.size());
+    const std::string e =
+        spec.has("end") ? spec.member("end").one_of({"natural", "clamped", "not_a_knot", "periodic"}) : "natural";
+    if (e == "clamped") {
+      const point<Real, Dim> start = one_point<Real, Dim>(spec.member("start_slope", "end is \"clamped\""));
+      const point<Real, Dim> end = one_point<Real, Dim>(spec.member("end_slope", "end is \"clamped\""));
+      return {natural_cubic_spline<Real, Dim>(k, p, start, end), type};
+    }
+    const spline_end end = e == "natural" ? spline_end::natural : e == "not_a_knot" ? spline_end::not_a_knot
+                                                                                    : spline_end::periodic;
+    return {natural_cubic_spline<Real, Dim>(k, p, end), type};
+  }
+  if (type == "bspline" || type == "nurbs") {
+    const bool rational = type == "nurbs";
+    if (rational)
+      allow(spec, {"points", "weights", "degree", "knots", "knot_vector"});
+    else
+      allow(spec, {"points", "degree", "knots", "knot_vector"});
+    const pl p = pts();
+    const long long degree = spec.member("degree", "the polynomial degree of the pieces").integer();
+    if (degree < 0 || degree >= bspline_max_order)
+      spec.member("degree").fail(std::to_string(degree) + " is not allowed (0 to " +
+                                 std::to_string(bspline_max_order - 1) + ")");
+    const int order = static_cast<int>(degree) + 1;
+    if (spec.has("knots") && spec.has("knot_vector")) spec.member("knots").fail("give either knots or knot_vector");
+    std::string kind = "clamped";
+    if (spec.has("knot_vector"))
+      kind = rational ? spec.member("knot_vector").one_of({"clamped", "uniform"})
+                      : spec.member("knot_vector").one_of({"clamped", "uniform", "periodic"});
+    if (!rational && kind == "periodic") return {periodic_bspline<Real, Dim>(order, std::span<const point<Real, Dim>>(p)), type};
+    std::vector<Real> k = spec.has("knots")     ? spec.member("knots").reals<Real>()
+                          : kind == "uniform" ? bspline_uniform_knots<Real>(p.size(), order)
+                                              : bspline_clamped_knots<Real>(p.size(), order);
+    if (!rational) return {bspline<Real, Dim>(order, std::move(k), p), type};
+    return {nurbs<Real, Dim>(order, std::move(k), p,
+                             spec.member("weights", "a NURBS curve has one weight per point").reals<Real>()),
+            type};
+  }
+  if constexpr (Dim == 2) {
+    if (type == "circle") {
+      allow(spec, {"center", "radius", "control"});
+      const point<Real, 2> c = one_point<Real, 2>(spec.member("center"));
+      const Real r(spec.member("radius").number());
+      const long long control = spec.has("control") ? spec.member("control").integer() : 9;
+      if (control != 9 && control != 7) spec.member("control").fail(std::to_string(control) + " is not allowed (9 or 7 control points)");
+      return {control == 9 ? nurbs_circle_9<Real>(c, r) : nurbs_circle_7<Real>(c, r), type};
+    }
+    if (type == "arc") {
+      allow(spec, {"center", "radius", "start", "sweep"});
+      const point<Real, 2> c = one_point<Real, 2>(spec.member("center"));
+      const Real r(spec.member("radius").number());
+      const Real start(spec.member("start").number());
+      const Real sweep(spec.member("sweep").number());
+      return {circular_arc<Real>(c, r, start, sweep), type};
+    }
+  }
+  std::string list;
+  for (const auto& t : spec_types()) list += (list.empty() ? "" : ", ") + std::string(t.type);
+  spec.member("type").fail("\"" + type + "\" is not a curve type (types: " + list + ")");
+}
+
+}  // namespace detail
+
+/// The curve a spec describes, in Real and Dim (Dim must equal spec_dimension(spec)).
+template <class Real, int Dim>
+[[nodiscard]] any_curve<Real, Dim> curve_from_spec(const field& spec) {
+  const std::string type = spec.member("type").string();
+  const int dim = spec_dimension(spec);
+  if (dim != Dim)
+    spec.fail("describes a " + std::to_string(dim) + "D curve, but a " + std::to_string(Dim) + "D one was asked for");
+  try {
+    return detail::build<Real, Dim>(spec, type);
+  } catch (const spec_error&) {
+    throw;
+  } catch (const invalid_input& e) {  // a family's own validation: say which spec it came from
+    throw spec_error(spec.path + " (type \"" + type + "\"): " + e.what());
+  }
+}
+
+}  // namespace curvebench::io

@@ -1,0 +1,126 @@
+// JSON specs -> curves: each type builds the same curve as the family's constructor, the real50
+// twin holds exactly the same control data, and malformed specs get errors naming the field.
+#include "support/accuracy.hpp"
+
+#include "curvebench/io/spec.hpp"
+
+#include <gmock/gmock.h>
+
+namespace cb = curvebench;
+namespace io = curvebench::io;
+using ::testing::HasSubstr;
+
+namespace {
+
+template <int Dim>
+cb::any_curve<double, Dim> make(const std::string& text) {
+  const auto j = io::parse(text);
+  return io::curve_from_spec<double, Dim>(io::root(j));
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    const auto j = io::parse(text);
+    const auto spec = io::root(j);
+    if (io::spec_dimension(spec) == 3)
+      (void)io::curve_from_spec<double, 3>(spec);
+    else
+      (void)io::curve_from_spec<double, 2>(spec);
+  } catch (const io::spec_error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// The same curve twice (spec and constructor) must agree bit for bit: one code path.
+template <class A, class B>
+void expect_same_curve(const A& a, const B& b) {
+  ASSERT_EQ(a.domain().lo, b.domain().lo);
+  ASSERT_EQ(a.domain().hi, b.domain().hi);
+  for (int k = 0; k <= 16; ++k) {
+    const double u = a.domain().lo + (a.domain().hi - a.domain().lo) * k / 16.0;
+    ASSERT_EQ(a(u), b(u)) << u;
+    ASSERT_EQ(a.derivative(u, 1), b.derivative(u, 1)) << u;
+  }
+}
+
+}  // namespace
+
+TEST(io_spec, each_type_builds_the_family) {
+  using p2 = cb::point<double, 2>;
+  const cb::point_list<double, 2> pts{{0, 0}, {1, 2}, {3, 3}, {4, 0}, {6, 1}};
+  expect_same_curve(make<2>(R"({"type": "polyline", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::polyline<double, 2>(std::span<const p2>(pts)));
+  expect_same_curve(make<2>(R"({"type": "bezier", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::bezier<double, 2>(std::span<const p2>(pts)));
+  const std::vector<double> w{1, 2, 0.5, 1, 3};
+  expect_same_curve(make<2>(R"({"type": "rational_bezier", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]],
+                                "weights": [1, 2, 0.5, 1, 3]})"),
+                    cb::rational_bezier<double, 2>(std::span<const p2>(pts), std::span<const double>(w)));
+  cb::cardinal_options<double, 2> co;
+  co.alpha = 0.5;
+  expect_same_curve(make<2>(R"({"type": "catmull_rom", "alpha": 0.5, "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::cardinal_spline<double, 2>(pts, co));
+  co.s = (1 - 0.2) / 2;
+  expect_same_curve(
+      make<2>(R"({"type": "cardinal", "tension": 0.2, "alpha": 0.5, "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+      cb::cardinal_spline<double, 2>(pts, co));
+  const std::vector<double> knots{0, 1, 2, 3, 4};
+  expect_same_curve(make<2>(R"({"type": "natural_cubic", "end": "not_a_knot", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::natural_cubic_spline<double, 2>(knots, pts, cb::spline_end::not_a_knot));
+  std::vector<cb::tcb<double>> keys(5, cb::tcb<double>{0.5, -0.25, 0.1});
+  expect_same_curve(make<2>(R"({"type": "kochanek_bartels", "tension": 0.5, "continuity": -0.25, "bias": 0.1,
+                                "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::kochanek_bartels<double, 2>(pts, keys, {}));
+  expect_same_curve(make<2>(R"({"type": "bspline", "degree": 3, "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::bspline<double, 2>(4, cb::bspline_clamped_knots<double>(5, 4), pts));
+  expect_same_curve(make<2>(R"({"type": "nurbs", "degree": 2, "weights": [1, 2, 0.5, 1, 3],
+                                "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::nurbs<double, 2>(3, cb::bspline_clamped_knots<double>(5, 3), pts, w));
+  expect_same_curve(make<2>(R"({"type": "circle", "center": [1, 2], "radius": 3})"),
+                    cb::nurbs_circle_9<double>(p2(1, 2), 3.0));
+  expect_same_curve(make<2>(R"({"type": "arc", "center": [0, 0], "radius": 2, "start": 0.5, "sweep": 2})"),
+                    cb::circular_arc<double>(p2(0, 0), 2.0, 0.5, 2.0));
+  const cb::point_list<double, 2> slopes{{1, 0}, {1, 1}, {0, 1}, {-1, 0}, {1, 1}};
+  expect_same_curve(make<2>(R"({"type": "hermite", "knots": [0, 0.5, 2, 3, 7], "points": [[0,0],[1,2],[3,3],[4,0],[6,1]],
+                                "slopes": [[1,0],[1,1],[0,1],[-1,0],[1,1]]})"),
+                    cb::hermite_spline<double, 2>({0, 0.5, 2, 3, 7}, pts, slopes));
+  // 3D, and the metadata fields of a case file
+  const auto helix = make<3>(R"({"type": "catmull_rom", "name": "h", "group": "smooth", "reason": "r",
+                                 "points": [[1,0,0],[0,1,0.5],[-1,0,1],[0,-1,1.5],[1,0,2]]})");
+  EXPECT_EQ(helix.family(), "catmull_rom");
+  EXPECT_EQ(helix(0.0), (cb::point<double, 3>(1, 0, 0)));
+}
+
+TEST(io_spec, real50_twin_holds_the_same_control_data) {
+  // 0.1 is not a binary fraction: the 50-digit curve must interpolate the double 0.1, not the decimal 0.1.
+  const auto j = io::parse(R"({"type": "natural_cubic", "points": [[0.1, 0.3], [1.7, 2.9], [3.3, 0.7]]})");
+  const auto c50 = io::curve_from_spec<cb::real50, 2>(io::root(j));
+  EXPECT_EQ(c50(cb::real50(0))[0], cb::real50(0.1));
+  EXPECT_EQ(c50(cb::real50(2))[1], cb::real50(0.7));
+  EXPECT_NE(c50(cb::real50(0))[0], cb::real50("0.1"));
+}
+
+TEST(io_spec, malformed_specs_name_the_field) {
+  EXPECT_EQ(error_of(R"({"type": "bezir", "points": [[0,0],[1,1]]})").substr(0, 44),
+            "spec.type: \"bezir\" is not a curve type (type");
+  EXPECT_THAT(error_of(R"({"type": "bspline", "points": [[0,0],[1,1],[2,0]]})"),
+              HasSubstr("spec: degree is missing"));
+  EXPECT_THAT(error_of(R"({"type": "bspline", "degree": 2.5, "points": [[0,0],[1,1],[2,0]]})"),
+              HasSubstr("spec.degree: expected an integer, got 2.5"));
+  EXPECT_THAT(error_of(R"({"type": "cardinal", "tenson": 0.3, "points": [[0,0],[1,1],[2,0]]})"),
+              HasSubstr("spec: unknown field \"tenson\" for type \"cardinal\""));
+  EXPECT_THAT(error_of(R"({"type": "nurbs", "degree": 2, "points": [[0,0],[1,1],[2,0]], "weights": [1, -1, 1]})"),
+              HasSubstr("spec (type \"nurbs\"): weights[1] = -1: must be > 0"));
+  EXPECT_THAT(error_of(R"({"type": "catmull_rom", "alpha": 0.5, "points": [[0,0],[0,0],[2,0]]})"),
+              HasSubstr("spec (type \"catmull_rom\"): points[1] repeats points[0]"));
+  EXPECT_THAT(error_of(R"({"type": "natural_cubic", "end": "clamped", "points": [[0,0],[1,1]]})"),
+              HasSubstr("spec: start_slope is missing (end is \"clamped\")"));
+  EXPECT_THAT(error_of(R"({"type": "kochanek_bartels", "bias": [0, 1], "points": [[0,0],[1,1],[2,0]]})"),
+              HasSubstr("spec.bias: expected a number or 3 numbers (one per key), got 2"));
+  EXPECT_THAT(error_of(R"({"type": "polyline", "points": [[0,0],[1,1,1]]})"),
+              HasSubstr("spec.points[1]: expected an array of 2 numbers, got [1,1,1]"));
+  EXPECT_THAT(error_of(R"({"type": "circle", "center": [0, 0], "radius": 1, "control": 8})"),
+              HasSubstr("spec.control: 8 is not allowed (9 or 7 control points)"));
+  EXPECT_THAT(error_of(R"(["not", "an", "object"])"), HasSubstr("spec: expected an object"));
+}
