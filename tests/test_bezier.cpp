@@ -495,6 +495,20 @@ TYPED_TEST(bezier_test, degree_elevation_leaves_the_curve_unchanged) {
   }
 }
 
+TYPED_TEST(bezier_test, batch_evaluation_equals_single_evaluation) {
+  using Real = TypeParam;
+  const auto p = random_points<Real, 2>(8, 23);
+  const cb::bezier<Real, 2> c(p, {Real(-2), Real(1)});
+  std::vector<Real> us;
+  for (int s = 0; s <= 30; ++s) us.push_back(spread(c.domain(), (s * 7) % 31, 31));  // unsorted on purpose
+  std::vector<cb::point<Real, 2>> out(us.size());
+  for (alg a : all_algorithms)
+    for (int order : {0, 2}) {
+      c.evaluate(std::span<const Real>(us), std::span<cb::point<Real, 2>>(out), a, order);
+      for (std::size_t i = 0; i < us.size(); ++i) ASSERT_EQ(out[i], c.derivative(us[i], order, a));
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Bad input
 
@@ -532,6 +546,10 @@ TEST(bezier_bad_input, messages_name_argument_index_and_value) {
   EXPECT_THAT(message_of([&] { (void)c.derivative(0.5, -1); }), HasSubstr("order = -1: derivative order must be >= 0"));
   EXPECT_THAT(message_of([&] { (void)c.split(0.0); }), HasSubstr("split: u = 0: must be strictly inside (0, 1)"));
   EXPECT_THAT(message_of([&] { (void)c.derivative_control_points(2); }), HasSubstr("k = 2: must be in [0, 1]"));
+  std::vector<double> us{0.0, 0.5, 1.0};
+  std::vector<P> out(2);
+  EXPECT_THAT(message_of([&] { c.evaluate(std::span<const double>(us), std::span<P>(out), alg::horner); }),
+              HasSubstr("out: 2 given, must match us: 3"));
   // Degree 60 is accepted, and evaluates.
   const cb::bezier<double, 2> c60(cb::point_list<double, 2>(61, P(1, 2)));
   EXPECT_EQ(c60(0.5), P(1, 2));

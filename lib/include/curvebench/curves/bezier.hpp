@@ -113,6 +113,15 @@ class bezier {
     return derivative(u, 0, algorithm);
   }
 
+  /// Batch evaluation: out[i] = the order-th derivative at us[i] (order 0: the value) by the chosen
+  /// algorithm. Sizes must match (invalid_input); every parameter is checked (std::domain_error).
+  /// No allocation; the order of the parameters does not matter for a single segment.
+  void evaluate(std::span<const Real> us, std::span<point_type> out, bezier_algorithm algorithm,
+                int order = 0) const {
+    validate::same_count("out", out.size(), "us", us.size());
+    for (std::size_t i = 0; i < us.size(); ++i) out[i] = derivative(us[i], order, algorithm);
+  }
+
   /// d^order P / du^order by de Casteljau on the precomputed hodograph control points.
   [[nodiscard]] point_type derivative(const Real& u, int order) const {
     return derivative(u, order, bezier_algorithm::de_casteljau);
