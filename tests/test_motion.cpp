@@ -3,12 +3,18 @@
 // stationary point, and the error messages.
 #include "support/accuracy.hpp"
 
+#include "curvebench/arclength/length.hpp"
+#include "curvebench/arclength/parameterization.hpp"
+#include "curvebench/curves/cardinal_spline.hpp"
 #include "curvebench/motion/distance_time.hpp"
 #include "curvebench/motion/motion_path.hpp"
 
 #include <gmock/gmock.h>
 
 #include <array>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -295,4 +301,214 @@ TEST(motion, errors_are_reported) {
   std::vector<cb::point<double, 2>> out(10);
   EXPECT_EQ(message([&] { framed.sample_frames(std::span<cb::point<double, 2>>(out)); }),
             "sample_frames output: 10 given, must match frames: 46");
+}
+
+// ---- seed 002: (-5, 0, 0) at frame 22 to (5, 0, 0) at frame 67 --------------------------------
+//
+// Closed forms (derived in distance_time.hpp, parabolic_ease): T = 45 frames, t1 = 12/45,
+// t2 = 28/45, v = 2 / (1 + t2 - t1) = 90/61 (normalized). With L = 10:
+//   cruise speed  L v / T = 20/61 units per frame (480/61 per second at 24 fps);
+//   frame 34: S(t1) = v t1 / 2 = 12/61, x = -5 + 120/61 = -185/61;
+//   frame 50: S(t2) = 1 - v (1 - t2) / 2 = 44/61, x = -5 + 440/61 = 135/61;
+//   distance from frame 22 + k to 23 + k (k < 12): a (2k + 1) / 2 with a = (20/61) / 12 per frame^2;
+//   from 50 + k to 51 + k (k < 17): 20/61 - (20/61) (2k + 1) / 34.
+
+namespace {
+
+template <class Real>
+class seed_002_test : public ::testing::Test {};
+// float and double (long double adds compile time, not coverage: the contract is the same).
+using seed_reals = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(seed_002_test, seed_reals);
+
+// The expected distance covered between frame f and f + 1 (a closed form of the seed example).
+real50 seed_002_step(long long f) {
+  const real50 vmax = real50(20) / 61;  // per frame
+  if (f < 34) return vmax / 12 * (2 * (f - 22) + 1) / 2;
+  if (f < 50) return vmax;
+  return vmax - vmax * (2 * (f - 50) + 1) / 34;
+}
+
+}  // namespace
+
+TYPED_TEST(seed_002_test, positions_speeds_and_distance_per_frame) {
+  using Real = TypeParam;
+  using point3 = cb::point<Real, 3>;
+  const cb::cardinal_spline<Real, 3> path(cb::point_list<Real, 3>{point3(-5, 0, 0), point3(5, 0, 0)});
+  const cb::arclength::parameterization arc(path);
+  const auto ease = cbm::parabolic_ease<Real>::from_frames(22, 34, 50, 67);
+  const cbm::motion_path motion(arc, ease, cbm::frame_range<Real>{22, 67, Real(24)});
+  // The inversion's contract (its table tolerance and the Newton tolerance of the nodes) plus a
+  // few roundings of L S(x), measured in eps(Real) of the extent 5:
+  const real50 L50(10);
+  const real50 eps(cb::epsilon<Real>());
+  const real50 inv_err = (real50(arc.options().table_tolerance) + real50(arc.options().newton.relative_tolerance)) * L50;
+  const double tol = static_cast<double>((inv_err + 32 * eps * L50) / (eps * 5));
+
+  EXPECT_TRUE(cbt::within_ulps(arc.length(), L50, 4));
+  // positions at the key frames
+  const std::array<std::pair<long long, real50>, 4> keys{
+      {{22, real50(-5)}, {34, real50(-185) / 61}, {50, real50(135) / 61}, {67, real50(5)}}};
+  for (const auto& [f, x] : keys) {
+    const point3 p = motion.position_at_frame(f);
+    EXPECT_TRUE(cbt::within_scaled_ulps(p[0], x, real50(5), tol)) << "frame " << f;
+    EXPECT_EQ(p[1], Real(0));
+    EXPECT_EQ(p[2], Real(0));
+  }
+  // stopped at both ends, exactly
+  EXPECT_EQ(motion.speed_at_frame(22), Real(0));
+  EXPECT_EQ(motion.speed_at_frame(67), Real(0));
+  EXPECT_EQ(motion.sample_at_frame(67).velocity, point3::Zero());
+  // constant speed 20/61 per frame (x 24 fps) on [34, 50], below it elsewhere
+  const real50 cruise = real50(20) / 61 * 24;
+  for (long long f = 22; f <= 67; ++f) {
+    const Real v = motion.speed_at_frame(f);
+    if (f >= 34 && f <= 50) {
+      EXPECT_TRUE(cbt::within_ulps(v, cruise, 8)) << "frame " << f;
+      EXPECT_TRUE(cbt::within_ulps(motion.sample_at_frame(f).velocity[0], cruise, 16)) << "frame " << f;
+    } else {
+      EXPECT_LT(real50(v), cruise) << "frame " << f;
+    }
+  }
+  // distance covered per frame
+  const auto xs = motion.sample_frames();
+  for (long long f = 22; f < 67; ++f) {
+    const Real step = xs[std::size_t(f - 22) + 1][0] - xs[std::size_t(f - 22)][0];
+    EXPECT_TRUE(cbt::within_scaled_ulps(step, seed_002_step(f), real50(5), 2 * tol)) << "frame " << f;
+  }
+}
+
+// The README example (the lead copies this block into README.md; keep them identical).
+namespace readme {
+void seed_002_example() {
+  // ---- README snippet begins ----
+  namespace cb = curvebench;
+  using point3 = cb::point<double, 3>;
+
+  // The path through the keys: a Catmull-Rom spline (a straight line for two keys),
+  // parameterized by arc length (u(s) from a cubic Hermite table).
+  const cb::cardinal_spline<double, 3> path(cb::point_list<double, 3>{point3(-5, 0, 0), point3(5, 0, 0)});
+  const cb::arclength::parameterization arc(path);
+
+  // The speed: at rest at frame 22, accelerate until frame 34, cruise until 50, stop at 67.
+  const auto ease = cb::motion::parabolic_ease<double>::from_frames(22, 34, 50, 67);
+  const cb::motion::motion_path motion(arc, ease, cb::motion::frame_range<double>{22, 67, 24.0});
+
+  for (long long f = 22; f <= 67; ++f) {
+    const point3 p = motion.position_at_frame(f);                 // P(U(L S((f - 22) / 45)))
+    const double per_frame = motion.speed_at_frame(f) / 24.0;     // 20/61 while cruising
+    std::printf("frame %2lld  x = %9.5f  speed = %.5f per frame\n", f, p.x(), per_frame);
+  }
+  // ---- README snippet ends ----
+}
+}  // namespace readme
+
+TEST(readme, seed_002_example_runs_and_prints_the_key_frames) {
+  ::testing::internal::CaptureStdout();
+  readme::seed_002_example();
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  EXPECT_THAT(out, HasSubstr("frame 22  x =  -5.00000  speed = 0.00000 per frame"));
+  EXPECT_THAT(out, HasSubstr("frame 34  x =  -3.03279  speed = 0.32787 per frame"));  // -185/61, 20/61
+  EXPECT_THAT(out, HasSubstr("frame 50  x =   2.21311  speed = 0.32787 per frame"));  // 135/61
+  EXPECT_THAT(out, HasSubstr("frame 67  x =   5.00000  speed = 0.00000 per frame"));
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 46);
+}
+
+// ---- a curved path: Catmull-Rom through five keys, every inversion method ---------------------
+
+namespace {
+
+// Arc-length error bound of each inversion method, in length units, for the curve c with the
+// parameterization a (derivations in the comments; the test asserts per-frame distances within
+// twice the bound, one per frame end).
+template <class C>
+double inversion_bound(const cb::arclength::parameterization<C>& a, cb::arclength::inversion_method m) {
+  const double L = a.length();
+  const double newton = a.options().newton.relative_tolerance * L;
+  switch (m) {
+    case cb::arclength::inversion_method::newton:
+      return newton;  // the Newton stopping rule |s(u) - s| <= tol L
+    case cb::arclength::inversion_method::hermite_table:
+      // the measured table error (of the coarser table; the kept one is finer), its target, and
+      // the Newton error of the nodes it interpolates
+      return std::max(a.table_error(), a.options().table_tolerance * L) + newton;
+    case cb::arclength::inversion_method::linear_table: {
+      // |u - u_lin| <= ds^2 / 8 max |u''(s)|, u'' = -(P'.P'') / |P'|^4, and the arc error is |P'| |du|:
+      // bound ds^2 / 8 * max|P'| * max|P'.P''| / |P'|^4 sampled densely (x2 for the sampling).
+      const auto& c = a.curve();
+      double vmax = 0, umax = 0;
+      const auto dom = c.domain();
+      for (int k = 0; k <= 4000; ++k) {
+        const double u = dom.lo + (dom.hi - dom.lo) * k / 4000;
+        const auto d1 = c.derivative(u, 1);
+        const auto d2 = c.derivative(u, 2);
+        const double n = d1.norm();
+        vmax = std::max(vmax, n);
+        umax = std::max(umax, std::abs(d1.dot(d2)) / (n * n * n * n));
+      }
+      const double ds = L / static_cast<double>(a.table_intervals());
+      return 2 * ds * ds / 8 * vmax * umax + newton;
+    }
+  }
+  return 0;
+}
+
+// The Catmull-Rom path (uniform knots: its speed |P'| varies a lot) and its 50-digit twin.
+struct curved_case {
+  using point2 = cb::point<double, 2>;
+  cb::point_list<double, 2> keys{point2(0, 0), point2(1, 2), point2(3, 3), point2(4, 0), point2(6, 1)};
+  cb::cardinal_spline<double, 2> path{keys};
+  cb::cardinal_spline<real50, 2> path50{cb::points_cast<real50, double, 2>(keys)};
+  // 50-digit reference lengths to 1e-30 relative: far below any double error, and cheap.
+  cb::arclength::adaptive_options<real50> ref_opt = [] {
+    cb::arclength::adaptive_options<real50> o;
+    o.relative_tolerance = real50("1e-30");
+    return o;
+  }();
+  real50 L50 = cb::arclength::adaptive_length(path50, ref_opt).value;
+};
+
+template <class A, class F, class F50>
+void check_curved_motion(const curved_case& c, const A& arc, cb::arclength::inversion_method m, const F& ease,
+                         const F50& ease50, const char* name) {
+  const double bound = inversion_bound(arc, m) + 64 * cb::epsilon<double>() * static_cast<double>(c.L50);
+  const cbm::motion_path motion(arc, ease, cbm::frame_range<double>{0, 48, 24.0});
+  real50 s_prev(0), worst(0);
+  double u_prev = 0;
+  for (long long f = 1; f <= 48; ++f) {
+    const double u = motion.sample_at_frame(f).parameter;
+    // the true arc length covered during the frame, in 50 digits
+    const real50 step = cb::arclength::adaptive_length(c.path50, real50(u_prev), real50(u), c.ref_opt).value;
+    const real50 s_now = s_prev + step;
+    const real50 x0 = real50(f - 1) / 48, x1 = real50(f) / 48;
+    const real50 expected_step = c.L50 * (ease50(x1) - ease50(x0));
+    using std::abs;
+    worst = std::max(worst, real50(abs(step - expected_step)));
+    ASSERT_LE(abs(step - expected_step), real50(2 * bound)) << name << " method " << int(m) << " frame " << f;
+    ASSERT_LE(abs(s_now - c.L50 * ease50(x1)), real50(bound)) << name << " method " << int(m) << " frame " << f;
+    s_prev = s_now;
+    u_prev = u;
+  }
+  std::printf("[curved path, %s] u(s) method %d: max |frame distance - L dS| = %.3g (bound %.3g, L = %.6f)\n", name,
+              int(m), static_cast<double>(worst), 2 * bound, static_cast<double>(c.L50));
+}
+
+}  // namespace
+
+TEST(motion, curved_path_frame_distances_follow_the_ease) {
+  // Constant speed and two eases, for each u(s) method: the true arc length covered between
+  // consecutive frames equals L (S(x_{f+1}) - S(x_f)) within the method's error bound.
+  const curved_case c;
+  using cb::arclength::inversion_method;
+  for (auto m : {inversion_method::linear_table, inversion_method::hermite_table, inversion_method::newton}) {
+    cb::arclength::parameterization_options<double> opt;
+    opt.method = m;
+    if (m == inversion_method::linear_table) opt.table_intervals = 256;
+    const cb::arclength::parameterization arc(c.path, opt);
+    check_curved_motion(c, arc, m, cbm::linear_ease<double>{}, cbm::linear_ease<real50>{}, "constant speed");
+    check_curved_motion(c, arc, m, cbm::sine_plateau_ease<double>(0.25, 0.75),
+                        cbm::sine_plateau_ease<real50>(0.25, 0.75), "sine plateau");
+    check_curved_motion(c, arc, m, cbm::smootherstep_ease<double>{}, cbm::smootherstep_ease<real50>{},
+                        "smootherstep");
+  }
 }
