@@ -6,6 +6,9 @@
 
 #include <gmock/gmock.h>
 
+#include <cmath>
+#include <numbers>
+
 namespace cb = curvebench;
 namespace io = curvebench::io;
 using ::testing::HasSubstr;
@@ -99,6 +102,22 @@ TEST(io_spec, real50_twin_holds_the_same_control_data) {
   EXPECT_EQ(c50(cb::real50(0))[0], cb::real50(0.1));
   EXPECT_EQ(c50(cb::real50(2))[1], cb::real50(0.7));
   EXPECT_NE(c50(cb::real50(0))[0], cb::real50("0.1"));
+}
+
+TEST(io_spec, generated_points) {
+  const auto helix = make<3>(R"({"type": "catmull_rom", "points": {"generate": "helix", "count": 9, "radius": 2,
+                                                                    "pitch": 0.5, "turns": 1}})");
+  // Catmull-Rom interpolates: the knot values are the generated points (double trigonometry).
+  EXPECT_EQ(helix(0.0), (cb::point<double, 3>(2, 0, 0)));
+  EXPECT_EQ(helix(2.0), (cb::point<double, 3>(2 * std::cos(std::numbers::pi / 2), 2 * std::sin(std::numbers::pi / 2), 0.125)));
+  EXPECT_EQ(helix.domain().hi, 8.0);
+  const auto runge = make<2>(R"({"type": "polyline", "points": {"generate": "runge", "count": 5}})");
+  EXPECT_EQ(runge(2.0), (cb::point<double, 2>(0, 1)));
+  EXPECT_EQ(runge(4.0), (cb::point<double, 2>(1, 1.0 / 26)));
+  EXPECT_THAT(error_of(R"({"type": "polyline", "points": {"generate": "runge", "count": 1}})"),
+              HasSubstr("spec.points.count: 1 is not allowed (2 to 10000000 points)"));
+  EXPECT_THAT(error_of(R"({"type": "polyline", "points": {"generate": "koch", "count": 4}})"),
+              HasSubstr("spec.points.generate: \"koch\" is not one of"));
 }
 
 TEST(io_spec, malformed_specs_name_the_field) {

@@ -26,6 +26,7 @@
 
 #include <boost/math/constants/constants.hpp>
 
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -61,10 +62,61 @@ struct spec_type_info {
 [[nodiscard]] inline int spec_dimension(const field& spec) {
   const std::string type = spec.member("type").string();
   if (type == "circle" || type == "arc") return 2;
-  return spec.member("points", "every spec of type \"" + type + "\" has points").point_dimension();
+  const field pts = spec.member("points", "every spec of type \"" + type + "\" has points");
+  if (pts.value.is_object()) {
+    const std::string kind = pts.member("generate").one_of({"helix", "lissajous", "spiral", "runge"});
+    return kind == "helix" ? 3 : 2;
+  }
+  return pts.point_dimension();
 }
 
 namespace detail {
+
+/// Generated point sets, so that a case with 1e5 points stays a few lines of JSON:
+///   {"generate": "helix", "count": n, "radius": r, "pitch": c, "turns": k}      3D
+///   {"generate": "lissajous", "count": n, "a": 3, "b": 2, "turns": 1}           2D
+///   {"generate": "spiral", "count": n, "turns": k}                               2D
+///   {"generate": "runge", "count": n, "nodes": "equispaced" | "chebyshev"}      2D graph of 1/(1+25x^2)
+/// Computed in double (std::sin/cos of the double angle) and converted exactly to Real, so every
+/// precision sees the same data.
+inline std::vector<std::vector<double>> generate_points(const field& g) {
+  g.only_members({"generate", "count", "radius", "pitch", "turns", "a", "b", "nodes"});
+  const std::string kind = g.member("generate").one_of({"helix", "lissajous", "spiral", "runge"});
+  const long long count = g.member("count").integer();
+  if (count < 2 || count > 10000000)
+    g.member("count").fail(std::to_string(count) + " is not allowed (2 to 10000000 points)");
+  const auto n = static_cast<std::size_t>(count);
+  const double two_pi = 2 * boost::math::constants::pi<double>();
+  const auto num = [&](std::string_view key, double fallback) { return g.has(key) ? g.member(key).number() : fallback; };
+  std::vector<std::vector<double>> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double f = static_cast<double>(i) / static_cast<double>(n - 1);
+    if (kind == "helix") {
+      const double th = two_pi * num("turns", 1) * f;
+      out[i] = {num("radius", 1) * std::cos(th), num("radius", 1) * std::sin(th), num("pitch", 1) * th / two_pi};
+    } else if (kind == "lissajous") {
+      const double th = two_pi * num("turns", 1) * f;
+      out[i] = {std::sin(num("a", 3) * th + two_pi / 4), std::sin(num("b", 2) * th)};
+    } else if (kind == "spiral") {
+      const double th = two_pi * num("turns", 1) * f;
+      out[i] = {f * std::cos(th), f * std::sin(th)};
+    } else {
+      const std::string nodes = g.has("nodes") ? g.member("nodes").one_of({"equispaced", "chebyshev"}) : "equispaced";
+      const double x = nodes == "equispaced" ? -1 + 2 * f : -std::cos(boost::math::constants::pi<double>() * f);
+      out[i] = {x, 1 / (1 + 25 * x * x)};
+    }
+  }
+  return out;
+}
+
+/// The points of a spec: an array of points, or a generator object.
+template <class Real, int Dim>
+point_list<Real, Dim> spec_points(const field& spec) {
+  const field f = spec.member("points");
+  if (!f.value.is_object()) return f.points<Real, Dim>();
+  const json generated(generate_points(f));
+  return field{generated, f.path}.points<Real, Dim>();
+}
 
 inline constexpr std::string_view metadata[] = {"type", "name", "group", "reason"};
 
@@ -118,7 +170,7 @@ std::vector<Real> per_key(const field& spec, std::string_view key, std::size_t k
 template <class Real, int Dim>
 any_curve<Real, Dim> build(const field& spec, const std::string& type) {
   using pl = point_list<Real, Dim>;
-  const auto pts = [&] { return spec.member("points").points<Real, Dim>(); };
+  const auto pts = [&] { return spec_points<Real, Dim>(spec); };
   if (type == "polyline") {
     allow(spec, {"points", "params"});
     const pl p = pts();
