@@ -193,6 +193,53 @@ TYPED_TEST(nurbs_typed, rational_bezier_derivatives_match_series_quotient) {
   EXPECT_TRUE(cbt::point_within(c.derivative(Real(0), 1), cb::point<cb::real50, 2>(9, 18), cb::real50(18), 8));
 }
 
+// Orders around the stack-buffer limit (32) and beyond, in 50 digits where the comparison is
+// meaningful: the same series-quotient reference as above, through order 34 (the heap path).
+// Also the homogeneous accessor: (W C, W).
+TEST(nurbs_high_order, derivatives_beyond_the_stack_buffer) {
+  using R = cb::real50;
+  const cb::point_list<R, 2> p{{R(0), R(0)}, {R(1), R(2)}, {R(3), R(2)}, {R(4), R(0)}};
+  const std::vector<R> w{R(1), R(3), R(1) / 2, R(2)};
+  const cb::nurbs<R, 2> c(4, {R(0), R(0), R(0), R(0), R(1), R(1), R(1), R(1)}, p, w);
+  constexpr int kmax = 34;
+  const R u = R(3) / 8;
+  std::vector<cb::point<R, 2>> a(kmax + 1), cs(kmax + 1);
+  std::vector<R> wt(kmax + 1);
+  R fact = 1;
+  for (int k = 0; k <= kmax; ++k) {
+    if (k > 0) fact *= k;
+    a[static_cast<std::size_t>(k)] = cb::zero_point<R, 2>();
+    wt[static_cast<std::size_t>(k)] = 0;
+    for (int i = 0; i < 4; ++i) {
+      const R bd = cb::basis::bernstein_derivative(3, i, u, k) / fact;
+      a[static_cast<std::size_t>(k)] += bd * w[static_cast<std::size_t>(i)] * p[static_cast<std::size_t>(i)];
+      wt[static_cast<std::size_t>(k)] += bd * w[static_cast<std::size_t>(i)];
+    }
+  }
+  fact = 1;
+  for (int k = 0; k <= kmax; ++k) {
+    const auto uk = static_cast<std::size_t>(k);
+    cb::point<R, 2> acc = a[uk];
+    for (int i = 1; i <= k; ++i) acc -= wt[static_cast<std::size_t>(i)] * cs[uk - static_cast<std::size_t>(i)];
+    cs[uk] = acc / wt[0];
+    if (k > 0) fact *= k;
+    if (k < 30) continue;
+    const cb::point<R, 2> ref = fact * cs[uk];
+    // 1e20 eps(real50) relative to the reference's size, i.e. 1e-30: the recurrence's rounding grows
+    // with its sum of binomially weighted terms (2^k ~ 1.7e10 at k = 34) times their cancellation;
+    // a wrong term would be off by O(1).
+    ASSERT_TRUE(cbt::point_within(c.derivative(u, k), ref, ref.norm(), 1e20)) << "k=" << k;
+  }
+  const auto h = c.homogeneous(u, 0);
+  const cb::point<R, 2> cu = c(u);
+  EXPECT_TRUE(cbt::within_ulps(h[2], wt[0], 8));
+  EXPECT_TRUE(cbt::point_within(cb::point<R, 2>(h.head<2>() / h[2]), cu, R(4), 8));
+  // Equal weights: every derivative of order >= m is exactly zero (the weight differences vanish).
+  const cb::nurbs<double, 2> flat(3, {0, 0, 0, 0.5, 1, 1, 1}, {{0, 0}, {1, 2}, {2, 0}, {3, 1}}, {2, 2, 2, 2});
+  EXPECT_EQ(flat.derivative(0.7, 3), (cb::point<double, 2>(0, 0)));
+  EXPECT_EQ(flat.derivative(0.7, 40), (cb::point<double, 2>(0, 0)));
+}
+
 // Bad input names the argument, the index and the rule; the knot checks are the B-spline's.
 TEST(nurbs_bad_input, messages) {
   const cb::point_list<double, 2> p(4, cb::point<double, 2>(0, 0));
