@@ -20,6 +20,14 @@
 #include "curvebench/curves/natural_cubic_spline.hpp"
 #define CB_AUDIT_NATURAL 1
 #endif
+#if __has_include("curvebench/curves/composite_bezier.hpp")
+#include "curvebench/curves/composite_bezier.hpp"
+#define CB_AUDIT_COMPOSITE 1
+#endif
+#if __has_include("curvebench/curves/lagrange.hpp")
+#include "curvebench/curves/lagrange.hpp"
+#define CB_AUDIT_LAGRANGE 1
+#endif
 #if __has_include("curvebench/curves/polyline.hpp")
 #include "curvebench/curves/polyline.hpp"
 #define CB_AUDIT_POLYLINE 1
@@ -264,6 +272,66 @@ TEST(property_audit, natural_cubic_spline) {
   record("natural cubic spline (natural ends)", r);
 }
 
+#endif
+
+#ifdef CB_AUDIT_COMPOSITE
+// Composite Bezier (the seed's Bezier row is about joined cubic segments: "C1"). Two ways to build a
+// chain of cubics from the same ten items, on knots 0, 1, 2, ...:
+//  - shared joints: segments P0..P3, P3..P6, P6..P9 (C0 at the joints, no handle constraint);
+//  - implied joints: the items are the handles and each joint is the midpoint of the two handles
+//    around it (P0 P1 P2 J, J P3 P4 J', ..., J'' P7 P8 P9 with J = (P2 + P3)/2, ...), which makes the
+//    chain C1 by construction, like TrueType's implied on-curve points.
+// Measured, and different from the seed's single-curve "not local": a composite chain IS local (an
+// item moves at most the two segments that contain it); a single degree-9 Bezier is not.
+// Interpolation: shared joints pass through P0, P3, P6, P9 (partial); implied joints only through
+// the two end items (ends only, as the seed's row).
+cb::composite_bezier<double, 2> shared_joints(span2 p) {
+  std::vector<list2> seg;
+  std::vector<double> k{0};
+  for (std::size_t i = 0; i + 3 < p.size(); i += 3) {
+    seg.push_back(list2(p.begin() + static_cast<std::ptrdiff_t>(i), p.begin() + static_cast<std::ptrdiff_t>(i) + 4));
+    k.push_back(k.back() + 1);
+  }
+  return cb::composite_bezier<double, 2>(std::span<const list2>(seg), std::span<const double>(k));
+}
+cb::composite_bezier<double, 2> implied_joints(span2 p) {
+  std::vector<list2> seg;
+  std::vector<double> k{0};
+  P2 start = p[0];
+  std::size_t i = 1;
+  while (i + 4 < p.size()) {  // a middle segment: start, p[i], p[i+1], joint with p[i+2]
+    const P2 joint = 0.5 * (p[i + 1] + p[i + 2]);
+    seg.push_back({start, p[i], p[i + 1], joint});
+    start = joint;
+    i += 2;
+    k.push_back(k.back() + 1);
+  }
+  seg.push_back({start, p[i], p[i + 1], p[i + 2]});
+  k.push_back(k.back() + 1);
+  return cb::composite_bezier<double, 2>(std::span<const list2>(seg), std::span<const double>(k));
+}
+
+TEST(property_audit, composite_bezier) {
+  const auto c0 = cb::audit_properties<double, 2>(shared_joints, data);
+  expect_row(c0, "partial", true, 0, false, true, "yes", "yes");
+  for (std::size_t i : {0u, 3u, 6u, 9u}) EXPECT_LT(static_cast<double>(c0.distance[i]), 1e-12) << i;
+  record("composite Bezier, cubic, shared joints", c0);
+  const auto c1 = cb::audit_properties<double, 2>(implied_joints, data);
+  expect_row(c1, "ends only", true, 1, false, true, "yes", "yes");
+  record("composite Bezier, cubic, implied midpoint joints", c1);
+}
+#endif
+
+#ifdef CB_AUDIT_LAGRANGE
+// Lagrange interpolation (seed 001: "high degree ones are too wiggly"): one polynomial of degree 9
+// through all ten points at equispaced parameters. All interpolated, not local (every Lagrange basis
+// polynomial is non-zero almost everywhere), one piece, affine invariant (the basis sums to 1), and
+// it oscillates out of the hull and across lines the polygon never crosses.
+TEST(property_audit, lagrange) {
+  const auto r = cb::audit_properties<double, 2>([](span2 p) { return cb::lagrange<double, 2>(p); }, data);
+  expect_row(r, "all", false, 0, true, true, "no", "no");
+  record("Lagrange, degree 9, equispaced", r);
+}
 #endif
 
 #ifdef CB_AUDIT_POLYLINE
