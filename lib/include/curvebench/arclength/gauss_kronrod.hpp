@@ -248,10 +248,13 @@ template <class Real>
 template <class Real>
 struct adaptive_options {
   Real absolute_tolerance{0};
-  Real relative_tolerance{Real(64) * epsilon<Real>()};
+  Real relative_tolerance{Real(128) * epsilon<Real>()};  ///< above the 50 eps rounding floor of the panels
   std::size_t max_intervals{4000};  ///< cap on the number of panels (global) / 2^max_depth (recursive)
   int gauss_points{7};              ///< n of the G_n - K_{2n+1} pair
   error_model model{error_model::gauss_difference};
+  /// Curve lengths only (length.hpp, segment_lengths): samples of |P'|^2 per segment used to find
+  /// interior speed minima (near-cusps) and split there first; 0 turns it off.
+  std::size_t speed_minimum_samples{16};
 };
 
 namespace detail {
@@ -302,17 +305,26 @@ template <class Real, class F>
     out.evaluations += heap.back().r.evaluations;
   }
   std::make_heap(heap.begin(), heap.end(), less);
+  // Exact-as-possible totals: the value by Neumaier's compensated summation (error <= 2 eps |sum|
+  // + O(n eps^2) for any number of panels), estimates and floors by plain sums.
   auto totals = [&](Real& value, Real& err, Real& floor) {
     value = Real(0);
     err = Real(0);
     floor = Real(0);
-    for (const auto& h : heap) value += h.r.kronrod, err += h.r.error_estimate, floor += h.r.rounding_floor;
-    for (const auto& h : frozen) value += h.r.kronrod, err += h.r.error_estimate, floor += h.r.rounding_floor;
+    Real comp(0);
+    auto add = [&](const detail::heap_panel<Real>& h) {
+      const Real t = value + h.r.kronrod;
+      comp += abs(value) >= abs(h.r.kronrod) ? (value - t) + h.r.kronrod : (h.r.kronrod - t) + value;
+      value = t;
+      err += h.r.error_estimate;
+      floor += h.r.rounding_floor;
+    };
+    for (const auto& h : heap) add(h);
+    for (const auto& h : frozen) add(h);
+    value += comp;
   };
-  // Summing the panels rounds once per panel: that term is part of every estimate.
-  auto estimate = [&](const Real& e, const Real& v) {
-    return e + static_cast<Real>(static_cast<long long>(heap.size() + frozen.size())) * epsilon<Real>() * abs(v);
-  };
+  // The compensated sum of the panels rounds by at most ~2 eps |value|: part of every estimate.
+  auto estimate = [&](const Real& e, const Real& v) { return e + Real(4) * epsilon<Real>() * abs(v); };
   auto target = [&](const Real& v) { return max(opt.absolute_tolerance, opt.relative_tolerance * abs(v)); };
   Real value, err, floor;
   totals(value, err, floor);

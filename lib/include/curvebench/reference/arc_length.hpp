@@ -8,14 +8,18 @@
 // samples is refined by Brent's minimization (Boost.Math) and then by Newton on
 // (|P'|^2)'/2 = P'.P'' with derivative |P''|^2 + P'.P''' (exact derivatives of any order are part of
 // the curve concept), which locates a cusp to full precision; minima below
-// split_ratio * (max speed on the segment) become split points. Every piece is integrated by
-// boost::math::quadrature::gauss_kronrod<Real, 61> (adaptive, depth <= max_depth) to the relative
-// tolerance, or by tanh_sinh (endpoint-clustered, for the pieces that end at a near-cusp) when
-// chosen; the Boost error estimates are summed. s(u) integrates from the split point at or left of
+// split_ratio * (max speed on the segment) become split points. A piece that ends at such a
+// minimum is graded geometrically towards it (panels [m + h/2^(k+1), m + h/2^k], 48 levels), so a
+// near-singularity is never closer to a panel than the panel's own size (plain bisection towards
+// it makes Boost's recursion, whose absolute tolerance halves per level, blow up exponentially).
+// Every panel is integrated by boost::math::quadrature::gauss_kronrod<Real, 61> (adaptive,
+// depth <= max_depth) to the relative tolerance, or, ungraded, by tanh_sinh (whose nodes cluster at
+// the ends already) when chosen; the Boost error
+// estimates are summed. s(u) integrates from the split point at or left of
 // u; u(s) solves s(u) = s by bracketed Newton (Boost's newton_raphson_iterate) on those integrals.
 // Sources: Piessens et al. (QUADPACK); Takahasi & Mori (tanh-sinh); Brent, "Algorithms for
 // minimization without derivatives" (1973). Cost: per piece a few hundred evaluations at 50 digits
-// for polynomial segments; u(s) costs one integral per Newton step. Accuracy: ~1e-45 relative for
+// for polynomial segments, ~50 panels more per speed minimum; u(s) costs one integral per Newton step. Accuracy: ~1e-45 relative for
 // real50 on the test suite (checked against every closed form in tests/test_reference.cpp).
 #pragma once
 
@@ -44,7 +48,7 @@ template <class Real>
 struct reference_options {
   /// Relative tolerance of each piece (Boost's criterion: error <= tol * integral |f|).
   Real tolerance{Real(4096) * epsilon<Real>()};
-  unsigned max_depth{40};
+  unsigned max_depth{15};
   std::size_t samples_per_segment{64};
   /// A speed minimum below split_ratio * (max sampled speed of its segment) becomes a split point.
   Real split_ratio{Real(1) / Real(4)};
@@ -62,18 +66,23 @@ class reference_arc_length {
     const std::span<const Real> bp = curve_.breakpoints();
     for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
       splits_.push_back(bp[i]);
+      is_minimum_.push_back(false);
       if (!(bp[i + 1] > bp[i])) continue;
       for (const Real& z : interior_minima(bp[i], bp[i + 1])) {
         splits_.push_back(z);
+        is_minimum_.push_back(true);
         minima_.push_back(z);
       }
     }
     splits_.push_back(bp.back());
+    is_minimum_.push_back(false);
     cumulative_.push_back(Real(0));
     cumulative_error_.push_back(Real(0));
     for (std::size_t i = 0; i + 1 < splits_.size(); ++i) {
       Real err(0);
-      const Real v = splits_[i + 1] > splits_[i] ? integrate(splits_[i], splits_[i + 1], err) : Real(0);
+      const Real v = splits_[i + 1] > splits_[i]
+                         ? integrate(splits_[i], splits_[i + 1], is_minimum_[i], is_minimum_[i + 1], err)
+                         : Real(0);
       cumulative_.push_back(cumulative_.back() + v);
       cumulative_error_.push_back(cumulative_error_.back() + err);
     }
@@ -95,7 +104,7 @@ class reference_arc_length {
     const std::size_t i = it == splits_.begin() ? 0 : static_cast<std::size_t>(it - splits_.begin()) - 1;
     arclength::quadrature_result<Real> r;
     Real err(0);
-    r.value = cumulative_[i] + (u > splits_[i] ? integrate(splits_[i], u, err) : Real(0));
+    r.value = cumulative_[i] + (u > splits_[i] ? integrate(splits_[i], u, is_minimum_[i], next_is_minimum(i), err) : Real(0));
     r.error_estimate = cumulative_error_[i] + err;
     r.status = arclength::result_status::converged;
     return r;
@@ -115,7 +124,7 @@ class reference_arc_length {
     const Real s0 = cumulative_[i];
     auto f = [&](const Real& x) {
       Real err(0);
-      const Real v = x > lo ? integrate(lo, x, err) : Real(0);
+      const Real v = x > lo ? integrate(lo, x, is_minimum_[i], is_minimum_[i + 1], err) : Real(0);
       using std::sqrt;
       const typename C::point_type d = curve_.derivative(x, 1);
       return std::make_pair(s0 + v - s, Real(sqrt(d.squaredNorm())));
@@ -128,7 +137,56 @@ class reference_arc_length {
  private:
   [[nodiscard]] Real speed2(const Real& u) const { return curve_.derivative(u, 1).squaredNorm(); }
 
-  [[nodiscard]] Real integrate(const Real& a, const Real& b, Real& err) const {
+  [[nodiscard]] bool next_is_minimum(std::size_t i) const { return i + 1 < is_minimum_.size() && is_minimum_[i + 1]; }
+
+  // One piece, graded geometrically towards an end that is (or lies next to) a speed minimum: the
+  // near-singularity there is then never closer to a panel than the panel's own size, so every
+  // panel converges at Boost's first levels instead of bisecting towards the end (whose halving
+  // absolute tolerance makes Boost's recursion blow up exponentially near rounding level).
+  [[nodiscard]] Real integrate(const Real& a, const Real& b, bool grade_a, bool grade_b, Real& err) const {
+    err = Real(0);
+    // tanh-sinh clusters its nodes doubly exponentially at both ends already: no grading.
+    if (opt_.integrator == reference_integrator::tanh_sinh) return integrate_panel(a, b, opt_.tolerance, err);
+    if (grade_a && grade_b) {
+      const Real mid = (a + b) / Real(2);
+      Real e1(0), e2(0);
+      const Real v = integrate(a, mid, true, false, e1) + integrate(mid, b, false, true, e2);
+      err = e1 + e2;
+      return v;
+    }
+    if (!grade_a && !grade_b) return integrate_panel(a, b, opt_.tolerance, err);
+    const int levels = 48;  // 2^-48 of the piece: the last panel is far inside any near-singularity scale
+    using std::max;
+    using std::min;
+    using std::sqrt;
+    // Near the minimum the speed is tiny and computed with an absolute (not relative) rounding of
+    // the curve's scale, so a relative tolerance per panel is unreachable there; each panel gets the
+    // relative tolerance that makes its absolute error tolerance / 64 of the whole piece's length.
+    const Real piece_scale = (b - a) * max(sqrt(speed2(a)), max(sqrt(speed2(b)), sqrt(speed2((a + b) / Real(2)))));
+    const Real loosest = Real(1) / Real(10000000000LL);
+    auto panel = [&](const Real& lo, const Real& hi, Real& e) {
+      const Real guess = (hi - lo) * sqrt(speed2((lo + hi) / Real(2)));
+      Real rel = opt_.tolerance;
+      if (guess > Real(0)) rel = max(rel, min(loosest, opt_.tolerance / Real(64) * piece_scale / guess));
+      return integrate_panel(lo, hi, rel, e);
+    };
+    Real total(0);
+    Real near = grade_a ? a : b;
+    Real far = grade_a ? b : a;
+    for (int k = 0; k < levels; ++k) {  // [near + (far-near)/2, far], then halves towards near
+      const Real m = near + (far - near) / Real(2);
+      Real e(0);
+      total += grade_a ? panel(m, far, e) : panel(far, m, e);
+      err += e;
+      far = m;
+    }
+    Real e(0);
+    total += grade_a ? panel(near, far, e) : panel(far, near, e);
+    err += e;
+    return total;
+  }
+
+  [[nodiscard]] Real integrate_panel(const Real& a, const Real& b, const Real& tolerance, Real& err) const {
     auto f = [this](const Real& x) {
       using std::sqrt;
       return Real(sqrt(speed2(x)));
@@ -136,10 +194,9 @@ class reference_arc_length {
     Real l1(0);
     if (opt_.integrator == reference_integrator::tanh_sinh) {
       boost::math::quadrature::tanh_sinh<Real> ts;
-      return ts.integrate(f, a, b, opt_.tolerance, &err, &l1);
+      return ts.integrate(f, a, b, tolerance, &err, &l1);
     }
-    return boost::math::quadrature::gauss_kronrod<Real, 61>::integrate(f, a, b, opt_.max_depth, opt_.tolerance, &err,
-                                                                       &l1);
+    return boost::math::quadrature::gauss_kronrod<Real, 61>::integrate(f, a, b, opt_.max_depth, tolerance, &err, &l1);
   }
 
   // Interior local minima of the speed on (a, b) below split_ratio * max speed, refined.
@@ -185,6 +242,7 @@ class reference_arc_length {
   C curve_;
   reference_options<Real> opt_;
   std::vector<Real> splits_, minima_, cumulative_, cumulative_error_;
+  std::vector<bool> is_minimum_;
 };
 
 }  // namespace curvebench::reference

@@ -1,0 +1,146 @@
+// Forward-differencing arc-length table (seed 002): sample the curve at equally spaced parameters,
+// accumulate the chord lengths; s(u) by linear interpolation in the table, u(s) by binary search +
+// linear interpolation; Richardson extrapolation of two tables.
+//
+// Algorithm: each segment [u_i, u_{i+1}] (breakpoints are always table nodes) is cut into N equal
+// steps h; the chord |P(u_{k+1}) - P(u_k)| underestimates the arc by kappa^2 |P'|^3 h^3 / 24 +
+// O(h^5) per step, so the table's length has error c h^2 + O(h^4) (order 2, measured in the tests).
+// Error estimate: chord sums only grow under refinement and converge to L, so with the coarser
+// sum L_2h over every other node (free: same samples) the estimate L_h - L_2h (~3 c h^2) exceeds
+// L - L_h (~c h^2) whenever the observed order is >= 1; it needs N even, otherwise the length has
+// no estimate (not_guaranteed). Richardson: R = L_h + (L_h - L_2h) / 3 cancels the h^2 term; its
+// order (4 for smooth segments) is measured by the tests, not assumed; |R - L_h| is its estimate.
+// The table of s(u) has the same O(h^2) error plus the linear interpolation's O(h^2) between nodes.
+// Sources: seed 002 ("Forward Differencing", table lookup, binary search); Parent, "Computer
+// Animation: Algorithms and Techniques", 3.2. Cost: N + 1 position evaluations per segment to
+// build; s(u) and u(s) O(log(table size)), no curve evaluation.
+#pragma once
+
+#include "curvebench/arclength/newton_inversion.hpp"
+#include "curvebench/arclength/result.hpp"
+#include "curvebench/core/curve.hpp"
+#include "curvebench/core/error.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace curvebench::arclength {
+
+template <class Real>
+class forward_difference_table {
+ public:
+  /// N = steps_per_segment >= 1 equal parameter steps in every segment.
+  template <curve C>
+    requires std::same_as<typename C::real_type, Real>
+  forward_difference_table(const C& c, std::size_t steps_per_segment) : steps_(steps_per_segment) {
+    using std::sqrt;
+    if (steps_per_segment < 1)
+      validate::fail("steps_per_segment = " + std::to_string(steps_per_segment) + ": must be >= 1");
+    const std::span<const Real> bp = c.breakpoints();
+    validate::count_at_least("breakpoints", bp.size(), 2, "a curve has at least one segment");
+    typename C::point_type prev = c(bp[0]);
+    u_.push_back(bp[0]);
+    s_.push_back(Real(0));
+    evaluations_ = 1;
+    Real coarse(0);
+    for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
+      if (!(bp[i + 1] > bp[i])) continue;
+      const Real h = (bp[i + 1] - bp[i]) / Real(static_cast<long long>(steps_));
+      typename C::point_type even = prev;  // the node two steps back, for the coarse table
+      for (std::size_t k = 1; k <= steps_; ++k) {
+        const Real u = k == steps_ ? bp[i + 1] : bp[i] + h * Real(static_cast<long long>(k));
+        const typename C::point_type p = c(u);
+        ++evaluations_;
+        const typename C::point_type d = p - prev;
+        u_.push_back(u);
+        s_.push_back(s_.back() + Real(sqrt(d.squaredNorm())));
+        if (k % 2 == 0) {
+          const typename C::point_type e = p - even;
+          coarse += sqrt(e.squaredNorm());
+          even = p;
+        }
+        prev = p;
+      }
+    }
+    coarse_ = coarse;
+  }
+
+  [[nodiscard]] std::size_t steps_per_segment() const { return steps_; }
+  [[nodiscard]] std::span<const Real> parameters() const { return u_; }
+  [[nodiscard]] std::span<const Real> arc_lengths() const { return s_; }
+  /// Position evaluations spent building the table.
+  [[nodiscard]] std::size_t evaluations() const { return evaluations_; }
+
+  /// The chord sum L_h, estimate L_h - L_2h (+ rounding) for even N; no bound for odd N.
+  [[nodiscard]] quadrature_result<Real> length() const {
+    using std::abs;
+    quadrature_result<Real> r;
+    r.value = s_.back();
+    r.evaluations = evaluations_;
+    if (steps_ % 2 != 0) {
+      r.error_estimate = no_bound<Real>();
+      r.status = result_status::not_guaranteed;
+      return r;
+    }
+    r.error_estimate = abs(r.value - coarse_) + rounding(r.value);
+    r.status = result_status::converged;
+    return r;
+  }
+
+  /// The coarser chord sum L_2h (every other node), for Richardson extrapolation; needs even N.
+  [[nodiscard]] Real coarse_length() const {
+    if (steps_ % 2 != 0)
+      validate::fail("steps_per_segment = " + std::to_string(steps_) + ": the coarse table needs an even number");
+    return coarse_;
+  }
+
+  /// Richardson: L_h + (L_h - L_2h) / 3 with estimate |R - L_h| (+ rounding); needs even N.
+  [[nodiscard]] quadrature_result<Real> richardson_length() const {
+    using std::abs;
+    quadrature_result<Real> r;
+    const Real fine = s_.back();
+    r.value = fine + (fine - coarse_length()) / Real(3);
+    r.error_estimate = abs(r.value - fine) + rounding(fine);
+    r.evaluations = evaluations_;
+    r.status = result_status::converged;
+    return r;
+  }
+
+  /// s(u) by linear interpolation between the nodes around u (binary search). Throws
+  /// std::domain_error outside the table's domain.
+  [[nodiscard]] Real s(const Real& u) const {
+    check_parameter(u, interval<Real>{u_.front(), u_.back()});
+    const auto it = std::upper_bound(u_.begin(), u_.end(), u);
+    if (it == u_.end()) return s_.back();
+    const auto j = static_cast<std::size_t>(it - u_.begin());  // u_[j-1] <= u < u_[j]
+    const Real t = (u - u_[j - 1]) / (u_[j] - u_[j - 1]);
+    return s_[j - 1] + t * (s_[j] - s_[j - 1]);
+  }
+
+  /// u(s) by binary search on the arc lengths + linear interpolation (seed 002). Throws
+  /// std::domain_error for s outside [0, L_h] or NaN.
+  [[nodiscard]] Real u(const Real& s) const {
+    check_arc_length(s, s_.back());
+    const auto it = std::upper_bound(s_.begin(), s_.end(), s);
+    if (it == s_.end()) return u_.back();
+    const auto j = static_cast<std::size_t>(it - s_.begin());  // s_[j-1] <= s < s_[j]
+    const Real t = (s - s_[j - 1]) / (s_[j] - s_[j - 1]);
+    return u_[j - 1] + t * (u_[j] - u_[j - 1]);
+  }
+
+ private:
+  // Each chord is a few roundings, summed sequentially over the table.
+  [[nodiscard]] Real rounding(const Real& value) const {
+    return Real(static_cast<long long>(s_.size() + 8)) * epsilon<Real>() * value;
+  }
+
+  std::size_t steps_;
+  std::vector<Real> u_, s_;
+  Real coarse_{0};
+  std::size_t evaluations_{0};
+};
+
+}  // namespace curvebench::arclength

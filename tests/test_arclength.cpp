@@ -1,0 +1,333 @@
+// Arc-length methods against the 50-digit reference on the curve suite: smooth, looping,
+// near-cusp and exact-cusp cubics, a straight line with non-uniform speed, a curve with a
+// zero-length segment, a circle (rational quadratic), a helix and a 200-segment Hermite spline.
+// Each method's value is compared with the reference, and its error estimate with the true error:
+// the estimate must be >= the true error whenever the status is converged (the headline
+// property). Observed convergence orders: forward differencing 2, Richardson 4, composite
+// Gauss-Legendre 2n, fixed Gauss-Legendre per segment geometric. Parent's false positive and its
+// guards. Bad input.
+#include "support/accuracy.hpp"
+
+#include "curvebench/arclength/adaptive_subdivision.hpp"
+#include "curvebench/arclength/forward_difference.hpp"
+#include "curvebench/arclength/length.hpp"
+#include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/piecewise_cubic.hpp"
+#include "curvebench/reference/analytic_curves.hpp"
+#include "curvebench/reference/arc_length.hpp"
+#include "curvebench/reference/convert.hpp"
+
+#include <gmock/gmock.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace cb = curvebench;
+namespace al = curvebench::arclength;
+namespace ref = curvebench::reference;
+namespace cbt = curvebench::testing;
+using R = cb::real50;
+using ::testing::HasSubstr;
+
+namespace {
+
+// Tolerances (relative to the reference length unless said otherwise):
+// - adaptive Gauss-Kronrod at its default 128 eps: true error within its estimate (asserted for
+//   every curve), and so within 128 eps L + the 4 eps summation term: 132 eps;
+// - fixed Gauss-Legendre, 16 points per segment, on the smooth cubic: the speed is analytic in a
+//   wide ellipse, the error is at rounding level: 16 eps;
+// - orders: observed log2(e_h / e_{h/2}) within 0.15 of the theoretical order.
+constexpr double adaptive_eps = 132;
+constexpr double fixed16_eps = 16;
+constexpr double order_slack = 0.15;
+
+// ---- the curve suite, built from the same dyadic (exact in every Real) data in double and real50 ----
+
+template <class Real>
+using poly2 = ref::piecewise_polynomial<Real, 2>;
+template <class Real>
+using pt2 = cb::point<Real, 2>;
+
+template <class Real>
+poly2<Real> smooth_cubic() {
+  return {Real(0), Real(1), {pt2<Real>(0, 0), pt2<Real>(1, 2), pt2<Real>(3, Real(-1)), pt2<Real>(Real(-2), Real(0.5))}};
+}
+// (x^2 + eps x, x^3) with x = u - 3/4 on [0, 2]: a cusp at u = 3/4 for eps = 0 (away from every
+// panel midpoint a method might split at first), speed down to ~3 eps^2 / 4 near it otherwise.
+// Power form in u: x^2 + eps x = u^2 + (eps - 3/2) u + (9/16 - 3 eps / 4), x^3 = u^3 - 9/4 u^2 + 27/16 u - 27/64.
+template <class Real>
+poly2<Real> cusp_cubic(double eps) {
+  const Real e(eps);
+  return {Real(0), Real(2),
+          {pt2<Real>(Real(0.5625) - Real(0.75) * e, Real(-0.421875)), pt2<Real>(e - Real(1.5), Real(1.6875)),
+           pt2<Real>(1, Real(-2.25)), pt2<Real>(0, 1)}};
+}
+// A line along (3, 4)/5 with x(u) = u + u^3: non-uniform speed.
+template <class Real>
+poly2<Real> straight_line() {
+  return {Real(0), Real(1), {pt2<Real>(1, 1), pt2<Real>(Real(0.6), Real(0.8)), pt2<Real>(0, 0), pt2<Real>(Real(0.6), Real(0.8))}};
+}
+// Three segments, the middle one of zero length (constant), C0.
+template <class Real>
+poly2<Real> with_zero_segment() {
+  return {std::vector<Real>{Real(0), Real(1), Real(1.5), Real(2.5)},
+          {{pt2<Real>(0, 0), pt2<Real>(1, 1), pt2<Real>(Real(0.5), Real(-0.5))},
+           {pt2<Real>(Real(1.5), Real(0.5))},
+           {pt2<Real>(Real(1.5), Real(0.5)), pt2<Real>(1, 0), pt2<Real>(0, Real(0.25))}}};
+}
+template <class Real>
+cb::bezier<Real, 2> looping_bezier() {
+  const std::vector<pt2<Real>> cps{pt2<Real>(0, 0), pt2<Real>(3, 3), pt2<Real>(-1, 3), pt2<Real>(2, 0)};
+  return cb::bezier<Real, 2>(std::span<const pt2<Real>>(cps));
+}
+template <class Real>
+ref::rational_quadratic<Real, 2> quarter_circle() {  // weights (1, sqrt(2)/2 rounded to double, 1): a conic
+  return {pt2<Real>(1, 0), pt2<Real>(1, 1), pt2<Real>(0, 1), Real(0.70710678118654757)};
+}
+// 200 Hermite segments through dyadic points with Catmull-Rom slopes (dyadic too), unit knots.
+template <class Real>
+cb::piecewise_cubic<Real, 2> long_spline() {
+  const std::size_t n = 200;
+  std::vector<Real> knots(n + 1);
+  std::vector<pt2<Real>> v(n + 1), slope(n + 1);
+  for (std::size_t i = 0; i <= n; ++i) {
+    knots[i] = Real(static_cast<long long>(i));
+    v[i] = pt2<Real>(Real(static_cast<long long>(i)) / Real(4), Real(static_cast<long long>((i * 37) % 16)) / Real(8));
+  }
+  for (std::size_t i = 0; i <= n; ++i) {
+    const std::size_t a = i == 0 ? 0 : i - 1, b = i == n ? n : i + 1;
+    slope[i] = (v[b] - v[a]) / Real(static_cast<long long>(b - a));
+  }
+  return cb::piecewise_cubic<Real, 2>::from_hermite(knots, v, slope, slope);
+}
+
+struct method_outcome {
+  std::string name;
+  R error;  // |value - reference|
+  al::quadrature_result<double> r;
+};
+
+// Runs every length method on a double curve and returns the outcomes against the reference L.
+template <class C>
+std::vector<method_outcome> run_methods(const C& c, const R& length) {
+  std::vector<method_outcome> out;
+  auto add = [&](std::string name, const al::quadrature_result<double>& r) {
+    out.push_back({std::move(name), abs(R(r.value) - length), r});
+  };
+  add("adaptive_gk15", al::adaptive_length(c));
+  al::adaptive_options<double> loose;
+  loose.relative_tolerance = 1e-8;
+  add("adaptive_gk15_1e-8", al::adaptive_length(c, loose));
+  al::adaptive_options<double> qp = loose;
+  qp.model = al::error_model::quadpack;
+  add("adaptive_gk15_quadpack_1e-8", al::adaptive_length(c, qp));
+  add("gauss8_nested", al::gauss_length(c, 8, al::fixed_estimate::nested));
+  add("gauss4_nested", al::gauss_length(c, 4, al::fixed_estimate::nested));
+  add("gauss8_none", al::gauss_length(c, 8));
+  const al::forward_difference_table<double> fd(c, 64);
+  add("forward_difference_64", fd.length());
+  add("richardson_64", fd.richardson_length());
+  add("forward_difference_63", al::forward_difference_table<double>(c, 63).length());
+  al::subdivision_options<double> so;
+  so.tolerance = 1e-6 * static_cast<double>(length);
+  add("subdivision_1e-6", al::subdivision_length(c, so));
+  return out;
+}
+
+template <class C50>
+R reference_length(const C50& c) {
+  const ref::reference_arc_length<C50> r(c);
+  EXPECT_LT(r.length_error(), R("1e-40") * r.length());
+  return r.length();
+}
+
+template <class C, class C50>
+void check_suite_curve(const char* name, const C& c, const C50& c50) {
+  SCOPED_TRACE(name);
+  const R length = reference_length(c50);
+  for (const method_outcome& m : run_methods(c, length)) {
+    SCOPED_TRACE(m.name);
+    EXPECT_GT(m.r.evaluations, 0u);
+    // Honesty: a converged result's estimate bounds its true error; otherwise the method said so.
+    if (m.r.status == al::result_status::converged) {
+      EXPECT_LE(m.error, R(m.r.error_estimate)) << "value " << m.r.value << " estimate " << m.r.error_estimate;
+    } else {
+      EXPECT_TRUE(m.r.status == al::result_status::not_guaranteed || m.r.status == al::result_status::cap_hit ||
+                  m.r.status == al::result_status::rounding_limited);
+    }
+    if (m.name == "adaptive_gk15") {
+      EXPECT_TRUE(m.r.converged()) << al::to_string(m.r.status);
+      EXPECT_TRUE(cbt::within_ulps(m.r.value, length, adaptive_eps));
+    }
+    if (m.name == "gauss8_none") {
+      EXPECT_EQ(m.r.status, al::result_status::not_guaranteed);
+      EXPECT_TRUE(std::isinf(m.r.error_estimate));
+    }
+    if (m.name == "forward_difference_63") {
+      EXPECT_EQ(m.r.status, al::result_status::not_guaranteed);  // odd N: no coarse table, no bound
+    }
+    if (m.name == "subdivision_1e-6") {
+      EXPECT_LE(m.error, R(1e-6) * length);
+    }
+  }
+}
+
+template <class Real>
+class arclength_test : public ::testing::Test {};
+TYPED_TEST_SUITE(arclength_test, cbt::ieee_reals);
+
+}  // namespace
+
+TEST(arclength, suite_estimates_bound_true_errors) {
+  check_suite_curve("smooth cubic", smooth_cubic<double>(), smooth_cubic<R>());
+  check_suite_curve("near cusp", cusp_cubic<double>(1.0 / 1024), cusp_cubic<R>(1.0 / 1024));
+  check_suite_curve("exact cusp", cusp_cubic<double>(0), cusp_cubic<R>(0));
+  check_suite_curve("straight line", straight_line<double>(), straight_line<R>());
+  check_suite_curve("zero-length segment", with_zero_segment<double>(), with_zero_segment<R>());
+  check_suite_curve("loop", looping_bezier<double>(), looping_bezier<R>());
+  check_suite_curve("conic quarter circle", quarter_circle<double>(), quarter_circle<R>());
+  check_suite_curve("helix", ref::helix<double>(1.5, 3, 0.25, 0, 2), ref::helix<R>(R(1.5), R(3), R(0.25), R(0), R(2)));
+  check_suite_curve("200-segment spline", long_spline<double>(), long_spline<R>());
+}
+
+TEST(arclength, straight_line_and_zero_segment_closed_forms) {
+  // Line: |P(1) - P(0)| = 2 exactly (x goes from 0 to 2 monotonically along a unit direction).
+  EXPECT_TRUE(cbt::within_ulps(al::adaptive_length(straight_line<double>()).value, R(2), 8));
+  // The zero-length segment contributes exactly 0 to every method.
+  const auto z = with_zero_segment<double>();
+  const auto middle = al::adaptive_length(z, 1.0, 1.5);
+  EXPECT_EQ(middle.value, 0.0);
+  EXPECT_TRUE(middle.converged());
+  EXPECT_EQ(al::gauss_length(z, 1.0, 1.5, al::gauss_legendre<double>(5)).value, 0.0);
+}
+
+TEST(arclength, partial_lengths_are_signed_and_additive) {
+  const auto c = long_spline<double>();
+  const auto ab = al::adaptive_length(c, 3.25, 120.5);
+  const auto ba = al::adaptive_length(c, 120.5, 3.25);
+  EXPECT_EQ(ab.value, -ba.value);
+  const auto a0 = al::adaptive_length(c, 0.0, 3.25), b0 = al::adaptive_length(c, 0.0, 120.5);
+  EXPECT_NEAR(b0.value - a0.value, ab.value, ab.error_estimate + a0.error_estimate + b0.error_estimate);
+  EXPECT_THROW((void)al::adaptive_length(c, -1.0, 2.0), std::domain_error);
+}
+
+TEST(arclength, fixed_gauss_legendre_converges_geometrically_on_a_smooth_segment) {
+  const auto c = smooth_cubic<double>();
+  const R length = reference_length(smooth_cubic<R>());
+  R previous(1);
+  for (int n : {2, 4, 8, 12}) {  // each step reduces the error by a large factor until rounding
+    const R e = abs(R(al::gauss_length(c, n).value) - length);
+    EXPECT_LT(e, previous / 10) << "n=" << n;
+    previous = e;
+  }
+  EXPECT_TRUE(cbt::within_ulps(al::gauss_length(c, 16).value, length, fixed16_eps));
+}
+
+TEST(arclength, observed_orders) {
+  const auto c = smooth_cubic<double>();
+  const R length = reference_length(smooth_cubic<R>());
+  auto order = [](const R& coarse, const R& fine) { return static_cast<double>(log2(coarse / fine)); };
+  {  // forward differencing: chord sum error c h^2
+    const R e1 = length - R(al::forward_difference_table<double>(c, 64).length().value);
+    const R e2 = length - R(al::forward_difference_table<double>(c, 128).length().value);
+    EXPECT_GT(e1, R(0));  // chord sums never exceed the arc length
+    EXPECT_NEAR(order(e1, e2), 2.0, order_slack);
+  }
+  {  // Richardson of N and N/2 cancels h^2: measured 4
+    const R e1 = abs(length - R(al::forward_difference_table<double>(c, 32).richardson_length().value));
+    const R e2 = abs(length - R(al::forward_difference_table<double>(c, 64).richardson_length().value));
+    EXPECT_NEAR(order(e1, e2), 4.0, order_slack);
+  }
+  for (int n : {1, 2, 3, 4}) {  // composite Gauss-Legendre with n points per panel: 2n (in real50: no rounding floor)
+    const auto& rule = al::gauss_legendre<R>(n);
+    const auto c50 = smooth_cubic<R>();
+    const R e1 = abs(length - al::composite_gauss_length(c50, 32, rule).value);
+    const R e2 = abs(length - al::composite_gauss_length(c50, 64, rule).value);
+    EXPECT_NEAR(order(e1, e2), 2.0 * n, order_slack) << "n=" << n;
+  }
+  {  // the table's s(u) and u(s): O(h^2) too (linear interpolation and chords)
+    const ref::reference_arc_length<poly2<R>> r(smooth_cubic<R>());
+    R e[2];
+    for (int k = 0; k < 2; ++k) {
+      const al::forward_difference_table<double> t(c, 64u << k);
+      e[k] = R(0);
+      for (int j = 1; j < 40; ++j) {
+        const double u = (j + 0.37) / 41.0;
+        e[k] = std::max(e[k], R(abs(R(t.s(u)) - r.s(R(u)))));
+      }
+    }
+    EXPECT_NEAR(order(e[0], e[1]), 2.0, order_slack);
+  }
+}
+
+TYPED_TEST(arclength_test, every_real_meets_its_precision_on_the_smooth_cubic) {
+  using Real = TypeParam;
+  const R length = reference_length(smooth_cubic<R>());
+  const auto c = smooth_cubic<Real>();
+  const al::quadrature_result<Real> r = al::adaptive_length(c);
+  EXPECT_TRUE(r.converged());
+  EXPECT_LE(abs(R(r.value) - length), R(r.error_estimate));
+  EXPECT_TRUE(cbt::within_ulps(r.value, length, adaptive_eps));
+  const al::quadrature_result<Real> h = al::gauss_length(c, 10, al::fixed_estimate::nested);
+  EXPECT_LE(abs(R(h.value) - length), R(h.error_estimate));
+  const al::forward_difference_table<Real> t(c, 256);
+  EXPECT_LE(abs(R(t.length().value) - length), R(t.length().error_estimate));
+  EXPECT_LE(abs(R(t.richardson_length().value) - length), R(t.richardson_length().error_estimate));
+}
+
+TEST(arclength, parent_false_positive_and_its_guards) {
+  // S-curve (u, u^3 - u) on [-1, 1]: P(-1), P(0), P(1) are collinear and evenly spaced on the x axis.
+  const poly2<double> s_curve(-1.0, 1.0, {pt2<double>(-1, 0), pt2<double>(1, 2), pt2<double>(0, -3), pt2<double>(0, 1)});
+  // (local t = u + 1: u^3 - u = t^3 - 3t^2 + 2t)
+  ASSERT_EQ(s_curve(0.0), pt2<double>(0, 0));
+  const poly2<R> s50(R(-1), R(1), {pt2<R>(-1, 0), pt2<R>(1, 2), pt2<R>(0, -3), pt2<R>(0, 1)});
+  const R length = reference_length(s50);
+  al::subdivision_options<double> naive;
+  naive.tolerance = 1e-6;
+  naive.min_depth = 0;
+  naive.look_ahead = false;
+  const auto fooled = al::subdivision_length(s_curve, naive);
+  EXPECT_EQ(fooled.value, 2.0);          // the chord of the whole interval: the test passed wrongly
+  EXPECT_EQ(fooled.evaluations, 3u);     // ends and middle only
+  EXPECT_GT(length - R(fooled.value), R(0.5));  // true length ~2.62
+  al::subdivision_options<double> guarded = naive;
+  guarded.min_depth = 2;  // Parent's remedy: force a few levels
+  EXPECT_LE(abs(R(al::subdivision_length(s_curve, guarded).value) - length), R(1e-6));
+  guarded.min_depth = 0;
+  guarded.look_ahead = true;  // one level of look-ahead catches the coincidence too
+  const auto looked = al::subdivision_length(s_curve, guarded);
+  EXPECT_LE(abs(R(looked.value) - length), R(1e-6));
+  EXPECT_LE(abs(R(looked.value) - length), R(looked.error_estimate));
+}
+
+TEST(arclength, bad_input_is_rejected_with_clear_messages) {
+  const auto c = smooth_cubic<double>();
+  al::subdivision_options<double> so;
+  so.tolerance = 0;
+  try {
+    (void)al::subdivision_length(c, so);
+    FAIL();
+  } catch (const cb::invalid_input& e) {
+    EXPECT_STREQ(e.what(), "tolerance = 0: must be > 0");
+  }
+  al::adaptive_options<double> ao;
+  ao.relative_tolerance = std::nan("");
+  try {
+    (void)al::adaptive_length(c, ao);
+    FAIL();
+  } catch (const cb::invalid_input& e) {
+    EXPECT_STREQ(e.what(), "relative_tolerance = nan: must be finite");
+  }
+  try {
+    (void)al::forward_difference_table<double>(c, 0);
+    FAIL();
+  } catch (const cb::invalid_input& e) {
+    EXPECT_STREQ(e.what(), "steps_per_segment = 0: must be >= 1");
+  }
+  const al::forward_difference_table<double> t(c, 8);
+  EXPECT_THROW((void)t.u(-1.0), std::domain_error);
+  EXPECT_THROW((void)t.u(std::nan("")), std::domain_error);
+  EXPECT_THROW((void)t.s(1.5), std::domain_error);
+  EXPECT_THROW((void)al::composite_gauss_length(c, 0, al::gauss_legendre<double>(3)), cb::invalid_input);
+}
