@@ -153,6 +153,14 @@ TYPED_TEST(bspline_typed, single_span_clamped_is_bernstein) {
     // Clamped ends: exactly the first and last control points (the right end uses the left limit).
     EXPECT_EQ(c(Real(0)), p.front());
     EXPECT_EQ(c(Real(1)), p.back());
+    // The recursive seed formula at both ends: at u = 0 only N_{0,m} = 1 (0/0 = 0 terms drop out of
+    // the repeated knots); at the right end the half-open rule alone would give 0 everywhere, the
+    // last-span rule gives N_{n-1,m}(1) = 1.
+    EXPECT_EQ(c.basis(0, m, Real(0)), Real(1));
+    EXPECT_EQ(c.basis(n - 1, m, Real(1)), Real(1));
+    if (m > 1) {
+      EXPECT_EQ(c.basis(0, m, Real(1)), Real(0));
+    }
   }
 }
 

@@ -406,6 +406,31 @@ TEST(property_audit, machinery_known_answers) {
   }
 }
 
+// The audit is templated on Real like the rest of the library: the same verdicts in float and
+// long double (tolerances scale with eps(Real), see audit_options::defaults).
+template <class Real>
+void audit_in(const char* type_name) {
+  using P = cb::point<Real, 2>;
+  cb::point_list<Real, 2> d;
+  for (const P2& q : data) d.push_back(cb::point_cast<Real>(q));
+  const auto b = cb::audit_properties<Real, 2>(
+      [](std::span<const P> p) {
+        return cb::bspline<Real, 2>(4, cb::bspline_clamped_knots<Real>(p.size(), 4, Real(0), Real(1)),
+                                    cb::point_list<Real, 2>(p.begin(), p.end()));
+      },
+      d);
+  SCOPED_TRACE(type_name);
+  expect_row(b, "ends only", true, 2, false, true, "yes", "yes");
+  const auto c = cb::audit_properties<Real, 2>(
+      [](std::span<const P> p) { return cb::cardinal_spline<Real, 2>(cb::point_list<Real, 2>(p.begin(), p.end())); }, d);
+  expect_row(c, "all", true, 1, false, true, "no", "no");
+}
+
+TEST(property_audit, same_verdicts_in_float_and_long_double) {
+  audit_in<float>("float");
+  audit_in<long double>("long double");
+}
+
 // Runs last (gtest runs tests in definition order within a file): prints the measured table.
 TEST(property_audit, zz_print_measured_table) {
   std::cout << "\n<!-- measured by tests/test_property_audit.cpp -->\n"
