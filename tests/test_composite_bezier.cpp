@@ -117,6 +117,24 @@ TYPED_TEST(composite_test, values_and_derivatives_match_50_digit_closed_form) {
     }
 }
 
+TYPED_TEST(composite_test, batch_evaluation_equals_single_evaluation) {
+  using Real = TypeParam;
+  std::mt19937 gen(3);
+  std::vector<cb::point_list<Real, 2>> segs;
+  for (int L : {2, 4, 1, 3}) segs.push_back(random_points<Real, 2>(L + 1, gen));
+  const auto knots = knots_of<Real>({0, 0.5, 0.75, 2, 3});
+  const cb::composite_bezier<Real, 2> c(segs, knots);
+  std::vector<Real> sorted_us, shuffled_us;
+  for (int s = 0; s <= 48; ++s) sorted_us.push_back(Real(3) * Real(s) / Real(48));  // hits every knot
+  for (int s = 0; s <= 48; ++s) shuffled_us.push_back(sorted_us[static_cast<std::size_t>((s * 17) % 49)]);
+  std::vector<cb::point<Real, 2>> out(sorted_us.size());
+  for (const auto* us : {&sorted_us, &shuffled_us})
+    for (int order : {0, 1, 3}) {
+      c.evaluate(std::span<const Real>(*us), std::span<cb::point<Real, 2>>(out), order);
+      for (std::size_t i = 0; i < us->size(); ++i) ASSERT_EQ(out[i], c.derivative((*us)[i], order)) << i;
+    }
+}
+
 TYPED_TEST(composite_test, knot_convention_right_segment_except_last) {
   using Real = TypeParam;
   // A broken chain: segment ends do not meet, so the value at a knot shows which side was taken.
@@ -277,6 +295,12 @@ TEST(composite_bad_input, messages_name_argument_index_and_value) {
   EXPECT_THAT(message_of([&] { (void)c.continuity_at_joins(nan); }), HasSubstr("tol = nan: must be finite"));
   EXPECT_THAT(message_of([&] { (void)c.segment(2); }), HasSubstr("i = 2: segment index must be < 2"));
   EXPECT_THAT(message_of([&] { (void)c.derivative(0.5, -1); }), HasSubstr("order = -1: derivative order must be >= 0"));
+  std::vector<double> us{0.0, 3.0};
+  std::vector<P> out(1);
+  EXPECT_THAT(message_of([&] { c.evaluate(std::span<const double>(us), std::span<P>(out)); }),
+              HasSubstr("out: 1 given, must match us: 2"));
+  out.resize(2);
+  EXPECT_THROW(c.evaluate(std::span<const double>(us), std::span<P>(out)), std::domain_error);
   EXPECT_THROW((void)c(2.5), std::domain_error);
   EXPECT_THROW((void)c.segment_index(-0.5), std::domain_error);
   EXPECT_THROW((void)c.derivative(-0.5, 1), std::domain_error);

@@ -58,7 +58,7 @@ namespace detail {
 
 /// Validates a curve domain: finite ends with lo < hi.
 template <class Real>
-void check_domain(std::string_view name, const interval<Real>& d) {
+void check_bezier_domain(std::string_view name, const interval<Real>& d) {
   validate::finite(std::string(name) + ".lo", d.lo);
   validate::finite(std::string(name) + ".hi", d.hi);
   if (!(d.lo < d.hi))
@@ -84,7 +84,7 @@ class bezier {
                      std::to_string(bezier_max_degree + 1) + " allowed (degree <= " +
                      std::to_string(bezier_max_degree) + ")");
     validate::finite_points<Real, Dim>("control_points", control_points);
-    detail::check_domain("domain", domain);
+    detail::check_bezier_domain("domain", domain);
     degree_ = static_cast<int>(control_points.size()) - 1;
     build(control_points);
   }
@@ -134,15 +134,16 @@ class bezier {
     if (order > degree_) return zero_point<Real, Dim>();
     const Real t = local(u);
     switch (algorithm) {
-      case bezier_algorithm::bernstein_sum: return detail::bernstein_sum(level(order), binomials(order), t);
+      case bezier_algorithm::bernstein_sum:
+        return detail::bezier_kernels::bernstein_sum(level(order), binomials(order), t);
       case bezier_algorithm::horner: {
-        point_type v = detail::horner(std::span<const point_type>(power_), t, order);
+        point_type v = detail::bezier_kernels::horner(std::span<const point_type>(power_), t, order);
         if (order > 0) v /= pow_h(order);
         return v;
       }
       case bezier_algorithm::de_casteljau: break;
     }
-    return detail::de_casteljau(level(order), t);
+    return detail::bezier_kernels::de_casteljau(level(order), t);
   }
 
   /// The derivative curve dP/du as a Bezier curve of degree L - 1 on the same domain. The hodograph
@@ -235,7 +236,7 @@ class bezier {
     }
     for (int k = 0; k <= n; ++k)
       for (int i = 0; i <= n - k; ++i) binomials_.push_back(binomial<Real>(n - k, i));
-    power_ = detail::to_power_basis<point_type, Real>(cps);
+    power_ = detail::bezier_kernels::to_power_basis<point_type, Real>(cps);
   }
 
   interval<Real> domain_;

@@ -5,7 +5,9 @@
 // Source: seed 000 and seed 002 (piecewise curves, continuity at joins); Farin, "Curves and Surfaces
 // for CAGD", ch. 7 (piecewise Bezier curves, C1 and G1 conditions).
 //
-// Evaluation: binary search for the segment (O(log n)), then the segment's de Casteljau (O(L^2)).
+// Evaluation: binary search for the segment (O(log n)), then the segment's de Casteljau (O(L^2));
+// the batch `evaluate(us, out, order)` keeps the previous segment while u stays in it (O(1) lookups
+// for sorted parameters).
 // Derivatives of any order by the chain rule: the local t-derivative divided by h_i^k (done by the
 // segment, whose hodograph levels are precomputed); order > L_i gives zero. Accuracy as bezier.hpp:
 // ~L ulps of the segment's control-point scale.
@@ -104,6 +106,23 @@ class composite_bezier {
   [[nodiscard]] point_type derivative(const Real& u, int order) const {
     validate::derivative_order(order);
     return segments_[segment_index(u)].derivative(u, order);
+  }
+
+  /// Batch evaluation: out[i] = the order-th derivative at us[i]. The segment of the previous
+  /// parameter is tried first and the binary search runs only when u leaves it, so sorted
+  /// parameters cost O(1) lookups each (any order is correct). Sizes must match (invalid_input);
+  /// every parameter is checked (std::domain_error). No allocation.
+  void evaluate(std::span<const Real> us, std::span<point_type> out, int order = 0) const {
+    validate::same_count("out", out.size(), "us", us.size());
+    validate::derivative_order(order);
+    std::size_t seg = 0;
+    const std::size_t last = segments_.size() - 1;
+    for (std::size_t i = 0; i < us.size(); ++i) {
+      const Real& u = us[i];
+      const bool inside = knots_[seg] <= u && (u < knots_[seg + 1] || (seg == last && u <= knots_[seg + 1]));
+      if (!inside) seg = segment_index(u);
+      out[i] = segments_[seg].derivative(u, order);
+    }
   }
 
   /// Per interior knot u_i (i = 1..n-1): the one-sided values and first derivatives of segments i-1

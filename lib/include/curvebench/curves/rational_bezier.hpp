@@ -55,7 +55,7 @@ namespace detail {
 /// C(m, j) in Real for any m >= 0: exact integer arithmetic while it fits (m <= 62), otherwise the
 /// multiplicative formula in Real (rounded; only reached for derivative orders above 62).
 template <class Real>
-[[nodiscard]] Real binomial_any(int m, int j) {
+[[nodiscard]] Real bezier_binomial(int m, int j) {
   if (m <= 62) return binomial<Real>(m, j);
   if (j < 0 || j > m) return Real(0);
   Real c(1);
@@ -111,7 +111,7 @@ class rational_bezier {
     for (int m = 0; m <= order; ++m) {
       point_type num = m <= L ? numerator_.derivative(u, m) : zero_point<Real, Dim>();
       for (int j = 1; j <= std::min(m, L); ++j) {
-        const Real c = detail::binomial_any<Real>(m, j) * wd[static_cast<std::size_t>(j)];
+        const Real c = detail::bezier_binomial<Real>(m, j) * wd[static_cast<std::size_t>(j)];
         num -= c * ring[static_cast<std::size_t>(m - j) % ring_size];
       }
       ring[static_cast<std::size_t>(m) % ring_size] = num / wd[0];
@@ -139,7 +139,7 @@ class rational_bezier {
     validate::same_count("weights", w.size(), "control_points", p.size());
     validate::finite_points<Real, Dim>("control_points", p);
     for (std::size_t i = 0; i < w.size(); ++i) validate::positive("weights", w[i], i);
-    detail::check_domain("domain", domain);
+    detail::check_bezier_domain("domain", domain);
     return std::vector<point_type>(p.begin(), p.end());
   }
   static std::vector<point_type> homogeneous(const std::vector<point_type>& p, const std::vector<Real>& w) {

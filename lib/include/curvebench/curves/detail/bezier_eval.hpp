@@ -21,7 +21,7 @@ namespace curvebench {
 /// use (its power-basis form has lost every digit long before, see tests/test_bezier.cpp).
 inline constexpr int bezier_max_degree = 60;
 
-namespace detail {
+namespace detail::bezier_kernels {
 
 /// de Casteljau's algorithm: n levels of convex combinations (1 - t) b_i + t b_{i+1}.
 /// O(n^2) operations, backward stable for t in [0, 1]. `p` holds n + 1 values, n <= bezier_max_degree.
@@ -92,5 +92,5 @@ template <class Vec, class Real>
   return a;
 }
 
-}  // namespace detail
+}  // namespace detail::bezier_kernels
 }  // namespace curvebench
