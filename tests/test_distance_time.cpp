@@ -290,8 +290,11 @@ TYPED_TEST(distance_time_test, sine_plateau_max_speed) {
   // the no-plateau, no-ease limits: t1 = 0, t2 = 1 is the linear ease
   const cbm::sine_plateau_ease<Real> lin(Real(0), Real(1));
   EXPECT_TRUE(cbt::within_ulps(lin(Real(3) / Real(8)), real50(3) / 8, value_ulps));
+  EXPECT_EQ(lin.breakpoints().size(), 2u);  // empty phases add no joints
+  EXPECT_EQ(f.breakpoints().size(), 4u);
   // t1 = t2 = 1/2 is the sine ease rescaled: max speed pi / 2 at 1/2, same values
   const cbm::sine_plateau_ease<Real> sine_like(Real(1) / Real(2), Real(1) / Real(2));
+  EXPECT_EQ(sine_like.breakpoints().size(), 3u);
   const cbm::sine_ease<real50> sine;
   for (int k = 0; k <= 16; ++k) {
     const Real t = Real(k) / Real(16);

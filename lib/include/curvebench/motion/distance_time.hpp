@@ -114,6 +114,15 @@ std::array<Real, 2> phases_from_frames(long long start, long long end_accel, lon
   return {Real(end_accel - start) / span, Real(start_decel - start) / span};
 }
 
+/// The joints 0, t1, t2, 1 of a three-phase ease without repeats; returns their number.
+template <class Real>
+std::size_t phase_breaks(const Real& t1, const Real& t2, std::array<Real, 4>& out) {
+  std::size_t n = 0;
+  for (const Real& b : {Real(0), t1, t2, Real(1)})
+    if (n == 0 || b > out[n - 1]) out[n++] = b;
+  return n;
+}
+
 /// Checks one key list for the key-based eases: >= 2 keys, times strictly increasing from exactly
 /// 0 to exactly 1.
 template <class Real>
@@ -196,7 +205,7 @@ class sine_plateau_ease : public detail::distance_time_base<sine_plateau_ease<Re
     detail::check_phases(t1, t2);
     const Real pi = boost::math::constants::pi<Real>();
     v_ = Real(1) / (Real(2) * t1_ / pi + (t2_ - t1_) + Real(2) * (Real(1) - t2_) / pi);
-    breaks_ = {Real(0), t1_, t2_, Real(1)};
+    count_ = detail::phase_breaks(t1_, t2_, breaks_);
   }
   /// The phases from frame numbers: accelerate from `start` to `end_accel`, decelerate from
   /// `start_decel` to `stop` (start < stop, start <= end_accel <= start_decel <= stop).
@@ -210,7 +219,8 @@ class sine_plateau_ease : public detail::distance_time_base<sine_plateau_ease<Re
   [[nodiscard]] Real max_velocity() const { return v_; }
   [[nodiscard]] Real t1() const { return t1_; }
   [[nodiscard]] Real t2() const { return t2_; }
-  [[nodiscard]] std::span<const Real> breakpoints() const { return breaks_; }
+  /// 0, t1, t2, 1 without repeats (empty phases drop out).
+  [[nodiscard]] std::span<const Real> breakpoints() const { return {breaks_.data(), count_}; }
   [[nodiscard]] static int continuity() { return 2; }
   [[nodiscard]] int rest_continuity() const { return (t1_ > Real(0) && t2_ < Real(1)) ? 1 : 0; }
 
@@ -254,6 +264,7 @@ class sine_plateau_ease : public detail::distance_time_base<sine_plateau_ease<Re
 
   Real t1_, t2_, v_;
   std::array<Real, 4> breaks_;
+  std::size_t count_ = 0;
 };
 
 /// Constant acceleration on [0, t1], constant speed v on [t1, t2], constant deceleration on [t2, 1]
@@ -274,7 +285,7 @@ class parabolic_ease : public detail::distance_time_base<parabolic_ease<Real>, R
   parabolic_ease(const Real& t1, const Real& t2) : t1_(t1), t2_(t2) {
     detail::check_phases(t1, t2);
     v_ = Real(2) / (Real(1) + t2_ - t1_);
-    breaks_ = {Real(0), t1_, t2_, Real(1)};
+    count_ = detail::phase_breaks(t1_, t2_, breaks_);
   }
   /// The phases from frame numbers (see sine_plateau_ease::from_frames).
   [[nodiscard]] static parabolic_ease from_frames(long long start, long long end_accel, long long start_decel,
@@ -287,7 +298,8 @@ class parabolic_ease : public detail::distance_time_base<parabolic_ease<Real>, R
   [[nodiscard]] Real max_velocity() const { return v_; }
   [[nodiscard]] Real t1() const { return t1_; }
   [[nodiscard]] Real t2() const { return t2_; }
-  [[nodiscard]] std::span<const Real> breakpoints() const { return breaks_; }
+  /// 0, t1, t2, 1 without repeats (empty phases drop out).
+  [[nodiscard]] std::span<const Real> breakpoints() const { return {breaks_.data(), count_}; }
   [[nodiscard]] static int continuity() { return 1; }
   [[nodiscard]] int rest_continuity() const { return (t1_ > Real(0) && t2_ < Real(1)) ? 1 : 0; }
 
@@ -321,6 +333,7 @@ class parabolic_ease : public detail::distance_time_base<parabolic_ease<Real>, R
 
   Real t1_, t2_, v_;
   std::array<Real, 4> breaks_;
+  std::size_t count_ = 0;
 };
 
 /// Cubic smoothstep S = 3 t^2 - 2 t^3 = t^2 (3 - 2 t); S' = 6 t (1 - t); S'' = 6 (1 - 2 t).
