@@ -38,6 +38,7 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include <cmath>
 #include <cstddef>
 #include <initializer_list>
 #include <limits>
