@@ -204,6 +204,30 @@ TYPED_TEST(polyline_test, affine_invariance_reversal_linear_precision_and_hull) 
   }
 }
 
+TYPED_TEST(polyline_test, chord_length_parameters_give_unit_speed) {
+  using Real = TypeParam;
+  const auto v = vertices<Real>();
+  const std::vector<Real> u = cb::chord_length_parameters<Real, 2>(v);
+  ASSERT_EQ(u.size(), v.size());
+  EXPECT_EQ(u.front(), Real(0));
+  // u_i is the length of the control polygon up to vertex i (50-digit closed form); each chord is a
+  // rounded norm (~2 ulps) and the running sum adds one rounding per step: 2 i + 2 ulps of the total.
+  cb::real50 length(0);
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    length += (cb::point_cast<cb::real50>(v[i]) - cb::point_cast<cb::real50>(v[i - 1])).norm();
+    EXPECT_TRUE(cbt::within_ulps(u[i], length, 2.0 * static_cast<double>(i) + 2)) << "u_" << i;
+  }
+  // With these parameters the polyline is parameterized by arc length: |P'(u)| = 1 everywhere
+  // (each chord and its parameter step carry a few roundings: 4 * slope_ulps).
+  const cb::polyline<Real, 2> c(v, u);
+  for (int k = 0; k <= 64; ++k) {
+    const Real s = u.back() * Real(k) / Real(64);
+    if (s > u.back()) continue;
+    EXPECT_TRUE(cbt::within_ulps(Real(c.derivative(s, 1).norm()), cb::real50(1), 4 * slope_ulps))
+        << "u = " << cbt::exact_text(s);
+  }
+}
+
 TEST(polyline, three_dimensions_and_many_segments_use_binary_search) {
   // 1000 vertices on a helix-like staircase; each parameter's segment is found exactly.
   cb::point_list<double, 3> v;
@@ -246,6 +270,11 @@ TEST(polyline, bad_input_is_rejected_with_a_clear_message) {
   const std::vector<double> nan_param{0, std::numeric_limits<double>::quiet_NaN(), 2};
   EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(three, nan_param); }),
             "parameters[1] = nan: must be finite");
+  const cb::point_list<double, 2> repeated_vertex{p2(0, 0), p2(1, 1), p2(1, 1)};
+  EXPECT_EQ(message_of([&] { (void)cb::chord_length_parameters<double, 2>(repeated_vertex); }),
+            "vertices[2] equals vertices[1]: zero chord, chord-length parameters must increase");
+  EXPECT_EQ(message_of([&] { (void)cb::chord_length_parameters<double, 2>(one); }),
+            "vertices: 1 given, at least 2 required (a polyline has at least one segment)");
   const cb::polyline<double, 2> c(three);
   EXPECT_THROW((void)c(2.5), std::domain_error);
   EXPECT_THAT(message_of([&] { (void)c(-0.5); }), HasSubstr("u = -0.5 is outside the domain [0, 2]"));

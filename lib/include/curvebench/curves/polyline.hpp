@@ -4,7 +4,8 @@
 // C1), seed 001 ("polyline: connect each pair of consecutive vertices with a line segment").
 //
 // Parameters: given per vertex (finite, strictly increasing), or by default uniform u_i = i, so the
-// domain is [0, n - 1] (use explicit parameters for chord length or any other spacing).
+// domain is [0, n - 1]. `chord_length_parameters(vertices)` gives u_0 = 0, u_i = u_{i-1} + |P_i - P_{i-1}|,
+// with which the polyline has unit speed and u is arc length.
 // On segment i, u in [u_i, u_{i+1}], with h = u_{i+1} - u_i:
 //     P(u) = ((u_{i+1} - u) / h) P_i + ((u - u_i) / h) P_{i+1},
 // a form that returns the vertices exactly at both ends of the segment and is within a few ulps of
@@ -30,6 +31,24 @@
 #include <vector>
 
 namespace curvebench {
+
+/// Chord-length parameters: u_0 = 0, u_i = u_{i-1} + |P_i - P_{i-1}| (Euclidean norm). Throws
+/// invalid_input for fewer than 2 vertices, non-finite coordinates, or two equal consecutive
+/// vertices (a zero chord: the parameters would not increase).
+template <class Real, int Dim>
+[[nodiscard]] std::vector<Real> chord_length_parameters(std::span<const point<Real, Dim>> vertices) {
+  validate::count_at_least("vertices", vertices.size(), 2, "a polyline has at least one segment");
+  validate::finite_points<Real, Dim>("vertices", vertices);
+  std::vector<Real> u(vertices.size(), Real(0));
+  for (std::size_t i = 1; i < vertices.size(); ++i) {
+    const Real chord = point<Real, Dim>(vertices[i] - vertices[i - 1]).norm();
+    if (!(chord > Real(0)))
+      validate::fail(validate::indexed("vertices", i) + " equals " + validate::indexed("vertices", i - 1) +
+                     ": zero chord, chord-length parameters must increase");
+    u[i] = u[i - 1] + chord;
+  }
+  return u;
+}
 
 template <class Real, int Dim>
 class polyline {
