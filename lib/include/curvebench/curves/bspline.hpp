@@ -297,9 +297,10 @@ class bspline {
   detail::bspline_core<Real, point_type> core_;
 };
 
-/// A closed (periodic) B-spline with the control loop P_0 .. P_{s-1} (s >= 2 points), on breakpoints b_0 < ... < b_s (s + 1 values, period b_s - b_0):
-/// control points P_0..P_{s-1}, P_0..P_{m-2} on bspline_periodic_knots(breaks, m). The curve is
-/// C^{m-2} everywhere including the seam u = b_0 ~ b_s.
+/// A closed (periodic) B-spline with the control loop P_0 .. P_{s-1} (s >= 2 points), on
+/// breakpoints b_0 < ... < b_s (s + 1 values, period b_s - b_0): control points P_0..P_{s-1},
+/// P_0..P_{m-2} on bspline_periodic_knots(breaks, m). The curve is C^{m-2} everywhere, including
+/// the seam u = b_0 ~ b_s.
 template <class Real, int Dim>
 [[nodiscard]] bspline<Real, Dim> periodic_bspline(int order, std::span<const point<Real, Dim>> loop,
                                                   std::span<const Real> breaks) {
