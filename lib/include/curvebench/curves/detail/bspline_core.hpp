@@ -34,7 +34,9 @@ enum class bspline_evaluation {
 namespace detail {
 
 /// a / b with the B-spline convention 0/0 = 0 (more generally x/0 = 0: a zero-length knot interval
-/// carries a zero basis function, so the term it divides vanishes).
+/// carries a zero basis function, so the term it divides vanishes). Any finite value would do, since
+/// the ratio always multiplies that zero function; what the guard prevents is 0/0 = NaN, which
+/// would poison the sum (checked: without it tests/test_bspline.cpp fails on repeated knots).
 template <class Real>
 [[nodiscard]] Real bspline_ratio(const Real& a, const Real& b) {
   return b == Real(0) ? Real(0) : Real(a / b);
