@@ -7,7 +7,10 @@
 
 #include "curvebench/arclength/newton_inversion.hpp"
 #include "curvebench/arclength/parameterization.hpp"
+#include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/piecewise_cubic.hpp"
 #include "curvebench/reference/analytic_curves.hpp"
+#include "curvebench/reference/arc_length.hpp"
 
 #include <gmock/gmock.h>
 
@@ -33,6 +36,13 @@ namespace {
 //   |u''| ds^2 / 8 * |P'| (per curve below) rather than in eps.
 constexpr double newton_tolerance_eps = 400;
 constexpr double hermite_tolerance_eps = 64;
+// - suite round trips against the 50-digit reference: Newton within its tolerance (400 eps L);
+//   the auto-sized Hermite table within max(measured table error, its target) + the Newton
+//   tolerance of its nodes (the same bound the motion layer uses); a linear table of M intervals
+//   within ds^2 max|u''| max|P'| / 8, which is below 1e-5 L for M = 4096 on the one-segment smooth
+//   curves; at cusps and corners u'' is unbounded and on the long spline ds spans many segments,
+//   so there only monotonicity is asserted.
+constexpr double linear_4096_rel = 1e-5;
 
 template <class Real>
 class inversion_test : public ::testing::Test {};
@@ -42,6 +52,114 @@ TYPED_TEST_SUITE(inversion_test, cbt::ieee_reals);
 template <class Real>
 ref::piecewise_polynomial<Real, 2> accelerating_line() {
   return {Real(0), Real(1), {cb::point<Real, 2>(0, 0), cb::point<Real, 2>(3, 4), cb::point<Real, 2>(3, 4)}};
+}
+
+using R = cb::real50;
+template <class Real>
+using pt2 = cb::point<Real, 2>;
+template <class Real>
+using poly2 = ref::piecewise_polynomial<Real, 2>;
+
+// Suite curves (dyadic data, the same in double and real50): see tests/test_arclength.cpp.
+template <class Real>
+poly2<Real> smooth_cubic() {
+  return {Real(0), Real(1), {pt2<Real>(0, 0), pt2<Real>(1, 2), pt2<Real>(3, Real(-1)), pt2<Real>(Real(-2), Real(0.5))}};
+}
+template <class Real>
+poly2<Real> cusp_cubic(double eps) {  // (x^2 + eps x, x^3), x = u - 3/4, on [0, 2]
+  const Real e(eps);
+  return {Real(0), Real(2),
+          {pt2<Real>(Real(0.5625) - Real(0.75) * e, Real(-0.421875)), pt2<Real>(e - Real(1.5), Real(1.6875)),
+           pt2<Real>(1, Real(-2.25)), pt2<Real>(0, 1)}};
+}
+template <class Real>
+poly2<Real> with_zero_segment() {  // the middle segment [1, 1.5] is a point: speed 0 on an interval
+  return {std::vector<Real>{Real(0), Real(1), Real(1.5), Real(2.5)},
+          {{pt2<Real>(0, 0), pt2<Real>(1, 1), pt2<Real>(Real(0.5), Real(-0.5))},
+           {pt2<Real>(Real(1.5), Real(0.5))},
+           {pt2<Real>(Real(1.5), Real(0.5)), pt2<Real>(1, 0), pt2<Real>(0, Real(0.25))}}};
+}
+template <class Real>
+cb::bezier<Real, 2> looping_bezier() {
+  const std::vector<pt2<Real>> cps{pt2<Real>(0, 0), pt2<Real>(3, 3), pt2<Real>(-1, 3), pt2<Real>(2, 0)};
+  return cb::bezier<Real, 2>(std::span<const pt2<Real>>(cps));
+}
+template <class Real>
+cb::piecewise_cubic<Real, 2> long_spline() {  // 100 Hermite segments, Catmull-Rom slopes
+  const std::size_t n = 100;
+  std::vector<Real> knots(n + 1);
+  std::vector<pt2<Real>> v(n + 1), slope(n + 1);
+  for (std::size_t i = 0; i <= n; ++i) {
+    knots[i] = Real(static_cast<long long>(i));
+    v[i] = pt2<Real>(Real(static_cast<long long>(i)) / Real(4), Real(static_cast<long long>((i * 37) % 16)) / Real(8));
+  }
+  for (std::size_t i = 0; i <= n; ++i) {
+    const std::size_t a = i == 0 ? 0 : i - 1, b = i == n ? n : i + 1;
+    slope[i] = (v[b] - v[a]) / Real(static_cast<long long>(b - a));
+  }
+  return cb::piecewise_cubic<Real, 2>::from_hermite(knots, v, slope, slope);
+}
+
+// Round trips of every method against the reference on one curve.
+template <class C, class C50>
+void check_round_trips(const char* name, const C& c, const C50& c50, bool cusp, bool smooth) {
+  SCOPED_TRACE(name);
+  const ref::reference_arc_length<C50> r(c50);
+  const double L = static_cast<double>(r.length());
+  const al::parameterization<C> newton(c, [] {
+    al::parameterization_options<double> o;
+    o.method = al::inversion_method::newton;
+    return o;
+  }());
+  const al::parameterization<C> hermite(c);
+  const al::parameterization<C> linear(c, [] {
+    al::parameterization_options<double> o;
+    o.method = al::inversion_method::linear_table;
+    o.table_intervals = 4096;
+    return o;
+  }());
+  EXPECT_TRUE(cbt::within_relative(newton.length(), r.length(), 200 * cb::epsilon<double>()));
+  EXPECT_EQ(linear.table_status(), al::result_status::not_guaranteed);  // size given: not measured
+  const double newton_bound = newton.options().newton.relative_tolerance * L;
+  const double hermite_bound = std::max(hermite.table_error(), hermite.options().table_tolerance * L) + newton_bound;
+  double prev_h = -1, prev_l = -1;
+  for (int k = 0; k <= 64; ++k) {
+    const double s = k == 64 ? newton.length() : L * (k + 0.3183) / 64.5;
+    const al::inversion_result<double> rn = newton.invert(s, al::inversion_method::newton);
+    // At an exact cusp s(u) - s* ~ (u - u_c)^2: the bracket may collapse in double before the bound
+    // is met; the method then says rounding_limited (honest), and its estimate still bounds the error.
+    if (cusp) {
+      EXPECT_TRUE(rn.converged() || rn.status == al::result_status::rounding_limited) << "k=" << k;
+      EXPECT_LE(abs(r.s(R(rn.u)) - R(s)), R(rn.s_error_estimate) + R(newton_bound)) << "newton k=" << k;
+    } else {
+      EXPECT_TRUE(rn.converged()) << "k=" << k << " " << al::to_string(rn.status);
+      EXPECT_LE(abs(r.s(R(rn.u)) - R(s)), R(newton_bound)) << "newton k=" << k;
+    }
+    const double uh = hermite.u(s);
+    EXPECT_LE(abs(r.s(R(uh)) - R(s)), R(hermite_bound)) << "hermite k=" << k;
+    const double ul = linear.u(s);
+    if (smooth) {
+      EXPECT_LE(abs(r.s(R(ul)) - R(s)), R(linear_4096_rel * L)) << "linear k=" << k;
+    }
+    EXPECT_GE(uh, prev_h);  // monotone u(s)
+    EXPECT_GE(ul, prev_l);
+    prev_h = uh;
+    prev_l = ul;
+  }
+  // u(s(u)) = u where the speed is not small (elsewhere u is ill-conditioned in s)
+  const auto dom = c.domain();
+  for (int k = 1; k < 32; ++k) {
+    const double u = dom.lo + (dom.hi - dom.lo) * k / 32.0;
+    const double sp = al::speed(c, u);
+    if (sp < 1e-3 * L / (dom.hi - dom.lo)) continue;
+    const double back = newton.u(newton.s(u));
+    EXPECT_LE(std::abs(back - u), 4 * newton_bound / sp) << "u=" << u;
+  }
+  // Constant-speed samples are equally spaced in true arc length.
+  const std::vector<double> us = hermite.constant_speed_parameters(33);
+  for (std::size_t i = 0; i < us.size(); ++i)
+    EXPECT_LE(abs(r.s(R(us[i])) - R(hermite.length()) * R(static_cast<double>(i)) / 32), R(hermite_bound) + R(L) * R(1e-15))
+        << "sample " << i;
 }
 
 }  // namespace
@@ -112,5 +230,101 @@ TYPED_TEST(inversion_test, bad_input_is_rejected_with_clear_messages) {
     FAIL();
   } catch (const cb::invalid_input& e) {
     EXPECT_STREQ(e.what(), "relative_tolerance = 0: must be > 0");
+  }
+}
+
+TEST(inversion, suite_round_trips_against_the_reference) {
+  check_round_trips("smooth cubic", smooth_cubic<double>(), smooth_cubic<R>(), false, true);
+  check_round_trips("loop", looping_bezier<double>(), looping_bezier<R>(), false, true);
+  check_round_trips("near cusp", cusp_cubic<double>(1.0 / 1024), cusp_cubic<R>(1.0 / 1024), true, false);
+  check_round_trips("exact cusp", cusp_cubic<double>(0), cusp_cubic<R>(0), true, false);
+  check_round_trips("zero-length segment", with_zero_segment<double>(), with_zero_segment<R>(), false, false);
+  check_round_trips("100-segment spline", long_spline<double>(), long_spline<R>(), false, false);
+}
+
+TEST(inversion, speed_zero_on_an_interval_inverts_by_bisection) {
+  // The middle segment [1, 1.5] is a single point: s is constant there. Any u in it is a correct
+  // answer for that s; nearby targets must converge (the bisection path handles |P'| = 0).
+  const auto c = with_zero_segment<double>();
+  const al::segment_lengths<double> seg(c);
+  const double plateau = seg.cumulative()[1];
+  EXPECT_EQ(seg.cumulative()[2], plateau);
+  for (double ds : {-1e-9, 0.0, 1e-9}) {
+    const auto r = al::newton_invert(c, seg, plateau + ds);
+    EXPECT_TRUE(r.converged()) << ds;
+    if (ds < 0) {
+      EXPECT_LT(r.u, 1.0);
+    } else if (ds > 0) {
+      EXPECT_GT(r.u, 1.5);
+    } else {
+      EXPECT_TRUE(r.u >= 1.0 && r.u <= 1.5);
+    }
+  }
+  // A target inside a segment whose speed is zero at an interior point (exact cusp): bracket +
+  // bisection converge on both sides of the cusp.
+  const auto cusp = cusp_cubic<double>(0);
+  const al::segment_lengths<double> cs(cusp);
+  const double s_cusp = al::adaptive_length(cusp, 0.0, 0.75).value;
+  for (double ds : {-1e-12, 0.0, 1e-12}) {
+    const auto r = al::newton_invert(cusp, cs, s_cusp + ds);
+    EXPECT_TRUE(r.converged()) << ds;
+    EXPECT_NEAR(r.u, 0.75, 1e-5);  // s - s_cusp ~ |u - 3/4|^2: u is only determined to ~sqrt(tolerance)
+  }
+}
+
+TEST(inversion, table_methods_need_a_table_and_report_status) {
+  const auto c = smooth_cubic<double>();
+  al::parameterization_options<double> o;
+  o.method = al::inversion_method::newton;
+  const al::parameterization<poly2<double>> p(c, o);
+  EXPECT_EQ(p.table_intervals(), 0u);
+  EXPECT_THROW((void)p.u(0.5, al::inversion_method::hermite_table), std::logic_error);
+  const al::parameterization<poly2<double>> h(c);
+  // Grown by doubling: converged (measured error <= target) or stopped at the size cap, never unmeasured.
+  EXPECT_NE(h.table_status(), al::result_status::not_guaranteed);
+  EXPECT_TRUE(std::isfinite(h.table_error()));
+  if (h.table_status() == al::result_status::converged) {
+    EXPECT_LE(h.table_error(), h.options().table_tolerance * h.length());
+  }
+  const auto r = h.invert(1.0, al::inversion_method::hermite_table);
+  EXPECT_TRUE(r.converged());
+  EXPECT_GT(r.evaluations, 0u);
+  al::parameterization_options<double> capped;
+  capped.max_table_intervals = 32;
+  const al::parameterization<poly2<double>> small(c, capped);
+  EXPECT_EQ(small.table_status(), al::result_status::cap_hit);
+  EXPECT_LE(small.table_intervals(), 32u);
+  EXPECT_THROW((void)h.constant_speed_parameters(1), cb::invalid_input);
+}
+
+TEST(inversion, polish_improves_a_coarse_hermite_table) {
+  const auto c = smooth_cubic<double>();
+  const ref::reference_arc_length<poly2<R>> r(smooth_cubic<R>());
+  al::parameterization_options<double> o;
+  o.table_intervals = 16;
+  const al::parameterization<poly2<double>> coarse(c, o);
+  o.newton_polish = true;
+  const al::parameterization<poly2<double>> polished(c, o);
+  R e_coarse(0), e_polished(0);
+  for (int k = 1; k < 40; ++k) {
+    const double s = coarse.length() * (k + 0.5) / 40.5;
+    e_coarse = std::max(e_coarse, R(abs(r.s(R(coarse.u(s))) - R(s))));
+    e_polished = std::max(e_polished, R(abs(r.s(R(polished.u(s))) - R(s))));
+  }
+  EXPECT_LT(e_polished, e_coarse / 1000);  // one Newton step roughly squares the relative error
+}
+
+TEST(inversion, real50_newton_reaches_50_digits) {
+  const auto c = smooth_cubic<R>();
+  const al::segment_lengths<R> seg(c);
+  const ref::reference_arc_length<poly2<R>> r(c);
+  EXPECT_LT(abs(seg.length() - r.length()), R("1e-45"));
+  al::newton_options<R> opt;
+  opt.relative_tolerance = R("1e-40");
+  for (int k = 1; k < 4; ++k) {
+    const R s = r.length() * k / 4;
+    const auto inv = al::newton_invert(c, seg, s, opt);
+    EXPECT_TRUE(inv.converged()) << al::to_string(inv.status);
+    EXPECT_LT(abs(r.s(inv.u) - s), R("1e-40") * r.length());
   }
 }

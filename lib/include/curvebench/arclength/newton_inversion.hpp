@@ -3,7 +3,7 @@
 // Algorithm: the segment lengths are computed once (adaptive Gauss-Kronrod per segment, with their
 // error estimates: `segment_lengths`). A query s* finds its segment by binary search on the
 // cumulative lengths; that segment is the first bracket [lo, hi] with known s(lo) <= s* <= s(hi).
-// From the linear guess, each iteration computes s(u) as s(known) + integral from the NEAREST known
+// From the first guess, each iteration computes s(u) as s(known) + integral from the NEAREST known
 // point (a bracket end: the segment ends at first, then the previous iterates, whose s is now
 // known), never from u0, by allocation-free recursive G7-K15; shrinks the bracket with the sign of
 // s(u) - s*; and takes the Newton step u <- u - (s(u) - s*) / |P'(u)|, falling back to bisection
@@ -13,8 +13,11 @@
 // The error bound on s(u) accumulates the estimates of every integral on the path to u.
 // Sources: seed 002 (arc-length reparameterization: find u2 with arclength(u1, u2) = s);
 // Guenter & Parent, IEEE CG&A 10(3), 1990; Eberly, "Moving along a curve with specified speed" (2008).
-// Cost: O(log segments) + iterations * (2n + 2) derivative evaluations (n = 7: 16 per iteration,
-// about 3-5 iterations from the linear guess on a smooth segment); no allocation per query.
+// The first guess inverts a monotone cubic Hermite model of s(u) on the segment built from its end
+// lengths and end speeds (stored with the segment lengths; no evaluation per query).
+// Cost: O(log segments) + per iteration 2n + 2 derivative evaluations for a long step (n = 15:
+// 32) and 8 for a step shorter than 1/32 of the bracket (G3-K7); typically one long and two or
+// three short iterations; no allocation per query.
 // Accuracy: quadratic convergence in u where |P'| > 0; linear (bisection) where it vanishes.
 #pragma once
 
@@ -81,6 +84,12 @@ class segment_lengths {
       const Real cum = sum + comp;
       cumulative_.push_back(cum);
       cumulative_error_.push_back(err_sum + Real(4) * epsilon<Real>() * abs(cum));
+      // One-sided end speeds (just inside the segment) for the initial guess of inversions.
+      const Real w = bp[i + 1] - bp[i];
+      const Real d = Real(16) * epsilon<Real>() * (abs(bp[i]) + abs(bp[i + 1]));
+      start_speed_.push_back(w > Real(2) * d ? speed(c, Real(bp[i] + d)) : Real(0));
+      end_speed_.push_back(w > Real(2) * d ? speed(c, Real(bp[i + 1] - d)) : Real(0));
+      total_.evaluations += 2;
     }
     total_.value = cumulative_.back();
     total_.error_estimate = cumulative_error_.back();
@@ -106,6 +115,34 @@ class segment_lengths {
     std::size_t i = it == cumulative_.begin() ? 0 : static_cast<std::size_t>(it - cumulative_.begin()) - 1;
     return std::min(i, segment_count() - 1);
   }
+  /// A first guess of u(s) in segment i from the monotone cubic Hermite model of s(u) with the
+  /// segment's end lengths and end speeds (no curve evaluation).
+  [[nodiscard]] Real guess(std::size_t i, const Real& s) const {
+    using std::sqrt;
+    const Real u0 = params_[i], w = params_[i + 1] - params_[i];
+    const Real s0 = cumulative_[i], ds = cumulative_[i + 1] - cumulative_[i];
+    if (!(ds > Real(0))) return u0;
+    Real d0 = w * start_speed_[i], d1 = w * end_speed_[i];
+    const Real a = d0 / ds, b = d1 / ds, r2 = a * a + b * b;
+    if (r2 > Real(9)) {  // Fritsch-Carlson: keep the model monotone
+      const Real tau = Real(3) / sqrt(r2);
+      d0 *= tau;
+      d1 *= tau;
+    }
+    const Real c2 = Real(3) * ds - Real(2) * d0 - d1, c3 = d0 + d1 - Real(2) * ds;
+    const Real target = s - s0;
+    Real lo(0), hi(1), t = target / ds;
+    for (int it = 0; it < 8; ++it) {
+      const Real h = ((c3 * t + c2) * t + d0) * t - target;
+      const Real dh = (Real(3) * c3 * t + Real(2) * c2) * t + d0;
+      if (h < Real(0)) lo = t; else hi = t;
+      Real next = dh > Real(0) ? t - h / dh : (lo + hi) / Real(2);
+      if (!(next > lo && next < hi)) next = (lo + hi) / Real(2);
+      t = next;
+    }
+    return u0 + t * w;
+  }
+
   /// The segment i with parameters[i] <= u <= parameters[i + 1].
   [[nodiscard]] std::size_t segment_for_u(const Real& u) const {
     const auto it = std::upper_bound(params_.begin(), params_.end(), u);
@@ -117,6 +154,7 @@ class segment_lengths {
   std::vector<Real> params_;
   std::vector<Real> cumulative_;
   std::vector<Real> cumulative_error_;
+  std::vector<Real> start_speed_, end_speed_;
   quadrature_result<Real> total_;
 };
 
@@ -128,8 +166,17 @@ struct newton_options {
   /// floors, so the default is 400 eps (8.9e-14 in double); true errors are usually ~eps L.
   Real relative_tolerance{Real(400) * epsilon<Real>()};
   int max_iterations{60};
-  int gauss_points{7};    ///< n of the inner G_n - K_{2n+1} pair
+  int gauss_points{15};   ///< n of the inner G_n - K_{2n+1} pair for long steps (G15-K31: one panel
+                          ///< is usually enough for half a polynomial segment)
   int max_depth{16};      ///< recursion cap of each inner adaptive integral
+  /// Inner integrals over less than 1/short_fraction of the bracket use the G3-K7 pair (7
+  /// evaluations instead of 15): near convergence the steps are tiny and 7 points are exact to
+  /// rounding there; the |G - K| estimate stays honest either way. 0 disables.
+  int short_fraction{32};
+  /// After convergence, one more Newton step (one short integral and one speed evaluation): the
+  /// quadratic convergence takes the residual from the tolerance down to rounding level. Used for
+  /// table nodes, which every later query interpolates.
+  bool final_step{false};
 };
 
 /// A bracket with known arc lengths at its ends (and their error bounds), and a first guess.
@@ -163,7 +210,12 @@ template <curve C>
   using Real = typename C::real_type;
   using std::abs;
   const gauss_kronrod_rule<Real>& rule = gauss_kronrod<Real>(opt.gauss_points);
+  const gauss_kronrod_rule<Real>& short_rule = gauss_kronrod<Real>(3);
   auto f = [&c](const Real& u) { return speed(c, u); };
+  const Real width = br.u_hi - br.u_lo;
+  auto pick = [&](const Real& len) -> const gauss_kronrod_rule<Real>& {
+    return opt.short_fraction > 0 && len * Real(opt.short_fraction) < width ? short_rule : rule;
+  };
   inversion_result<Real> out;
   Real lo = br.u_lo, slo = br.s_lo, elo = br.s_lo_error;
   Real hi = br.u_hi, shi = br.s_hi, ehi = br.s_hi_error;
@@ -193,12 +245,12 @@ template <curve C>
     out.iterations = it;
     Real su, eu;
     if (u - lo <= hi - u) {
-      const quadrature_result<Real> q = integrate_recursive(f, lo, u, inner_tol, rule, opt.max_depth);
+      const quadrature_result<Real> q = integrate_recursive(f, lo, u, inner_tol, pick(u - lo), opt.max_depth);
       su = slo + q.value;
       eu = elo + q.error_estimate;
       out.evaluations += q.evaluations;
     } else {
-      const quadrature_result<Real> q = integrate_recursive(f, u, hi, inner_tol, rule, opt.max_depth);
+      const quadrature_result<Real> q = integrate_recursive(f, u, hi, inner_tol, pick(hi - u), opt.max_depth);
       su = shi - q.value;
       eu = ehi + q.error_estimate;
       out.evaluations += q.evaluations;
@@ -212,6 +264,21 @@ template <curve C>
     }
     if (abs(fu) + eu <= tolerance) {
       out.status = result_status::converged;
+      if (opt.final_step && fu != Real(0)) {
+        const Real sp = f(u);
+        ++out.evaluations;
+        const Real next = sp > Real(0) ? u - fu / sp : u;
+        if (next > lo && next < hi && next != u) {
+          const quadrature_result<Real> q = integrate_recursive(f, u, next, inner_tol, pick(abs(next - u)), opt.max_depth);
+          out.evaluations += q.evaluations;
+          const Real fn = su + q.value - s_target;
+          if (abs(fn) < abs(fu)) {
+            out.u = next;
+            out.residual = fn;
+            out.s_error_estimate = abs(fn) + eu + q.error_estimate;
+          }
+        }
+      }
       break;
     }
     if (fu < Real(0)) {
@@ -246,7 +313,7 @@ template <curve C>
   const auto p = segments.parameters();
   const auto cum = segments.cumulative();
   const auto err = segments.cumulative_error();
-  const newton_bracket<Real> br{p[i], cum[i], err[i], p[i + 1], cum[i + 1], err[i + 1], p[i]};
+  const newton_bracket<Real> br{p[i], cum[i], err[i], p[i + 1], cum[i + 1], err[i + 1], segments.guess(i, s)};
   return newton_invert(c, s, br, opt.relative_tolerance * segments.length(), opt);
 }
 

@@ -257,13 +257,15 @@ class parameterization {
       const Real sj = len * Real(static_cast<long long>(j)) / Real(static_cast<long long>(m));
       ss[j] = sj;
       const std::size_t i = segments_.segment_for_s(sj);
-      newton_bracket<Real> br{p[i], cum[i], err[i], p[i + 1], cum[i + 1], err[i + 1], p[i]};
+      newton_bracket<Real> br{p[i], cum[i], err[i], p[i + 1], cum[i + 1], err[i + 1], segments_.guess(i, sj)};
       if (us[j - 1] > br.u_lo && us[j - 1] < br.u_hi) {
         br.u_lo = us[j - 1];
         br.s_lo = ss[j - 1];
         br.s_lo_error = es[j - 1];
       }
-      const inversion_result<Real> r = newton_invert(curve_, sj, br, tol, opt_.newton);
+      newton_options<Real> node_opt = opt_.newton;
+      node_opt.final_step = true;  // nodes are interpolated by every query: polish them to rounding level
+      const inversion_result<Real> r = newton_invert(curve_, sj, br, tol, node_opt);
       build_evaluations_ += r.evaluations;
       us[j] = r.u;
       es[j] = r.s_error_estimate;

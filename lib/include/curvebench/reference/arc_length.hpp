@@ -8,8 +8,8 @@
 // samples is refined by Brent's minimization (Boost.Math) and then by Newton on
 // (|P'|^2)'/2 = P'.P'' with derivative |P''|^2 + P'.P''' (exact derivatives of any order are part of
 // the curve concept), which locates a cusp to full precision; minima below
-// split_ratio * (max speed on the segment) become split points. A piece that ends at such a
-// minimum is graded geometrically towards it (panels [m + h/2^(k+1), m + h/2^k], 48 levels), so a
+// split_ratio * (max speed on the segment) become split points. A piece that ends at a deep one
+// (speed below 1/1000 of the maximum: a near-cusp) is graded geometrically towards it (panels [m + h/2^(k+1), m + h/2^k], 48 levels), so a
 // near-singularity is never closer to a panel than the panel's own size (plain bisection towards
 // it makes Boost's recursion, whose absolute tolerance halves per level, blow up exponentially).
 // Every panel is integrated by boost::math::quadrature::gauss_kronrod<Real, 61> (adaptive,
@@ -38,6 +38,7 @@
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace curvebench::reference {
@@ -48,7 +49,7 @@ template <class Real>
 struct reference_options {
   /// Relative tolerance of each piece (Boost's criterion: error <= tol * integral |f|).
   Real tolerance{Real(4096) * epsilon<Real>()};
-  unsigned max_depth{15};
+  unsigned max_depth{6};  // Boost bisects every failing panel: 2^depth panels at worst; grading does the rest
   std::size_t samples_per_segment{64};
   /// A speed minimum below split_ratio * (max sampled speed of its segment) becomes a split point.
   Real split_ratio{Real(1) / Real(4)};
@@ -68,9 +69,9 @@ class reference_arc_length {
       splits_.push_back(bp[i]);
       is_minimum_.push_back(false);
       if (!(bp[i + 1] > bp[i])) continue;
-      for (const Real& z : interior_minima(bp[i], bp[i + 1])) {
+      for (const auto& [z, deep] : interior_minima(bp[i], bp[i + 1])) {
         splits_.push_back(z);
-        is_minimum_.push_back(true);
+        is_minimum_.push_back(deep);  // only a deep minimum (near-cusp) is graded towards
         minima_.push_back(z);
       }
     }
@@ -186,21 +187,32 @@ class reference_arc_length {
     return total;
   }
 
+  // One panel by Boost. The nodes of a narrow panel are rounded to the spacing of Real near |a|,
+  // a relative perturbation eps |a| / (b - a) of the panel that no relative tolerance below it can
+  // survive (Boost's recursion would then bisect to full depth, exponentially): the tolerance is
+  // raised to that resolution, and a panel too narrow to matter gets one non-adaptive G30-K61.
   [[nodiscard]] Real integrate_panel(const Real& a, const Real& b, const Real& tolerance, Real& err) const {
+    using std::abs;
+    using std::max;
     auto f = [this](const Real& x) {
       using std::sqrt;
       return Real(sqrt(speed2(x)));
     };
     Real l1(0);
+    const Real resolution = Real(64) * epsilon<Real>() * (abs(a) + abs(b)) / abs(b - a);
+    const Real tol = max(tolerance, resolution);
     if (opt_.integrator == reference_integrator::tanh_sinh) {
       boost::math::quadrature::tanh_sinh<Real> ts;
-      return ts.integrate(f, a, b, tolerance, &err, &l1);
+      return ts.integrate(f, a, b, tol, &err, &l1);
     }
-    return boost::math::quadrature::gauss_kronrod<Real, 61>::integrate(f, a, b, opt_.max_depth, tolerance, &err, &l1);
+    const unsigned depth = resolution > Real(1) / Real(10000000000LL) ? 0u : opt_.max_depth;
+    return boost::math::quadrature::gauss_kronrod<Real, 61>::integrate(f, a, b, depth, tol, &err, &l1);
   }
 
   // Interior local minima of the speed on (a, b) below split_ratio * max speed, refined.
-  [[nodiscard]] std::vector<Real> interior_minima(const Real& a, const Real& b) const {
+  // (location, deep): deep when the speed there is below 1/1000 of the segment's maximum, i.e. the
+  // speed's complex singularities come close to the real axis (a near-cusp).
+  [[nodiscard]] std::vector<std::pair<Real, bool>> interior_minima(const Real& a, const Real& b) const {
     using std::abs;
     using std::sqrt;
     const std::size_t m = opt_.samples_per_segment;
@@ -211,7 +223,7 @@ class reference_arc_length {
       g[k] = speed2(us[k]);
       gmax = std::max(gmax, g[k]);
     }
-    std::vector<Real> out;
+    std::vector<std::pair<Real, bool>> out;
     if (!(gmax > Real(0))) return out;  // speed zero on the whole segment: nothing to split
     const Real threshold = opt_.split_ratio * opt_.split_ratio * gmax;
     for (std::size_t k = 1; k < m; ++k) {
@@ -234,7 +246,8 @@ class reference_arc_length {
         x = next;
         if (done) break;
       }
-      if (x > a && x < b && (out.empty() || x > out.back())) out.push_back(x);
+      if (x > a && x < b && (out.empty() || x > out.back().first))
+        out.emplace_back(x, speed2(x) <= gmax / Real(1000000));
     }
     return out;
   }
