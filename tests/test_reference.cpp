@@ -6,6 +6,8 @@
 #include "support/accuracy.hpp"
 
 #include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/nurbs.hpp"
+#include "curvebench/curves/rational_bezier.hpp"
 #include "curvebench/reference/analytic_curves.hpp"
 #include "curvebench/reference/arc_length.hpp"
 #include "curvebench/reference/closed_forms.hpp"
@@ -87,6 +89,30 @@ TEST(reference, circular_arcs_as_rational_quadratics) {
           << "u=" << k << "/8";
     }
   }
+}
+
+TEST(reference, circles_of_the_rational_families) {
+  // The families' own circles (rational_bezier's circular_arc, NURBS 9- and 7-point circles):
+  // length 2 pi r (theta r for the arc) and, for the symmetric arcs, s(u) by the closed form.
+  const R pi = boost::math::constants::pi<R>();
+  const R radius("1.25");
+  const p2 center(R("0.5"), R(-2));
+  const R sweep = 3 * pi / 5;
+  const auto arc = cb::circular_arc<R>(center, radius, R("0.2"), sweep);
+  const ref::reference_arc_length<cb::rational_bezier<R, 2>> ra(arc);
+  expect_length(ra, ref::circular_arc_length(radius, sweep), "rational_bezier circular_arc");
+  for (int k = 1; k < 8; ++k)
+    EXPECT_TRUE(cbt::within_relative(ra.s(R(k) / 8), ref::circular_arc_rational_s(radius, sweep, R(k) / 8),
+                                     static_cast<double>(agreement)));
+  const ref::reference_arc_length<cb::nurbs<R, 2>> r9(cb::nurbs_circle_9<R>(center, radius));
+  expect_length(r9, 2 * pi * radius, "nurbs circle 9");
+  for (int q = 0; q < 4; ++q) {  // each quarter is a symmetric rational quadratic arc of pi/2
+    const R u = (R(q) + R("0.3")) / 4;
+    EXPECT_TRUE(cbt::within_relative(r9.s(u), q * pi / 2 * radius + ref::circular_arc_rational_s(radius, pi / 2, R("0.3")),
+                                     static_cast<double>(agreement)));
+  }
+  const ref::reference_arc_length<cb::nurbs<R, 2>> r7(cb::nurbs_circle_7<R>(center, radius));
+  expect_length(r7, 2 * pi * radius, "nurbs circle 7");
 }
 
 TEST(reference, parabolas_as_quadratic_beziers) {
