@@ -4,13 +4,14 @@
 // lengths (adaptive Gauss-Kronrod) and, unless the method is Newton, a table of u_j = u(s_j) on a
 // uniform s-grid s_j = j L / M with the slopes du/ds = 1 / |P'(u_j)|. Queries:
 //   s(u)   s at the nearest known point at or left of u (a table node or a segment start) plus the
-//          integral from there (recursive G7-K15): no integration from u0.
+//          integral from there (recursive Gauss-Kronrod, the Newton long-step pair): no
+//          integration from u0.
 //   u(s)   (a) linear_table: j = floor(s / ds) (O(1)), linear interpolation of u_j, u_{j+1}:
 //              error O(ds^2);
 //          (b) hermite_table: the same O(1) lookup, cubic Hermite of u(s) with the slopes
 //              du/ds (Fritsch-Carlson limited where a slope exceeds 3x the secant, so u(s) is
 //              monotone; a node where |P'| = 0 uses the secant): error O(ds^4); optionally
-//              polished by one Newton step (s(u) from the table node, one G7-K15);
+//              polished by one Newton step (s(u) from the table node by one G3-K7 panel);
 //          (c) newton: Newton in the segment bracket (newton_inversion.hpp), no table.
 //   constant_speed_parameters(n): the u of n points equally spaced in arc length, ends included.
 // The table size M is given, or found by doubling from 16 per segment until the Hermite table's
@@ -18,8 +19,9 @@
 // table_tolerance * L; the table kept is the doubled one (about 16x more accurate than measured).
 // Sources: seed 002 (arc-length table, forward differencing and u = U(s) by table lookup);
 // Eberly (2008); Fritsch & Carlson, SIAM J. Numer. Anal. 17 (1980) for the monotone limiter.
-// Cost: construction O(M) Newton solves; u(s) O(1) with the tables (a few ns), one G7-K15 more for
-// the polish; Newton ~3-5 iterations of 16 evaluations. s(u) O(log M) + one adaptive G7-K15.
+// Cost: construction O(M) Newton solves; u(s) O(1) with the tables (a few ns), 8 evaluations more
+// for the polish; Newton see newton_inversion.hpp (~50 evaluations on a curved cubic segment).
+// s(u) O(log M) + one adaptive Gauss-Kronrod integral from the nearest node.
 // The object holds a copy of the curve; every const member is thread-safe.
 #pragma once
 
@@ -222,13 +224,12 @@ class parameterization {
     }
   }
 
-  [[nodiscard]] std::size_t polish_evaluations() const {
-    return static_cast<std::size_t>(2 * opt_.newton.gauss_points + 2);
-  }
+  [[nodiscard]] std::size_t polish_evaluations() const { return 8; }
 
-  // One Newton step from uu, with s(uu) integrated from table node j (one panel of the pair).
+  // One Newton step from uu, with s(uu) integrated from table node j by one G3-K7 panel (the panel
+  // is within one table interval, where 7 points are exact to rounding) and one speed evaluation.
   [[nodiscard]] Real polish(const Real& s, const Real& uu, std::size_t j) const {
-    const gauss_kronrod_rule<Real>& rule = gauss_kronrod<Real>(opt_.newton.gauss_points);
+    const gauss_kronrod_rule<Real>& rule = gauss_kronrod<Real>(3);
     auto f = [this](const Real& x) { return speed(curve_, x); };
     const Real su = nodes_s_[j] + rule.apply(f, nodes_u_[j], uu).kronrod;
     const Real sp = f(uu);
