@@ -129,4 +129,8 @@ TEST(core, any_curve_wraps_and_satisfies_the_concept) {
   EXPECT_THROW((void)a(-0.5), std::domain_error);
   const cb::any_curve<double, 2> copy = a;  // copies share the wrapped curve
   EXPECT_EQ(copy(0.3), a(0.3));
+  const cb::any_curve<double, 2> named = a.renamed("unit circle");
+  EXPECT_EQ(named.family(), "unit circle");
+  EXPECT_EQ(a.family(), "circle");
+  EXPECT_EQ(named(0.3), a(0.3));
 }

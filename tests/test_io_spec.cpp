@@ -11,6 +11,7 @@
 
 namespace cb = curvebench;
 namespace io = curvebench::io;
+namespace cbt = curvebench::testing;
 using ::testing::HasSubstr;
 
 namespace {
@@ -88,6 +89,17 @@ TEST(io_spec, each_type_builds_the_family) {
   expect_same_curve(make<2>(R"({"type": "hermite", "knots": [0, 0.5, 2, 3, 7], "points": [[0,0],[1,2],[3,3],[4,0],[6,1]],
                                 "slopes": [[1,0],[1,1],[0,1],[-1,0],[1,1]]})"),
                     cb::hermite_spline<double, 2>({0, 0.5, 2, 3, 7}, pts, slopes));
+  const std::vector<double> cheb = cb::chebyshev_parameters<double>(5);
+  expect_same_curve(make<2>(R"({"type": "lagrange", "nodes": "chebyshev", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::lagrange<double, 2>(std::span<const p2>(pts), std::span<const double>(cheb)));
+  expect_same_curve(make<2>(R"({"type": "lagrange", "algorithm": "monomial", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::lagrange<double, 2>(std::span<const p2>(pts), cb::lagrange_algorithm::monomial));
+  const std::vector<cb::point_list<double, 2>> segs{{{0, 0}, {1, 1}, {2, 0}}, {{2, 0}, {3, -1}, {3, 2}, {4, 0}}};
+  const std::vector<double> seg_knots{0, 1, 3};
+  expect_same_curve(make<2>(R"({"type": "composite_bezier", "knots": [0, 1, 3],
+                                "segments": [[[0,0],[1,1],[2,0]], [[2,0],[3,-1],[3,2],[4,0]]]})"),
+                    cb::composite_bezier<double, 2>(std::span<const cb::point_list<double, 2>>(segs),
+                                                    std::span<const double>(seg_knots)));
   // 3D, and the metadata fields of a case file
   const auto helix = make<3>(R"({"type": "catmull_rom", "name": "h", "group": "smooth", "reason": "r",
                                  "points": [[1,0,0],[0,1,0.5],[-1,0,1],[0,-1,1.5],[1,0,2]]})");
@@ -102,6 +114,35 @@ TEST(io_spec, real50_twin_holds_the_same_control_data) {
   EXPECT_EQ(c50(cb::real50(0))[0], cb::real50(0.1));
   EXPECT_EQ(c50(cb::real50(2))[1], cb::real50(0.7));
   EXPECT_NE(c50(cb::real50(0))[0], cb::real50("0.1"));
+}
+
+TEST(io_spec, real50_twin_of_derived_data_is_exact) {
+  // Knots from |dP|^alpha, Chebyshev parameters, clamped knot fractions, s from tension and the
+  // circle's sqrt(2)/2 weights are computed once in double; the 50-digit curve gets those doubles,
+  // so its breakpoints (and domain) are exactly the double curve's.
+  for (const char* text : {
+           R"({"type": "catmull_rom", "alpha": 0.5, "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
+           R"({"type": "cardinal", "tension": 0.3, "alpha": 1, "end": "closed", "points": [[0,0],[1,2],[3,3],[4,0]]})",
+           R"({"type": "lagrange", "nodes": "chebyshev", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
+           R"({"type": "bspline", "degree": 3, "points": [[0,0],[1,2],[3,3],[4,0],[6,1],[7,0],[8,2]]})",
+           R"({"type": "circle", "center": [1, 2], "radius": 3})",
+           R"({"type": "arc", "center": [0, 0], "radius": 2, "start": 0.5, "sweep": 2})"}) {
+    const auto j = io::parse(text);
+    const auto c = io::curve_from_spec<double, 2>(io::root(j));
+    const auto c50 = io::curve_from_spec<cb::real50, 2>(io::root(j));
+    const auto b = c.breakpoints();
+    const auto b50 = c50.breakpoints();
+    ASSERT_EQ(b.size(), b50.size()) << text;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      EXPECT_EQ(b50[i], cb::real50(b[i])) << text << " breakpoint " << i;
+      // Same data: the double value is the 50-digit value rounded, up to double's evaluation error
+      // (a few ulps of the curve's size, here <= 8).
+      const auto p = c(b[i]);
+      const auto p50 = c50(cb::real50(b[i]));
+      EXPECT_TRUE((cbt::point_within<double, 2>(p, p50, cb::real50(8), 8))) << text << " at " << b[i];
+    }
+    EXPECT_EQ(c50.family(), c.family());
+  }
 }
 
 TEST(io_spec, generated_points) {

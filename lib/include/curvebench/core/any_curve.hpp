@@ -37,6 +37,13 @@ class any_curve {
   /// The family name given at construction (may be empty).
   [[nodiscard]] const std::string& family() const { return family_; }
 
+  /// The same curve (shared) under another family name.
+  [[nodiscard]] any_curve renamed(std::string family) const {
+    any_curve c = *this;
+    c.family_ = std::move(family);
+    return c;
+  }
+
   /// The wrapped curve when it is a C, else nullptr.
   template <class C>
   [[nodiscard]] const C* target() const {

@@ -1,8 +1,8 @@
 // JSON curve specs -> curves: the format the `curvebench` tool and the case suite read.
 //
 // A spec is an object {"type": "...", "points": [[x, y(, z)], ...], <the family's own fields>}.
-// Every spec may also carry the metadata fields "name", "group" and "reason" (the case suite
-// uses them); any other unknown field is an error, so a misspelled option never passes silently.
+// Every spec may also carry the metadata fields "name", "group", "reason" and "quick" (the case
+// suite uses them); any other unknown field is an error, so a misspelled option never passes silently.
 // The dimension is the length of the points (circle and arc specs are 2D). The README documents
 // each type with an example; `spec_types()` lists them.
 //
@@ -16,8 +16,10 @@
 #include "curvebench/curves/bezier.hpp"
 #include "curvebench/curves/bspline.hpp"
 #include "curvebench/curves/cardinal_spline.hpp"
+#include "curvebench/curves/composite_bezier.hpp"
 #include "curvebench/curves/hermite_spline.hpp"
 #include "curvebench/curves/kochanek_bartels.hpp"
+#include "curvebench/curves/lagrange.hpp"
 #include "curvebench/curves/natural_cubic_spline.hpp"
 #include "curvebench/curves/nurbs.hpp"
 #include "curvebench/curves/polyline.hpp"
@@ -42,8 +44,10 @@ struct spec_type_info {
 [[nodiscard]] inline std::span<const spec_type_info> spec_types() {
   static constexpr spec_type_info types[] = {
       {"polyline", "points [params]"},
+      {"lagrange", "points [params | nodes: equispaced|chebyshev] [algorithm: barycentric|monomial]"},
       {"bezier", "points [domain]"},
       {"rational_bezier", "points weights [domain]"},
+      {"composite_bezier", "segments (one point list per segment) [knots]"},
       {"conic", "points (3) w"},
       {"arc", "center radius start sweep   (2D rational quadratic, sweep in (0, pi))"},
       {"circle", "center radius [control: 9|7]   (2D quadratic NURBS)"},
@@ -62,6 +66,11 @@ struct spec_type_info {
 [[nodiscard]] inline int spec_dimension(const field& spec) {
   const std::string type = spec.member("type").string();
   if (type == "circle" || type == "arc") return 2;
+  if (type == "composite_bezier") {
+    const field segs = spec.member("segments", "a composite Bezier curve is a list of segments");
+    if (segs.array_size() == 0) segs.fail("expected at least one segment, got []");
+    return segs.element(0).point_dimension();
+  }
   const field pts = spec.member("points", "every spec of type \"" + type + "\" has points");
   if (pts.value.is_object()) {
     const std::string kind = pts.member("generate").one_of({"helix", "lissajous", "spiral", "runge"});
@@ -118,7 +127,7 @@ point_list<Real, Dim> spec_points(const field& spec) {
   return field{generated, f.path}.points<Real, Dim>();
 }
 
-inline constexpr std::string_view metadata[] = {"type", "name", "group", "reason"};
+inline constexpr std::string_view metadata[] = {"type", "name", "group", "reason", "quick"};
 
 /// only_members with the metadata fields added.
 inline void allow(const field& spec, std::initializer_list<std::string_view> fields) {
@@ -179,6 +188,32 @@ any_curve<Real, Dim> build(const field& spec, const std::string& type) {
       return {polyline<Real, Dim>(std::span<const point<Real, Dim>>(p), std::span<const Real>(u)), type};
     }
     return {polyline<Real, Dim>(std::span<const point<Real, Dim>>(p)), type};
+  }
+  if (type == "lagrange") {
+    allow(spec, {"points", "params", "nodes", "algorithm"});
+    const pl p = pts();
+    const lagrange_algorithm algorithm =
+        spec.has("algorithm") && spec.member("algorithm").one_of({"barycentric", "monomial"}) == "monomial"
+            ? lagrange_algorithm::monomial
+            : lagrange_algorithm::barycentric;
+    if (spec.has("params") && spec.has("nodes")) spec.member("params").fail("give either params or nodes");
+    std::vector<Real> u;
+    if (spec.has("params")) {
+      u = spec.member("params").reals<Real>();
+    } else if (spec.has("nodes") && spec.member("nodes").one_of({"equispaced", "chebyshev"}) == "chebyshev") {
+      u = chebyshev_parameters<Real>(p.size());
+    } else {
+      u = equispaced_parameters<Real>(p.size());
+    }
+    return {lagrange<Real, Dim>(std::span<const point<Real, Dim>>(p), std::span<const Real>(u), algorithm), type};
+  }
+  if (type == "composite_bezier") {
+    allow(spec, {"segments", "knots"});
+    const field segs = spec.member("segments");
+    std::vector<pl> segments(segs.array_size());
+    for (std::size_t i = 0; i < segments.size(); ++i) segments[i] = segs.element(i).points<Real, Dim>();
+    const std::vector<Real> k = knots_or_uniform<Real>(spec, segments.size() + 1);
+    return {composite_bezier<Real, Dim>(std::span<const pl>(segments), std::span<const Real>(k)), type};
   }
   if (type == "bezier" || type == "rational_bezier") {
     const bool rational = type == "rational_bezier";
@@ -319,6 +354,77 @@ any_curve<Real, Dim> build(const field& spec, const std::string& type) {
   spec.member("type").fail("\"" + type + "\" is not a curve type (types: " + list + ")");
 }
 
+template <int Dim>
+json points_json(std::span<const point<double, Dim>> ps) {
+  json a = json::array();
+  for (const auto& p : ps) {
+    json q = json::array();
+    for (int d = 0; d < Dim; ++d) q.push_back(p[d]);
+    a.push_back(std::move(q));
+  }
+  return a;
+}
+
+/// The spec with every derived quantity computed once, in double, and written out as data:
+/// generated points, alpha (centripetal/chordal) knots, s from tension, Lagrange parameters,
+/// clamped/uniform B-spline knots, and the control data of circles and arcs. Building any Real
+/// from the resolved spec then gives the exact twin of the double curve (same knots, same
+/// control data), which is what a 50-digit reference must be: computing e.g. |dP|^(1/2) again in
+/// 50 digits would give a different curve, with a different domain, by an ulp.
+template <int Dim>
+json resolve(const field& spec, const std::string& type) {
+  json r = spec.value;
+  if (spec.has("points") && spec.member("points").value.is_object())
+    r["points"] = points_json<Dim>(spec_points<double, Dim>(spec));
+  const field rf{r, spec.path};
+  if ((type == "cardinal" || type == "catmull_rom") && !rf.has("knots") && rf.has("alpha")) {
+    const double alpha = rf.member("alpha").number();
+    if (alpha != 0) {
+      const bool closed = rf.has("end") && rf.member("end").string() == "closed";
+      const point_list<double, Dim> p = rf.member("points").points<double, Dim>();
+      const std::vector<double> k = alpha_knots<double, Dim>(std::span<const point<double, Dim>>(p), alpha, closed);
+      r["knots"] = k;
+      r["alpha"] = 0;
+    }
+  }
+  if (type == "cardinal" && rf.has("tension") && !rf.has("s")) {
+    r["s"] = (1 - rf.member("tension").number()) / 2;
+    r.erase("tension");
+  }
+  if (type == "lagrange" && !rf.has("params")) {
+    const std::size_t n = rf.member("points").array_size();
+    const bool cheb = rf.has("nodes") && rf.member("nodes").one_of({"equispaced", "chebyshev"}) == "chebyshev";
+    r["params"] = cheb ? chebyshev_parameters<double>(n) : equispaced_parameters<double>(n);
+    r.erase("nodes");
+  }
+  if ((type == "bspline" || type == "nurbs") && !rf.has("knots") && rf.has("degree") && rf.member("degree").value.is_number_integer()) {
+    const std::string kind = rf.has("knot_vector") ? rf.member("knot_vector").string() : "clamped";
+    const long long degree = rf.member("degree").integer();
+    if ((kind == "clamped" || kind == "uniform") && degree >= 0 && degree < bspline_max_order) {
+      const std::size_t n = rf.member("points").array_size();
+      const int order = static_cast<int>(degree) + 1;
+      r["knots"] = kind == "uniform" ? bspline_uniform_knots<double>(n, order) : bspline_clamped_knots<double>(n, order);
+      r.erase("knot_vector");
+    }
+  }
+  if constexpr (Dim == 2) {
+    if (type == "circle" || type == "arc") {
+      // Built once in double by the library's own constructors; the spec becomes their data.
+      const any_curve<double, 2> c = build<double, 2>(rf, type);
+      if (const auto* n = c.template target<nurbs<double, 2>>()) {
+        return {{"type", "nurbs"}, {"degree", n->degree()}, {"points", points_json<2>(n->control_points())},
+                {"weights", std::vector<double>(n->weights().begin(), n->weights().end())},
+                {"knots", std::vector<double>(n->knots().begin(), n->knots().end())}};
+      }
+      if (const auto* b = c.template target<rational_bezier<double, 2>>()) {
+        return {{"type", "rational_bezier"}, {"points", points_json<2>(b->control_points())},
+                {"weights", std::vector<double>(b->weights().begin(), b->weights().end())}};
+      }
+    }
+  }
+  return r;
+}
+
 }  // namespace detail
 
 /// The curve a spec describes, in Real and Dim (Dim must equal spec_dimension(spec)).
@@ -329,7 +435,13 @@ template <class Real, int Dim>
   if (dim != Dim)
     spec.fail("describes a " + std::to_string(dim) + "D curve, but a " + std::to_string(Dim) + "D one was asked for");
   try {
-    return detail::build<Real, Dim>(spec, type);
+    // Derived data is computed once in double, then every precision builds from the same data.
+    const json resolved = detail::resolve<Dim>(spec, type);
+    const field r{resolved, spec.path};
+    const std::string resolved_type = r.member("type").string();
+    any_curve<Real, Dim> c = detail::build<Real, Dim>(r, resolved_type);
+    if (resolved_type == type) return c;
+    return c.renamed(type);  // keep the family name the user gave ("circle", "arc")
   } catch (const spec_error&) {
     throw;
   } catch (const invalid_input& e) {  // a family's own validation: say which spec it came from
