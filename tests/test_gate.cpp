@@ -13,7 +13,8 @@ json thresholds() {
   return json::parse(R"J({"rules": [
     {"quantity": "length", "method": "gauss_kronrod", "group": "*", "max_error": 1e-13, "honest": true,
      "why": "test rule"},
-    {"quantity": "length", "method": "forward_difference", "group": "smooth", "min_order": 1.8, "why": "O(h^2)"}
+    {"quantity": "length", "method": "forward_difference", "group": "smooth", "min_order": 1.8, "why": "O(h^2)"},
+    {"quantity": "length", "method": "forward_difference", "setting": "N=64", "max_error": 1e-4, "why": "one setting"}
   ]})J");
 }
 json clean_results() {
@@ -47,6 +48,18 @@ TEST(gate, names_each_breach_with_measured_and_allowed) {
   EXPECT_EQ(breaches[1].where, "case loop setting tol=1e-14");
   EXPECT_EQ(breaches[1].message, "error 3e-10 > allowed 1e-13");
   EXPECT_EQ(breaches[2].message, "observed order 1 < allowed 1.8");
+}
+
+TEST(gate, a_rule_may_name_one_setting) {
+  json r = clean_results();
+  r["records"][2]["error"] = 2e-4;  // the N=64 table got worse
+  const auto breaches = check_gate(r, thresholds());
+  ASSERT_EQ(breaches.size(), 1u);
+  EXPECT_EQ(breaches[0].rule, "length/forward_difference/*/N=64");
+  EXPECT_EQ(breaches[0].message, "error 0.0002 > allowed 0.0001");
+  r["records"][2]["setting"] = "N=32";  // the named setting vanished
+  EXPECT_EQ(check_gate(r, thresholds()).back().message,
+            "rule matched no result record (method or case group missing)");
 }
 
 TEST(gate, missing_method_or_nan_error_is_a_breach) {

@@ -6,7 +6,7 @@
 // ("estimate"/"bounded" are null where a method gives no estimate) and "orders", one per case x
 // quantity x method: {"case", "group", "quantity", "method", "observed", "theory"}.
 // Thresholds (reports/thresholds.json) hold "rules":
-//   {"quantity", "method", "group"  (each may be "*"),
+//   {"quantity", "method", "group", "setting"  (each may be "*" or left out: any),
 //    "max_error"  (optional: every matching record's error must be <= it),
 //    "min_order"  (optional: every matching observed order must be >= it),
 //    "honest"     (optional: every matching record with an estimate must have bounded = true),
@@ -31,15 +31,17 @@ struct breach {
 
 namespace detail {
 inline bool matches(const nlohmann::json& rule, const nlohmann::json& record) {
-  for (const char* key : {"quantity", "method", "group"}) {
+  for (const char* key : {"quantity", "method", "group", "setting"}) {
     const std::string want = rule.value(key, std::string("*"));
     if (want != "*" && record.value(key, std::string()) != want) return false;
   }
   return true;
 }
 inline std::string rule_name(const nlohmann::json& rule) {
-  return rule.value("quantity", std::string("*")) + "/" + rule.value("method", std::string("*")) + "/" +
-         rule.value("group", std::string("*"));
+  std::string name = rule.value("quantity", std::string("*")) + "/" + rule.value("method", std::string("*")) + "/" +
+                     rule.value("group", std::string("*"));
+  if (rule.contains("setting")) name += "/" + rule["setting"].get<std::string>();
+  return name;
 }
 inline std::string number(double x) {
   std::ostringstream os;
