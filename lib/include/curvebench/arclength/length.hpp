@@ -3,12 +3,22 @@
 // - `speed(c, u)`: |P'(u)| from the curve's exact first derivative (one derivative evaluation).
 // - `gauss_length`: the fixed n-point Gauss-Legendre rule on each segment (seed 002, "Gaussian
 //   quadrature"). With estimate::none the cost is n evaluations per segment and no error bound
-//   (status not_guaranteed, estimate +inf). With fixed_estimate::nested each segment is also
-//   integrated as 2 and 4 panels (7n evaluations per segment); the 4-panel value Q4 is reported
-//   with estimate |Q2 - Q4| + rounding floor (the error of Q2, which exceeds Q4's by ~2^(2n) on
-//   smooth segments), trusted (converged) only when |Q1 - Q2| >= 16 |Q2 - Q4| (the observed order
-//   is >= 4, as for n >= 2 on a speed the panels resolve; not at a cusp, whose kink gives order 2
-//   with an erratic constant), else not_guaranteed.
+//   (status not_guaranteed, estimate +inf). With fixed_estimate::nested each segment is first
+//   searched for deep interior speed minima (17 samples of |P'|^2 plus Newton, see
+//   detail/speed_minima.hpp) and split there; each piece is integrated as 1, 2 and 4 panels (7n
+//   evaluations per piece); the 4-panel value Q4 is reported with estimate |Q2 - Q4| + rounding
+//   floor (the error of Q2, which exceeds Q4's by ~2^(2n) on smooth pieces), trusted (converged)
+//   only when |Q1 - Q2| >= 16 |Q2 - Q4| (the observed order is >= 4, as for n >= 2 on a speed the
+//   panels resolve), else not_guaranteed. Splitting makes an exact cusp harmless (the speed is
+//   |linear|, analytic on each side). A near-cusp is not: the speed has branch points at
+//   m +- i delta (delta = sqrt(g0/g2) from the quadratic model of |P'|^2 at the minimum m), and a
+//   piece ending at m converges only like (1 + sqrt(2 delta / h))^(-2n) on its panels of width h,
+//   so Q1, Q2, Q4 can all be pre-asymptotic with |Q2 - Q4| far below Q4's error (measured on
+//   bench/cases/near_cusp_cubic.json, delta ~ 1.2e-4: estimates 2.7e-8, 3.6e-8, 3.5e-8 for
+//   n = 4, 8, 16 against true relative errors 2.4e-7, 1.7e-7, 1.0e-7). Such a piece (delta below
+//   1/8 of its width, i.e. the branch point closer to its finest panel than half that panel's
+//   width, Bernstein-ellipse parameter < 2.9) is reported not_guaranteed with estimate +inf; use
+//   adaptive_length there.
 // - `composite_gauss_length`: m equal panels per segment, n points each; error O(h^(2n)) for a
 //   speed in C^(2n) (measured in tests), no error bound (not_guaranteed).
 // - `adaptive_length`: globally adaptive Gauss-Kronrod (G7-K15 by default) to a tolerance, with the
@@ -21,7 +31,8 @@
 // converges geometrically in n on segments whose speed is analytic near the segment (polynomial
 // and rational segments away from cusps); near a cusp the speed has a kink and convergence is only
 // algebraic: use adaptive_length there. Sources: seed 002; Guenter & Parent, "Computing the arc
-// length of parametric curves", IEEE CG&A 10(3), 1990.
+// length of parametric curves", IEEE CG&A 10(3), 1990; Trefethen, "Approximation Theory and
+// Approximation Practice" (2013), ch. 19, for the Bernstein-ellipse error of Gauss rules.
 #pragma once
 
 #include "curvebench/arclength/gauss_kronrod.hpp"
@@ -94,8 +105,10 @@ quadrature_result<Real> fixed_panel(F&& f, const Real& a, const Real& b, const g
   // On a smooth speed the rule converges at order 2n >= 4 (n >= 2) once the panels resolve it:
   // d1 >= 16 d2. A kink (cusp) gives order 2 with a constant that depends on where the kink falls
   // in the panels, and a feature narrower than the panels gives anything: not trusted.
-  r.status = (d1 >= Real(16) * d2 || (d1 <= floor && d2 <= floor)) ? result_status::converged
-                                                                  : result_status::not_guaranteed;
+  // An untrusted estimate is not reported as a number (result.hpp: not_guaranteed means +inf).
+  const bool trusted = d1 >= Real(16) * d2 || (d1 <= floor && d2 <= floor);
+  r.status = trusted ? result_status::converged : result_status::not_guaranteed;
+  if (!trusted) r.error_estimate = no_bound<Real>();
   return r;
 }
 
@@ -104,6 +117,41 @@ void check_order(const Real& a, const Real& b, bool& flipped, Real& lo, Real& hi
   flipped = b < a;
   lo = flipped ? b : a;
   hi = flipped ? a : b;
+}
+
+/// Samples of |P'|^2 per segment for the speed-minimum search of the nested fixed rule.
+inline constexpr std::size_t fixed_minimum_samples = 16;
+
+/// One segment [a, b] by the fixed rule. With the nested estimate: split at the deep interior
+/// speed minima first; a piece that ends at a near-cusp whose branch point is closer than 1/8 of
+/// the piece's width gets no bound (see the header).
+template <curve C, class F>
+quadrature_result<typename C::real_type> fixed_segment(const C& c, F&& f, const typename C::real_type& a,
+                                                       const typename C::real_type& b,
+                                                       const gauss_legendre_rule<typename C::real_type>& rule,
+                                                       fixed_estimate est) {
+  using Real = typename C::real_type;
+  if (est == fixed_estimate::none) return fixed_panel(f, a, b, rule, est);
+  std::size_t extra = 0;
+  std::vector<speed_minimum<Real>> pts{{a, Real(0)}};
+  find_speed_minima(c, a, b, fixed_minimum_samples, pts, extra);
+  pts.push_back({b, Real(0)});
+  quadrature_result<Real> r;
+  auto near_cusp = [](const speed_minimum<Real>& m, const Real& width) {
+    return branch_point_matters(m.delta, width) && m.delta < width / Real(8);
+  };
+  for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+    if (!(pts[k + 1].u > pts[k].u)) continue;
+    quadrature_result<Real> piece = fixed_panel(f, pts[k].u, pts[k + 1].u, rule, est);
+    const Real w = pts[k + 1].u - pts[k].u;
+    if (near_cusp(pts[k], w) || near_cusp(pts[k + 1], w)) {
+      piece.error_estimate = no_bound<Real>();
+      piece.status = result_status::not_guaranteed;
+    }
+    r += piece;
+  }
+  r.evaluations += extra;
+  return r;
 }
 
 }  // namespace detail
@@ -126,17 +174,17 @@ template <curve C>
   Real prev = lo;
   for (const Real& t : c.breakpoints()) {
     if (!(t > lo && t < hi)) continue;
-    total += detail::fixed_panel(f, prev, t, rule, est);
+    total += detail::fixed_segment(c, f, prev, t, rule, est);
     prev = t;
   }
-  if (hi > prev) total += detail::fixed_panel(f, prev, hi, rule, est);
+  if (hi > prev) total += detail::fixed_segment(c, f, prev, hi, rule, est);
   if (est == fixed_estimate::none) total.error_estimate = no_bound<Real>();
   if (flipped) total.value = -total.value;
   return total;
 }
 
-/// Total length by the fixed rule on every segment (no allocation; the hot path of the
-/// benchmarks: fetch the rule once with gauss_legendre<Real>(n)).
+/// Total length by the fixed rule on every segment (with estimate::none no allocation: the hot
+/// path of the benchmarks; fetch the rule once with gauss_legendre<Real>(n)).
 template <curve C>
 [[nodiscard]] quadrature_result<typename C::real_type> gauss_length(
     const C& c, const gauss_legendre_rule<typename C::real_type>& rule, fixed_estimate est = fixed_estimate::none) {
@@ -146,7 +194,7 @@ template <curve C>
   quadrature_result<Real> total;
   total.status = est == fixed_estimate::none ? result_status::not_guaranteed : result_status::converged;
   for (std::size_t i = 0; i + 1 < bp.size(); ++i)
-    if (bp[i + 1] > bp[i]) total += detail::fixed_panel(f, bp[i], bp[i + 1], rule, est);
+    if (bp[i + 1] > bp[i]) total += detail::fixed_segment(c, f, bp[i], bp[i + 1], rule, est);
   if (est == fixed_estimate::none) total.error_estimate = no_bound<Real>();
   return total;
 }

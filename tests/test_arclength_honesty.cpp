@@ -1,0 +1,105 @@
+// Honesty of the arc-length error estimates and the safety of the table polish, on the cases of
+// bench/cases/*.json where the accuracy runner (bench/tool/accuracy.cpp) caught them lying or
+// making things worse. The curves are the JSON files' control data, in double; the truth is the
+// 50-digit reference (reference/arc_length.hpp) of the same data converted exactly to real50.
+// The headline property (issue 4): a result whose status is converged has an error estimate >=
+// its true error; a method that cannot guarantee that says not_guaranteed with estimate +inf.
+#include "support/accuracy.hpp"
+
+#include "curvebench/arclength/length.hpp"
+#include "curvebench/curves/bezier.hpp"
+#include "curvebench/reference/arc_length.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace cb = curvebench;
+namespace al = curvebench::arclength;
+namespace ref = curvebench::reference;
+using R = cb::real50;
+
+namespace {
+
+// Tolerances: none. Every check here is an inequality between a method's own estimate and the
+// 50-digit truth (whose own error is < 1e-40 L, asserted), or a status.
+
+template <class Real>
+using pt2 = cb::point<Real, 2>;
+
+// bench/cases/near_cusp_cubic.json: [[0,0],[1,1],[0.001,1],[1,0]] (dip = 0.001); the same family
+// with other dips for the sweeps; dip = 0 is bench/cases/exact_cusp_cubic.json (P'(1/2) = 0).
+template <class Real>
+cb::bezier<Real, 2> cusp_family(double dip) {
+  const std::vector<pt2<Real>> p{pt2<Real>(0, 0), pt2<Real>(1, 1), pt2<Real>(Real(dip), Real(1)), pt2<Real>(1, 0)};
+  return cb::bezier<Real, 2>(std::span<const pt2<Real>>(p));
+}
+
+R reference_length(const cb::bezier<R, 2>& c) {
+  const ref::reference_arc_length<cb::bezier<R, 2>> r(c);
+  EXPECT_LT(r.length_error(), R("1e-40") * r.length());
+  return r.length();
+}
+
+// converged => |value - L| <= estimate; otherwise the status says so and, for not_guaranteed, the
+// estimate is +inf.
+::testing::AssertionResult honest(const al::quadrature_result<double>& r, const R& length) {
+  const R err = abs(R(r.value) - length);
+  if (r.status == al::result_status::converged && !(err <= R(r.error_estimate)))
+    return ::testing::AssertionFailure() << "converged with estimate " << r.error_estimate / static_cast<double>(length)
+                                         << " < true error " << static_cast<double>(err / length) << " (relative)";
+  if (r.status == al::result_status::not_guaranteed && !std::isinf(r.error_estimate))
+    return ::testing::AssertionFailure() << "not_guaranteed with a finite estimate " << r.error_estimate;
+  return ::testing::AssertionSuccess();
+}
+
+}  // namespace
+
+// Defect 1: the nested estimate |Q2 - Q4| of the fixed rule on a segment with a near-cusp. Before
+// the guard: converged with 2.7e-8, 3.6e-8, 3.5e-8 (relative) for n = 4, 8, 16 against true errors
+// 2.4e-7, 1.7e-7, 1.0e-7.
+TEST(arclength_honesty, fixed_gauss_nested_on_the_near_cusp_case) {
+  const auto c = cusp_family<double>(0.001);
+  const R length = reference_length(cusp_family<R>(0.001));
+  for (int n : {2, 3, 4, 6, 8, 12, 16, 24, 32}) {
+    SCOPED_TRACE("n = " + std::to_string(n));
+    const al::quadrature_result<double> r = al::gauss_length(c, n, al::fixed_estimate::nested);
+    EXPECT_TRUE(honest(r, length));
+    // The branch points at 1/2 +- 1.2e-4 i are far closer than 1/8 of either piece: no bound.
+    EXPECT_EQ(r.status, al::result_status::not_guaranteed);
+    EXPECT_GT(r.evaluations, 14u * static_cast<std::size_t>(n));  // both pieces, 7n each, plus the search
+  }
+}
+
+// The exact cusp is split at its minimum, where the speed is |linear|: analytic on both pieces, so
+// the nested estimate is trusted again and must be a bound.
+TEST(arclength_honesty, fixed_gauss_nested_on_the_exact_cusp_case) {
+  const auto c = cusp_family<double>(0);
+  const R length = reference_length(cusp_family<R>(0));
+  for (int n : {2, 4, 8, 16}) {
+    SCOPED_TRACE("n = " + std::to_string(n));
+    const al::quadrature_result<double> r = al::gauss_length(c, n, al::fixed_estimate::nested);
+    EXPECT_TRUE(honest(r, length));
+    if (n >= 8) {
+      EXPECT_EQ(r.status, al::result_status::converged);
+      EXPECT_LT(r.error_estimate, 1e-12 * static_cast<double>(length));
+    }
+  }
+}
+
+// The guard is a rule, not a patch for one curve: dips from mild to deep, every n, the partial
+// length too.
+TEST(arclength_honesty, fixed_gauss_nested_over_dip_depths) {
+  for (double dip : {0.3, 0.05, 0.01, 1e-4}) {
+    SCOPED_TRACE("dip = " + std::to_string(dip));
+    const auto c = cusp_family<double>(dip);
+    const R length = reference_length(cusp_family<R>(dip));
+    for (int n = 1; n <= 20; ++n) {
+      SCOPED_TRACE("n = " + std::to_string(n));
+      EXPECT_TRUE(honest(al::gauss_length(c, n, al::fixed_estimate::nested), length));
+      EXPECT_TRUE(honest(al::gauss_length(c, 0.0, 1.0, al::gauss_legendre<double>(n), al::fixed_estimate::nested), length));
+    }
+  }
+}
