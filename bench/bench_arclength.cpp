@@ -218,6 +218,21 @@ void subdivision(benchmark::State& state) {
   state.counters["rel_error"] = rel_error(r.value);
 }
 
+/// Boost's fixed Gauss rule on the lean power-form cubic's speed: the same integrand as
+/// gauss_legendre_power_cubic, so the two are compared like for like.
+template <unsigned N>
+void boost_gauss_power_cubic(benchmark::State& state) {
+  const power_cubic c;
+  const auto f = [&c](double u) { return al::speed(c, u); };
+  double v = 0;
+  for (auto _ : state) {
+    v = boost::math::quadrature::gauss<double, N>::integrate(f, 0.0, 1.0);
+    keep(v);
+  }
+  state.counters["evals"] = N;
+  state.counters["rel_error"] = rel_error(v);
+}
+
 template <unsigned N>
 void boost_gauss(benchmark::State& state) {
   const auto f = speed_fn();
@@ -377,8 +392,12 @@ void newton_no_table(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(gauss_legendre_length)->Name("arclength/gauss_legendre")->ArgName("n")->DenseRange(4, 16, 2)->Arg(20)->Arg(24);
-BENCHMARK(gauss_legendre_power_cubic)->Name("arclength/gauss_legendre_power_cubic")->ArgName("n")->Arg(12)->Arg(16)->Arg(20);
-BENCHMARK(newton_power_cubic)->Name("arclength/u_of_s_newton_no_table_power_cubic")->ArgName("tol_exp")->Arg(13);
+// The lean power-form cubic (no segment lookup): ours and Boost's rule on the same integrand.
+BENCHMARK(gauss_legendre_power_cubic)->Name("arclength_lean_cubic/gauss_legendre")->ArgName("n")->Arg(12)->Arg(16)->Arg(20);
+BENCHMARK(boost_gauss_power_cubic<10>)->Name("arclength_lean_cubic/boost_gauss/n:10");
+BENCHMARK(boost_gauss_power_cubic<15>)->Name("arclength_lean_cubic/boost_gauss/n:15");
+BENCHMARK(boost_gauss_power_cubic<20>)->Name("arclength_lean_cubic/boost_gauss/n:20");
+BENCHMARK(newton_power_cubic)->Name("arclength_lean_cubic/u_of_s_newton_no_table")->ArgName("tol_exp")->Arg(13);
 BENCHMARK(gauss_legendre_nested)->Name("arclength/gauss_legendre_nested")->ArgName("n")->Arg(4)->Arg(8);
 BENCHMARK(adaptive_gk15)->Name("arclength/adaptive_gk15")->ArgName("tol_exp")->Arg(6)->Arg(10)->Arg(13);
 BENCHMARK(forward_difference)->Name("arclength/forward_difference")->ArgName("steps")->RangeMultiplier(4)->Range(16, 4096);

@@ -22,6 +22,23 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 TARGETS = (1e-6, 1e-10, 1e-14)
+PEER_PREFIXES = ("peer_", "boost_", "eigen_")
+ERROR_COUNTERS = ("rel_error", "max_ds_rel", "max_err_eps")
+
+
+def is_peer(algorithm):
+    return algorithm.startswith(PEER_PREFIXES)
+
+
+def peer_name(algorithm):
+    return algorithm[5:] if algorithm.startswith("peer_") else algorithm
+
+
+def error_of(row):
+    for k in ERROR_COUNTERS:
+        if k in row["counters"]:
+            return k, row["counters"][k]
+    return None, None
 
 
 def atomic_write(path, text):
@@ -118,17 +135,42 @@ def speed_section(rows):
         body = []
         for args, rs in entries:
             fastest = min(r["ns"] for r in rs)
-            peers = [r for r in rs if r["algorithm"].startswith("peer_")]
+            peers = [r for r in rs if is_peer(r["algorithm"])]
             for r in sorted(rs, key=lambda r: r["ns"]):
-                peer_ratios = ", ".join(f"{p['algorithm'][5:]}: {r['ns'] / p['ns']:.2f}" for p in peers if p is not r)
-                body.append([args or "-", r["algorithm"], r["ns"], r["ns"] / fastest, peer_ratios or "-"])
-            ours = [r for r in rs if not r["algorithm"].startswith("peer_")]
+                peer_ratios = ", ".join(f"{peer_name(p['algorithm'])}: {r['ns'] / p['ns']:.2f}" for p in peers if p is not r)
+                kind, err = error_of(r)
+                body.append([args or "-", r["algorithm"], r["ns"], r["ns"] / fastest, peer_ratios or "-",
+                             f"{kind} {fmt(err)}" if kind else "-"])
+            ours = [r for r in rs if not is_peer(r["algorithm"])]
             for p in peers:
                 if ours:
                     best = min(ours, key=lambda r: r["ns"])
-                    headlines.append((family, args, best["algorithm"], p["algorithm"][5:], best["ns"] / p["ns"]))
-        lines.append(table(["args", "algorithm", "ns per call", "x fastest", "x each peer"], body))
+                    headlines.append((family, args, best["algorithm"], peer_name(p["algorithm"]), best["ns"] / p["ns"]))
+        lines.append(table(["args", "algorithm", "ns per call", "x fastest", "x each peer", "error (counter)"], body))
     return "\n".join(lines), headlines
+
+
+def fastest_at_target(rows):
+    """Per family with error counters: the fastest benchmark (ours or a peer) reaching each target."""
+    fams = defaultdict(list)
+    for r in rows:
+        kind, err = error_of(r)
+        if kind in ("rel_error", "max_ds_rel") and isinstance(err, (int, float)):
+            fams[(r["family"], kind)].append((r, err))
+    out = []
+    for (family, kind), rs in sorted(fams.items()):
+        for t in TARGETS:
+            ok = [(r, e) for r, e in rs if e <= t]
+            if not ok:
+                out.append([family, kind, f"{t:g}", "none reached", "-", "-"])
+                continue
+            r, e = min(ok, key=lambda x: x[0]["ns"])
+            peers = [(p, pe) for p, pe in ok if is_peer(p["algorithm"])]
+            best_peer = min(peers, key=lambda x: x[0]["ns"]) if peers else None
+            vs = (f"{peer_name(best_peer[0]['algorithm'])}/{best_peer[0]['args']} {fmt(best_peer[0]['ns'])} ns"
+                  if best_peer else "no peer reached it")
+            out.append([family, kind, f"{t:g}", f"{r['algorithm']}/{r['args']}", r["ns"], vs])
+    return table(["family", "error measure", "target", "fastest reaching it", "ns", "fastest peer reaching it"], out)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -253,6 +295,9 @@ def main():
             md += ["Headline ratios (our fastest algorithm / peer; < 1 means faster than the peer):", ""]
             md.append(table(["family", "args", "ours", "peer", "ratio"], headlines))
             md.append("")
+        md += ["", "### Fastest at an error target (benchmarks with an error counter)", ""]
+        md.append(fastest_at_target(bench_rows))
+        md += ["", "### All benchmarks", ""]
         md.append(text)
     else:
         md.append("No benchmark results found.")
@@ -291,6 +336,18 @@ def main():
     if props:
         keys = [k for k in props[0].keys() if k != "family"]
         md.append(table(["family"] + keys, [[p["family"]] + [p.get(k) for k in keys] for p in props]))
+    else:
+        md.append("No results.")
+
+    md += ["", "## References", ""]
+    cases = acc.get("cases", [])
+    if cases:
+        md.append("The 50-digit reference of each case (the same spec at 50 digits, integrated by Boost.Math "
+                  "split at breakpoints and speed minima) and its own error estimate, relative:")
+        md.append("")
+        md.append(table(["case", "group", "family", "segments", "length", "reference error", "speed minima", "seconds"],
+                        [[c["name"], c["group"], c["family"], c["segments"], c["reference_length"][:22],
+                          c["reference_error"], c["speed_minima"], c["seconds"]] for c in cases]))
     else:
         md.append("No results.")
 

@@ -30,7 +30,12 @@ namespace validate {
 /// "name[i]" (or "name" when index is npos).
 [[nodiscard]] inline std::string indexed(std::string_view name, std::size_t index = std::string::npos) {
   std::string s(name);
-  if (index != std::string::npos) s += "[" + std::to_string(index) + "]";
+  if (index != std::string::npos) {
+    // Appended piece by piece: GCC 12 at -O3 reports a false -Wrestrict on "[" + to_string(i) + "]".
+    s.push_back('[');
+    s.append(std::to_string(index));
+    s.push_back(']');
+  }
   return s;
 }
 
