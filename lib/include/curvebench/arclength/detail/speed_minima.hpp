@@ -6,7 +6,8 @@
 // Detection: |P'|^2 is sampled at `samples` + 1 points; each interior sample that is a local
 // minimum below (1/4 max speed)^2 is refined by Newton on h = P'.P'' (the derivative of |P'|^2 / 2)
 // with h' = |P''|^2 + P'.P''', kept inside its sampling bracket (a failed step keeps the best point
-// so far). Cost: samples + 1 + 3 per Newton step derivative evaluations (counted).
+// so far); an end sample below that level with the speed falling towards it is examined too (see
+// speed_features). Cost: samples + 1 + 3 per Newton step derivative evaluations (counted).
 //
 // Branch point: the speed is sqrt(g) with g(t) = P'(t).P'(t), analytic wherever g != 0. Near a
 // minimum m, g(t) ~ g0 + g2 (t - m)^2 with g0 = |P'(m)|^2 and g2 = |P''(m)|^2 + P'(m).P'''(m), so
@@ -14,11 +15,10 @@
 // (g0 = 0) has delta = 0: the speed is then |linear| and analytic on each side of m. A near-cusp
 // has a small delta > 0: a Gauss rule on a panel that ends at m (or contains it) sees a
 // singularity at distance delta from the panel, and its error estimate is meaningless until the
-// panel is not much wider than delta (length.hpp). delta is taken from the last Newton iterate's
-// derivatives (within a few ulps of m; the quadratic model's delta changes by O(eps (b - a)) only).
-// A minimum where the model fails (g2 <= 0: a flatter than quadratic minimum) reports
-// delta = b - a, i.e. "as far as the segment is wide": no grading, and the fixed-rule guard treats
-// it as a near-cusp of unknown depth.
+// panel is not much wider than delta (length.hpp). delta is taken from the model at the last
+// Newton iterate (g0 - h^2/g2 is the model's minimum whichever iterate it is taken at). A minimum
+// where the model fails (g2 <= 0: a flatter than quadratic minimum) reports delta = b - a, i.e.
+// "as far as the piece is wide": no grading, and the fixed rule leaves it to its order test.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -29,22 +29,48 @@
 
 namespace curvebench::arclength::detail {
 
-/// A deep interior speed minimum at u, with the branch-point distance delta (see above).
+/// A point of a piece (an end or a deep interior speed minimum) and delta, the distance from it
+/// to the nearest branch point of the speed (0 when there is none nearby or it does not matter).
 template <class Real>
 struct speed_minimum {
   Real u;
   Real delta;
 };
 
-/// Appends the deep interior speed minima of [a, b] (ascending, each > out.back() if any).
+/// The quadratic model of g = |P'|^2 at x: g0 = g(x), h = g'(x)/2 = P'.P'', dh = g''(x)/2.
+template <class Real>
+struct speed_model {
+  Real x, g0, h, dh;
+  /// The branch points' distance from the real axis above the model's minimum:
+  /// sqrt((g0 - h^2/dh) / dh) (dh > 0 required; 0 when the model's minimum is <= 0).
+  [[nodiscard]] Real delta() const {
+    using std::sqrt;
+    const Real gmin = g0 - h * h / dh;
+    return gmin > Real(0) ? sqrt(gmin / dh) : Real(0);
+  }
+};
+
+/// The ends and the deep interior speed minima of [a, b], ascending: front().u = a, back().u = b.
+/// An interior minimum's delta is its branch points' distance from the real axis (b - a when the
+/// quadratic model fails, g'' <= 0). An end's delta is nonzero when the speed there is small and
+/// still falls outwards: the model extrapolated from the end then puts a minimum at distance e
+/// outside the piece, with branch points at distance sqrt(e^2 + delta_min^2) from the end (a
+/// partial length that stops just short of a near-cusp sees it about as close as an interior
+/// one). A minimum inside the sampling interval next to an end (invisible to the interior test)
+/// is found by Newton from that end.
 template <curve C>
-void find_speed_minima(const C& c, const typename C::real_type& a, const typename C::real_type& b,
-                       std::size_t samples, std::vector<speed_minimum<typename C::real_type>>& out,
-                       std::size_t& evaluations) {
+std::vector<speed_minimum<typename C::real_type>> speed_features(const C& c, const typename C::real_type& a,
+                                                                 const typename C::real_type& b, std::size_t samples,
+                                                                 std::size_t& evaluations) {
   using Real = typename C::real_type;
   using std::abs;
   using std::sqrt;
-  if (samples < 2 || !(b > a)) return;
+  std::vector<speed_minimum<Real>> out{{a, Real(0)}};
+  speed_minimum<Real> end_b{b, Real(0)};
+  if (samples < 2 || !(b > a)) {
+    out.push_back(end_b);
+    return out;
+  }
   std::vector<Real> us(samples + 1), g(samples + 1);
   Real gmax(0);
   for (std::size_t k = 0; k <= samples; ++k) {
@@ -53,42 +79,58 @@ void find_speed_minima(const C& c, const typename C::real_type& a, const typenam
     gmax = g[k] > gmax ? g[k] : gmax;
   }
   evaluations += samples + 1;
-  if (!(gmax > Real(0))) return;
+  if (!(gmax > Real(0))) {
+    out.push_back(end_b);
+    return out;
+  }
   const Real threshold = gmax / Real(16);
-  for (std::size_t k = 1; k < samples; ++k) {
-    if (!(g[k] <= g[k - 1] && g[k] <= g[k + 1]) || g[k] > threshold) continue;
-    if (g[k] == Real(0) && g[k - 1] == Real(0)) continue;  // inside a zero-speed stretch
-    Real x = us[k];
-    Real g0 = g[k], g2(-1);
+  const Real resolution = Real(4) * epsilon<Real>() * (abs(a) + abs(b) + (b - a));
+  // Newton on h from x inside (lo, hi); returns the model at the last point evaluated, with x the
+  // final iterate (within `resolution` of it when converged; a step leaving the bracket keeps the
+  // best point so far).
+  auto refine = [&](Real x, const Real& lo, const Real& hi) {
+    speed_model<Real> m{x, Real(0), Real(0), Real(-1)};
     for (int it = 0; it < 30; ++it) {
       const typename C::point_type d1 = c.derivative(x, 1);
       const typename C::point_type d2 = c.derivative(x, 2);
       const typename C::point_type d3 = c.derivative(x, 3);
       evaluations += 3;
-      const Real h = d1.dot(d2);
-      const Real dh = d2.squaredNorm() + d1.dot(d3);
-      g0 = d1.squaredNorm();
-      g2 = dh;
-      if (!(dh > Real(0))) break;
-      const Real next = x - h / dh;
-      if (!(next > us[k - 1] && next < us[k + 1])) break;
-      const bool done = abs(next - x) <= Real(4) * epsilon<Real>() * (abs(x) + (b - a));
+      m = {x, d1.squaredNorm(), d1.dot(d2), d2.squaredNorm() + d1.dot(d3)};
+      if (!(m.dh > Real(0))) break;
+      const Real next = x - m.h / m.dh;
+      if (!(next > lo && next < hi)) break;
+      const bool done = abs(next - x) <= resolution;
       x = next;
       if (done) break;
     }
-    const Real delta = g2 > Real(0) ? sqrt(g0 / g2) : b - a;
-    if (x > a && x < b && (out.empty() || x > out.back().u)) out.push_back({x, delta});
+    m.x = x;
+    return m;
+  };
+  auto add_interior = [&](const speed_model<Real>& m) {
+    if (m.x > a && m.x < b && m.x > out.back().u + resolution) out.push_back({m.x, m.dh > Real(0) ? m.delta() : b - a});
+  };
+  // An end whose small speed falls towards it: a minimum just inside, or just outside the piece.
+  auto end_feature = [&](std::size_t k, std::size_t inner, Real& delta) {
+    if (!(g[k] <= g[inner]) || g[k] > threshold || (g[k] == Real(0) && g[inner] == Real(0))) return;
+    const Real lo = k == 0 ? a : us[inner], hi = k == 0 ? us[inner] : b;
+    const speed_model<Real> m = refine(us[k], lo, hi);
+    if (m.x != us[k]) {
+      add_interior(m);
+      return;
+    }
+    if (!(m.dh > Real(0))) return;
+    const Real e = abs(m.h / m.dh), dm = m.delta();
+    delta = sqrt(e * e + dm * dm);
+  };
+  end_feature(0, 1, out.front().delta);
+  for (std::size_t k = 1; k < samples; ++k) {
+    if (!(g[k] <= g[k - 1] && g[k] <= g[k + 1]) || g[k] > threshold) continue;
+    if (g[k] == Real(0) && g[k - 1] == Real(0)) continue;  // inside a zero-speed stretch
+    add_interior(refine(us[k], us[k - 1], us[k + 1]));
   }
-}
-
-/// The minima's parameters only, appended to out (each > out.back() if any).
-template <curve C>
-void append_speed_minima(const C& c, const typename C::real_type& a, const typename C::real_type& b,
-                         std::size_t samples, std::vector<typename C::real_type>& out, std::size_t& evaluations) {
-  std::vector<speed_minimum<typename C::real_type>> m;
-  find_speed_minima(c, a, b, samples, m, evaluations);
-  for (const auto& x : m)
-    if (out.empty() || x.u > out.back()) out.push_back(x.u);
+  end_feature(samples, samples - 1, end_b.delta);
+  out.push_back(end_b);
+  return out;
 }
 
 /// Whether a branch point at distance delta from a minimum matters for a piece of width `width`
