@@ -11,31 +11,12 @@
 #include "curvebench/curves/nurbs.hpp"
 #include "curvebench/curves/piecewise_cubic.hpp"
 #include "curvebench/curves/property_audit.hpp"
-// Families written in parallel by other engineers: audited when their header is in the tree.
-#if __has_include("curvebench/curves/kochanek_bartels.hpp")
 #include "curvebench/curves/kochanek_bartels.hpp"
-#define CB_AUDIT_KB 1
-#endif
-#if __has_include("curvebench/curves/natural_cubic_spline.hpp")
 #include "curvebench/curves/natural_cubic_spline.hpp"
-#define CB_AUDIT_NATURAL 1
-#endif
-#if __has_include("curvebench/curves/composite_bezier.hpp")
 #include "curvebench/curves/composite_bezier.hpp"
-#define CB_AUDIT_COMPOSITE 1
-#endif
-#if __has_include("curvebench/curves/lagrange.hpp")
 #include "curvebench/curves/lagrange.hpp"
-#define CB_AUDIT_LAGRANGE 1
-#endif
-#if __has_include("curvebench/curves/polyline.hpp")
 #include "curvebench/curves/polyline.hpp"
-#define CB_AUDIT_POLYLINE 1
-#endif
-#if __has_include("curvebench/curves/rational_bezier.hpp")
 #include "curvebench/curves/rational_bezier.hpp"
-#define CB_AUDIT_RATIONAL 1
-#endif
 
 #include <gmock/gmock.h>
 
@@ -112,13 +93,11 @@ cb::nurbs<double, 2> clamped_cubic_nurbs(span2 p) {
   return cb::nurbs<double, 2>(4, cb::bspline_clamped_knots<double>(p.size(), 4, 0.0, 1.0), list2(p.begin(), p.end()), w);
 }
 cb::bezier<double, 2> single_bezier(span2 p) { return cb::bezier<double, 2>(p); }
-#ifdef CB_AUDIT_RATIONAL
 cb::rational_bezier<double, 2> single_rational_bezier(span2 p) {
   std::vector<double> w(p.size());
   for (std::size_t i = 0; i < w.size(); ++i) w[i] = 0.5 + static_cast<double>(i % 3);
   return cb::rational_bezier<double, 2>(p, std::span<const double>(w));
 }
-#endif
 cb::cardinal_spline<double, 2> catmull_rom(span2 p) { return cb::cardinal_spline<double, 2>(list2(p.begin(), p.end())); }
 // Seed 001's cardinal spline: n points, n - 3 segments from P_1 to P_{n-2}; the end points only
 // shape the end tangents s (P_2 - P_0) and s (P_{n-1} - P_{n-3}).
@@ -134,17 +113,13 @@ cb::cardinal_spline<double, 2> centripetal_catmull_rom(span2 p) {
   o.alpha = 0.5;
   return cb::cardinal_spline<double, 2>(list2(p.begin(), p.end()), o);
 }
-#ifdef CB_AUDIT_KB
 cb::kochanek_bartels<double, 2> kb_with(span2 p, cb::tcb<double> k) {
   return cb::kochanek_bartels<double, 2>(list2(p.begin(), p.end()), std::vector<cb::tcb<double>>(p.size(), k),
                                          typename cb::kochanek_bartels<double, 2>::options{});
 }
-#endif
-#ifdef CB_AUDIT_NATURAL
 cb::natural_cubic_spline<double, 2> natural(span2 p) {
   return cb::natural_cubic_spline<double, 2>(uniform(p.size()), list2(p.begin(), p.end()), cb::spline_end::natural);
 }
-#endif
 cb::hermite_spline<double, 2> hermite_chain(span2 items) { return cb::hermite_spline<double, 2>::chain(items); }
 
 }  // namespace
@@ -195,11 +170,9 @@ TEST(property_audit, bezier) {
   record("Bezier, single, degree 9", r);
   // Every Bernstein polynomial is non-zero on (0, 1): the middle points move the whole curve.
   for (std::size_t i = 2; i + 2 < data.size(); ++i) EXPECT_EQ(static_cast<double>(r.moved_fraction[i]), 1.0) << i;
-#ifdef CB_AUDIT_RATIONAL
   const auto q = cb::audit_properties<double, 2>(single_rational_bezier, data);
   expect_row(q, "ends only", false, 0, true, true, "yes", "yes");
   record("rational Bezier, degree 9, weights 0.5..2.5", q);
-#endif
 }
 
 // Hermite chain (seed 001's alternating points and tangents). Seed: all, local, C1, affine, n/a, n/a.
@@ -243,7 +216,6 @@ TEST(property_audit, cardinal_catmull_rom) {
   record("Catmull-Rom, centripetal (alpha = 1/2)", c);
 }
 
-#ifdef CB_AUDIT_KB
 // Kochanek-Bartels (not in the seed's table). Tension and bias keep C1 (the time-adjusted tangents
 // are equal on both sides); continuity c != 0 makes incoming and outgoing tangents differ: C0.
 TEST(property_audit, kochanek_bartels) {
@@ -255,9 +227,7 @@ TEST(property_audit, kochanek_bartels) {
   record("Kochanek-Bartels, c = 0.5", tc);
 }
 
-#endif
 
-#ifdef CB_AUDIT_NATURAL
 // Natural cubic spline. Seed: all, not local, C2, affine, n/a, n/a. The seed marks hull and VD
 // "n/a" (it treats the family like Hermite, whose controls include tangents); its controls are
 // points only, so the audit measures them: the C2 interpolant overshoots the step (out of the
@@ -272,9 +242,7 @@ TEST(property_audit, natural_cubic_spline) {
   record("natural cubic spline (natural ends)", r);
 }
 
-#endif
 
-#ifdef CB_AUDIT_COMPOSITE
 // Composite Bezier (the seed's Bezier row is about joined cubic segments: "C1"). Two ways to build a
 // chain of cubics from the same ten items, on knots 0, 1, 2, ...:
 //  - shared joints: segments P0..P3, P3..P6, P6..P9 (C0 at the joints, no handle constraint);
@@ -320,9 +288,7 @@ TEST(property_audit, composite_bezier) {
   expect_row(c1, "ends only", true, 1, false, true, "yes", "yes");
   record("composite Bezier, cubic, implied midpoint joints", c1);
 }
-#endif
 
-#ifdef CB_AUDIT_LAGRANGE
 // Lagrange interpolation (seed 001: "high degree ones are too wiggly"): one polynomial of degree 9
 // through all ten points at equispaced parameters. All interpolated, not local (every Lagrange basis
 // polynomial is non-zero almost everywhere), one piece, affine invariant (the basis sums to 1), and
@@ -332,9 +298,7 @@ TEST(property_audit, lagrange) {
   expect_row(r, "all", false, 0, true, true, "no", "no");
   record("Lagrange, degree 9, equispaced", r);
 }
-#endif
 
-#ifdef CB_AUDIT_POLYLINE
 // Polyline (seed 001 lists it among the representations, not in the cubic table): it passes through
 // its vertices, each vertex moves only its two segments, C0 with slope jumps, and it is its own
 // control polygon, so hull and VD hold trivially.
@@ -343,7 +307,6 @@ TEST(property_audit, polyline) {
   expect_row(r, "all", true, 0, false, true, "yes", "yes");
   record("polyline", r);
 }
-#endif
 
 // The cubic B-spline converted to the piecewise_cubic engine measures the same row (the audit sees
 // only the curve interface, and the conversion keeps the curve).

@@ -6,6 +6,7 @@
 #include "curvebench/arclength/forward_difference.hpp"
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/arclength/parameterization.hpp"
+#include "curvebench/curves/property_audit.hpp"
 #include "curvebench/io/spec.hpp"
 #include "curvebench/reference/arc_length.hpp"
 #include "curvebench/reference/multiprecision.hpp"
@@ -362,6 +363,44 @@ void evaluation(sink& k, const curve_d<Dim>& c, const curve_q<Dim>& q, const swe
   }
 }
 
+/// Seed 001's properties measured on a 2D case (up to 40 control points): the family is rebuilt from
+/// the spec with each perturbed set of points (Hermite slopes enter as tangent items), so any
+/// family and any user case can be audited. Returns the markdown row, or null when not audited.
+json audit(const case_info& info) {
+  static constexpr std::string_view point_families[] = {"polyline", "lagrange", "bezier", "rational_bezier",
+                                                        "cardinal", "catmull_rom", "kochanek_bartels",
+                                                        "natural_cubic", "bspline", "nurbs", "hermite"};
+  const io::field spec = io::root(info.spec, info.name);
+  const std::string type = spec.member("type").string();
+  if (std::find(std::begin(point_families), std::end(point_families), type) == std::end(point_families)) return {};
+  if (!spec.has("points") || spec.member("points").value.is_object() || spec.member("points").array_size() > 40)
+    return {};
+  const bool hermite = type == "hermite";
+  if (hermite && !spec.has("slopes")) return {};
+  point_list<double, 2> items = spec.member("points").points<double, 2>();
+  const std::size_t n = items.size();
+  std::vector<control_role> roles(n, control_role::point);
+  if (hermite) {
+    const point_list<double, 2> slopes = spec.member("slopes").points<double, 2>();
+    items.insert(items.end(), slopes.begin(), slopes.end());
+    roles.resize(items.size(), control_role::tangent);
+  }
+  const auto build = [&](std::span<const point<double, 2>> it) {
+    json s = info.spec;
+    s["points"] = io::detail::points_json<2>(it.first(n));
+    if (hermite) s["slopes"] = io::detail::points_json<2>(it.subspan(n));
+    return io::curve_from_spec<double, 2>(io::root(s, info.name));
+  };
+  try {
+    const auto r = audit_properties<double, 2>(build, std::span<const point<double, 2>>(items), roles);
+    return audit_markdown_row(info.name + " (" + type + ")", r);
+  } catch (const invalid_input& e) {
+    // Some families constrain their data (a periodic spline's last point equals its first), so
+    // moving one control point alone is not a valid curve: the audit does not apply; say why.
+    return "| " + info.name + " (" + type + ") | not audited: " + e.what() + " | | | | | |\n";
+  }
+}
+
 template <int Dim>
 json run_dim(const case_info& info, bool quick) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -383,6 +422,8 @@ json run_dim(const case_info& info, bool quick) {
   s_of_u<Dim>(k, c, us, s_ref, L, w);
   u_of_s<Dim>(k, c, ref, w);
   evaluation<Dim>(k, c, q, w, info.spec);
+  json properties;
+  if constexpr (Dim == 2) properties = audit(info);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::ostringstream length_text;
   length_text << std::setprecision(40) << L;
@@ -398,6 +439,7 @@ json run_dim(const case_info& info, bool quick) {
             {"reference_length", length_text.str()},
             {"reference_error", static_cast<double>(ref.length_error() / L)},
             {"speed_minima", ref.speed_minima().size()},
+            {"properties", properties},
             {"seconds", seconds}}}};
 }
 
