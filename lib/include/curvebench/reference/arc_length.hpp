@@ -9,12 +9,16 @@
 // (|P'|^2)'/2 = P'.P'' with derivative |P''|^2 + P'.P''' (exact derivatives of any order are part of
 // the curve concept), which locates a cusp to full precision; minima below
 // split_ratio * (max speed on the segment) become split points. A piece that ends at one is graded
-// geometrically towards it (panels [m + h/2^(k+1), m + h/2^k], 48 levels), so a near-singularity
-// is never closer to a panel than the panel's own size (plain bisection towards it makes Boost's
-// recursion, whose absolute tolerance halves per level, blow up exponentially). Every split
-// minimum is graded, not only the deep ones: a moderate dip (speed 1/100 of the maximum, dip 0.01
-// of the near-cusp family in tests/test_arclength_honesty.cpp) left ungraded reached only 1.5e-21
-// relative with depth 6, far from 1e-40.
+// geometrically towards it (panels [m + h/2^(k+1), m + h/2^k]), so a near-singularity is never
+// closer to a panel than the panel's own size (plain bisection towards it makes Boost's
+// recursion, whose absolute tolerance halves per level, blow up exponentially). A deep minimum
+// (speed below 1/1000 of the maximum) gets 48 levels; a milder one whose branch points come
+// within 1/32 of the segment width h gets log2(h / delta) + 4 levels, delta = sqrt(g_min / g'')
+// being their distance from the real axis (|P'|^2 ~ g_min + g'' (t - m)^2): enough to put the
+// last panel inside that scale. Left ungraded, a dip to 1/100 of the maximum speed (dip 0.01 of
+// the near-cusp family in tests/test_arclength_honesty.cpp, h / delta ~ 800) reached only
+// 1.5e-21 relative with depth 6; grading every mild minimum made the accuracy runner 10-100x
+// slower on nurbs_weighted_3d, whose minima Boost resolves without it.
 // Every panel is integrated by boost::math::quadrature::gauss_kronrod<Real, 61> (adaptive,
 // depth <= max_depth) to the relative tolerance, or, ungraded, by tanh_sinh (whose nodes cluster at
 // the ends already) when chosen; the Boost error
@@ -70,22 +74,22 @@ class reference_arc_length {
     const std::span<const Real> bp = curve_.breakpoints();
     for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
       splits_.push_back(bp[i]);
-      is_minimum_.push_back(false);
+      grade_levels_.push_back(0);
       if (!(bp[i + 1] > bp[i])) continue;
-      for (const auto& [z, deep] : interior_minima(bp[i], bp[i + 1])) {
+      for (const auto& [z, levels] : interior_minima(bp[i], bp[i + 1])) {
         splits_.push_back(z);
-        is_minimum_.push_back(deep);  // graded towards
+        grade_levels_.push_back(levels);
         minima_.push_back(z);
       }
     }
     splits_.push_back(bp.back());
-    is_minimum_.push_back(false);
+    grade_levels_.push_back(0);
     cumulative_.push_back(Real(0));
     cumulative_error_.push_back(Real(0));
     for (std::size_t i = 0; i + 1 < splits_.size(); ++i) {
       Real err(0);
       const Real v = splits_[i + 1] > splits_[i]
-                         ? integrate(splits_[i], splits_[i + 1], is_minimum_[i], is_minimum_[i + 1], err)
+                         ? integrate(splits_[i], splits_[i + 1], grade_levels_[i], grade_levels_[i + 1], err)
                          : Real(0);
       cumulative_.push_back(cumulative_.back() + v);
       cumulative_error_.push_back(cumulative_error_.back() + err);
@@ -108,7 +112,7 @@ class reference_arc_length {
     const std::size_t i = it == splits_.begin() ? 0 : static_cast<std::size_t>(it - splits_.begin()) - 1;
     arclength::quadrature_result<Real> r;
     Real err(0);
-    r.value = cumulative_[i] + (u > splits_[i] ? integrate(splits_[i], u, is_minimum_[i], next_is_minimum(i), err) : Real(0));
+    r.value = cumulative_[i] + (u > splits_[i] ? integrate(splits_[i], u, grade_levels_[i], next_levels(i), err) : Real(0));
     r.error_estimate = cumulative_error_[i] + err;
     r.status = arclength::result_status::converged;
     return r;
@@ -128,7 +132,7 @@ class reference_arc_length {
     const Real s0 = cumulative_[i];
     auto f = [&](const Real& x) {
       Real err(0);
-      const Real v = x > lo ? integrate(lo, x, is_minimum_[i], is_minimum_[i + 1], err) : Real(0);
+      const Real v = x > lo ? integrate(lo, x, grade_levels_[i], grade_levels_[i + 1], err) : Real(0);
       using std::sqrt;
       const typename C::point_type d = curve_.derivative(x, 1);
       return std::make_pair(s0 + v - s, Real(sqrt(d.squaredNorm())));
@@ -141,25 +145,27 @@ class reference_arc_length {
  private:
   [[nodiscard]] Real speed2(const Real& u) const { return curve_.derivative(u, 1).squaredNorm(); }
 
-  [[nodiscard]] bool next_is_minimum(std::size_t i) const { return i + 1 < is_minimum_.size() && is_minimum_[i + 1]; }
+  [[nodiscard]] int next_levels(std::size_t i) const { return i + 1 < grade_levels_.size() ? grade_levels_[i + 1] : 0; }
 
   // One piece, graded geometrically towards an end that is (or lies next to) a speed minimum: the
   // near-singularity there is then never closer to a panel than the panel's own size, so every
   // panel converges at Boost's first levels instead of bisecting towards the end (whose halving
   // absolute tolerance makes Boost's recursion blow up exponentially near rounding level).
-  [[nodiscard]] Real integrate(const Real& a, const Real& b, bool grade_a, bool grade_b, Real& err) const {
+  // levels_a, levels_b: grading levels towards a and b (0: none).
+  [[nodiscard]] Real integrate(const Real& a, const Real& b, int levels_a, int levels_b, Real& err) const {
+    const bool grade_a = levels_a > 0, grade_b = levels_b > 0;
     err = Real(0);
     // tanh-sinh clusters its nodes doubly exponentially at both ends already: no grading.
     if (opt_.integrator == reference_integrator::tanh_sinh) return integrate_panel(a, b, opt_.tolerance, err);
     if (grade_a && grade_b) {
       const Real mid = (a + b) / Real(2);
       Real e1(0), e2(0);
-      const Real v = integrate(a, mid, true, false, e1) + integrate(mid, b, false, true, e2);
+      const Real v = integrate(a, mid, levels_a, 0, e1) + integrate(mid, b, 0, levels_b, e2);
       err = e1 + e2;
       return v;
     }
     if (!grade_a && !grade_b) return integrate_panel(a, b, opt_.tolerance, err);
-    const int levels = 48;  // 2^-48 of the piece: the last panel is far inside any near-singularity scale
+    const int levels = grade_a ? levels_a : levels_b;
     using std::max;
     using std::min;
     using std::sqrt;
@@ -213,8 +219,8 @@ class reference_arc_length {
   }
 
   // Interior local minima of the speed on (a, b) below split_ratio * max speed, refined.
-  // (location, graded): every such minimum is graded towards (see the header).
-  [[nodiscard]] std::vector<std::pair<Real, bool>> interior_minima(const Real& a, const Real& b) const {
+  // (location, grading levels), see the header.
+  [[nodiscard]] std::vector<std::pair<Real, int>> interior_minima(const Real& a, const Real& b) const {
     using std::abs;
     using std::sqrt;
     const std::size_t m = opt_.samples_per_segment;
@@ -225,7 +231,7 @@ class reference_arc_length {
       g[k] = speed2(us[k]);
       gmax = std::max(gmax, g[k]);
     }
-    std::vector<std::pair<Real, bool>> out;
+    std::vector<std::pair<Real, int>> out;
     if (!(gmax > Real(0))) return out;  // speed zero on the whole segment: nothing to split
     const Real threshold = opt_.split_ratio * opt_.split_ratio * gmax;
     for (std::size_t k = 1; k < m; ++k) {
@@ -248,8 +254,22 @@ class reference_arc_length {
         x = next;
         if (done) break;
       }
-      if (x > a && x < b && (out.empty() || x > out.back().first))
-        out.emplace_back(x, true);
+      if (x > a && x < b && (out.empty() || x > out.back().first)) {
+        const Real g0 = speed2(x);
+        int levels = 48;
+        if (g0 > gmax / Real(1000000)) {  // not deep: as many levels as the branch points need
+          const typename C::point_type d1 = curve_.derivative(x, 1), d2 = curve_.derivative(x, 2),
+                                       d3 = curve_.derivative(x, 3);
+          const Real g2 = d2.squaredNorm() + d1.dot(d3);
+          using std::ceil;
+          using std::log2;
+          if (g2 > Real(0)) {
+            const Real ratio = (b - a) / sqrt(g0 / g2);
+            levels = ratio > Real(32) ? std::min(48, static_cast<int>(ceil(log2(ratio))) + 4) : 0;
+          }
+        }
+        out.emplace_back(x, levels);
+      }
     }
     return out;
   }
@@ -257,7 +277,7 @@ class reference_arc_length {
   C curve_;
   reference_options<Real> opt_;
   std::vector<Real> splits_, minima_, cumulative_, cumulative_error_;
-  std::vector<bool> is_minimum_;
+  std::vector<int> grade_levels_;
 };
 
 }  // namespace curvebench::reference
