@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -97,15 +98,19 @@ struct field {
     fail("\"" + s + "\" is not one of: " + list);
   }
 
-  /// Fails on any member not in `allowed` (catches misspelled options).
-  void only_members(std::initializer_list<std::string_view> allowed) const {
+  /// Fails on any member not in `allowed` (catches misspelled options); `context` is added to the
+  /// message after the field's name, e.g. ` for type "cardinal"`.
+  void only_members(std::span<const std::string_view> allowed, std::string_view context = {}) const {
     if (!value.is_object()) fail("expected an object, got " + shown());
     for (const auto& [key, v] : value.items())
       if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
         std::string list;
         for (auto a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-        fail("unknown field \"" + key + "\" (allowed here: " + list + ")");
+        fail("unknown field \"" + key + "\"" + std::string(context) + " (allowed: " + list + ")");
       }
+  }
+  void only_members(std::initializer_list<std::string_view> allowed) const {
+    only_members(std::span<const std::string_view>(allowed.begin(), allowed.size()));
   }
 
   /// An array of finite numbers converted to Real.

@@ -133,14 +133,7 @@ inline constexpr std::string_view metadata[] = {"type", "name", "group", "reason
 inline void allow(const field& spec, std::initializer_list<std::string_view> fields) {
   std::vector<std::string_view> all(std::begin(metadata), std::end(metadata));
   all.insert(all.end(), fields.begin(), fields.end());
-  if (!spec.value.is_object()) spec.fail("expected an object, got " + spec.shown());
-  for (const auto& [key, v] : spec.value.items())
-    if (std::find(all.begin(), all.end(), key) == all.end()) {
-      std::string list;
-      for (auto a : all) list += (list.empty() ? "" : ", ") + std::string(a);
-      spec.fail("unknown field \"" + key + "\" for type \"" + spec.member("type").string() + "\" (allowed: " + list +
-                ")");
-    }
+  spec.only_members(all, " for type \"" + spec.member("type").string() + "\"");
 }
 
 template <class Real>
