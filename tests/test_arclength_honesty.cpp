@@ -10,6 +10,7 @@
 #include "curvebench/arclength/newton_inversion.hpp"
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/cardinal_spline.hpp"
 #include "curvebench/reference/arc_length.hpp"
 
 #include <gtest/gtest.h>
@@ -243,5 +244,71 @@ TEST(arclength_honesty, polish_never_worsens_the_table_on_the_smooth_case) {
     if (m == 16) {
       EXPECT_LT(w[2], w[3] / 1000);  // off the grid a coarse table is still improved
     }
+  }
+}
+
+namespace {
+
+// Catmull-Rom paths (cardinal splines with s = 1/2 and the default phantom ends, which is what the
+// case files' "catmull_rom" type builds, io/spec.hpp): the motion engineer's 4-segment path
+// (tests/test_motion.cpp) and bench/cases/catmull_rom_uniform_2d.json (5 segments).
+template <class Real>
+cb::cardinal_spline<Real, 2> catmull_rom(int which) {
+  cb::point_list<Real, 2> keys{pt2<Real>(0, 0), pt2<Real>(1, 2), pt2<Real>(3, 3), pt2<Real>(4, 0), pt2<Real>(6, 1)};
+  if (which == 1) keys.push_back(pt2<Real>(7, 4));
+  return cb::cardinal_spline<Real, 2>(keys);
+}
+
+// max |s(u(s)) - s| / L over targets at fractions f of a cell on both sides of every knot's
+// arc-length position (the cells where u'' jumps), with the 50-digit truth.
+template <class C, class Truth>
+double worst_near_knots(const al::parameterization<C>& p, const Truth& r50) {
+  const double L = p.length(), ds = L / static_cast<double>(p.table_intervals());
+  double worst = 0;
+  const auto cum = p.segments().cumulative();
+  for (std::size_t i = 1; i + 1 < cum.size(); ++i)
+    for (double f : {-0.9, -0.5, -0.2, -0.05, 0.05, 0.2, 0.5, 0.9}) {
+      const double s = std::clamp(cum[i] + f * ds, 0.0, L);
+      worst = std::max(worst, static_cast<double>(abs(r50.s(R(p.u(s))) - R(s)) / r50.length()));
+    }
+  return worst;
+}
+
+}  // namespace
+
+// Defect 4: the automatic Hermite table sizing hit max_table_intervals = 65536 on Catmull-Rom paths
+// with a measured error of 9.2e-11 L (4 segments) and 4.5e-10 L (5 segments, stopped at 40960):
+// u(s) has a jump in u'' at every knot, and a cubic across it converges only like ds^2. Now a cell
+// that contains a knot's arc-length position is split there (two cubic pieces, still O(1)), and
+// the nodes no longer drift by a random walk of roundings (sqrt(M) eps L).
+TEST(arclength_honesty, hermite_table_on_catmull_rom_paths) {
+  for (int which : {0, 1}) {
+    SCOPED_TRACE(which == 0 ? "motion path, 4 segments" : "catmull_rom_uniform_2d, 5 segments");
+    const auto c = catmull_rom<double>(which);
+    const ref::reference_arc_length<cb::cardinal_spline<R, 2>> r50(catmull_rom<R>(which));
+    const al::parameterization<cb::cardinal_spline<double, 2>> p(c);
+    EXPECT_EQ(p.table_status(), al::result_status::converged);
+    EXPECT_LE(p.table_intervals(), p.options().max_table_intervals);
+    EXPECT_LE(p.table_error(), p.options().table_tolerance * p.length());
+    // The target for the O(1) table: |ds| <= 1e-14 L, in the knot cells and anywhere.
+    EXPECT_LT(worst_near_knots(p, r50), 1e-14);
+    double worst = 0;
+    for (int k = 0; k < 33; ++k) {
+      const double s = p.length() * std::fmod(k * 0.6180339887498949, 1.0);
+      worst = std::max(worst, static_cast<double>(abs(r50.s(R(p.u(s))) - R(s)) / r50.length()));
+    }
+    EXPECT_LT(worst, 1e-14);
+    // O(ds^4) in the knot cells: 4x the intervals, 256x less error asymptotically (measured 112x
+    // and 117x from M = 128, still pre-asymptotic; ds^2 would give 16x).
+    double e[2];
+    for (std::size_t m : {128u, 512u}) {
+      al::parameterization_options<double> o;
+      o.table_intervals = m;
+      e[m == 512u] = worst_near_knots(al::parameterization<cb::cardinal_spline<double, 2>>(c, o), r50);
+    }
+    std::printf("[%s] M = %zu (%s), table error %.2g L; knot cells at M = 128 / 512: %.2g / %.2g L\n",
+                which == 0 ? "4 segments" : "5 segments", p.table_intervals(),
+                std::string(al::to_string(p.table_status())).c_str(), p.table_error() / p.length(), e[0], e[1]);
+    EXPECT_GT(e[0] / e[1], 64.0);
   }
 }

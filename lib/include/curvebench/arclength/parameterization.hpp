@@ -10,15 +10,24 @@
 //              error O(ds^2);
 //          (b) hermite_table: the same O(1) lookup, cubic Hermite of u(s) with the slopes
 //              du/ds (Fritsch-Carlson limited where a slope exceeds 3x the secant, so u(s) is
-//              monotone; a node where |P'| = 0 uses the secant): error O(ds^4); optionally
-//              polished by one safeguarded Newton step (s(u) from the nearer table node by one
-//              G3-K7 panel; the step is kept only inside the cell and only when it provably
-//              reduces the residual, see polish());
+//              monotone; a node where |P'| = 0 uses the secant): error O(ds^4). A cell that
+//              contains the arc-length position of a knot (interior breakpoint) is split there
+//              into two pieces (u and the one-sided speeds at the knot are known exactly), since
+//              u(s) has a jump in u'' (C1 curves) or u' (C0) at a knot and one cubic across it
+//              converges only like ds^2: on a 4-segment Catmull-Rom path the automatic sizing hit
+//              its 65536-interval cap at 9.2e-11 L that way; split, it converges at 65536 with
+//              5.6e-16 L. The lookup stays O(1): j = floor(s / ds), then one comparison per knot
+//              inside cell j (none in most cells; several only where segments are shorter than
+//              L / M). Optionally polished by one safeguarded Newton step (s(u) from the nearer
+//              table node by one G3-K7 panel; the step is kept only inside the cell and only when
+//              it provably reduces the residual, see polish());
 //          (c) newton: Newton in the segment bracket (newton_inversion.hpp), no table.
 //   constant_speed_parameters(n): the u of n points equally spaced in arc length, ends included.
-// The table size M is given, or found by doubling from 16 per segment until the Hermite table's
-// measured error (at the midpoints, against Newton values, |du| * |P'|) is below
-// table_tolerance * L; the table kept is the doubled one (about 16x more accurate than measured).
+// The table size M is given, or found by doubling from 16 per segment (rounded up to a power of
+// two) until the Hermite table's measured error (at the midpoints, against Newton values,
+// |du| * |P'|) is below table_tolerance * L; the table kept is the doubled one (about 16x more
+// accurate than measured). The nodes are solved in a chain, each from the previous one, in arc
+// lengths relative to it (see compute_nodes), so their error stays at ~eps L for any M.
 // Sources: seed 002 (arc-length table, forward differencing and u = U(s) by table lookup);
 // Eberly (2008); Fritsch & Carlson, SIAM J. Numer. Anal. 17 (1980) for the monotone limiter.
 // Cost: construction O(M) Newton solves; u(s) O(1) with the tables (a few ns), 7 or 15
@@ -36,6 +45,7 @@
 #include "curvebench/core/error.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <span>
 #include <stdexcept>
@@ -87,7 +97,10 @@ class parameterization {
     if (!(segments_.length() > Real(0)))
       validate::fail("curve length = " + to_text(segments_.length()) +
                      ": an arc-length parameterization needs a curve of positive length");
-    if (opt_.method != inversion_method::newton) build_table();
+    if (opt_.method != inversion_method::newton) {
+      collect_knots();
+      build_table();
+    }
   }
 
   [[nodiscard]] const C& curve() const { return curve_; }
@@ -185,6 +198,34 @@ class parameterization {
     [[nodiscard]] Real eval(const Real& t) const { return c0 + t * (c1 + t * (c2 + t * c3)); }
   };
 
+  // One Hermite piece of u(s) on [s0, s0 + 1/inv_w]: u = c(t), t = (s - s0) inv_w.
+  struct piece {
+    Real s0, inv_w;
+    cubic c;
+  };
+  // A knot (interior breakpoint) at arc length s, parameter u, with the speeds just left and right
+  // of it (they differ where the curve is only C0).
+  struct knot {
+    Real s, u, speed_left, speed_right;
+  };
+  // The Hermite table: cell j owns pieces first[j] .. first[j + 1] - 1, one per cell unless the
+  // arc-length position of a knot falls inside the cell; then the cell is split there, so that no
+  // piece straddles a knot, where u(s) has a jump in u'' (C1 curves) or in u' (C0 curves).
+  struct hermite_table {
+    std::vector<std::size_t> first;
+    std::vector<piece> pieces;
+    [[nodiscard]] Real eval(const Real& s, std::size_t j) const {
+      std::size_t k = first[j];
+      const std::size_t end = first[j + 1];
+      while (k + 1 < end && !(s < pieces[k + 1].s0)) ++k;
+      const piece& p = pieces[k];
+      Real t = (s - p.s0) * p.inv_w;
+      if (t < Real(0)) t = Real(0);  // floor(s / ds) rounded up across a node
+      if (t > Real(1)) t = Real(1);
+      return p.c.eval(t);
+    }
+  };
+
   static std::size_t to_index(const Real& x) {
     using std::floor;
     return static_cast<std::size_t>(static_cast<long long>(floor(x)));
@@ -231,7 +272,7 @@ class parameterization {
     Real t;
     locate(s, j, t);
     const Real uu = m == inversion_method::linear_table ? nodes_u_[j] + t * (nodes_u_[j + 1] - nodes_u_[j])
-                                                        : hermite_[j].eval(t);
+                                                        : hermite_.eval(s, j);
     return opt_.newton_polish ? polish(s, uu, j, evaluations) : uu;
   }
 
@@ -275,7 +316,13 @@ class parameterization {
     return abs(r1) + e1 < abs(r0) - e0 ? next : uu;
   }
 
-  // Nodes u_j = u(j L / m), j = 0..m, each by Newton from the previous node (the nearest known point).
+  // Nodes u_j = u(j L / m), j = 0..m, each by Newton from the previous node (the nearest known
+  // point) when it is in the same segment. Chained, the arc lengths are taken relative to the
+  // previous node s_{j-1}: the bracket's lower end is the previous node's computed residual
+  // s(u_{j-1}) - s_{j-1}, the target ds. Every sum is then of the size ds and rounds by ~eps ds; in
+  // absolute s each node inherited the previous one's rounding of eps s, a random walk that grew
+  // like sqrt(M) eps L (1.2e-14 L at M = 32768 on a 4-segment Catmull-Rom) and kept the automatic
+  // sizing from ever meeting 32 eps L.
   void compute_nodes(std::size_t m, std::vector<Real>& us, std::vector<Real>& ss, std::vector<Real>& es,
                      std::vector<Real>& sp) {
     const Real len = length();
@@ -291,53 +338,110 @@ class parameterization {
     us[m] = p.back();
     ss[m] = len;
     es[m] = err.back();
+    Real carried(0);  // s(u_{j-1}) - s_{j-1} as computed along the chain
     for (std::size_t j = 1; j < m; ++j) {
       const Real sj = len * Real(static_cast<long long>(j)) / Real(static_cast<long long>(m));
       ss[j] = sj;
       const std::size_t i = segments_.segment_for_s(sj);
       newton_bracket<Real> br{p[i], cum[i], err[i], p[i + 1], cum[i + 1], err[i + 1], segments_.guess(i, sj)};
+      Real target = sj, inherited(0);
       if (us[j - 1] > br.u_lo && us[j - 1] < br.u_hi) {
+        const Real base = ss[j - 1];
         br.u_lo = us[j - 1];
-        br.s_lo = ss[j - 1];
-        br.s_lo_error = es[j - 1];
+        br.s_lo = carried;
+        // The previous node's error bound is added to this node's afterwards, not handed to Newton:
+        // summed along the chain it outgrows the tolerance near a segment's end, and Newton then
+        // bisected to rounding (rounding_limited, 160 instead of 35 evaluations per node at
+        // M = 65536 on the 4-segment Catmull-Rom).
+        br.s_lo_error = Real(0);
+        inherited = es[j - 1];
+        br.s_hi = cum[i + 1] - base;
+        target = sj - base;  // exact (Sterbenz) for j >= 2; j = 1 never chains (u_0 is a segment start)
       }
       newton_options<Real> node_opt = opt_.newton;
       node_opt.final_step = true;  // nodes are interpolated by every query: polish them to rounding level
-      const inversion_result<Real> r = newton_invert(curve_, sj, br, tol, node_opt);
+      const inversion_result<Real> r = newton_invert(curve_, target, br, tol, node_opt);
       build_evaluations_ += r.evaluations;
       us[j] = r.u;
-      es[j] = r.s_error_estimate;
+      es[j] = r.s_error_estimate + inherited;
+      carried = r.residual;
     }
     for (std::size_t j = 0; j <= m; ++j) sp[j] = speed(curve_, us[j]);
     build_evaluations_ += m + 1;
   }
 
-  // Hermite pieces on the node set, slopes du/ds = 1/|P'|, limited for monotonicity.
-  static std::vector<cubic> hermite_pieces(const std::vector<Real>& us, const std::vector<Real>& sp, const Real& ds) {
+  // The Hermite cubic on a piece of arc-length width w from (u0, |P'| = sp0) to (u1, sp1): slopes
+  // du/ds = 1/|P'| scaled by w, the secant where |P'| = 0, limited for monotonicity
+  // (Fritsch-Carlson: the slopes' vector scaled to length <= 3 secants).
+  static cubic hermite_cubic(const Real& u0, const Real& u1, const Real& sp0, const Real& sp1, const Real& w) {
     using std::sqrt;
-    const std::size_t m = us.size() - 1;
-    std::vector<cubic> h(m);
-    for (std::size_t j = 0; j < m; ++j) {
-      const Real du = us[j + 1] - us[j];  // the secant times ds
-      // slopes scaled by ds: d0 = ds / |P'(u_j)|; the secant (du) where |P'| = 0
-      Real d0 = sp[j] > Real(0) ? ds / sp[j] : du;
-      Real d1 = sp[j + 1] > Real(0) ? ds / sp[j + 1] : du;
-      if (!is_finite(d0)) d0 = du;
-      if (!is_finite(d1)) d1 = du;
-      if (du > Real(0)) {
-        const Real a = d0 / du, b = d1 / du, r2 = a * a + b * b;
-        if (r2 > Real(9)) {
-          const Real tau = Real(3) / sqrt(r2);
-          d0 *= tau;
-          d1 *= tau;
-        }
-      } else {
-        d0 = Real(0);
-        d1 = Real(0);
+    const Real du = u1 - u0;  // the secant times w
+    Real d0 = sp0 > Real(0) ? w / sp0 : du;
+    Real d1 = sp1 > Real(0) ? w / sp1 : du;
+    if (!is_finite(d0)) d0 = du;
+    if (!is_finite(d1)) d1 = du;
+    if (du > Real(0)) {
+      const Real a = d0 / du, b = d1 / du, r2 = a * a + b * b;
+      if (r2 > Real(9)) {
+        const Real tau = Real(3) / sqrt(r2);
+        d0 *= tau;
+        d1 *= tau;
       }
-      // u(t) = us_j + d0 t + (3 du - 2 d0 - d1) t^2 + (d0 + d1 - 2 du) t^3
-      h[j] = cubic{us[j], d0, Real(3) * du - Real(2) * d0 - d1, d0 + d1 - Real(2) * du};
+    } else {
+      d0 = Real(0);
+      d1 = Real(0);
     }
+    // u(t) = u0 + d0 t + (3 du - 2 d0 - d1) t^2 + (d0 + d1 - 2 du) t^3
+    return cubic{u0, d0, Real(3) * du - Real(2) * d0 - d1, d0 + d1 - Real(2) * du};
+  }
+
+  // The knots whose arc-length position is known from the segment lengths, with one-sided speeds
+  // (evaluated 16 eps inside each neighbouring segment, as segment_lengths does). A knot closer
+  // than 64 eps L to the previous one in s (a zero-length segment) is dropped: u(s) is ambiguous
+  // there, and the table keeps the first.
+  void collect_knots() {
+    using std::abs;
+    const auto p = segments_.parameters();
+    const auto cum = segments_.cumulative();
+    const Real gap = Real(64) * epsilon<Real>() * length();
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+      if (!(cum[i] > gap && cum[i] < length() - gap)) continue;
+      if (!knots_.empty() && !(cum[i] - knots_.back().s > gap)) continue;
+      const Real d = Real(16) * epsilon<Real>() * (abs(p[i - 1]) + abs(p[i + 1]));
+      const Real left = p[i] - p[i - 1] > Real(2) * d ? speed(curve_, Real(p[i] - d)) : speed(curve_, p[i]);
+      const Real right = p[i + 1] - p[i] > Real(2) * d ? speed(curve_, Real(p[i] + d)) : speed(curve_, p[i]);
+      build_evaluations_ += 2;
+      knots_.push_back({cum[i], p[i], left, right});
+    }
+  }
+
+  // The Hermite table on the node set (s_j = j ds, u_j, |P'(u_j)|), cells split at the knots
+  // strictly inside them (64 eps L away from the cell's ends).
+  [[nodiscard]] hermite_table make_hermite(const std::vector<Real>& us, const std::vector<Real>& ss,
+                                           const std::vector<Real>& sp) const {
+    const std::size_t m = us.size() - 1;
+    const Real gap = Real(64) * epsilon<Real>() * length();
+    hermite_table h;
+    h.first.reserve(m + 1);
+    h.pieces.reserve(m + knots_.size());
+    auto add = [&h](const Real& s0, const Real& s1, const Real& u0, const Real& u1, const Real& sp0, const Real& sp1) {
+      const Real w = s1 - s0;
+      h.pieces.push_back({s0, Real(1) / w, hermite_cubic(u0, u1, sp0, sp1, w)});
+    };
+    std::size_t k = 0;  // next knot
+    for (std::size_t j = 0; j < m; ++j) {
+      h.first.push_back(h.pieces.size());
+      while (k < knots_.size() && !(knots_[k].s > ss[j] + gap)) ++k;
+      Real s0 = ss[j], u0 = us[j], sp0 = sp[j];
+      for (; k < knots_.size() && knots_[k].s < ss[j + 1] - gap; ++k) {
+        add(s0, knots_[k].s, u0, knots_[k].u, sp0, knots_[k].speed_left);
+        s0 = knots_[k].s;
+        u0 = knots_[k].u;
+        sp0 = knots_[k].speed_right;
+      }
+      add(s0, ss[j + 1], u0, us[j + 1], sp0, sp[j + 1]);
+    }
+    h.first.push_back(h.pieces.size());
     return h;
   }
 
@@ -351,19 +455,20 @@ class parameterization {
       table_error_ = no_bound<Real>();
       table_status_ = result_status::not_guaranteed;
     } else {
-      std::size_t m = std::max<std::size_t>(16, 16 * segments_.segment_count());
+      // A power of two, so that doubling can reach a power-of-two cap (5 segments started at 80
+      // stopped at 40960 with 65536 allowed).
+      std::size_t m = std::bit_ceil(std::max<std::size_t>(16, 16 * segments_.segment_count()));
       m = std::min(m, std::max<std::size_t>(1, opt_.max_table_intervals / 2));
       compute_nodes(m, us, ss, es, sp);
       table_status_ = result_status::cap_hit;
       table_error_ = no_bound<Real>();
       while (true) {
-        const Real ds = len / Real(static_cast<long long>(m));
-        const std::vector<cubic> h = hermite_pieces(us, sp, ds);
+        const hermite_table h = make_hermite(us, ss, sp);
         std::vector<Real> us2, ss2, es2, sp2;
         compute_nodes(2 * m, us2, ss2, es2, sp2);
         Real worst_err(0);
         for (std::size_t j = 0; j < m; ++j) {
-          const Real du = abs(h[j].eval(Real(1) / Real(2)) - us2[2 * j + 1]);
+          const Real du = abs(h.eval(ss2[2 * j + 1], j) - us2[2 * j + 1]);
           worst_err = max(worst_err, du * sp2[2 * j + 1]);
         }
         us.swap(us2), ss.swap(ss2), es.swap(es2), sp.swap(sp2);
@@ -377,9 +482,8 @@ class parameterization {
       }
     }
     const std::size_t m = us.size() - 1;
-    const Real ds = len / Real(static_cast<long long>(m));
     inv_ds_ = Real(static_cast<long long>(m)) / len;
-    hermite_ = hermite_pieces(us, sp, ds);
+    hermite_ = make_hermite(us, ss, sp);
     nodes_u_ = std::move(us);
     nodes_s_ = std::move(ss);
     nodes_err_ = std::move(es);
@@ -389,7 +493,8 @@ class parameterization {
   parameterization_options<Real> opt_;
   segment_lengths<Real> segments_;
   std::vector<Real> nodes_u_, nodes_s_, nodes_err_;
-  std::vector<cubic> hermite_;
+  std::vector<knot> knots_;
+  hermite_table hermite_;
   Real inv_ds_{0};
   Real table_error_{0};
   result_status table_status_{result_status::not_guaranteed};
