@@ -4,6 +4,7 @@
 // unity, affine invariance, convex hull, variation diminishing, linear precision, reversal,
 // subdivision and degree elevation.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/basis/bernstein.hpp"
 #include "curvebench/curves/bezier.hpp"
@@ -68,15 +69,7 @@ class bezier_ieee_test : public ::testing::Test {};
 TYPED_TEST_SUITE(bezier_ieee_test, cbt::ieee_reals);
 
 // Random control points in [-1, 1]^Dim, rounded to Real (so the real50 copy is exact).
-template <class Real, int Dim>
-cb::point_list<Real, Dim> random_points(int count, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> dist(-1.0, 1.0);
-  cb::point_list<Real, Dim> p(static_cast<std::size_t>(count));
-  for (auto& q : p)
-    for (int d = 0; d < Dim; ++d) q[d] = static_cast<Real>(dist(gen));
-  return p;
-}
+using cbt::random_points;
 
 template <class Real, int Dim>
 cb::point_list<cb::real50, Dim> to50(std::span<const cb::point<Real, Dim>> p) {

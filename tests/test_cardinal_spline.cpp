@@ -3,6 +3,7 @@
 // interpolation, C1 continuity, quadratic reproduction, end conditions (phantom, one-sided, given,
 // closed), locality, and bad input.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/curves/cardinal_spline.hpp"
 
@@ -39,9 +40,7 @@ const std::vector<std::array<double, 2>> pd{{0.0, 0.0}, {1.0, 2.0}, {3.0, 2.5}, 
 
 template <class Real>
 cb::point_list<Real, 2> pts() {
-  cb::point_list<Real, 2> r;
-  for (auto& p : pd) r.push_back(cb::point<Real, 2>(Real(p[0]), Real(p[1])));
-  return r;
+  return cbt::points_from<Real>(pd);
 }
 
 template <class Real>

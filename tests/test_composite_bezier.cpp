@@ -3,6 +3,7 @@
 // convention, the binary search, a subdivided curve reassembled as a chain, and the join check on
 // chains built to be C1, G1 only, kinked and broken.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/basis/bernstein.hpp"
 #include "curvebench/curves/composite_bezier.hpp"
@@ -42,14 +43,7 @@ template <class Real>
 class composite_test : public ::testing::Test {};
 TYPED_TEST_SUITE(composite_test, cbt::all_reals);
 
-template <class Real, int Dim>
-cb::point_list<Real, Dim> random_points(int count, std::mt19937& gen) {
-  std::uniform_real_distribution<double> dist(-1.0, 1.0);
-  cb::point_list<Real, Dim> p(static_cast<std::size_t>(count));
-  for (auto& q : p)
-    for (int d = 0; d < Dim; ++d) q[d] = static_cast<Real>(dist(gen));
-  return p;
-}
+using cbt::random_points;
 
 template <class Real, int Dim>
 real50 max_abs(std::span<const cb::point<Real, Dim>> p) {

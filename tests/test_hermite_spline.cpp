@@ -3,6 +3,7 @@
 // values and slopes, C1 (one slope per knot) versus broken tangents, seed 001's Hermite chain,
 // cubic reproduction, and bad input.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/curves/hermite_spline.hpp"
 
@@ -42,9 +43,7 @@ const std::vector<std::array<double, 2>> in_d{{0.0, 0.0}, {1.0, -1.0}, {-3.0, 0.
 
 template <class Real>
 cb::point_list<Real, 2> pts(const std::vector<std::array<double, 2>>& a) {
-  cb::point_list<Real, 2> r;
-  for (auto& p : a) r.push_back(cb::point<Real, 2>(Real(p[0]), Real(p[1])));
-  return r;
+  return cbt::points_from<Real>(a);
 }
 template <class Real>
 std::vector<Real> knots() {

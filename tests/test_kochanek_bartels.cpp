@@ -3,6 +3,7 @@
 // reduction to Catmull-Rom, the paper's non-uniform time adjustment (C1 in time for c = 0),
 // interpolation, closed loops, locality and bad input.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/curves/cardinal_spline.hpp"
 #include "curvebench/curves/kochanek_bartels.hpp"
@@ -41,9 +42,7 @@ const std::vector<std::array<double, 3>> td{{0.25, -0.5, 0.5},  {0.5, 0.25, -0.2
 
 template <class Real>
 cb::point_list<Real, 2> pts() {
-  cb::point_list<Real, 2> r;
-  for (auto& p : pd) r.push_back(cb::point<Real, 2>(Real(p[0]), Real(p[1])));
-  return r;
+  return cbt::points_from<Real>(pd);
 }
 template <class Real>
 std::vector<cb::tcb<Real>> params(bool zero_continuity = false) {

@@ -3,6 +3,7 @@
 // instantiation (at, near and between nodes), Chebyshev points, Runge's phenomenon on equispaced
 // versus Chebyshev points, the monomial (Vandermonde) form's loss of accuracy at n = 20, bad input.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/curves/lagrange.hpp"
 
@@ -104,14 +105,7 @@ double runge_max_error(const std::vector<double>& nodes) {
   return worst;
 }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+using cbt::message_of;
 
 }  // namespace
 

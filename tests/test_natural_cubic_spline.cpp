@@ -3,6 +3,7 @@
 // cubic reproduction (not-a-knot; clamped with exact slopes), agreement with the real50 instance
 // of the same data, and bad input.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/curves/detail/tridiagonal.hpp"
 #include "curvebench/curves/natural_cubic_spline.hpp"
@@ -43,9 +44,7 @@ const std::vector<std::array<double, 2>> vd{{0.0, 1.0},  {1.0, 2.0},  {2.5, 1.5}
 
 template <class Real>
 cb::point_list<Real, 2> pts() {
-  cb::point_list<Real, 2> r;
-  for (auto& p : vd) r.push_back(cb::point<Real, 2>(Real(p[0]), Real(p[1])));
-  return r;
+  return cbt::points_from<Real>(vd);
 }
 template <class Real>
 std::vector<Real> knots() {

@@ -2,6 +2,7 @@
 // of linear interpolation, the one-sided derivative rule at vertices, segment lookup, affine
 // invariance, reversal, linear precision, the segment convex hull, and bad input.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/curves/polyline.hpp"
 
@@ -76,14 +77,7 @@ cb::point<cb::real50, 2> ref_slope(const cb::polyline<Real, 2>& c, std::size_t i
 
 cb::real50 scale_of(const cb::point<cb::real50, 2>& p) { return std::max(abs(p[0]), abs(p[1])); }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+using cbt::message_of;
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 // test-only reference, the library itself never differences), the circular arc on its circle, the
 // conics' implicit equation and classification, and bad input.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/basis/bernstein.hpp"
 #include "curvebench/curves/rational_bezier.hpp"
@@ -64,15 +65,7 @@ template <class Real>
 class rational_ieee_test : public ::testing::Test {};
 TYPED_TEST_SUITE(rational_ieee_test, cbt::ieee_reals);
 
-template <class Real, int Dim>
-cb::point_list<Real, Dim> random_points(int count, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> dist(-1.0, 1.0);
-  cb::point_list<Real, Dim> p(static_cast<std::size_t>(count));
-  for (auto& q : p)
-    for (int d = 0; d < Dim; ++d) q[d] = static_cast<Real>(dist(gen));
-  return p;
-}
+using cbt::random_points;
 
 // Weights in [0.5, 2] (ratio <= 4), rounded to Real.
 template <class Real>

@@ -1,0 +1,59 @@
+// Test support: the small fixtures several test files share.
+//   - points_from<Real>(data)        control points typed in as double arrays, converted to Real
+//                                    (the data are chosen exact in float, so every Real holds the
+//                                    same points and the real50 twin of a curve is exact);
+//   - random_points<Real, Dim>(...)  points uniform in [-1, 1]^Dim, drawn in double and rounded
+//                                    once to Real (so the real50 copy of the rounded points is exact);
+//   - message_of(f)                  the what() of the exception f throws, for tests that check an
+//                                    error message's wording ("(no exception)" when none).
+#pragma once
+
+#include "curvebench/core/point.hpp"
+
+#include <array>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace curvebench::testing {
+
+template <class Real, std::size_t Dim>
+point_list<Real, static_cast<int>(Dim)> points_from(const std::vector<std::array<double, Dim>>& data) {
+  point_list<Real, static_cast<int>(Dim)> r;
+  r.reserve(data.size());
+  for (const auto& p : data) {
+    point<Real, static_cast<int>(Dim)> q;
+    for (std::size_t d = 0; d < Dim; ++d) q[static_cast<int>(d)] = Real(p[d]);
+    r.push_back(q);
+  }
+  return r;
+}
+
+template <class Real, int Dim>
+point_list<Real, Dim> random_points(int count, std::mt19937& gen) {
+  std::uniform_real_distribution<double> dist(-1.0, 1.0);
+  point_list<Real, Dim> p(static_cast<std::size_t>(count));
+  for (auto& q : p)
+    for (int d = 0; d < Dim; ++d) q[d] = static_cast<Real>(dist(gen));
+  return p;
+}
+
+template <class Real, int Dim>
+point_list<Real, Dim> random_points(int count, unsigned seed) {
+  std::mt19937 gen(seed);
+  return random_points<Real, Dim>(count, gen);
+}
+
+inline std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "(no exception)";
+}
+
+}  // namespace curvebench::testing
