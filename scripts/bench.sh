@@ -25,8 +25,16 @@ flags="-O3 -march=native -fno-math-errno -DNDEBUG"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="$flags" \
       -DCURVEBENCH_WERROR=OFF -DCURVEBENCH_BUILD_TESTS=OFF -DCURVEBENCH_BUILD_BENCH=ON >/dev/null
 echo "bench.sh: building (optimized: $flags)"
-cmake --build "$build" --parallel "$(nproc)" 2>&1 | grep -E "error|Error|Built target" || true
-[[ -x "$build/bench/curvebench" ]] || { echo "bench.sh: the build failed" >&2; exit 1; }
+# The full log goes to a file (a stale executable from an earlier build must not be run after a
+# failed one); progress is one line per finished target.
+log="$build/build.log"
+{ cmake --build "$build" --parallel "$(nproc)" 2>&1; echo $? >"$build/build.status"; } |
+  tee "$log" | grep --line-buffered -E "Built target" || true
+if [[ "$(cat "$build/build.status")" != 0 ]]; then
+  grep -E -A3 "error|Error" "$log" | head -n 60 >&2
+  echo "bench.sh: the build failed; the whole log is $log" >&2
+  exit 1
+fi
 
 reports="$root/reports"
 mkdir -p "$reports"
@@ -41,15 +49,20 @@ accuracy_args=(accuracy --out "$reports/accuracy.json")
 
 if [[ $quick -eq 1 ]]; then
   bench_args=(--benchmark_min_time=0.05)
+  # ~900 (case, method, setting) timings, each joined with its error: short runs, the quick suite.
+  case_args=(--quick-suite --benchmark_min_time=0.01)
 else
   bench_args=(--benchmark_min_time=0.2 --benchmark_repetitions=3 --benchmark_report_aggregates_only=true)
+  case_args=(--benchmark_min_time=0.03)
 fi
 for exe in "$build"/bench/bench_*; do
   [[ -x "$exe" && -f "$exe" ]] || continue
   name=$(basename "$exe")
   echo "bench.sh: running $name"
   out="$reports/$name.json"
-  "$exe" "${bench_args[@]}" --benchmark_out="$out.tmp" --benchmark_out_format=json \
+  args=("${bench_args[@]}")
+  [[ $name == bench_arclength_cases ]] && args=("${case_args[@]}")
+  "$exe" "${args[@]}" --benchmark_out="$out.tmp" --benchmark_out_format=json \
          --benchmark_context=git_revision="$revision" --benchmark_context=flags="$flags" \
          --benchmark_context=compiler="$(c++ --version | head -n 1)"
   mv "$out.tmp" "$out"

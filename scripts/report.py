@@ -205,6 +205,82 @@ def cheapest_at(records, quantity):
     return table(["case"] + [f"cheapest at {t:g}" for t in TARGETS], rows)
 
 
+def case_times(rows):
+    """(case, method, setting) -> ns per call, from bench_arclength_cases (arclength_case/case/method/setting)."""
+    out = {}
+    for r in rows:
+        if r["program"] == "bench_arclength_cases":
+            method, _, setting = r["args"].partition("/")
+            out[(r["algorithm"], method, setting)] = r["ns"]
+    return out
+
+
+def pareto_front(points):
+    """The (time, error) points no other point beats in both: sorted by time, error strictly falling."""
+    front, best = [], float("inf")
+    for t, e, label in sorted(points):
+        if e < best:
+            front.append((t, e, label))
+            best = e
+    return front
+
+
+def pareto_section(records, times, plot_dir):
+    """Length error (accuracy runner) joined with time (per-case benchmarks): the fastest method at
+    each target per case, and one error-vs-time plot per case with its Pareto front."""
+    per_case = defaultdict(list)
+    for r in records:
+        if r["quantity"] != "length" or not isinstance(r.get("error"), (int, float)):
+            continue
+        ns = times.get((r["case"], r["method"], r["setting"]))
+        if ns is not None:
+            per_case[r["case"]].append((ns, max(r["error"], 1e-18), f"{r['method']} {r['setting']}", r["method"]))
+    if not per_case:
+        return ["No per-case timings (bench_arclength_cases) to join with the errors."]
+    md = ["Time per length computation (bench_arclength_cases, median ns; the curve behind the same "
+          "type-erased interface for every method) joined with the accuracy runner's error for the same "
+          "(case, method, setting). Fastest reaching each relative error:", ""]
+    rows, links = [], []
+    for case, pts in sorted(per_case.items()):
+        row = [case]
+        for t in TARGETS:
+            ok = [p for p in pts if p[1] <= t]
+            if ok:
+                best = min(ok)
+                row.append(f"{best[2]} ({fmt(best[0])} ns)")
+            else:
+                row.append("none reached")
+        rows.append(row)
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        by_method = defaultdict(list)
+        for ns, e, _, method in pts:
+            by_method[method].append((ns, e))
+        for method, mp in sorted(by_method.items()):
+            mp.sort()
+            ax.loglog([q[0] for q in mp], [q[1] for q in mp], marker="o", ms=3, lw=0.8, label=method)
+        front = pareto_front([(ns, e, label) for ns, e, label, _ in pts])
+        xs, ys = [], []
+        for ns, e, _ in front:  # a staircase: the best error reachable within a time budget
+            if xs:
+                xs.append(ns)
+                ys.append(ys[-1])
+            xs.append(ns)
+            ys.append(e)
+        ax.loglog(xs, ys, color="black", lw=1.6, alpha=0.5, label="Pareto front")
+        ax.set_xlabel("time per length computation (ns)")
+        ax.set_ylabel("relative error of the length")
+        ax.set_title(f"{case}: error vs time")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+        name = f"pareto_length_{slug(case)}.png"
+        atomic_savefig(fig, os.path.join(plot_dir, name))
+        links.append(f"- [{case}](plots/{name})")
+    md.append(table(["case"] + [f"fastest at {t:g}" for t in TARGETS], rows))
+    md += ["", "Error-vs-time plots, Pareto front in black (errors below 1e-18 drawn at 1e-18):", ""]
+    md += links
+    return md
+
+
 def error_cost_plots(records, quantity, plot_dir, prefix):
     """One log-log plot of error vs evaluations per case, one series per method. Returns paths."""
     per_case = defaultdict(lambda: defaultdict(list))
@@ -297,6 +373,8 @@ def main():
     md += ["", "Absolute times on a shared machine are noisy; compare the ratios, measured in the same run.", ""]
 
     md += ["## Evaluation speed", ""]
+    times = case_times(bench_rows)
+    bench_rows = [r for r in bench_rows if r["program"] != "bench_arclength_cases"]
     if bench_rows:
         text, headlines = speed_section(bench_rows)
         if headlines:
@@ -313,6 +391,9 @@ def main():
     for quantity, title in (("length", "Arc length: error vs cost"), ("s_of_u", "s(u): error vs cost"),
                             ("u_of_s", "Inversion u(s): error vs cost")):
         md += ["", f"## {title}", ""]
+        if quantity == "length":
+            md += ["### Error vs time (Pareto)", ""] + pareto_section(records, times, plot_dir)
+            md += ["", "### Error vs evaluations", ""]
         if any(r["quantity"] == quantity for r in records):
             md.append(cheapest_at(records, quantity))
             md.append("")

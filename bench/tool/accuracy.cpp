@@ -1,6 +1,7 @@
 // The accuracy runner (see harness/accuracy.hpp). This is the one translation unit that
 // instantiates every family at 50 digits; keep it that way, it is the slow one to compile.
 #include "harness/accuracy.hpp"
+#include "harness/sweep.hpp"
 
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
@@ -40,11 +41,6 @@ constexpr double order_ceiling = 1e-2;
 
 json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(); }
 
-std::string fmt(double x) {
-  std::ostringstream os;
-  os << x;
-  return os.str();
-}
 
 /// Collects the records of one case.
 struct sink {
@@ -107,88 +103,29 @@ double rel_abs(double value, const real50& exact, double L) {
   return static_cast<double>(abs(real50(value) - exact)) / L;
 }
 
-/// Settings of one run: the full sweep, or the quick one used by CI.
-struct sweep {
-  std::vector<int> gauss_n;
-  std::vector<int> panels;
-  std::vector<double> adaptive_tol;
-  std::vector<std::size_t> table_steps;
-  std::vector<double> subdivision_tol;
-  std::vector<std::size_t> table_intervals;
-  std::vector<double> newton_tol;
-  std::size_t params;         // s(u), u(s) sample count
-  std::size_t eval_params;    // evaluation-accuracy sample count
-  double max_table_evals;     // skip forward-difference settings above this many evaluations
-};
-
-sweep settings(bool quick) {
-  if (quick)
-    return {{2, 4, 8, 16}, {1, 2, 4, 8, 16}, {1e-6, 1e-10, 1e-14}, {8, 16, 32, 64, 128, 256}, {1e-4, 1e-6, 1e-8},
-            {16, 64, 256, 1024}, {1e-8, 1e-12}, 9, 65, 2e5};
-  return {{1, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20},
-          {1, 2, 4, 8, 16, 32, 64},
-          {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14},
-          {4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
-          {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9},
-          {16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
-          {1e-6, 1e-9, 1e-12, 1e-14},
-          33,
-          257,
-          4e6};
-}
-
 template <int Dim>
 void lengths(sink& k, const curve_d<Dim>& c, const real50& L, const sweep& w) {
-  const double segments = static_cast<double>(c.breakpoints().size() - 1);
   const double Ld = static_cast<double>(L);
-  for (int n : w.gauss_n) {
-    const auto r = al::gauss_length(c, n, al::fixed_estimate::nested);
-    k.add("length", "gauss", "n=" + std::to_string(n), rel(r.value, L), r.error_estimate / Ld,
-          static_cast<double>(r.evaluations), al::to_string(r.status));
-  }
+  std::string current;  // the method whose series is open
+  double current_theory = 0;
+  const auto close = [&] {
+    if (current_theory > 0)
+      k.end("length", current, current_theory);
+    else
+      k.begin();
+  };
   k.begin();
-  const auto rule3 = al::gauss_legendre<double>(3);
-  for (int p : w.panels) {
-    const auto r = al::composite_gauss_length(c, p, rule3);
-    k.add("length", "composite_gauss3", "panels=" + std::to_string(p), rel(r.value, L), r.error_estimate / Ld,
-          static_cast<double>(r.evaluations), al::to_string(r.status));
-  }
-  k.end("length", "composite_gauss3", 6);
-  for (double tol : w.adaptive_tol) {
-    al::adaptive_options<double> o;
-    o.relative_tolerance = tol;
-    const auto r = al::adaptive_length(c, o);
-    k.add("length", "adaptive_gk", "tol=" + fmt(tol), rel(r.value, L), r.error_estimate / Ld,
-          static_cast<double>(r.evaluations), al::to_string(r.status));
-  }
-  std::vector<std::pair<double, double>> fd, rich;
-  for (std::size_t steps : w.table_steps) {
-    if (static_cast<double>(steps) * segments > w.max_table_evals) break;
-    const al::forward_difference_table<double> t(c, steps);
-    const auto r = t.length();
-    const std::string setting = "steps=" + std::to_string(steps);
-    k.begin();
-    k.add("length", "forward_difference", setting, rel(r.value, L), r.error_estimate / Ld,
-          static_cast<double>(t.evaluations()), al::to_string(r.status));
-    fd.push_back(k.series.back());
-    const auto q = t.richardson_length();
-    k.add("length", "richardson", setting, rel(q.value, L), q.error_estimate / Ld, static_cast<double>(t.evaluations()),
-          al::to_string(q.status));
-    rich.push_back(k.series.back());
-  }
-  k.series = fd;
-  k.end("length", "forward_difference", 2);
-  k.series = rich;
-  k.end("length", "richardson", 4);
-  k.begin();
-  for (double tol : w.subdivision_tol) {
-    al::subdivision_options<double> o;
-    o.tolerance = tol * Ld;
-    const auto r = al::subdivision_length(c, o);
-    k.add("length", "subdivision", "tol=" + fmt(tol), rel(r.value, L), r.error_estimate / Ld,
-          static_cast<double>(r.evaluations), al::to_string(r.status));
-  }
-  k.end("length", "subdivision", 2);
+  for_each_length_method(c, w, Ld, [&](const std::string& method, const std::string& setting, double theory, auto run) {
+    if (method != current) {
+      close();
+      current = method;
+      current_theory = theory;
+    }
+    const auto r = run();
+    k.add("length", method, setting, rel(r.value, L), r.error_estimate / Ld, static_cast<double>(r.evaluations),
+          al::to_string(r.status));
+  });
+  close();
 }
 
 template <int Dim>

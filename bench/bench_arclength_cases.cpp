@@ -1,0 +1,91 @@
+// Arc-length speed per case: every length method x setting of the harness sweep (harness/sweep.hpp,
+// the quick settings, a subset of the full ones) timed on every case of the suite. The benchmark
+// arclength_case/<case>/<method>/<setting> computes exactly what the accuracy runner's record
+// (case, "length", method, setting) measured, so report.py joins the two into error-vs-time Pareto
+// plots per case. Curves are the type-erased any_curve<double, Dim> the runner uses: every method
+// pays the same dispatch per evaluation, so ratios between methods on a case are fair; the family
+// benchmarks (bench_arclength.cpp) time concrete types.
+//
+// Own flags (removed before Google Benchmark sees the rest):
+//   --cases=DIR     the case directory (default: the source tree's bench/cases)
+//   --quick-suite   only the cases of the quick suite (scripts/bench.sh --quick)
+// Counters: evaluations (curve-derivative evaluations per call, set-up included).
+#include "harness/cases.hpp"
+#include "harness/sweep.hpp"
+
+#include "curvebench/io/spec.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace cb = curvebench;
+namespace al = curvebench::arclength;
+using cb::harness::case_info;
+
+template <int Dim>
+void register_case(const case_info& info, const cb::harness::sweep& w) {
+  using curve = cb::any_curve<double, Dim>;
+  const auto c = std::make_shared<const curve>(cb::io::curve_from_spec<double, Dim>(cb::io::root(info.spec, info.name)));
+  // The subdivision tolerance is tol * L; any accurate L names the same setting.
+  const double length = al::adaptive_length(*c).value;
+  cb::harness::for_each_length_method(
+      *c, w, length, [&](const std::string& method, const std::string& setting, double, auto run) {
+        const std::string name = "arclength_case/" + info.name + "/" + method + "/" + setting;
+        // run refers to *c, which the shared pointer keeps alive for the benchmark's lifetime.
+        benchmark::RegisterBenchmark(name.c_str(), [c, run](benchmark::State& st) {
+          std::size_t evaluations = 0;
+          for (auto _ : st) {
+            const auto r = run();
+            benchmark::DoNotOptimize(r.value);
+            evaluations = r.evaluations;
+          }
+          st.counters["evaluations"] = static_cast<double>(evaluations);
+        });
+      });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string dir = CURVEBENCH_CASES_DIR;
+  bool quick_suite = false;
+  std::vector<char*> rest;
+  for (int i = 0; i < argc; ++i) {
+    if (std::strncmp(argv[i], "--cases=", 8) == 0)
+      dir = argv[i] + 8;
+    else if (std::strcmp(argv[i], "--quick-suite") == 0)
+      quick_suite = true;
+    else
+      rest.push_back(argv[i]);
+  }
+  int n = static_cast<int>(rest.size());
+  try {
+    const cb::harness::sweep w = cb::harness::settings(true);
+    for (const case_info& info : cb::harness::load_cases(dir)) {
+      if (quick_suite && !info.quick) continue;
+      if (info.dimension == 2)
+        register_case<2>(info, w);
+      else if (info.dimension == 3)
+        register_case<3>(info, w);
+      else  // as the accuracy runner, which has no errors to join for other dimensions
+        std::fprintf(stderr, "bench_arclength_cases: %s is %dD, skipped (2D and 3D cases only)\n",
+                     info.name.c_str(), info.dimension);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_arclength_cases: %s\n", e.what());
+    return 2;
+  }
+  benchmark::Initialize(&n, rest.data());
+  if (benchmark::ReportUnrecognizedArguments(n, rest.data())) return 2;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,98 @@
+// The settings the harness sweeps, shared by the accuracy runner (errors, bench/tool/accuracy.cpp)
+// and the per-case arc-length benchmarks (times, bench/bench_arclength_cases.cpp), so that a
+// record's (case, method, setting) and a benchmark's name arclength_case/<case>/<method>/<setting>
+// denote the same computation and report.py can join error with time.
+#pragma once
+
+#include "curvebench/arclength/adaptive_subdivision.hpp"
+#include "curvebench/arclength/forward_difference.hpp"
+#include "curvebench/arclength/length.hpp"
+
+#include <cstddef>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace curvebench::harness {
+
+/// Settings of one run: the full sweep, or the quick one used by CI (each quick list is a subset
+/// of the full one, so quick and full records share keys).
+struct sweep {
+  std::vector<int> gauss_n;
+  std::vector<int> panels;
+  std::vector<double> adaptive_tol;
+  std::vector<std::size_t> table_steps;
+  std::vector<double> subdivision_tol;
+  std::vector<std::size_t> table_intervals;
+  std::vector<double> newton_tol;
+  std::size_t params;       ///< s(u), u(s) sample count
+  std::size_t eval_params;  ///< evaluation-accuracy sample count
+  double max_table_evals;   ///< skip forward-difference settings above this many evaluations
+};
+
+inline sweep settings(bool quick) {
+  if (quick)
+    return {{2, 4, 8, 16}, {1, 2, 4, 8, 16}, {1e-6, 1e-10, 1e-14}, {8, 16, 32, 64, 128, 256}, {1e-4, 1e-6, 1e-8},
+            {16, 64, 256, 1024}, {1e-8, 1e-12}, 9, 65, 2e5};
+  return {{1, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20},
+          {1, 2, 4, 8, 16, 32, 64},
+          {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14},
+          {4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
+          {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9},
+          {16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
+          {1e-6, 1e-9, 1e-12, 1e-14},
+          33,
+          257,
+          4e6};
+}
+
+/// A setting's number as it appears in records and benchmark names ("1e-06", "0.5").
+inline std::string fmt(double x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
+/// Calls f(method, setting, theory, run) for every length method and setting of the sweep, in
+/// series: run() (which refers to c, so c must outlive it) computes the length of c once and returns its quadrature_result (evaluations
+/// include the set-up, e.g. a forward-difference table's); theory is the convergence order in
+/// evaluations to fit over the series, 0 where none is fitted. `length` scales the subdivision
+/// tolerances, which are absolute (tol * length).
+template <class C, class F>
+void for_each_length_method(const C& c, const sweep& w, double length, F&& f) {
+  namespace al = curvebench::arclength;
+  using result = al::quadrature_result<double>;
+  const double segments = static_cast<double>(c.breakpoints().size() - 1);
+  for (int n : w.gauss_n)
+    f("gauss", "n=" + std::to_string(n), 0.0, [&c, n] { return al::gauss_length(c, n, al::fixed_estimate::nested); });
+  // The rule cache outlives every run (gauss_legendre returns a reference into it).
+  const al::gauss_legendre_rule<double>* rule3 = &al::gauss_legendre<double>(3);
+  for (int p : w.panels)
+    f("composite_gauss3", "panels=" + std::to_string(p), 6.0,
+      [&c, p, rule3] { return al::composite_gauss_length(c, p, *rule3); });
+  for (double tol : w.adaptive_tol)
+    f("adaptive_gk", "tol=" + fmt(tol), 0.0, [&c, tol] {
+      al::adaptive_options<double> o;
+      o.relative_tolerance = tol;
+      return al::adaptive_length(c, o);
+    });
+  for (bool richardson : {false, true})
+    for (std::size_t steps : w.table_steps) {
+      if (static_cast<double>(steps) * segments > w.max_table_evals) break;
+      f(richardson ? "richardson" : "forward_difference", "steps=" + std::to_string(steps), richardson ? 4.0 : 2.0,
+        [&c, steps, richardson] {
+          const al::forward_difference_table<double> t(c, steps);
+          result r = richardson ? t.richardson_length() : t.length();
+          r.evaluations = t.evaluations();
+          return r;
+        });
+    }
+  for (double tol : w.subdivision_tol)
+    f("subdivision", "tol=" + fmt(tol), 2.0, [&c, tol, length] {
+      al::subdivision_options<double> o;
+      o.tolerance = tol * length;
+      return al::subdivision_length(c, o);
+    });
+}
+
+}  // namespace curvebench::harness
