@@ -211,3 +211,33 @@ TEST(reference, double_curves_convert_exactly_and_conversion_is_checked) {
   }
   EXPECT_EQ(ref::exact_value<float>(0.5), 0.5f);
 }
+
+TEST(reference, s_between_matches_the_closed_forms_near_and_across_splits) {
+  // s_between(a, b) = s(b) - s(a): one panel when no split lies between a and b (the runner's case:
+  // many answers u near one target), s(b) - s(a) when one does. Both against closed forms, in both
+  // orders, with a gap from 1e-15 (a double's answer near u*) to a whole piece.
+  const ref::helix<R> h(R("1.5"), R(3), R("0.4"), R(0), R(2));
+  const ref::reference_arc_length<ref::helix<R>> rh(h);
+  const auto helix_s = [](const R& u) { return ref::helix_length(R("1.5"), R(3), R("0.4"), R(0), u); };
+  for (const char* gap : {"1e-15", "3e-9", "0.25", "1.1"}) {
+    const R a("0.7"), b = a + R(gap);
+    const R exact = helix_s(b) - helix_s(a);
+    // Absolute 1e-40 (relative to the unit scale of the curve): the closed forms' difference is
+    // itself only that accurate for the 1e-15 gap, and the runner needs ~1e-20 L.
+    EXPECT_TRUE(cbt::within_relative(rh.s_between(a, b), exact, static_cast<double>(agreement), 1)) << gap;
+    EXPECT_TRUE(cbt::within_relative(rh.s_between(b, a), R(-exact), static_cast<double>(agreement), 1)) << gap;
+  }
+  EXPECT_EQ(rh.s_between(R("0.7"), R("0.7")), R(0));
+  // The back-tracking parabola has a split at its speed minimum t = 2/3: pairs on both sides of it.
+  const std::vector<p2> back{p2(0, 0), p2(2, 1), p2(1, R("0.5"))};
+  const cb::bezier<R, 2> bb(back);
+  const ref::reference_arc_length<cb::bezier<R, 2>> rb(bb);
+  const auto parabola_s = [&](const R& t) { return ref::quadratic_bezier_length(back[0], back[1], back[2], t); };
+  for (const auto& [a, b] : {std::pair<R, R>(R("0.6"), R("0.7")), std::pair<R, R>(R("0.5"), R("0.6")),
+                             std::pair<R, R>(R("0.7"), R("0.7000000000000001"))}) {
+    const R exact = parabola_s(b) - parabola_s(a);
+    EXPECT_TRUE(cbt::within_relative(rb.s_between(a, b), exact, static_cast<double>(agreement), 1));
+    EXPECT_TRUE(cbt::within_relative(rb.s_between(b, a), R(-exact), static_cast<double>(agreement), 1));
+  }
+  EXPECT_THROW((void)rh.s_between(R(-1), R("0.5")), std::domain_error);
+}
