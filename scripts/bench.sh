@@ -63,8 +63,19 @@ for exe in "$build"/bench/bench_*; do
   args=("${bench_args[@]}")
   [[ $name == bench_arclength_cases ]] && args=("${case_args[@]}")
   "$exe" "${args[@]}" --benchmark_out="$out.tmp" --benchmark_out_format=json \
-         --benchmark_context=git_revision="$revision" --benchmark_context=flags="$flags" \
-         --benchmark_context=compiler="$(c++ --version | head -n 1)"
+         --benchmark_context=git_revision="$revision"
+  # Google Benchmark's --benchmark_context takes no '=' or ',' in a value (-march=native has one):
+  # the flags and the compiler go into the JSON's context afterwards.
+  /usr/bin/python3 - "$out.tmp" "$flags" "$(c++ --version | head -n 1)" <<'EOF'
+import json, os, sys
+path, flags, compiler = sys.argv[1:4]
+with open(path, encoding="utf-8") as f:
+    data = json.load(f)
+data.setdefault("context", {}).update({"flags": flags, "compiler": compiler})
+with open(path + ".ctx", "w", encoding="utf-8") as f:
+    json.dump(data, f, indent=1)
+os.replace(path + ".ctx", path)
+EOF
   mv "$out.tmp" "$out"
 done
 
