@@ -42,6 +42,11 @@ def peer_name(algorithm):
     return algorithm[5:] if algorithm.startswith("peer_") else algorithm
 
 
+def computes(algorithm):
+    """What a benchmark computes, for pairing with peers: an inversion u(s), or anything else."""
+    return "u_of_s" if algorithm.startswith("u_of_s") else "other"
+
+
 def error_of(row):
     for k in ERROR_COUNTERS:
         if k in row["counters"]:
@@ -149,8 +154,9 @@ def speed_section(rows):
                 kind, err = error_of(r)
                 body.append([args or "-", r["algorithm"], r["ns"], r["ns"] / fastest, peer_ratios or "-",
                              f"{kind} {fmt(err)}" if kind else "-"])
-            ours = [r for r in rs if not is_peer(r["algorithm"])]
             for p in peers:
+                # Peers compute lengths or evaluate curves; a u(s) inversion beside them is not a peer's rival.
+                ours = [r for r in rs if not is_peer(r["algorithm"]) and computes(r["algorithm"]) == computes(p["algorithm"])]
                 if ours:
                     best = min(ours, key=lambda r: r["ns"])
                     headlines.append((family, args, best["algorithm"], peer_name(p["algorithm"]), best["ns"] / p["ns"]))
