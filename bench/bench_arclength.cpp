@@ -220,10 +220,9 @@ void subdivision(benchmark::State& state) {
 
 /// Boost's fixed Gauss rule on the lean power-form cubic's speed: the same integrand as
 /// gauss_legendre_power_cubic, so the two are compared like for like.
-template <unsigned N>
-void boost_gauss_power_cubic(benchmark::State& state) {
-  const power_cubic c;
-  const auto f = [&c](double u) { return al::speed(c, u); };
+/// Boost's fixed N-point Gauss rule on the speed f over [0, 1], with its evaluations and error.
+template <unsigned N, class F>
+void run_boost_gauss(benchmark::State& state, const F& f) {
   double v = 0;
   for (auto _ : state) {
     v = boost::math::quadrature::gauss<double, N>::integrate(f, 0.0, 1.0);
@@ -234,15 +233,14 @@ void boost_gauss_power_cubic(benchmark::State& state) {
 }
 
 template <unsigned N>
+void boost_gauss_power_cubic(benchmark::State& state) {
+  const power_cubic c;
+  run_boost_gauss<N>(state, [&c](double u) { return al::speed(c, u); });
+}
+
+template <unsigned N>
 void boost_gauss(benchmark::State& state) {
-  const auto f = speed_fn();
-  double v = 0;
-  for (auto _ : state) {
-    v = boost::math::quadrature::gauss<double, N>::integrate(f, 0.0, 1.0);
-    keep(v);
-  }
-  state.counters["evals"] = N;
-  state.counters["rel_error"] = rel_error(v);
+  run_boost_gauss<N>(state, speed_fn());
 }
 
 template <unsigned N>
