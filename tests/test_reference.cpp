@@ -6,6 +6,7 @@
 #include "support/accuracy.hpp"
 
 #include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/lagrange.hpp"
 #include "curvebench/curves/nurbs.hpp"
 #include "curvebench/curves/rational_bezier.hpp"
 #include "curvebench/reference/analytic_curves.hpp"
@@ -15,7 +16,12 @@
 
 #include <gmock/gmock.h>
 
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
 #include <array>
+#include <bit>
+#include <cstdint>
+#include <memory>
 #include <tuple>
 #include <vector>
 
@@ -42,8 +48,41 @@ void expect_length(const ref::reference_arc_length<C>& r, const R& exact, const 
   EXPECT_LE(r.length_error(), agreement * exact) << what;
 }
 
+// A curve that counts its derivative evaluations (the whole cost of a reference) and can scale P'
+// by 1 + noise * h(u), h a deterministic hash of u in [-1, 1): a stand-in for the rounding of an
+// ill-conditioned evaluation, which no quadrature tolerance below it can get through.
+template <class C>
+struct counted_curve {
+  using real_type = typename C::real_type;
+  using point_type = typename C::point_type;
+  static constexpr int dimension = C::dimension;
+  C c;
+  real_type noise{0};
+  std::shared_ptr<std::size_t> calls = std::make_shared<std::size_t>(0);  // shared by the reference's copy
+
+  [[nodiscard]] cb::interval<real_type> domain() const { return c.domain(); }
+  [[nodiscard]] point_type operator()(const real_type& u) const { return c(u); }
+  [[nodiscard]] std::span<const real_type> breakpoints() const { return c.breakpoints(); }
+  [[nodiscard]] point_type derivative(const real_type& u, int order) const {
+    ++*calls;
+    point_type d = c.derivative(u, order);
+    if (order == 1 && noise != 0) d *= real_type(1 + noise * hash(u));
+    return d;
+  }
+  static real_type hash(const real_type& u) {
+    const auto hi = static_cast<double>(u);
+    std::uint64_t x = std::bit_cast<std::uint64_t>(hi) ^ (std::bit_cast<std::uint64_t>(static_cast<double>(u - hi)) << 1);
+    x += 0x9e3779b97f4a7c15ULL;  // splitmix64
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    x ^= x >> 31;
+    return real_type(static_cast<long long>(x >> 11)) / real_type(1LL << 52) - 1;
+  }
+};
+
 }  // namespace
 
+static_assert(cb::curve<counted_curve<cb::bezier<R, 2>>>);
 static_assert(cb::curve<ref::rational_quadratic<R, 2>>);
 static_assert(cb::curve<ref::helix<R>>);
 
@@ -244,4 +283,56 @@ TEST(reference, s_between_matches_the_closed_forms_near_and_across_splits) {
     EXPECT_TRUE(cbt::within_relative(rb.s_between(b, a), R(-exact), tol, 1)) << a << " " << b;
   }
   EXPECT_THROW((void)rh.s_between(R(-1), R("0.5")), std::domain_error);
+}
+
+TEST(reference, stops_at_the_rounding_floor_of_a_noisy_speed) {
+  // The segment (0, 0)-(3, 4), length 5, with P' perturbed by 1e-40 relative: the requested
+  // 4096 eps (2e-47) is out of reach. The first G30-K61 rule sees |K - G| ~ 1e-41 L and its two
+  // halves no better, so the bisection stops there: 64 + 1 minimum-search samples + 3 rules of 61
+  // = 248 evaluations (measured). Bisecting to the full depth 6 instead (Boost's recursion, which
+  // only knows the tolerance) costs 65 + 127 rules of 61 = 7812 (measured before the change); 1000
+  // allows a few more samples without admitting that.
+  using line = counted_curve<cb::bezier<R, 2>>;
+  const std::vector<p2> ends{p2(0, 0), p2(3, 4)};
+  line noisy{cb::bezier<R, 2>(ends), R("1e-40")};
+  const ref::reference_arc_length<line> r(noisy);
+  EXPECT_LE(*noisy.calls, 1000u);
+  // The noise averages over the nodes: the length is good to the noise level, 1e-40.
+  EXPECT_TRUE(cbt::within_relative(r.length(), R(5), 1e-40));
+  // Honest: the estimate says the tolerance was not met (it is the noise, ~1e-41 L).
+  EXPECT_GT(r.length_error(), ref::reference_options<R>{}.tolerance * 5);
+  // Control: without the noise one rule meets the tolerance and the length is exact to ~eps.
+  line clean{cb::bezier<R, 2>(ends)};
+  const ref::reference_arc_length<line> rc(clean);
+  EXPECT_LE(*clean.calls, 200u);  // measured 126: the samples and one rule
+  EXPECT_TRUE(cbt::within_relative(rc.length(), R(5), 1e-47));
+}
+
+TEST(reference, ill_conditioned_runge_interpolant_costs_thousands_not_millions_of_evaluations) {
+  // Degree-20 Lagrange through 1/(1 + 25 x^2) at 21 equispaced x (the runge_lagrange_equispaced
+  // case): a Lebesgue constant near 1e4 puts ~1e-46 relative rounding on its 50-digit speed near
+  // the ends, above the 2e-47 tolerance, and its 13 speed minima (speed 2 between wiggles of speed
+  // 1e4) are graded. Measured: 24339 evaluations; before the rounding-floor stop and the
+  // delta-based grading, 2423136 (130 s). The bound 1e5 keeps a 4x margin.
+  std::vector<cb::point<double, 2>> pd;
+  for (int j = 0; j <= 20; ++j) {
+    const double x = -1 + j / 10.0;
+    pd.emplace_back(x, 1 / (1 + 25 * x * x));
+  }
+  using C50 = counted_curve<cb::lagrange<R, 2>>;
+  const C50 c{cb::lagrange<R, 2>(ref::exact_points<R>(std::span<const cb::point<double, 2>>(pd)))};
+  const ref::reference_arc_length<C50> r(c);
+  EXPECT_LE(*c.calls, 100000u);
+  EXPECT_EQ(r.speed_minima().size(), 13u);
+  // Against the same data at 100 digits (tolerance 1e-60: its own rounding floor is ~1e-96):
+  // measured 4e-47 relative, the 50-digit speed's rounding; 1e-44 allows 250x.
+  using R100 = boost::multiprecision::cpp_bin_float_100;
+  const cb::lagrange<R100, 2> c100(ref::exact_points<R100>(std::span<const cb::point<double, 2>>(pd)));
+  ref::reference_options<R100> o100;
+  o100.tolerance = R100("1e-60");
+  const ref::reference_arc_length<cb::lagrange<R100, 2>> r100(c100, o100);
+  const R l100(r100.length());
+  EXPECT_TRUE(cbt::within_relative(r.length(), l100, 1e-44));
+  for (const char* u : {"0.03", "0.5", "0.97"})
+    EXPECT_TRUE(cbt::within_relative(r.s(R(u)), R(r100.s(R100(u))), 1e-44, static_cast<double>(l100))) << u;
 }

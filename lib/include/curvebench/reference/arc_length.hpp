@@ -11,19 +11,24 @@
 // split_ratio * (max speed on the segment) become split points. A piece that ends at one is graded
 // geometrically towards it (panels [m + h/2^(k+1), m + h/2^k]), so a near-singularity is never
 // closer to a panel than the panel's own size (plain bisection towards it makes Boost's
-// recursion, whose absolute tolerance halves per level, blow up exponentially). A deep minimum
-// (speed below 1/1000 of the maximum) gets 48 levels; a milder one whose branch points come
-// within 1/32 of the segment width h gets log2(h / delta) + 4 levels, delta = sqrt(g_min / g'')
-// being their distance from the real axis (|P'|^2 ~ g_min + g'' (t - m)^2): enough to put the
-// last panel inside that scale. Left ungraded, a dip to 1/100 of the maximum speed (dip 0.01 of
-// the near-cusp family in tests/test_arclength_honesty.cpp, h / delta ~ 800) reached only
-// 1.5e-21 relative with depth 6; grading every mild minimum made the accuracy runner 10-100x
-// slower on nurbs_weighted_3d, whose minima Boost resolves without it.
-// Every panel is integrated by boost::math::quadrature::gauss_kronrod<Real, 61> (adaptive,
-// depth <= max_depth) to the relative tolerance, or, ungraded, by tanh_sinh (whose nodes cluster at
-// the ends already) when chosen; the Boost error
-// estimates are summed. s(u) integrates from the split point at or left of
-// u; u(s) solves s(u) = s by bracketed Newton (Boost's newton_raphson_iterate) on those integrals.
+// recursion, whose absolute tolerance halves per level, blow up exponentially). A minimum whose
+// branch points come within 1/32 of the segment width h gets log2(h / delta) + 4 levels (at most
+// 48; an exact cusp gets 48), delta = sqrt(g_min / g'') being their distance from the real axis
+// (|P'|^2 ~ g_min + g'' (t - m)^2): enough to put the last panel inside that scale. Left
+// ungraded, a dip to 1/100 of the maximum speed (dip 0.01 of the near-cusp family in
+// tests/test_arclength_honesty.cpp, h / delta ~ 800) reached only 1.5e-21 relative with depth 6;
+// grading every mild minimum made the accuracy runner 10-100x slower on nurbs_weighted_3d, whose
+// minima Boost resolves without it. (A deep minimum that is not a cusp, such as the speed 2 of
+// degree-20 Runge between its wiggles of speed 1e4, needs ~20 levels, not 48.)
+// Every panel is integrated by Boost's G30-K61 rule (boost::math::quadrature::gauss_kronrod<Real,
+// 61>, one application per panel), bisected while its error estimate exceeds the panel's share of
+// the relative tolerance, to depth max_depth, and stopped early at the speed's rounding floor (see
+// integrate_panel); or, ungraded, by tanh_sinh (whose nodes cluster at the ends already) when
+// chosen. The error estimates are summed; they measure truncation, not the rounding of the speed
+// itself (on an ill-conditioned curve, such as degree-20 Runge, that rounding dominates: its
+// 50-digit length is within 4e-47 of the 100-digit one while the estimate says 9e-49). s(u)
+// integrates from the split point at or left of u; u(s) solves s(u) = s by bracketed Newton
+// (Boost's newton_raphson_iterate) on those integrals.
 // Sources: Piessens et al. (QUADPACK); Takahasi & Mori (tanh-sinh); Brent, "Algorithms for
 // minimization without derivatives" (1973). Cost: per piece a few hundred evaluations at 50 digits
 // for polynomial segments, ~50 panels more per speed minimum; u(s) costs one integral per Newton step. Accuracy: ~1e-45 relative for
@@ -56,7 +61,7 @@ template <class Real>
 struct reference_options {
   /// Relative tolerance of each piece (Boost's criterion: error <= tol * integral |f|).
   Real tolerance{Real(4096) * epsilon<Real>()};
-  unsigned max_depth{6};  // Boost bisects every failing panel: 2^depth panels at worst; grading does the rest
+  unsigned max_depth{6};  // bisection levels per panel: 2^depth panels at worst; grading does the rest
   std::size_t samples_per_segment{64};
   /// A speed minimum below split_ratio * (max sampled speed of its segment) becomes a split point.
   Real split_ratio{Real(1) / Real(4)};
@@ -227,26 +232,76 @@ class reference_arc_length {
     return total;
   }
 
-  // One panel by Boost. The nodes of a narrow panel are rounded to the spacing of Real near |a|,
-  // a relative perturbation eps |a| / (b - a) of the panel that no relative tolerance below it can
-  // survive (Boost's recursion would then bisect to full depth, exponentially): the tolerance is
-  // raised to that resolution, and a panel too narrow to matter gets one non-adaptive G30-K61.
+  // One panel: Boost's G30-K61 rule, bisected while its error estimate exceeds the panel's share
+  // of the tolerance (as Boost's own adaptive gauss_kronrod does, to depth max_depth), with two
+  // differences that decide the cost on ill-conditioned curves:
+  // - The rule is applied to g(x) = (b - a)/2 f(mid + x (b - a)/2) on [-1, 1], so its estimate is
+  //   the error of this panel's integral. Boost 1.74's recursion reports and tests |K61 - G30| of
+  //   the [-1, 1] integral unscaled, an error overstated by 2 / (b - a): on a graded panel of width
+  //   1e-7 that demands 2e7 times the requested accuracy.
+  // - A rounding floor stops the bisection: once the estimate is already below 1e-25 of the panel's
+  //   |integral| (far below anything a double method can show), halves that do not at least halve
+  //   it are noise, not truncation (the rule is exact to degree 91 on an analytic integrand, so a
+  //   resolved panel gains orders of magnitude per bisection). Degree-20 Lagrange through
+  //   equispaced points has a Lebesgue constant near 1e4, so its 50-digit speed carries ~1e-46
+  //   relative noise near the ends; bisecting to full depth there cost 10-20 s per s(u).
+  // The nodes of a narrow panel are rounded to the spacing of Real near |a|, a relative
+  // perturbation eps |a| / (b - a) of the panel that no relative tolerance below it can survive: the
+  // tolerance is raised to that resolution, and a panel too narrow to matter gets one rule.
   [[nodiscard]] Real integrate_panel(const Real& a, const Real& b, const Real& tolerance, Real& err) const {
     using std::abs;
     using std::max;
+    const Real resolution = Real(64) * epsilon<Real>() * (abs(a) + abs(b)) / abs(b - a);
+    const Real tol = max(tolerance, resolution);
     auto f = [this](const Real& x) {
       using std::sqrt;
       return Real(sqrt(speed2(x)));
     };
-    Real l1(0);
-    const Real resolution = Real(64) * epsilon<Real>() * (abs(a) + abs(b)) / abs(b - a);
-    const Real tol = max(tolerance, resolution);
     if (opt_.integrator == reference_integrator::tanh_sinh) {
+      Real l1(0);
       boost::math::quadrature::tanh_sinh<Real> ts;
       return ts.integrate(f, a, b, tol, &err, &l1);
     }
     const unsigned depth = resolution > Real(1) / Real(10000000000LL) ? 0u : opt_.max_depth;
-    return boost::math::quadrature::gauss_kronrod<Real, 61>::integrate(f, a, b, depth, tol, &err, &l1);
+    const panel_estimate whole = rule(a, b);
+    const Real abs_tol = tol * abs(whole.value);
+    err = Real(0);
+    return bisect(a, b, whole, depth, tol, abs_tol, err);
+  }
+
+  struct panel_estimate {
+    Real value, error;
+  };
+
+  [[nodiscard]] panel_estimate rule(const Real& a, const Real& b) const {
+    const Real half = (b - a) / Real(2), mid = a + half;
+    auto g = [&](const Real& x) {
+      using std::sqrt;
+      return Real(half * sqrt(speed2(mid + half * x)));
+    };
+    panel_estimate e{Real(0), Real(0)};
+    e.value = boost::math::quadrature::gauss_kronrod<Real, 61>::integrate(g, Real(-1), Real(1), 0, Real(0), &e.error);
+    return e;
+  }
+
+  // p is the rule's estimate on [a, b]; abs_tol the absolute tolerance of this panel.
+  [[nodiscard]] Real bisect(const Real& a, const Real& b, const panel_estimate& p, unsigned depth, const Real& tol,
+                            const Real& abs_tol, Real& err) const {
+    using std::abs;
+    using std::max;
+    if (depth == 0 || p.error <= max(abs_tol, tol * abs(p.value))) {
+      err += p.error;
+      return p.value;
+    }
+    const Real m = a + (b - a) / Real(2);
+    const panel_estimate left = rule(a, m), right = rule(m, b);
+    const Real floor_level = Real(1) / Real(10000000000000LL) / Real(1000000000000LL);  // 1e-25
+    if (p.error <= floor_level * abs(p.value) && left.error + right.error > p.error / Real(2)) {
+      err += left.error + right.error;
+      return left.value + right.value;
+    }
+    return bisect(a, m, left, depth - 1, tol, abs_tol / Real(2), err) +
+           bisect(m, b, right, depth - 1, tol, abs_tol / Real(2), err);
   }
 
   // Interior local minima of the speed on (a, b) below split_ratio * max speed, refined.
@@ -287,17 +342,15 @@ class reference_arc_length {
       }
       if (x > a && x < b && (out.empty() || x > out.back().first)) {
         const Real g0 = speed2(x);
-        int levels = 48;
-        if (g0 > gmax / Real(1000000)) {  // not deep: as many levels as the branch points need
-          const typename C::point_type d1 = curve_.derivative(x, 1), d2 = curve_.derivative(x, 2),
-                                       d3 = curve_.derivative(x, 3);
-          const Real g2 = d2.squaredNorm() + d1.dot(d3);
+        int levels = 48;  // an exact cusp (g0 = 0, or no curvature term to measure delta by)
+        const typename C::point_type d1 = curve_.derivative(x, 1), d2 = curve_.derivative(x, 2),
+                                     d3 = curve_.derivative(x, 3);
+        const Real g2 = d2.squaredNorm() + d1.dot(d3);
+        if (g0 > Real(0) && g2 > Real(0)) {
           using std::ceil;
           using std::log2;
-          if (g2 > Real(0)) {
-            const Real ratio = (b - a) / sqrt(g0 / g2);
-            levels = ratio > Real(32) ? std::min(48, static_cast<int>(ceil(log2(ratio))) + 4) : 0;
-          }
+          const Real ratio = (b - a) / sqrt(g0 / g2);
+          levels = ratio > Real(32) ? static_cast<int>(std::min(Real(48), ceil(log2(ratio)) + Real(4))) : 0;
         }
         out.emplace_back(x, levels);
       }
