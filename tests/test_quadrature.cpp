@@ -4,6 +4,7 @@
 // observed order of the composite rule, and the adaptive integrators: converged results whose
 // estimate bounds the true error, caps and rounding limits reported in the status, bad input.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/arclength/gauss_kronrod.hpp"
 #include "curvebench/basis/bernstein.hpp"
@@ -254,6 +255,34 @@ TEST(quadrature, adaptive_reports_caps_rounding_limits_and_bad_input) {
   const double rev[2] = {1.0, 0.0};
   EXPECT_THROW((void)al::integrate_adaptive(f, std::span<const double>(rev, 2), al::adaptive_options<double>{}),
                cb::invalid_input);
+}
+
+TEST(quadrature, adaptive_stops_at_the_rounding_of_a_noisy_integrand) {
+  // f = 1 + 1e-9 h(x), h a deterministic hash in [-1, 1): rounding noise 1e-9 relative, as an
+  // ill-conditioned evaluation produces (degree-20 Lagrange on equispaced nodes rounds its speed
+  // to ~1e-12), far above the 50 eps floor the rules assume. At relative tolerance 1e-14 both
+  // integrators stop with rounding_limited where bisection stagnates twice in a row (measured: 51
+  // G7-K15 rules = 765 evaluations each). Before roundoff detection the recursive one bisected to
+  // its depth cap (about 2^21 rules at depth 20: 31451445 evaluations, measured) and the global one
+  // to max_intervals (119985); 2500 keeps a 3x margin and admits neither.
+  auto f = [](const double& x) { return 1 + 1e-9 * cbt::unit_hash(x); };
+  const double ends[2] = {0.0, 1.0};
+  al::adaptive_options<double> opt;
+  opt.relative_tolerance = 1e-14;
+  const auto global = al::integrate_adaptive(f, std::span<const double>(ends, 2), opt);
+  EXPECT_EQ(global.status, al::result_status::rounding_limited);
+  EXPECT_LE(global.evaluations, 2500u) << "evaluations";
+  EXPECT_NEAR(global.value, 1.0, 1e-9);  // the noise averages: good to its own level
+  EXPECT_GT(global.error_estimate, 1e-14);  // and the estimate does not claim the tolerance
+  const auto recursive = al::integrate_recursive(f, 0.0, 1.0, 1e-14, al::gauss_kronrod<double>(7), 20);
+  EXPECT_EQ(recursive.status, al::result_status::rounding_limited);
+  EXPECT_LE(recursive.evaluations, 2500u) << "evaluations";
+  EXPECT_NEAR(recursive.value, 1.0, 1e-9);
+  // A smooth integrand at 1e-13 (above its 50 eps floor) still converges: the detection needs
+  // stagnation, which a resolved panel never shows.
+  auto smooth = [](const double& x) { return std::exp(x); };
+  const auto clean = al::integrate_recursive(smooth, 0.0, 4.0, 1e-13 * std::exp(4.0), al::gauss_kronrod<double>(7), 20);
+  EXPECT_TRUE(clean.converged()) << al::to_string(clean.status);
 }
 
 TEST(quadrature, quadpack_model_is_sharper_but_still_bounds_smooth_integrands) {

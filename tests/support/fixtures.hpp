@@ -5,13 +5,17 @@
 //   - random_points<Real, Dim>(...)  points uniform in [-1, 1]^Dim, drawn in double and rounded
 //                                    once to Real (so the real50 copy of the rounded points is exact);
 //   - message_of(f)                  the what() of the exception f throws, for tests that check an
-//                                    error message's wording ("(no exception)" when none).
+//                                    error message's wording ("(no exception)" when none);
+//   - unit_hash(x)                   a deterministic value in [-1, 1) per double x (splitmix64 of
+//                                    its bits): reproducible "rounding noise" for integrands.
 #pragma once
 
 #include "curvebench/core/point.hpp"
 
 #include <array>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <functional>
 #include <random>
@@ -45,6 +49,14 @@ template <class Real, int Dim>
 point_list<Real, Dim> random_points(int count, unsigned seed) {
   std::mt19937 gen(seed);
   return random_points<Real, Dim>(count, gen);
+}
+
+inline double unit_hash(double x) {
+  std::uint64_t z = std::bit_cast<std::uint64_t>(x) + 0x9e3779b97f4a7c15ULL;  // splitmix64
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) / 4503599627370496.0 - 1;  // 53 bits / 2^52 - 1
 }
 
 inline std::string message_of(const std::function<void()>& f) {

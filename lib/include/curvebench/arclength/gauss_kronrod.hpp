@@ -26,6 +26,7 @@
 #pragma once
 
 #include "curvebench/arclength/detail/linear_solve.hpp"
+#include "curvebench/arclength/detail/roundoff.hpp"
 #include "curvebench/arclength/detail/rule_cache.hpp"
 #include "curvebench/arclength/gauss_legendre.hpp"
 #include "curvebench/arclength/result.hpp"
@@ -52,7 +53,8 @@ struct kronrod_panel {
   Real kronrod{0};         ///< the (2n+1)-point value, the one reported
   Real gauss{0};           ///< the embedded n-point value
   Real error_estimate{0};  ///< per the error model, including the rounding floor
-  Real rounding_floor{0};  ///< 50 eps * integral |f| by the Kronrod rule
+  Real magnitude{0};       ///< integral of |f| by the Kronrod rule
+  Real rounding_floor{0};  ///< 50 eps * magnitude
   std::size_t evaluations{0};
 };
 
@@ -82,7 +84,8 @@ struct gauss_kronrod_rule {
     kronrod_panel<Real> p;
     p.kronrod = k * half;
     p.gauss = g * half;
-    p.rounding_floor = Real(50) * epsilon<Real>() * kabs * abs(half);
+    p.magnitude = kabs * abs(half);
+    p.rounding_floor = Real(50) * epsilon<Real>() * p.magnitude;
     p.evaluations = nodes.size();
     p.error_estimate = abs(p.kronrod - p.gauss) + p.rounding_floor;
     return p;
@@ -110,7 +113,8 @@ struct gauss_kronrod_rule {
     kronrod_panel<Real> p;
     p.kronrod = k * half;
     p.gauss = g * half;
-    p.rounding_floor = Real(50) * epsilon<Real>() * kabs * abs(half);
+    p.magnitude = kabs * abs(half);
+    p.rounding_floor = Real(50) * epsilon<Real>() * p.magnitude;
     p.evaluations = nodes.size();
     asc *= abs(half);
     Real diff = abs(p.kronrod - p.gauss);
@@ -274,7 +278,37 @@ template <class Real>
 struct heap_panel {
   Real a, b;
   kronrod_panel<Real> r;
+  bool suspect{false};  ///< the bisection that made it stagnated (detail/roundoff.hpp)
 };
+
+// Recursive bisection of a panel whose rule estimate p is known. suspect: the bisection that made
+// this panel stagnated (see detail/roundoff.hpp); a second stagnation stops it.
+template <class Real, class F>
+[[nodiscard]] quadrature_result<Real> bisect(F& f, const Real& a, const Real& b, const kronrod_panel<Real>& p,
+                                             const Real& tolerance, const gauss_kronrod_rule<Real>& rule,
+                                             int max_depth, bool suspect) {
+  quadrature_result<Real> out{p.kronrod, p.error_estimate, 0, result_status::converged};
+  if (p.error_estimate <= tolerance) return out;
+  const Real mid = (a + b) / Real(2);
+  if (!(p.error_estimate > Real(2) * p.rounding_floor) || !(mid > (a < b ? a : b)) || !(mid < (a < b ? b : a))) {
+    out.status = result_status::rounding_limited;
+    return out;
+  }
+  if (max_depth <= 0) {
+    out.status = result_status::cap_hit;
+    return out;
+  }
+  const kronrod_panel<Real> l = rule.apply(f, a, mid);
+  const kronrod_panel<Real> r = rule.apply(f, mid, b);
+  const bool stagnated = bisection_stagnated(p.error_estimate, l.error_estimate + r.error_estimate, p.magnitude);
+  if (stagnated && suspect)
+    return {l.kronrod + r.kronrod, l.error_estimate + r.error_estimate, l.evaluations + r.evaluations,
+            result_status::rounding_limited};
+  quadrature_result<Real> left = bisect(f, a, mid, l, tolerance / Real(2), rule, max_depth - 1, stagnated);
+  left += bisect(f, mid, b, r, tolerance / Real(2), rule, max_depth - 1, stagnated);
+  left.evaluations += l.evaluations + r.evaluations;
+  return left;
+}
 
 }  // namespace detail
 
@@ -282,7 +316,8 @@ struct heap_panel {
 /// an interior split point (pass a curve's breakpoints): start with one panel per split interval,
 /// then repeatedly bisect the panel with the largest error estimate until the summed estimate
 /// meets the target (converged), the panel count reaches max_intervals (cap_hit), or no panel can
-/// usefully be refined because its estimate is its rounding floor or it is too narrow to bisect
+/// usefully be refined because its estimate is its rounding floor, its halves do not improve on
+/// it (detail/roundoff.hpp: f's own rounding), or it is too narrow to bisect
 /// (rounding_limited). Allocates its panel list (not for per-query hot paths: see
 /// integrate_recursive). Throws invalid_input for fewer than 2 split points or bad tolerances.
 template <class Real, class F>
@@ -356,6 +391,14 @@ template <class Real, class F>
     out.evaluations += left.r.evaluations + right.r.evaluations;
     value += left.r.kronrod + right.r.kronrod - worst_panel.r.kronrod;
     err += left.r.error_estimate + right.r.error_estimate - worst_panel.r.error_estimate;
+    const bool stagnated = detail::bisection_stagnated(
+        worst_panel.r.error_estimate, left.r.error_estimate + right.r.error_estimate, worst_panel.r.magnitude);
+    if (stagnated && worst_panel.suspect) {
+      frozen.push_back(left);  // the second stagnation in a row: f's own rounding, refining cannot help
+      frozen.push_back(right);
+      continue;
+    }
+    left.suspect = right.suspect = stagnated;
     heap.push_back(left);
     std::push_heap(heap.begin(), heap.end(), less);
     heap.push_back(right);
@@ -370,27 +413,15 @@ template <class Real, class F>
 /// Adaptive Gauss-Kronrod on [a, b] by recursive bisection with the tolerance halved per level,
 /// depth <= max_depth: no allocation (for per-query paths such as Newton inversion). The status
 /// is converged when every accepted panel met its share, cap_hit when the depth cap stopped a
-/// panel, rounding_limited when a panel's estimate was its rounding floor.
+/// panel, rounding_limited when a panel's estimate was its rounding floor or its halves did not
+/// improve on it (twice in a row, see detail/roundoff.hpp; the halves' sum is then accepted).
 template <class Real, class F>
 [[nodiscard]] quadrature_result<Real> integrate_recursive(F&& f, const Real& a, const Real& b, const Real& tolerance,
                                                           const gauss_kronrod_rule<Real>& rule, int max_depth = 20) {
   const kronrod_panel<Real> p = rule.apply(f, a, b);
-  quadrature_result<Real> out{p.kronrod, p.error_estimate, p.evaluations, result_status::converged};
-  if (p.error_estimate <= tolerance) return out;
-  const Real mid = (a + b) / Real(2);
-  if (!(p.error_estimate > Real(2) * p.rounding_floor) || !(mid > (a < b ? a : b)) || !(mid < (a < b ? b : a))) {
-    out.status = result_status::rounding_limited;
-    return out;
-  }
-  if (max_depth <= 0) {
-    out.status = result_status::cap_hit;
-    return out;
-  }
-  quadrature_result<Real> left = integrate_recursive(f, a, mid, tolerance / Real(2), rule, max_depth - 1);
-  const quadrature_result<Real> right = integrate_recursive(f, mid, b, tolerance / Real(2), rule, max_depth - 1);
-  left += right;
-  left.evaluations += p.evaluations;
-  return left;
+  quadrature_result<Real> out = detail::bisect(f, a, b, p, tolerance, rule, max_depth, false);
+  out.evaluations += p.evaluations;
+  return out;
 }
 
 }  // namespace curvebench::arclength

@@ -35,6 +35,7 @@
 // real50 on the test suite (checked against every closed form in tests/test_reference.cpp).
 #pragma once
 
+#include "curvebench/arclength/detail/roundoff.hpp"
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/core/curve.hpp"
 #include "curvebench/core/error.hpp"
@@ -239,12 +240,12 @@ class reference_arc_length {
   //   the error of this panel's integral. Boost 1.74's recursion reports and tests |K61 - G30| of
   //   the [-1, 1] integral unscaled, an error overstated by 2 / (b - a): on a graded panel of width
   //   1e-7 that demands 2e7 times the requested accuracy.
-  // - A rounding floor stops the bisection: once the estimate is already below 1e-25 of the panel's
-  //   |integral| (far below anything a double method can show), halves that do not at least halve
-  //   it are noise, not truncation (the rule is exact to degree 91 on an analytic integrand, so a
-  //   resolved panel gains orders of magnitude per bisection). Degree-20 Lagrange through
-  //   equispaced points has a Lebesgue constant near 1e4, so its 50-digit speed carries ~1e-46
-  //   relative noise near the ends; bisecting to full depth there cost 10-20 s per s(u).
+  // - Roundoff detection stops the bisection (arclength/detail/roundoff.hpp): once an estimate is
+  //   below sqrt(eps) ~ 1e-25 of the panel's integral (far below anything a double method can
+  //   show), two bisections in a row whose halves do not halve it are noise, not truncation.
+  //   Degree-20 Lagrange through equispaced points has a Lebesgue constant near 1e4, so its
+  //   50-digit speed carries ~1e-46 relative noise near the ends; bisecting to full depth there
+  //   cost 10-20 s per s(u).
   // The nodes of a narrow panel are rounded to the spacing of Real near |a|, a relative
   // perturbation eps |a| / (b - a) of the panel that no relative tolerance below it can survive: the
   // tolerance is raised to that resolution, and a panel too narrow to matter gets one rule.
@@ -266,7 +267,7 @@ class reference_arc_length {
     const panel_estimate whole = rule(a, b);
     const Real abs_tol = tol * abs(whole.value);
     err = Real(0);
-    return bisect(a, b, whole, depth, tol, abs_tol, err);
+    return bisect(a, b, whole, depth, tol, abs_tol, false, err);
   }
 
   struct panel_estimate {
@@ -284,9 +285,10 @@ class reference_arc_length {
     return e;
   }
 
-  // p is the rule's estimate on [a, b]; abs_tol the absolute tolerance of this panel.
+  // p is the rule's estimate on [a, b]; abs_tol the absolute tolerance of this panel; suspect: the
+  // bisection that made it stagnated (arclength/detail/roundoff.hpp), a second one stops it.
   [[nodiscard]] Real bisect(const Real& a, const Real& b, const panel_estimate& p, unsigned depth, const Real& tol,
-                            const Real& abs_tol, Real& err) const {
+                            const Real& abs_tol, bool suspect, Real& err) const {
     using std::abs;
     using std::max;
     if (depth == 0 || p.error <= max(abs_tol, tol * abs(p.value))) {
@@ -295,13 +297,13 @@ class reference_arc_length {
     }
     const Real m = a + (b - a) / Real(2);
     const panel_estimate left = rule(a, m), right = rule(m, b);
-    const Real floor_level = Real(1) / Real(10000000000000LL) / Real(1000000000000LL);  // 1e-25
-    if (p.error <= floor_level * abs(p.value) && left.error + right.error > p.error / Real(2)) {
+    const bool stagnated = arclength::detail::bisection_stagnated(p.error, Real(left.error + right.error), Real(abs(p.value)));
+    if (stagnated && suspect) {
       err += left.error + right.error;
       return left.value + right.value;
     }
-    return bisect(a, m, left, depth - 1, tol, abs_tol / Real(2), err) +
-           bisect(m, b, right, depth - 1, tol, abs_tol / Real(2), err);
+    return bisect(a, m, left, depth - 1, tol, abs_tol / Real(2), stagnated, err) +
+           bisect(m, b, right, depth - 1, tol, abs_tol / Real(2), stagnated, err);
   }
 
   // Interior local minima of the speed on (a, b) below split_ratio * max speed, refined.
