@@ -6,11 +6,14 @@
 // its true error; a method that cannot guarantee that says not_guaranteed with estimate +inf.
 #include "support/accuracy.hpp"
 
+#include "curvebench/arclength/forward_difference.hpp"
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/arclength/newton_inversion.hpp"
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/curves/bezier.hpp"
 #include "curvebench/curves/cardinal_spline.hpp"
+#include "curvebench/curves/lagrange.hpp"
+#include "curvebench/reference/convert.hpp"
 #include "curvebench/reference/arc_length.hpp"
 
 #include <gtest/gtest.h>
@@ -310,5 +313,53 @@ TEST(arclength_honesty, hermite_table_on_catmull_rom_paths) {
                 which == 0 ? "4 segments" : "5 segments", p.table_intervals(),
                 std::string(al::to_string(p.table_status())).c_str(), p.table_error() / p.length(), e[0], e[1]);
     EXPECT_GT(e[0] / e[1], 64.0);
+  }
+}
+
+TEST(arclength_honesty, chord_tables_trust_their_estimate_only_at_an_observed_order) {
+  // bench/cases/runge_lagrange_equispaced.json: degree-20 Lagrange through 1/(1 + 25 x^2) at 21
+  // equispaced x. Its end wiggles (speed up to 1e4 against 2 in the middle) are not resolved by
+  // coarse tables, whose chord sums then creep up slowly: L_h - L_2h was 60x below L - L_h at
+  // N = 128 (the accuracy runner's full sweep), with status converged. The tables now need
+  // 3 <= (L_2h - L_4h) / (L_h - L_2h) <= 6 and N >= 16 to report an estimate; on this curve no
+  // table up to N = 8192 reaches that regime (the error alternates: 12x less from N = 128 to 256,
+  // 1.1x from 256 to 512).
+  std::vector<pt2<double>> pd;
+  for (int j = 0; j <= 20; ++j) {
+    const double x = -1 + j / 10.0;
+    pd.emplace_back(x, 1 / (1 + 25 * x * x));
+  }
+  const cb::lagrange<double, 2> c(pd);
+  const cb::lagrange<R, 2> c50(ref::exact_points<R>(std::span<const pt2<double>>(pd)));
+  const ref::reference_arc_length<cb::lagrange<R, 2>> r(c50);
+  const R length = r.length();
+  int refused_traps = 0;
+  for (std::size_t n = 4; n <= 8192; n *= 2) {
+    const al::forward_difference_table<double> t(c, n);
+    const R error = length - R(t.length().value);
+    const R rich_error = abs(length - R(t.richardson_length().value));
+    const R d2 = R(t.length().value) - R(t.coarse_length());
+    if (t.length().status == al::result_status::converged) {
+      EXPECT_LE(error, R(t.length().error_estimate)) << "N=" << n;
+      EXPECT_EQ(t.richardson_length().status, al::result_status::converged) << "N=" << n;
+      EXPECT_LE(rich_error, R(t.richardson_length().error_estimate)) << "N=" << n;
+    } else {
+      EXPECT_EQ(t.length().status, al::result_status::not_guaranteed) << "N=" << n;
+      EXPECT_TRUE(std::isinf(t.length().error_estimate)) << "N=" << n;
+      EXPECT_EQ(t.richardson_length().status, al::result_status::not_guaranteed) << "N=" << n;
+      if (d2 < error) ++refused_traps;  // the old rule's estimate would have lied here
+    }
+  }
+  EXPECT_GE(refused_traps, 8);  // measured: 8 of the 12 tables (N = 4 to 32, then every other)
+  // Control: a smooth cubic (the cusp family far from its cusp) converges at order 2 once its
+  // 4h table has 16 chords (at N = 16 its ratio is still outside [3, 6]), so from N = 64 on its
+  // tables keep their estimate, and it bounds.
+  const cb::bezier<double, 2> smooth = cusp_family<double>(0.5);
+  const R smooth_length = reference_length(cusp_family<R>(0.5));
+  for (std::size_t n = 64; n <= 4096; n *= 4) {
+    const al::forward_difference_table<double> t(smooth, n);
+    EXPECT_EQ(t.length().status, al::result_status::converged) << "N=" << n;
+    EXPECT_LE(smooth_length - R(t.length().value), R(t.length().error_estimate)) << "N=" << n;
+    EXPECT_LE(abs(smooth_length - R(t.richardson_length().value)), R(t.richardson_length().error_estimate)) << "N=" << n;
   }
 }
