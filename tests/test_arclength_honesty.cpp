@@ -316,6 +316,26 @@ TEST(arclength_honesty, hermite_table_on_catmull_rom_paths) {
   }
 }
 
+// bench/cases/runge_lagrange_equispaced.json: degree-20 Lagrange through 1/(1 + 25 x^2) at 21
+// equispaced x, in double (the parameters j/20 too); its exact 50-digit twin's reference built
+// once (0.8 s at -O2).
+cb::lagrange<double, 2> runge_equispaced() {
+  std::vector<pt2<double>> pd;
+  for (int j = 0; j <= 20; ++j) {
+    const double x = -1 + j / 10.0;
+    pd.emplace_back(x, 1 / (1 + 25 * x * x));
+  }
+  return cb::lagrange<double, 2>(pd);
+}
+const ref::reference_arc_length<cb::lagrange<R, 2>>& runge_reference() {
+  static const ref::reference_arc_length<cb::lagrange<R, 2>> r(
+      ref::convert_curve<R>(runge_equispaced(), [](const auto& c, auto to) {
+        using To = typename decltype(to)::type;
+        return cb::lagrange<To, 2>(ref::exact_points<To>(c.points()), ref::exact_values<To>(c.parameters()));
+      }));
+  return r;
+}
+
 TEST(arclength_honesty, chord_tables_trust_their_estimate_only_at_an_observed_order) {
   // bench/cases/runge_lagrange_equispaced.json: degree-20 Lagrange through 1/(1 + 25 x^2) at 21
   // equispaced x. Its end wiggles (speed up to 1e4 against 2 in the middle) are not resolved by
@@ -324,15 +344,8 @@ TEST(arclength_honesty, chord_tables_trust_their_estimate_only_at_an_observed_or
   // 3 <= (L_2h - L_4h) / (L_h - L_2h) <= 6 and N >= 16 to report an estimate; on this curve no
   // table up to N = 8192 reaches that regime (the error alternates: 12x less from N = 128 to 256,
   // 1.1x from 256 to 512).
-  std::vector<pt2<double>> pd;
-  for (int j = 0; j <= 20; ++j) {
-    const double x = -1 + j / 10.0;
-    pd.emplace_back(x, 1 / (1 + 25 * x * x));
-  }
-  const cb::lagrange<double, 2> c(pd);
-  const cb::lagrange<R, 2> c50(ref::exact_points<R>(std::span<const pt2<double>>(pd)));
-  const ref::reference_arc_length<cb::lagrange<R, 2>> r(c50);
-  const R length = r.length();
+  const cb::lagrange<double, 2> c = runge_equispaced();
+  const R length = runge_reference().length();
   int refused_traps = 0;
   for (std::size_t n = 4; n <= 8192; n *= 2) {
     const al::forward_difference_table<double> t(c, n);
@@ -361,5 +374,30 @@ TEST(arclength_honesty, chord_tables_trust_their_estimate_only_at_an_observed_or
     EXPECT_EQ(t.length().status, al::result_status::converged) << "N=" << n;
     EXPECT_LE(smooth_length - R(t.length().value), R(t.length().error_estimate)) << "N=" << n;
     EXPECT_LE(abs(smooth_length - R(t.richardson_length().value)), R(t.richardson_length().error_estimate)) << "N=" << n;
+  }
+}
+
+TEST(arclength_honesty, newton_inversion_short_steps_on_the_runge_wiggles) {
+  // Newton u(s) at relative tolerance 1e-6 on the accuracy runner's 33 targets (golden-ratio
+  // fractions of L). With G3-K7 for short steps (< 1/32 of the bracket) target 28 (u = 0.025, on
+  // an end wiggle) converged with estimate 6.9e-8 L and error 4.4e-5 L; with G7-K15 every answer
+  // is within the tolerance and its estimate. Slack 1e-12 L: the double evaluation of this curve
+  // rounds its speed to ~1e-13 relative, a bias no quadrature estimate can see (the largest excess
+  // is at s = L, where the double length's estimate is 5.5e-14 L and its error 2.7e-13 L).
+  const cb::lagrange<double, 2> c = runge_equispaced();
+  const auto& r = runge_reference();
+  const double L = static_cast<double>(r.length());
+  al::parameterization_options<double> o;
+  o.method = al::inversion_method::newton;
+  o.newton.relative_tolerance = 1e-6;
+  const al::parameterization<cb::lagrange<double, 2>> p(c, o);
+  for (int k = 0; k <= 32; ++k) {
+    const double fraction = k == 0 ? 0.0 : k == 32 ? 1.0 : std::fmod(k * 0.6180339887498949, 1.0);
+    const double s = std::min(L * fraction, p.length());
+    const al::inversion_result<double> q = p.invert(s, al::inversion_method::newton);
+    const R error = abs(r.s(R(q.u)) - R(s));
+    EXPECT_TRUE(q.converged()) << "k=" << k << " " << al::to_string(q.status);
+    EXPECT_LE(error, R(q.s_error_estimate) + R(1e-12 * L)) << "k=" << k << " u=" << q.u;
+    EXPECT_LE(error, R(1e-6 * L)) << "k=" << k << " u=" << q.u;
   }
 }

@@ -308,20 +308,27 @@ TEST(reference, ill_conditioned_runge_interpolant_costs_thousands_not_millions_o
   // the ends, above the 2e-47 tolerance, and its 13 speed minima (speed 2 between wiggles of speed
   // 1e4) are graded. Measured: 24339 evaluations; before the rounding-floor stop and the
   // delta-based grading, 2423136 (130 s). The bound 1e5 keeps a 4x margin.
+  // The data, parameters j/20 included, in double: the 50- and 100-digit curves are exact twins.
   std::vector<cb::point<double, 2>> pd;
+  std::vector<double> ud;
   for (int j = 0; j <= 20; ++j) {
     const double x = -1 + j / 10.0;
     pd.emplace_back(x, 1 / (1 + 25 * x * x));
+    ud.push_back(j / 20.0);
   }
+  const std::span<const cb::point<double, 2>> pts(pd);
+  const std::span<const double> us(ud);
   using C50 = counted_curve<cb::lagrange<R, 2>>;
-  const C50 c{cb::lagrange<R, 2>(ref::exact_points<R>(std::span<const cb::point<double, 2>>(pd)))};
+  const std::vector<R> u50 = ref::exact_values<R>(us);
+  const C50 c{cb::lagrange<R, 2>(ref::exact_points<R>(pts), u50)};
   const ref::reference_arc_length<C50> r(c);
   EXPECT_LE(*c.calls, 100000u) << "evaluations";
   EXPECT_EQ(r.speed_minima().size(), 13u);
   // Against the same data at 100 digits (tolerance 1e-60: its own rounding floor is ~1e-96):
   // measured 4e-47 relative, the 50-digit speed's rounding; 1e-44 allows 250x.
   using R100 = boost::multiprecision::cpp_bin_float_100;
-  const cb::lagrange<R100, 2> c100(ref::exact_points<R100>(std::span<const cb::point<double, 2>>(pd)));
+  const std::vector<R100> u100 = ref::exact_values<R100>(us);
+  const cb::lagrange<R100, 2> c100(ref::exact_points<R100>(pts), u100);
   ref::reference_options<R100> o100;
   o100.tolerance = R100("1e-60");
   const ref::reference_arc_length<cb::lagrange<R100, 2>> r100(c100, o100);

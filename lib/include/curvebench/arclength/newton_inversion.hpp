@@ -16,7 +16,7 @@
 // The first guess inverts a monotone cubic Hermite model of s(u) on the segment built from its end
 // lengths and end speeds (stored with the segment lengths; no evaluation per query).
 // Cost: O(log segments) + per iteration 2n + 2 derivative evaluations for a long step (n = 15:
-// 32) and 8 for a step shorter than 1/32 of the bracket (G3-K7); typically one long and two or
+// 32) and 16 for a step shorter than 1/32 of the bracket (G7-K15); typically one long and two or
 // three short iterations; no allocation per query.
 // Accuracy: quadratic convergence in u where |P'| > 0; linear (bisection) where it vanishes.
 #pragma once
@@ -169,9 +169,11 @@ struct newton_options {
   int gauss_points{15};   ///< n of the inner G_n - K_{2n+1} pair for long steps (G15-K31: one panel
                           ///< is usually enough for half a polynomial segment)
   int max_depth{16};      ///< recursion cap of each inner adaptive integral
-  /// Inner integrals over less than 1/short_fraction of the bracket use the G3-K7 pair (7
-  /// evaluations instead of 15): near convergence the steps are tiny and 7 points are exact to
-  /// rounding there; the |G - K| estimate stays honest either way. 0 disables.
+  /// Inner integrals over less than 1/short_fraction of the bracket use the G7-K15 pair (15
+  /// evaluations instead of 31): near convergence the steps are tiny and 15 points are exact to
+  /// rounding there. (It was G3-K7 until the full sweep caught its |G - K| fooled on degree-20
+  /// Runge: a step of 1/600 of the bracket across an end wiggle, estimate 7e-8 L, error 4.4e-5 L.)
+  /// 0 disables.
   int short_fraction{32};
   /// After convergence, one more Newton step (one short integral and one speed evaluation): the
   /// quadratic convergence takes the residual from the tolerance down to rounding level. Used for
@@ -210,7 +212,7 @@ template <curve C>
   using Real = typename C::real_type;
   using std::abs;
   const gauss_kronrod_rule<Real>& rule = gauss_kronrod<Real>(opt.gauss_points);
-  const gauss_kronrod_rule<Real>& short_rule = gauss_kronrod<Real>(3);
+  const gauss_kronrod_rule<Real>& short_rule = gauss_kronrod<Real>(7);
   auto f = [&c](const Real& u) { return speed(c, u); };
   const Real width = br.u_hi - br.u_lo;
   auto pick = [&](const Real& len) -> const gauss_kronrod_rule<Real>& {
