@@ -5,6 +5,7 @@
 // The headline property (issue 4): a result whose status is converged has an error estimate >=
 // its true error; a method that cannot guarantee that says not_guaranteed with estimate +inf.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/arclength/forward_difference.hpp"
 #include "curvebench/arclength/length.hpp"
@@ -319,14 +320,7 @@ TEST(arclength_honesty, hermite_table_on_catmull_rom_paths) {
 // bench/cases/runge_lagrange_equispaced.json: degree-20 Lagrange through 1/(1 + 25 x^2) at 21
 // equispaced x, in double (the parameters j/20 too); its exact 50-digit twin's reference built
 // once (0.8 s at -O2).
-cb::lagrange<double, 2> runge_equispaced() {
-  std::vector<pt2<double>> pd;
-  for (int j = 0; j <= 20; ++j) {
-    const double x = -1 + j / 10.0;
-    pd.emplace_back(x, 1 / (1 + 25 * x * x));
-  }
-  return cb::lagrange<double, 2>(pd);
-}
+cb::lagrange<double, 2> runge_equispaced() { return cb::lagrange<double, 2>(curvebench::testing::runge_samples()); }
 const ref::reference_arc_length<cb::lagrange<R, 2>>& runge_reference() {
   static const ref::reference_arc_length<cb::lagrange<R, 2>> r(
       ref::convert_curve<R>(runge_equispaced(), [](const auto& c, auto to) {
@@ -339,7 +333,7 @@ const ref::reference_arc_length<cb::lagrange<R, 2>>& runge_reference() {
 TEST(arclength_honesty, chord_tables_trust_their_estimate_only_at_an_observed_order) {
   // bench/cases/runge_lagrange_equispaced.json: degree-20 Lagrange through 1/(1 + 25 x^2) at 21
   // equispaced x. Its end wiggles (speed up to 1e4 against 2 in the middle) are not resolved by
-  // coarse tables, whose chord sums then creep up slowly: L_h - L_2h was 60x below L - L_h at
+  // coarse tables, whose chord sums then creep up slowly: L_h - L_2h was 25x below L - L_h at
   // N = 128 (the accuracy runner's full sweep), with status converged. The tables now need
   // 3 <= (L_2h - L_4h) / (L_h - L_2h) <= 6 and N >= 16 to report an estimate; on this curve no
   // table up to N = 8192 reaches that regime (the error alternates: 12x less from N = 128 to 256,

@@ -309,13 +309,9 @@ TEST(reference, ill_conditioned_runge_interpolant_costs_thousands_not_millions_o
   // 1e4) are graded. Measured: 24339 evaluations; before the rounding-floor stop and the
   // delta-based grading, 2423136 (130 s). The bound 1e5 keeps a 4x margin.
   // The data, parameters j/20 included, in double: the 50- and 100-digit curves are exact twins.
-  std::vector<cb::point<double, 2>> pd;
+  const cb::point_list<double, 2> pd = cbt::runge_samples();
   std::vector<double> ud;
-  for (int j = 0; j <= 20; ++j) {
-    const double x = -1 + j / 10.0;
-    pd.emplace_back(x, 1 / (1 + 25 * x * x));
-    ud.push_back(j / 20.0);
-  }
+  for (int j = 0; j <= 20; ++j) ud.push_back(j / 20.0);
   const std::span<const cb::point<double, 2>> pts(pd);
   const std::span<const double> us(ud);
   using C50 = counted_curve<cb::lagrange<R, 2>>;

@@ -6,6 +6,8 @@
 //                                    once to Real (so the real50 copy of the rounded points is exact);
 //   - message_of(f)                  the what() of the exception f throws, for tests that check an
 //                                    error message's wording ("(no exception)" when none);
+//   - runge_samples()                21 equispaced samples (x, 1 / (1 + 25 x^2)), x in [-1, 1], in
+//                                    double: bench/cases/runge_lagrange_equispaced.json's data;
 //   - unit_hash(x)                   a deterministic value in [-1, 1) per double x (splitmix64 of
 //                                    its bits): reproducible "rounding noise" for integrands.
 #pragma once
@@ -49,6 +51,15 @@ template <class Real, int Dim>
 point_list<Real, Dim> random_points(int count, unsigned seed) {
   std::mt19937 gen(seed);
   return random_points<Real, Dim>(count, gen);
+}
+
+inline point_list<double, 2> runge_samples() {
+  point_list<double, 2> p;
+  for (int j = 0; j <= 20; ++j) {
+    const double x = -1 + j / 10.0;
+    p.emplace_back(x, 1 / (1 + 25 * x * x));
+  }
+  return p;
 }
 
 inline double unit_hash(double x) {

@@ -13,8 +13,8 @@
 // Outside it, for N not divisible by 4 and for N < 16 (L_4h needs 4 chords per segment to be a
 // sample of the shape at all: at N = 4 a single chord, and degree-20 Runge's ratio then fell in
 // the range by coincidence, with the error 1000x d2), the length has no estimate
-// (not_guaranteed): features
-// the table does not resolve make the chord sums creep, stall and jump. On degree-20 Runge (its
+// (not_guaranteed): features the table does not resolve make the chord sums creep, stall and
+// jump. On degree-20 Runge (its
 // end wiggles have speed 1e4 against 2 in the middle) the error fell 12x from N = 128 to 256 and
 // 1.1x from 256 to 512; at N = 128 d2 was 25x below L - L_h while r = 414. Richardson:
 // R = L_h + d2 / 3 cancels the h^2 term; its order (4 for smooth segments) is measured by the
