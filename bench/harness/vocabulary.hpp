@@ -1,0 +1,187 @@
+// The harness's one vocabulary: quantities, method ids and their settings, peers, benchmark
+// operations and counters, each declared once here. The CLI (`curvebench length --method`,
+// `sample --method`), the accuracy records, the benchmark names, the gate's thresholds and
+// scripts/report.py (through `curvebench list vocabulary --json`, which scripts/bench.sh writes to
+// reports/vocabulary.json) all use these ids; code names them through the constants below, so a
+// misspelled id does not compile, and the gate rejects a rule naming an id that is not here.
+//
+// Formats:
+//   record setting     "key=value[,key=value]"         ("n=8", "tol=1e-10", "n=3,panels=4")
+//   benchmark name     family/algorithm[/key:value]... (Google Benchmark's argument convention)
+//   peers              algorithm ids start with "peer_" and name the library
+// Every benchmark reports its time per operation: it declares the operation it times (the label)
+// and how many it performs per iteration (items processed), so a batch of 1024 evaluations and a
+// single evaluation compare directly.
+#pragma once
+
+#include <algorithm>
+#include <span>
+#include <string_view>
+
+namespace curvebench::harness::vocab {
+
+/// What the accuracy runner measures; errors are relative to the case's reference length L except eval.
+struct quantity {
+  std::string_view id;
+  std::string_view doc;
+};
+
+namespace quantities {
+inline constexpr quantity length{"length", "|L_method - L| / L for the whole curve"};
+inline constexpr quantity s_of_u{"s_of_u", "max over parameters u_j of |s_method(u_j) - s(u_j)| / L"};
+inline constexpr quantity u_of_s{"u_of_s", "max over targets s_j of |s(u_method(s_j)) - s_j| / L"};
+inline constexpr quantity eval{"eval", "max |P_method(u) - P(u)|_inf / (eps(double) x the curve's size)"};
+}  // namespace quantities
+
+inline constexpr const quantity* all_quantities[] = {&quantities::length, &quantities::s_of_u, &quantities::u_of_s,
+                                                     &quantities::eval};
+
+/// A method of the library, as the CLI, the records and the benchmarks name it.
+struct method {
+  std::string_view id;
+  std::string_view quantities;  ///< the quantity ids it produces records for, space-separated
+  std::string_view settings;    ///< its setting keys, space-separated ("" when it has none)
+  double theory;                ///< convergence order in evaluations fitted over its sweep; 0: none fitted
+  std::string_view doc;
+};
+
+namespace methods {
+inline constexpr method gauss{"gauss", "length", "n", 0,
+                              "fixed n-point Gauss-Legendre per segment; estimate from the nested (n-1)-point rule"};
+inline constexpr method composite_gauss{"composite_gauss", "length", "n panels", 6,
+                                        "n-point Gauss-Legendre on equal panels per segment (theory 2n: 6 for n = 3)"};
+inline constexpr method adaptive_gk{"adaptive_gk", "length", "tol", 0,
+                                    "adaptive Gauss-Kronrod G7-K15 to a relative tolerance, split at speed minima"};
+inline constexpr method forward_difference{"forward_difference", "length s_of_u u_of_s", "steps", 2,
+                                           "chord sums of a table of N steps per segment (seed 002)"};
+inline constexpr method richardson{"richardson", "length", "steps", 4,
+                                   "Richardson extrapolation of the chord sums of N and N/2 steps"};
+inline constexpr method subdivision{"subdivision", "length", "tol", 2,
+                                    "adaptive subdivision with the chord test; tolerance relative to the length"};
+inline constexpr method segments_adaptive{"segments_adaptive", "s_of_u", "", 0,
+                                          "s(u): adaptive segment lengths plus one adaptive partial integral"};
+inline constexpr method linear_table{"linear_table", "u_of_s", "M", 2,
+                                     "u(s): table of M intervals in s, linear interpolation"};
+inline constexpr method hermite_table{"hermite_table", "u_of_s", "M", 4,
+                                      "u(s): table of M intervals in s, cubic Hermite interpolation (du/ds = 1/|P'|)"};
+inline constexpr method hermite_table_polished{"hermite_table_polished", "u_of_s", "M", 0,
+                                               "u(s): the Hermite table followed by one safeguarded Newton step"};
+inline constexpr method newton{"newton", "u_of_s", "tol", 0,
+                               "u(s): Newton on s(u) - s from the segment bracket, no table, to a relative tolerance"};
+inline constexpr method eval_default{"default", "eval", "", 0,
+                                     "the family's default evaluation; the other eval methods are the algorithms "
+                                     "each family offers in the family registry"};
+}  // namespace methods
+
+inline constexpr const method* all_methods[] = {
+    &methods::gauss,         &methods::composite_gauss,   &methods::adaptive_gk,
+    &methods::forward_difference, &methods::richardson,   &methods::subdivision,
+    &methods::segments_adaptive,  &methods::linear_table, &methods::hermite_table,
+    &methods::hermite_table_polished, &methods::newton,   &methods::eval_default};
+
+/// A library users would pick instead, timed (and measured) on the same data.
+struct peer {
+  std::string_view id;  ///< the benchmark algorithm id, always "peer_..."
+  std::string_view library;
+  std::string_view doc;
+};
+
+namespace peers {
+inline constexpr peer boost_gauss{"peer_boost_gauss", "Boost.Math", "quadrature::gauss<double, N> (fixed rule)"};
+inline constexpr peer boost_gauss_kronrod15{"peer_boost_gauss_kronrod15", "Boost.Math",
+                                            "quadrature::gauss_kronrod<double, 15> (adaptive)"};
+inline constexpr peer boost_gauss_kronrod31{"peer_boost_gauss_kronrod31", "Boost.Math",
+                                            "quadrature::gauss_kronrod<double, 31> (adaptive)"};
+inline constexpr peer boost_tanh_sinh{"peer_boost_tanh_sinh", "Boost.Math", "quadrature::tanh_sinh<double>"};
+inline constexpr peer boost_catmull_rom{"peer_boost_catmull_rom", "Boost.Math", "interpolators::catmull_rom"};
+inline constexpr peer boost_cubic_hermite{"peer_boost_cubic_hermite", "Boost.Math", "interpolators::cubic_hermite"};
+inline constexpr peer boost_cardinal_cubic_b_spline{"peer_boost_cardinal_cubic_b_spline", "Boost.Math",
+                                                    "interpolators::cardinal_cubic_b_spline"};
+inline constexpr peer eigen_spline_fixed_degree{"peer_eigen_spline_fixed_degree", "Eigen",
+                                                "Spline<double, 3, 3> (degree fixed at compile time)"};
+inline constexpr peer eigen_spline_dynamic_degree{"peer_eigen_spline_dynamic_degree", "Eigen",
+                                                  "Spline<double, 3, Dynamic>"};
+inline constexpr peer bisection_reintegration{"peer_bisection_full_reintegration", "common practice",
+                                              "u(s) by bisection on s(u) re-integrated from u0 (16-point Gauss)"};
+}  // namespace peers
+
+inline constexpr const peer* all_peers[] = {
+    &peers::boost_gauss,       &peers::boost_gauss_kronrod15,        &peers::boost_gauss_kronrod31,
+    &peers::boost_tanh_sinh,   &peers::boost_catmull_rom,            &peers::boost_cubic_hermite,
+    &peers::boost_cardinal_cubic_b_spline, &peers::eigen_spline_fixed_degree, &peers::eigen_spline_dynamic_degree,
+    &peers::bisection_reintegration};
+
+/// What one item of a benchmark is: the unit of its time per operation.
+struct operation {
+  std::string_view id;
+  std::string_view doc;
+};
+
+namespace operations {
+inline constexpr operation evaluation{"evaluation", "one point (or derivative) of a curve at one parameter"};
+inline constexpr operation basis{"basis", "all n + 1 basis functions at one parameter"};
+inline constexpr operation length{"length", "one arc length of the whole curve (set-up included)"};
+inline constexpr operation query{"query", "one u(s) or s(u) query (tables built beforehand)"};
+inline constexpr operation frame{"frame", "one frame of a motion path: P(U(L S(t)))"};
+inline constexpr operation ease{"ease", "one ease value and its velocity"};
+}  // namespace operations
+
+inline constexpr const operation* all_operations[] = {&operations::evaluation, &operations::basis,
+                                                      &operations::length,     &operations::query,
+                                                      &operations::frame,      &operations::ease};
+
+/// A benchmark counter. Kinds: "error" (an error of the result, compared across methods),
+/// "estimate" (the method's own error estimate), "count" (per operation), "setting" (an input).
+struct counter {
+  std::string_view name;
+  std::string_view kind;
+  std::string_view doc;
+};
+
+namespace counters {
+inline constexpr counter evaluations{"evaluations", "count",
+                                     "curve or derivative evaluations per operation (set-up included)"};
+inline constexpr counter iterations{"iterations", "count", "solver iterations per operation"};
+inline constexpr counter table_intervals{"table_intervals", "setting", "intervals of the u(s) table"};
+inline constexpr counter rel_error{"rel_error", "error", "|value - reference| / reference (a length)"};
+inline constexpr counter max_ds_rel{"max_ds_rel", "error", "max |s(u_j) - s_j| / L over the query set (u(s), frames)"};
+inline constexpr counter max_err_eps{"max_err_eps", "error", "max evaluation error in eps(double) x the curve's size"};
+inline constexpr counter estimate_rel{"estimate_rel", "estimate", "the method's own error estimate / L"};
+}  // namespace counters
+
+inline constexpr const counter* all_counters[] = {&counters::evaluations, &counters::iterations,
+                                                  &counters::table_intervals, &counters::rel_error,
+                                                  &counters::max_ds_rel,      &counters::max_err_eps,
+                                                  &counters::estimate_rel};
+
+/// The method with this id, or nullptr.
+[[nodiscard]] constexpr const method* find_method(std::string_view id) {
+  for (const method* m : all_methods)
+    if (m->id == id) return m;
+  return nullptr;
+}
+
+/// Whether a space-separated list holds the word w.
+[[nodiscard]] constexpr bool lists(std::string_view words, std::string_view w) {
+  while (!words.empty()) {
+    const auto space = words.find(' ');
+    if (words.substr(0, space) == w) return true;
+    if (space == std::string_view::npos) break;
+    words.remove_prefix(space + 1);
+  }
+  return false;
+}
+
+[[nodiscard]] constexpr const quantity* find_quantity(std::string_view id) {
+  for (const quantity* q : all_quantities)
+    if (q->id == id) return q;
+  return nullptr;
+}
+
+[[nodiscard]] constexpr const counter* find_counter(std::string_view name) {
+  for (const counter* c : all_counters)
+    if (c->name == name) return c;
+  return nullptr;
+}
+
+}  // namespace curvebench::harness::vocab
