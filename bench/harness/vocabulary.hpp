@@ -47,7 +47,7 @@ struct method {
 
 namespace methods {
 inline constexpr method gauss{"gauss", "length", "n", 0,
-                              "fixed n-point Gauss-Legendre per segment; estimate from the nested (n-1)-point rule"};
+                              "fixed n-point Gauss-Legendre per segment; estimate from the same rule on 1, 2 and 4 panels"};
 inline constexpr method composite_gauss{"composite_gauss", "length", "n panels", 6,
                                         "n-point Gauss-Legendre on equal panels per segment (theory 2n: 6 for n = 3)"};
 inline constexpr method adaptive_gk{"adaptive_gk", "length", "tol", 0,
