@@ -36,9 +36,8 @@ TEST(umbrella, adaptive_length_of_a_parabola_matches_the_closed_form) {
   const auto r = cb::arclength::adaptive_length(c, opt);
   ASSERT_TRUE(r.converged());
 
-  const cb::real50 exact = cb::reference::quadratic_bezier_length(cb::point_cast<cb::real50>(pts[0]),
-                                                                 cb::point_cast<cb::real50>(pts[1]),
-                                                                 cb::point_cast<cb::real50>(pts[2]));
+  const cb::real50 exact = cb::reference::quadratic_bezier_length(
+      cb::point_cast<cb::real50>(pts[0]), cb::point_cast<cb::real50>(pts[1]), cb::point_cast<cb::real50>(pts[2]));
   const double error = std::abs(static_cast<double>(cb::real50(r.value) - exact));
   const double length = static_cast<double>(exact);
   EXPECT_LE(error, r.error_estimate) << "the estimate must bound the error";
