@@ -395,7 +395,7 @@ const bool registered = [] {
   register_benchmark(benchmark_name("u_of_s", methods::newton).arg("tol", newton_tol),
                      [newton](benchmark::State& s) { u_of_s_param(s, newton); });
   // The same Newton solve called directly (no parameterization object).
-  register_benchmark(benchmark_name("u_of_s", methods::newton).arg("tol", newton_tol).arg("api", "newton_invert"),
+  register_benchmark(benchmark_name("u_of_s", methods::newton).arg("tol", newton_tol).variant(vocab::variant_keys::api, "newton_invert"),
                      [](benchmark::State& s) { newton_direct(s, curve()); });
   for (std::size_t steps : {std::size_t(256), std::size_t(4096)})
     register_benchmark(benchmark_name("u_of_s", methods::forward_difference).arg("steps", steps),
