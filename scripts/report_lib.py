@@ -78,19 +78,14 @@ def parse_args(name, parts):
     return args
 
 
-def benchmark_row(entry, vocab, program=""):
-    """One Google Benchmark entry as a row, checked against the vocabulary (ReportError naming the
-    benchmark otherwise), or None for an aggregate other than the median."""
-    if entry.get("run_type") == "aggregate" and entry.get("aggregate_name") != "median":
-        return None
-    name = entry.get("run_name", entry.get("name", "?"))
-    if entry.get("error_occurred"):
-        raise ReportError(f"benchmark {name}: failed: {entry.get('error_message', '')}")
+def parse_benchmark_name(name, vocab):
+    """{family, algorithm, args} (and case, setting for the per-case benchmarks) of a benchmark
+    name, checked against the vocabulary: ReportError naming the benchmark otherwise."""
     parts = name.split("/")
     if len(parts) < 2:
         raise ReportError(f"benchmark {name}: not family/algorithm[/key:value]...")
     family = parts[0]
-    row = {"program": program, "name": name, "family": family}
+    row = {"family": family}
     if family == CASE_FAMILY:
         if len(parts) != 4:
             raise ReportError(f"benchmark {name}: not {CASE_FAMILY}/<case>/<method>/<setting>")
@@ -107,6 +102,19 @@ def benchmark_row(entry, vocab, program=""):
             if key in vocab.variant_keys and value not in vocab.variant_keys[key]:
                 raise ReportError(f"benchmark {name}: {key}:{value} is not a variant of the vocabulary "
                                   f"(allowed: {' '.join(sorted(vocab.variant_keys[key]))})")
+    return row
+
+
+def benchmark_row(entry, vocab, program=""):
+    """One Google Benchmark entry as a row, checked against the vocabulary (ReportError naming the
+    benchmark otherwise), or None for an aggregate other than the median."""
+    if entry.get("run_type") == "aggregate" and entry.get("aggregate_name") != "median":
+        return None
+    name = entry.get("run_name", entry.get("name", "?"))
+    if entry.get("error_occurred"):
+        raise ReportError(f"benchmark {name}: failed: {entry.get('error_message', '')}")
+    row = {"program": program, "name": name}
+    row.update(parse_benchmark_name(name, vocab))
     label = entry.get("label", "")
     if label not in vocab.operations:
         raise ReportError(f"benchmark {name}: label '{label}' is not an operation of the vocabulary "
