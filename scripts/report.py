@@ -111,7 +111,7 @@ def speed_section(rows, vocab):
         for data, rs in sorted(entries, key=lambda e: natural_key(lib.args_text(e[0]))):
             fastest = min(r["ns_per_op"] for r in rs)
             for r in sorted(rs, key=lambda r: r["ns_per_op"]):
-                ratios = ", ".join(f"{p['algorithm']}: {r['ns_per_op'] / p['ns_per_op']:.2f}" for p in pairs[r["name"]])
+                ratios = ", ".join(f"{p['algorithm']}: {fmt(r['ns_per_op'] / p['ns_per_op'])}" for p in pairs[r["name"]])
                 kind, err = lib.error_of(r, vocab)
                 body.append([lib.args_text(data) or "-", lib.display_algorithm(r, vocab), r["ns_per_op"],
                              r["ns_per_op"] / fastest, ratios or "-", f"{kind} {fmt(err)}" if kind else "-"])
