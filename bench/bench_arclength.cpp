@@ -1,19 +1,21 @@
 // Arc-length methods on a smooth cubic segment (the engine every cubic spline evaluates through,
 // piecewise_cubic, one segment in power form): lengths and u(s) queries, ours and peers.
-// Lengths (operation length, one whole-curve length per iteration; each iteration is independent,
-// so the time is a latency of one length): fixed Gauss-Legendre with and without the nested
-// estimate, adaptive G7-K15, forward-difference chord sums and their Richardson extrapolation,
-// adaptive subdivision; peers Boost.Math gauss<n>, gauss_kronrod<15/31> and tanh_sinh on the same
-// speed function. u(s) (operation query, one query per iteration over 1024 random targets,
-// independent of each other: throughput of single queries): the parameterization's Hermite table
-// (with and without the Newton polish), its linear table, Newton from the segment bracket (through
-// the parameterization and by newton_invert directly), the seed's forward-difference table searched
+// Lengths (operation length, one whole-curve length per iteration): iterations are independent of
+// each other (throughput of whole lengths), each length a chain of dependent steps inside, so at
+// these microsecond scales the time per length is also its latency. Fixed Gauss-Legendre with and
+// without the nested estimate, adaptive G7-K15, forward-difference chord sums and their Richardson
+// extrapolation, adaptive subdivision; peers Boost.Math gauss<n>, gauss_kronrod<15/31> and
+// tanh_sinh on the same speed function.
+// u(s) (operation query, one query per iteration cycling through 1024 random targets, independent
+// of each other: throughput of single queries): the parameterization's Hermite table (with and
+// without the Newton polish), its linear table, Newton from the segment bracket (through the
+// parameterization and by newton_invert directly), the seed's forward-difference table searched
 // with linear interpolation; peer: bisection on s(u) re-integrated from u0 each time.
 // The lean power-form cubic (families arclength_lean_cubic, u_of_s_lean_cubic) separates a
 // method's cost from the engine's per-call overhead (segment lookup, chain rule).
 // Counters (vocabulary.hpp): evaluations per operation, rel_error (|value - L| / L against the
-// 50-digit reference), estimate_rel, max_ds_rel (max |s(u(s)) - s| / L over 64 queries), iterations,
-// table_intervals; all measured once outside the timed loop.
+// 50-digit reference), estimate_rel, max_ds_rel (max |s(u(s)) - s| / L over 64 queries),
+// iterations, table_intervals; all measured once outside the timed loop.
 // Names: arclength/<method|peer>/<setting>:<value>, u_of_s/<method|peer>[/<setting>:<value>].
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
@@ -25,18 +27,18 @@
 #include "curvebench/reference/arc_length.hpp"
 #include "curvebench/reference/multiprecision.hpp"
 
+#include <benchmark/benchmark.h>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
-#include <benchmark/benchmark.h>
 
 #include "harness/bench_support.hpp"
 
 #include <array>
 #include <cmath>
-#include <span>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace {
@@ -307,7 +309,10 @@ void bisection_full_reintegration(benchmark::State& state) {
     while (hi - lo > 1e-15) {
       const double mid = 0.5 * (lo + hi);
       evals += 16;
-      if (rule.integrate(f, 0.0, mid) < s) lo = mid; else hi = mid;
+      if (rule.integrate(f, 0.0, mid) < s)
+        lo = mid;
+      else
+        hi = mid;
     }
     return 0.5 * (lo + hi);
   };
@@ -331,11 +336,13 @@ void forward_difference_u(benchmark::State& state, std::size_t steps) {
 const bool registered = [] {
   const auto none = std::string_view("none"), nested = std::string_view("nested");
   for (int n : {4, 6, 8, 10, 12, 14, 16, 20, 24})
-    register_benchmark(benchmark_name("arclength", methods::gauss).arg("n", n).variant(vocab::variant_keys::estimate, none),
-                       [n](benchmark::State& s) { gauss_length(s, curve(), n, al::fixed_estimate::none); });
+    register_benchmark(
+        benchmark_name("arclength", methods::gauss).arg("n", n).variant(vocab::variant_keys::estimate, none),
+        [n](benchmark::State& s) { gauss_length(s, curve(), n, al::fixed_estimate::none); });
   for (int n : {4, 8})
-    register_benchmark(benchmark_name("arclength", methods::gauss).arg("n", n).variant(vocab::variant_keys::estimate, nested),
-                       [n](benchmark::State& s) { gauss_length(s, curve(), n, al::fixed_estimate::nested); });
+    register_benchmark(
+        benchmark_name("arclength", methods::gauss).arg("n", n).variant(vocab::variant_keys::estimate, nested),
+        [n](benchmark::State& s) { gauss_length(s, curve(), n, al::fixed_estimate::nested); });
   for (double tol : {1e-6, 1e-10, 1e-13})
     register_benchmark(benchmark_name("arclength", methods::adaptive_gk).arg("tol", tol),
                        [tol](benchmark::State& s) { adaptive_gk(s, tol); });
@@ -395,7 +402,9 @@ const bool registered = [] {
   register_benchmark(benchmark_name("u_of_s", methods::newton).arg("tol", newton_tol),
                      [newton](benchmark::State& s) { u_of_s_param(s, newton); });
   // The same Newton solve called directly (no parameterization object).
-  register_benchmark(benchmark_name("u_of_s", methods::newton).arg("tol", newton_tol).variant(vocab::variant_keys::api, "newton_invert"),
+  register_benchmark(benchmark_name("u_of_s", methods::newton)
+                         .arg("tol", newton_tol)
+                         .variant(vocab::variant_keys::api, "newton_invert"),
                      [](benchmark::State& s) { newton_direct(s, curve()); });
   for (std::size_t steps : {std::size_t(256), std::size_t(4096)})
     register_benchmark(benchmark_name("u_of_s", methods::forward_difference).arg("steps", steps),

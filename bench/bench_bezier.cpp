@@ -98,7 +98,8 @@ template <bezier_algorithm Alg, mode Mode>
 void add(const vocab::algorithm& id) {
   for (int degree : {3, 7, 20})
     curvebench::bench::register_benchmark(
-        benchmark_name("bezier", id).variant(vocab::variant_keys::calls, Mode == mode::single ? "single" : "sorted")
+        benchmark_name("bezier", id)
+            .variant(vocab::variant_keys::calls, Mode == mode::single ? "single" : "sorted")
             .arg("degree", degree),
         [degree](benchmark::State& s) { evaluate<Alg, Mode>(s, degree); });
 }

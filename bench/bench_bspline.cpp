@@ -43,8 +43,8 @@ void run(benchmark::State& state, const Curve& c, int derivative_order, curveben
 }
 
 void bspline_eval(benchmark::State& state, curvebench::bspline_evaluation algorithm, int order, int derivative_order) {
-  const curvebench::bspline<double, 3> c(order, curvebench::bspline_clamped_knots<double>(control_count, order, 0.0, 1.0),
-                                         control_points());
+  const curvebench::bspline<double, 3> c(
+      order, curvebench::bspline_clamped_knots<double>(control_count, order, 0.0, 1.0), control_points());
   run(state, c, derivative_order, algorithm);
 }
 
@@ -76,13 +76,14 @@ const bool registered = [] {
                               {&vocab::algorithms::de_boor, bspline_evaluation::de_boor, true, 1}};
   for (const variant& v : variants)
     for (int order = 2; order <= 6; ++order)
-      register_benchmark(benchmark_name(v.nurbs ? "nurbs" : "bspline", *v.id).arg("order", order).arg("derivative", v.derivative),
-                         [v, order](benchmark::State& s) {
-                           if (v.nurbs)
-                             nurbs_eval(s, v.algorithm, order, v.derivative);
-                           else
-                             bspline_eval(s, v.algorithm, order, v.derivative);
-                         });
+      register_benchmark(
+          benchmark_name(v.nurbs ? "nurbs" : "bspline", *v.id).arg("order", order).arg("derivative", v.derivative),
+          [v, order](benchmark::State& s) {
+            if (v.nurbs)
+              nurbs_eval(s, v.algorithm, order, v.derivative);
+            else
+              bspline_eval(s, v.algorithm, order, v.derivative);
+          });
   return true;
 }();
 

@@ -68,8 +68,9 @@ void position_at_frame(benchmark::State& state, const cb::arclength::parameteriz
     f = f == last_frame ? 0 : f + 1;
   }
   cbb::per_operation(state, vocab::operations::frame, 1);
-  cbb::set_counter(state, vocab::counters::max_ds_rel,
-                   max_relative_s_error(motion, cbm::sine_plateau_ease<cb::real50>(cb::real50(0.25), cb::real50(0.75))));
+  cbb::set_counter(
+      state, vocab::counters::max_ds_rel,
+      max_relative_s_error(motion, cbm::sine_plateau_ease<cb::real50>(cb::real50(0.25), cb::real50(0.75))));
 }
 
 template <class F>
@@ -124,7 +125,8 @@ const bool registered = [] {
   register_benchmark(benchmark_name("ease", a::ease_parabolic).arg("t1", 0.25).arg("t2", 0.75), ease_parabolic);
   register_benchmark(benchmark_name("ease", a::ease_smootherstep), ease_smootherstep);
   register_benchmark(benchmark_name("ease", a::ease_distance_keys), ease_distance_keys);
-  register_benchmark(benchmark_name("ease", a::ease_speed_curve).arg("interpolation", "monotone_cubic"), ease_speed_cubic);
+  register_benchmark(benchmark_name("ease", a::ease_speed_curve).arg("interpolation", "monotone_cubic"),
+                     ease_speed_cubic);
   return true;
 }();
 

@@ -190,9 +190,10 @@ template <class F>
 void add(std::string_view family, const auto& id, F fn) {
   for (bool sorted : {false, true}) {
     const shape a{1000, sorted};
-    curvebench::bench::register_benchmark(
-        curvebench::bench::benchmark_name(family, id).arg("points", a.points).arg("queries", sorted ? "sorted" : "random"),
-        [fn, a](benchmark::State& s) { fn(s, a); });
+    curvebench::bench::register_benchmark(curvebench::bench::benchmark_name(family, id)
+                                              .arg("points", a.points)
+                                              .arg("queries", sorted ? "sorted" : "random"),
+                                          [fn, a](benchmark::State& s) { fn(s, a); });
   }
 }
 

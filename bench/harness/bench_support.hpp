@@ -54,9 +54,13 @@ class benchmark_name {
     os << value;
     return arg(key, std::string_view(os.str()));
   }
-  benchmark_name& arg(std::string_view key, long long value) { return arg(key, std::string_view(std::to_string(value))); }
+  benchmark_name& arg(std::string_view key, long long value) {
+    return arg(key, std::string_view(std::to_string(value)));
+  }
   benchmark_name& arg(std::string_view key, int value) { return arg(key, static_cast<long long>(value)); }
-  benchmark_name& arg(std::string_view key, std::size_t value) { return arg(key, std::string_view(std::to_string(value))); }
+  benchmark_name& arg(std::string_view key, std::size_t value) {
+    return arg(key, std::string_view(std::to_string(value)));
+  }
   /// Appends /key:value of a variant (calls:sorted, estimate:nested); std::invalid_argument when
   /// the key does not list the value.
   benchmark_name& variant(const vocab::variant_key& key, std::string_view value) {

@@ -140,7 +140,8 @@ struct algorithm {
 };
 
 namespace algorithms {
-inline constexpr algorithm power{"power", "", "piecewise cubic: Horner on power-basis coefficients (the engine's default)"};
+inline constexpr algorithm power{"power", "",
+                                 "piecewise cubic: Horner on power-basis coefficients (the engine's default)"};
 inline constexpr algorithm matrix{"matrix", "", "piecewise cubic: T M G per call (basis matrix times geometry)"};
 inline constexpr algorithm bezier{"bezier", "", "piecewise cubic: de Casteljau on the segment's Bezier form"};
 inline constexpr algorithm to_piecewise_cubic{"to_piecewise_cubic", "",
@@ -149,27 +150,45 @@ inline constexpr algorithm to_piecewise_cubic{"to_piecewise_cubic", "",
 inline constexpr algorithm de_casteljau{"de_casteljau", "", "Bezier: de Casteljau's algorithm, O(degree^2)"};
 inline constexpr algorithm bernstein_sum{"bernstein_sum", "", "Bezier: the Bernstein sum, O(degree)"};
 inline constexpr algorithm horner{"horner", "", "Bezier: Horner on power coefficients converted once, O(degree)"};
-inline constexpr algorithm de_boor{"de_boor", "", "B-spline/NURBS: de Boor's algorithm (NURBS: in homogeneous "
-                                              "coordinates, derivatives by the quotient rule)"};
-inline constexpr algorithm basis_sum{"basis_sum", "", "B-spline/NURBS: the Cox-de Boor basis functions times the points"};
-inline constexpr algorithm recursion{"recursion", "", "all Bernstein polynomials of degree n by the triangular recursion"};
+inline constexpr algorithm de_boor{"de_boor", "",
+                                   "B-spline/NURBS: de Boor's algorithm (NURBS: in homogeneous "
+                                   "coordinates, derivatives by the quotient rule)"};
+inline constexpr algorithm basis_sum{"basis_sum", "",
+                                     "B-spline/NURBS: the Cox-de Boor basis functions times the points"};
+inline constexpr algorithm recursion{"recursion", "",
+                                     "all Bernstein polynomials of degree n by the triangular recursion"};
 inline constexpr algorithm closed_form{"closed_form", "", "each Bernstein polynomial by its closed form"};
 inline constexpr algorithm ease_linear{"linear", "", "ease: S(t) = t"};
 inline constexpr algorithm ease_sine{"sine", "", "ease: sine ease-in/ease-out"};
-inline constexpr algorithm ease_sine_plateau{"sine_plateau", "t1 t2", "ease: sine acceleration, constant speed, sine deceleration"};
-inline constexpr algorithm ease_parabolic{"parabolic", "t1 t2", "ease: constant acceleration, constant speed, constant deceleration"};
+inline constexpr algorithm ease_sine_plateau{"sine_plateau", "t1 t2",
+                                             "ease: sine acceleration, constant speed, sine deceleration"};
+inline constexpr algorithm ease_parabolic{"parabolic", "t1 t2",
+                                          "ease: constant acceleration, constant speed, constant deceleration"};
 inline constexpr algorithm ease_smootherstep{"smootherstep", "", "ease: the quintic 6t^5 - 15t^4 + 10t^3"};
-inline constexpr algorithm ease_distance_keys{"distance_keys", "", "ease: monotone interpolation of (time, distance) keys"};
-inline constexpr algorithm ease_speed_curve{"speed_curve", "interpolation", "ease: the integral of an interpolated speed curve"};
+inline constexpr algorithm ease_distance_keys{"distance_keys", "",
+                                              "ease: monotone interpolation of (time, distance) keys"};
+inline constexpr algorithm ease_speed_curve{"speed_curve", "interpolation",
+                                            "ease: the integral of an interpolated speed curve"};
 }  // namespace algorithms
 
-inline constexpr const algorithm* all_algorithms[] = {
-    &algorithms::power,          &algorithms::matrix,          &algorithms::bezier,
-    &algorithms::to_piecewise_cubic, &algorithms::de_casteljau, &algorithms::bernstein_sum,
-    &algorithms::horner,         &algorithms::de_boor,         &algorithms::basis_sum,
-    &algorithms::recursion,      &algorithms::closed_form,     &algorithms::ease_linear,
-    &algorithms::ease_sine,      &algorithms::ease_sine_plateau, &algorithms::ease_parabolic,
-    &algorithms::ease_smootherstep, &algorithms::ease_distance_keys, &algorithms::ease_speed_curve};
+inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
+                                                      &algorithms::matrix,
+                                                      &algorithms::bezier,
+                                                      &algorithms::to_piecewise_cubic,
+                                                      &algorithms::de_casteljau,
+                                                      &algorithms::bernstein_sum,
+                                                      &algorithms::horner,
+                                                      &algorithms::de_boor,
+                                                      &algorithms::basis_sum,
+                                                      &algorithms::recursion,
+                                                      &algorithms::closed_form,
+                                                      &algorithms::ease_linear,
+                                                      &algorithms::ease_sine,
+                                                      &algorithms::ease_sine_plateau,
+                                                      &algorithms::ease_parabolic,
+                                                      &algorithms::ease_smootherstep,
+                                                      &algorithms::ease_distance_keys,
+                                                      &algorithms::ease_speed_curve};
 
 /// A benchmark-name key whose value picks a variant of how the algorithm is called, not the data
 /// or the method's setting: the report ranks rows that differ only in these keys and in settings

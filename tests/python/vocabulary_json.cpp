@@ -65,8 +65,8 @@ int main() {
   section("methods", vocab::all_methods, [](const vocab::method& m) {
     char theory[32];
     std::snprintf(theory, sizeof theory, "%.17g", m.theory);
-    return "\"id\": " + quoted(m.id) + ", \"quantities\": " + words(m.quantities) + ", \"settings\": " +
-           words(m.settings) + ", \"theory\": " + theory + ", \"doc\": " + quoted(m.doc);
+    return "\"id\": " + quoted(m.id) + ", \"quantities\": " + words(m.quantities) +
+           ", \"settings\": " + words(m.settings) + ", \"theory\": " + theory + ", \"doc\": " + quoted(m.doc);
   });
   section("peers", vocab::all_peers, [](const vocab::peer& p) {
     return "\"id\": " + quoted(p.id) + ", \"library\": " + quoted(p.library) + ", \"doc\": " + quoted(p.doc);
