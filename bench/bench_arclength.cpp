@@ -1,15 +1,22 @@
-// Arc-length methods: speed and accuracy on a smooth cubic segment (the engine every cubic spline
-// evaluates through, piecewise_cubic, one segment in power form), and u(s) queries.
-// Lengths: fixed Gauss-Legendre (n points), nested fixed rule, our adaptive G7-K15, the
-// forward-difference table and its Richardson extrapolation, Parent's adaptive subdivision; peers
-// Boost.Math gauss<n>, gauss_kronrod<15/31> (adaptive) and tanh_sinh on the same speed function.
-// u(s): the parameterization's O(1) Hermite table (with and without one Newton polish), its linear
-// table, Newton from the segment bracket (no table); baselines: bisection on s(u) re-integrated
-// from u0 each time, and the seed's forward-difference table with binary search + linear
-// interpolation. Counters: evals (curve derivative/position evaluations per operation),
-// rel_error (|value - L| / L against the 50-digit reference) or max_ds_rel (max |s(u(s)) - s| / L
-// over the query set, measured once outside the timed loop against the reference).
-// Names: arclength/<algorithm>/<arg>:<value>.
+// Arc-length methods on a smooth cubic segment (the engine every cubic spline evaluates through,
+// piecewise_cubic, one segment in power form): lengths and u(s) queries, ours and peers.
+// Lengths (operation length, one whole-curve length per iteration): iterations are independent of
+// each other (throughput of whole lengths), each length a chain of dependent steps inside, so at
+// these microsecond scales the time per length is also its latency. Fixed Gauss-Legendre with and
+// without the nested estimate, adaptive G7-K15, forward-difference chord sums and their Richardson
+// extrapolation, adaptive subdivision; peers Boost.Math gauss<n>, gauss_kronrod<15/31> and
+// tanh_sinh on the same speed function.
+// u(s) (operation query, one query per iteration cycling through 1024 random targets, independent
+// of each other: throughput of single queries): the parameterization's Hermite table (with and
+// without the Newton polish), its linear table, Newton from the segment bracket (through the
+// parameterization and by newton_invert directly), the seed's forward-difference table searched
+// with linear interpolation; peer: bisection on s(u) re-integrated from u0 each time.
+// The lean power-form cubic (families arclength_lean_cubic, u_of_s_lean_cubic) separates a
+// method's cost from the engine's per-call overhead (segment lookup, chain rule).
+// Counters (vocabulary.hpp): evaluations per operation, rel_error (|value - L| / L against the
+// 50-digit reference), estimate_rel, max_ds_rel (max |s(u(s)) - s| / L over 64 queries),
+// iterations, table_intervals; all measured once outside the timed loop.
+// Names: arclength/<method|peer>/<setting>:<value>, u_of_s/<method|peer>[/<setting>:<value>].
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
 #include "curvebench/arclength/gauss_legendre.hpp"
@@ -20,16 +27,18 @@
 #include "curvebench/reference/arc_length.hpp"
 #include "curvebench/reference/multiprecision.hpp"
 
+#include <benchmark/benchmark.h>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
-#include <benchmark/benchmark.h>
+
+#include "harness/bench_support.hpp"
 
 #include <array>
 #include <cmath>
-#include <span>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace {
@@ -117,136 +126,94 @@ void keep(T& x) {
   benchmark::ClobberMemory();
 }
 
+namespace vocab = curvebench::harness::vocab;
+namespace methods = vocab::methods;
+namespace peers = vocab::peers;
+namespace ops = vocab::operations;
+namespace ctr = vocab::counters;
+using curvebench::bench::benchmark_name;
+using curvebench::bench::per_operation;
+using curvebench::bench::register_benchmark;
+using curvebench::bench::set_counter;
+
 auto speed_fn() {
   return [](double u) { return al::speed(curve(), u); };
 }
 
-// ---- lengths ----
+// ---- lengths: one length per iteration ----
 
-void gauss_legendre_length(benchmark::State& state) {
-  const auto& rule = al::gauss_legendre<double>(static_cast<int>(state.range(0)));
-  const auto& c = curve();
-  double v = 0;
-  for (auto _ : state) {
-    v = al::gauss_length(c, rule).value;
-    keep(v);
-  }
-  state.counters["evals"] = static_cast<double>(rule.n);
-  state.counters["rel_error"] = rel_error(v);
-}
-
-void gauss_legendre_power_cubic(benchmark::State& state) {
-  const auto& rule = al::gauss_legendre<double>(static_cast<int>(state.range(0)));
-  const power_cubic c;
-  double v = 0;
-  for (auto _ : state) {
-    v = al::gauss_length(c, rule).value;
-    keep(v);
-  }
-  state.counters["evals"] = static_cast<double>(rule.n);
-  state.counters["rel_error"] = rel_error(v);
-}
-
-void newton_power_cubic(benchmark::State& state) {
-  const power_cubic c;
-  const al::segment_lengths<double> seg(c);
-  al::newton_options<double> opt;
-  opt.relative_tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
-  const auto& q = queries();
-  std::size_t i = 0;
-  for (auto _ : state) {
-    auto r = al::newton_invert(c, seg, q[i], opt);
-    keep(r);
-    i = (i + 1) & 1023;
-  }
-  double evals = 0;
-  for (std::size_t k = 0; k < 64; ++k) evals += static_cast<double>(al::newton_invert(c, seg, q[k], opt).evaluations);
-  state.counters["evals"] = evals / 64;
-  state.counters["max_ds_rel"] = max_ds_rel([&](double s) { return al::newton_invert(c, seg, s, opt).u; });
-}
-
-void gauss_legendre_nested(benchmark::State& state) {
-  const auto& rule = al::gauss_legendre<double>(static_cast<int>(state.range(0)));
+template <class C>
+void gauss_length(benchmark::State& state, const C& c, int n, al::fixed_estimate estimate) {
+  const auto& rule = al::gauss_legendre<double>(n);
   al::quadrature_result<double> r;
   for (auto _ : state) {
-    r = al::gauss_length(curve(), rule, al::fixed_estimate::nested);
+    r = al::gauss_length(c, rule, estimate);
     keep(r);
   }
-  state.counters["evals"] = static_cast<double>(r.evaluations);
-  state.counters["rel_error"] = rel_error(r.value);
-  state.counters["estimate_rel"] = r.error_estimate / r.value;
+  per_operation(state, ops::length, 1);
+  set_counter(state, ctr::evaluations, static_cast<double>(r.evaluations));
+  set_counter(state, ctr::rel_error, rel_error(r.value));
+  if (estimate == al::fixed_estimate::nested) set_counter(state, ctr::estimate_rel, r.error_estimate / r.value);
 }
 
-void adaptive_gk15(benchmark::State& state) {
+void adaptive_gk(benchmark::State& state, double tol) {
   al::adaptive_options<double> opt;
-  opt.relative_tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  opt.relative_tolerance = tol;
   al::quadrature_result<double> r;
   for (auto _ : state) {
     r = al::adaptive_length(curve(), opt);
     keep(r);
   }
-  state.counters["evals"] = static_cast<double>(r.evaluations);
-  state.counters["rel_error"] = rel_error(r.value);
-  state.counters["estimate_rel"] = r.error_estimate / r.value;
+  per_operation(state, ops::length, 1);
+  set_counter(state, ctr::evaluations, static_cast<double>(r.evaluations));
+  set_counter(state, ctr::rel_error, rel_error(r.value));
+  set_counter(state, ctr::estimate_rel, r.error_estimate / r.value);
 }
 
-void forward_difference(benchmark::State& state) {
-  const auto steps = static_cast<std::size_t>(state.range(0));
-  double v = 0, rich = 0;
+// The table is built inside the timed loop: a length by chord sums pays for its table.
+void chord_sums(benchmark::State& state, std::size_t steps, bool richardson) {
+  double v = 0;
   std::size_t evals = 0;
   for (auto _ : state) {
     const al::forward_difference_table<double> t(curve(), steps);
-    v = t.length().value;
-    rich = t.richardson_length().value;
+    v = richardson ? t.richardson_length().value : t.length().value;
     evals = t.evaluations();
     keep(v);
   }
-  state.counters["evals"] = static_cast<double>(evals);
-  state.counters["rel_error"] = rel_error(v);
-  state.counters["richardson_rel_error"] = rel_error(rich);
+  per_operation(state, ops::length, 1);
+  set_counter(state, ctr::evaluations, static_cast<double>(evals));
+  set_counter(state, ctr::rel_error, rel_error(v));
 }
 
-void subdivision(benchmark::State& state) {
+void subdivision(benchmark::State& state, double tol) {
   al::subdivision_options<double> opt;
-  opt.tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
+  opt.tolerance = tol;
   al::quadrature_result<double> r;
   for (auto _ : state) {
     r = al::subdivision_length(curve(), opt);
     keep(r);
   }
-  state.counters["evals"] = static_cast<double>(r.evaluations);
-  state.counters["rel_error"] = rel_error(r.value);
+  per_operation(state, ops::length, 1);
+  set_counter(state, ctr::evaluations, static_cast<double>(r.evaluations));
+  set_counter(state, ctr::rel_error, rel_error(r.value));
 }
 
-/// Boost's fixed Gauss rule on the lean power-form cubic's speed: the same integrand as
-/// gauss_legendre_power_cubic, so the two are compared like for like.
-/// Boost's fixed N-point Gauss rule on the speed f over [0, 1], with its evaluations and error.
+/// Boost's fixed N-point Gauss rule on the speed f over [0, 1].
 template <unsigned N, class F>
-void run_boost_gauss(benchmark::State& state, const F& f) {
+void boost_gauss(benchmark::State& state, const F& f) {
   double v = 0;
   for (auto _ : state) {
     v = boost::math::quadrature::gauss<double, N>::integrate(f, 0.0, 1.0);
     keep(v);
   }
-  state.counters["evals"] = N;
-  state.counters["rel_error"] = rel_error(v);
+  per_operation(state, ops::length, 1);
+  set_counter(state, ctr::evaluations, N);
+  set_counter(state, ctr::rel_error, rel_error(v));
 }
 
 template <unsigned N>
-void boost_gauss_power_cubic(benchmark::State& state) {
-  const power_cubic c;
-  run_boost_gauss<N>(state, [&c](double u) { return al::speed(c, u); });
-}
-
-template <unsigned N>
-void boost_gauss(benchmark::State& state) {
-  run_boost_gauss<N>(state, speed_fn());
-}
-
-template <unsigned N>
-void boost_gauss_kronrod(benchmark::State& state) {
+void boost_gauss_kronrod(benchmark::State& state, double tol) {
   const auto f = speed_fn();
-  const double tol = std::pow(10.0, -static_cast<double>(state.range(0)));
   std::size_t evals = 0;
   auto counted = [&](double u) {
     ++evals;
@@ -258,13 +225,13 @@ void boost_gauss_kronrod(benchmark::State& state) {
     v = boost::math::quadrature::gauss_kronrod<double, N>::integrate(counted, 0.0, 1.0, 15, tol);
     keep(v);
   }
-  state.counters["evals"] = static_cast<double>(evals);
-  state.counters["rel_error"] = rel_error(v);
+  per_operation(state, ops::length, 1);
+  set_counter(state, ctr::evaluations, static_cast<double>(evals));
+  set_counter(state, ctr::rel_error, rel_error(v));
 }
 
-void boost_tanh_sinh(benchmark::State& state) {
+void boost_tanh_sinh(benchmark::State& state, double tol) {
   const auto f = speed_fn();
-  const double tol = std::pow(10.0, -static_cast<double>(state.range(0)));
   boost::math::quadrature::tanh_sinh<double> ts;  // Boost 1.74's integrate is not const
   std::size_t evals = 0;
   auto counted = [&](double u) {
@@ -277,141 +244,173 @@ void boost_tanh_sinh(benchmark::State& state) {
     v = ts.integrate(counted, 0.0, 1.0, tol);
     keep(v);
   }
-  state.counters["evals"] = static_cast<double>(evals);
-  state.counters["rel_error"] = rel_error(v);
+  per_operation(state, ops::length, 1);
+  set_counter(state, ctr::evaluations, static_cast<double>(evals));
+  set_counter(state, ctr::rel_error, rel_error(v));
 }
 
-// ---- u(s) ----
+// ---- u(s): one query per iteration, cycling through the 1024 targets ----
 
-const al::parameterization<cb::piecewise_cubic<double, 2>>& param(al::inversion_method m, bool polish) {
-  static const al::parameterization<cb::piecewise_cubic<double, 2>> hermite(curve());
-  static const al::parameterization<cb::piecewise_cubic<double, 2>> hermite_polish(curve(), [] {
-    al::parameterization_options<double> o;
-    o.newton_polish = true;
-    o.table_intervals = 256;
-    return o;
-  }());
-  static const al::parameterization<cb::piecewise_cubic<double, 2>> linear(curve(), [] {
-    al::parameterization_options<double> o;
-    o.method = al::inversion_method::linear_table;
-    o.table_intervals = 4096;
-    return o;
-  }());
-  static const al::parameterization<cb::piecewise_cubic<double, 2>> newton(curve(), [] {
-    al::parameterization_options<double> o;
-    o.method = al::inversion_method::newton;
-    return o;
-  }());
-  if (m == al::inversion_method::newton) return newton;
-  if (m == al::inversion_method::linear_table) return linear;
-  return polish ? hermite_polish : hermite;
-}
-
-void u_of_s(benchmark::State& state) {
-  const auto m = static_cast<al::inversion_method>(state.range(0));
-  const bool polish = state.range(1) != 0;
-  const auto& p = param(m, polish);
+template <class Solve>
+void queries_loop(benchmark::State& state, const Solve& solve) {
   const auto& q = queries();
   std::size_t i = 0;
   for (auto _ : state) {
-    const double u = p.u(q[i], m);
+    auto u = solve(q[i]);
     keep(u);
     i = (i + 1) & 1023;
   }
-  state.counters["table_intervals"] = static_cast<double>(p.table_intervals());
-  state.counters["max_ds_rel"] = max_ds_rel([&](double s) { return p.u(s, m); });
-  if (m == al::inversion_method::newton) {
+  per_operation(state, ops::query, 1);
+}
+
+using param_type = al::parameterization<cb::piecewise_cubic<double, 2>>;
+
+// Newton's relative tolerance in the u(s) benchmarks (|ds| + bound <= tol L).
+constexpr double newton_tol = 1e-13;
+
+void u_of_s_param(benchmark::State& state, const al::parameterization_options<double>& opt) {
+  const param_type p(curve(), opt);
+  queries_loop(state, [&](double s) { return p.u(s, opt.method); });
+  set_counter(state, ctr::max_ds_rel, max_ds_rel([&](double s) { return p.u(s, opt.method); }));
+  if (opt.method == al::inversion_method::newton) {
     double evals = 0;
-    for (std::size_t k = 0; k < 64; ++k) evals += static_cast<double>(p.invert(q[k], m).evaluations);
-    state.counters["evals"] = evals / 64;
+    for (std::size_t k = 0; k < 64; ++k) evals += static_cast<double>(p.invert(queries()[k], opt.method).evaluations);
+    set_counter(state, ctr::evaluations, evals / 64);
+  } else {
+    set_counter(state, ctr::table_intervals, static_cast<double>(p.table_intervals()));
   }
 }
 
-// Baseline: bisection on s(u) = GL-16 integral from u0 each time, to |du| < 1e-15.
+// Newton without a table, by newton_invert: segment lengths precomputed, then one solve per query.
+template <class C>
+void newton_direct(benchmark::State& state, const C& c) {
+  const al::segment_lengths<double> seg(c);
+  al::newton_options<double> opt;
+  opt.relative_tolerance = newton_tol;
+  queries_loop(state, [&](double s) { return al::newton_invert(c, seg, s, opt); });
+  double evals = 0, iters = 0;
+  for (std::size_t k = 0; k < 64; ++k) {
+    const auto r = al::newton_invert(c, seg, queries()[k], opt);
+    evals += static_cast<double>(r.evaluations);
+    iters += r.iterations;
+  }
+  set_counter(state, ctr::evaluations, evals / 64);
+  set_counter(state, ctr::iterations, iters / 64);
+  set_counter(state, ctr::max_ds_rel, max_ds_rel([&](double s) { return al::newton_invert(c, seg, s, opt).u; }));
+}
+
+// Peer (common practice): bisection on s(u) = GL-16 integral from u0 each time, to |du| < 1e-15.
 void bisection_full_reintegration(benchmark::State& state) {
   const auto& rule = al::gauss_legendre<double>(16);
   const auto f = speed_fn();
+  std::size_t evals = 0;
   auto solve = [&](double s) {
     double lo = 0, hi = 1;
     while (hi - lo > 1e-15) {
       const double mid = 0.5 * (lo + hi);
-      if (rule.integrate(f, 0.0, mid) < s) lo = mid; else hi = mid;
+      evals += 16;
+      if (rule.integrate(f, 0.0, mid) < s)
+        lo = mid;
+      else
+        hi = mid;
     }
     return 0.5 * (lo + hi);
   };
-  const auto& q = queries();
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const double u = solve(q[i]);
-    keep(u);
-    i = (i + 1) & 1023;
-  }
-  state.counters["evals"] = 16.0 * 50;
-  state.counters["max_ds_rel"] = max_ds_rel(solve);
+  queries_loop(state, solve);
+  evals = 0;
+  set_counter(state, ctr::max_ds_rel, max_ds_rel(solve));
+  set_counter(state, ctr::evaluations, static_cast<double>(evals) / 64);
 }
 
-// Baseline: seed 002's table (forward differencing, N steps), binary search + linear interpolation.
-void table_linear_search(benchmark::State& state) {
-  const al::forward_difference_table<double> t(curve(), static_cast<std::size_t>(state.range(0)));
-  const auto& q = queries();
+// Seed 002's table (forward differencing, N steps), binary search + linear interpolation; its
+// lengths are rescaled to the reference so that only the inversion's error is measured.
+void forward_difference_u(benchmark::State& state, std::size_t steps) {
+  const al::forward_difference_table<double> t(curve(), steps);
   const double scale = t.arc_lengths().back() / static_cast<double>(reference().length());
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const double u = t.u(q[i] * scale);
-    keep(u);
-    i = (i + 1) & 1023;
-  }
-  state.counters["max_ds_rel"] = max_ds_rel([&](double s) { return t.u(s * scale); });
+  queries_loop(state, [&](double s) { return t.u(s * scale); });
+  set_counter(state, ctr::max_ds_rel, max_ds_rel([&](double s) { return t.u(s * scale); }));
 }
 
-// Newton without a table: segment lengths precomputed, then newton_invert per query.
-void newton_no_table(benchmark::State& state) {
-  const al::segment_lengths<double> seg(curve());
-  al::newton_options<double> opt;
-  opt.relative_tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));  // |ds| + bound <= tol L
-  const auto& q = queries();
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const auto r = al::newton_invert(curve(), seg, q[i], opt);
-    keep(r);
-    i = (i + 1) & 1023;
+// ---- registration ----
+
+const bool registered = [] {
+  const auto none = std::string_view("none"), nested = std::string_view("nested");
+  for (int n : {4, 6, 8, 10, 12, 14, 16, 20, 24})
+    register_benchmark(
+        benchmark_name("arclength", methods::gauss).arg("n", n).variant(vocab::variant_keys::estimate, none),
+        [n](benchmark::State& s) { gauss_length(s, curve(), n, al::fixed_estimate::none); });
+  for (int n : {4, 8})
+    register_benchmark(
+        benchmark_name("arclength", methods::gauss).arg("n", n).variant(vocab::variant_keys::estimate, nested),
+        [n](benchmark::State& s) { gauss_length(s, curve(), n, al::fixed_estimate::nested); });
+  for (double tol : {1e-6, 1e-10, 1e-13})
+    register_benchmark(benchmark_name("arclength", methods::adaptive_gk).arg("tol", tol),
+                       [tol](benchmark::State& s) { adaptive_gk(s, tol); });
+  for (std::size_t steps = 16; steps <= 4096; steps *= 4) {
+    register_benchmark(benchmark_name("arclength", methods::forward_difference).arg("steps", steps),
+                       [steps](benchmark::State& s) { chord_sums(s, steps, false); });
+    register_benchmark(benchmark_name("arclength", methods::richardson).arg("steps", steps),
+                       [steps](benchmark::State& s) { chord_sums(s, steps, true); });
   }
-  double evals = 0, iters = 0;
-  for (std::size_t k = 0; k < 64; ++k) {
-    const auto r = al::newton_invert(curve(), seg, q[k], opt);
-    evals += static_cast<double>(r.evaluations);
-    iters += r.iterations;
+  for (double tol : {1e-4, 1e-6, 1e-8})
+    register_benchmark(benchmark_name("arclength", methods::subdivision).arg("tol", tol),
+                       [tol](benchmark::State& s) { subdivision(s, tol); });
+  const auto boost_n = [](int n) { return benchmark_name("arclength", peers::boost_gauss).arg("n", n); };
+  register_benchmark(boost_n(7), [](benchmark::State& s) { boost_gauss<7>(s, speed_fn()); });
+  register_benchmark(boost_n(10), [](benchmark::State& s) { boost_gauss<10>(s, speed_fn()); });
+  register_benchmark(boost_n(15), [](benchmark::State& s) { boost_gauss<15>(s, speed_fn()); });
+  register_benchmark(boost_n(20), [](benchmark::State& s) { boost_gauss<20>(s, speed_fn()); });
+  for (double tol : {1e-10, 1e-13}) {
+    register_benchmark(benchmark_name("arclength", peers::boost_gauss_kronrod15).arg("tol", tol),
+                       [tol](benchmark::State& s) { boost_gauss_kronrod<15>(s, tol); });
+    register_benchmark(benchmark_name("arclength", peers::boost_gauss_kronrod31).arg("tol", tol),
+                       [tol](benchmark::State& s) { boost_gauss_kronrod<31>(s, tol); });
+    register_benchmark(benchmark_name("arclength", peers::boost_tanh_sinh).arg("tol", tol),
+                       [tol](benchmark::State& s) { boost_tanh_sinh(s, tol); });
   }
-  state.counters["evals"] = evals / 64;
-  state.counters["iterations"] = iters / 64;
-  state.counters["max_ds_rel"] = max_ds_rel([&](double s) { return al::newton_invert(curve(), seg, s, opt).u; });
-}
+
+  // The lean power-form cubic: ours and Boost's rule on the same integrand, and Newton's u(s).
+  for (int n : {12, 16, 20})
+    register_benchmark(
+        benchmark_name("arclength_lean_cubic", methods::gauss).arg("n", n).variant(vocab::variant_keys::estimate, none),
+        [n](benchmark::State& s) { gauss_length(s, power_cubic{}, n, al::fixed_estimate::none); });
+  const auto lean = [](double u) { return al::speed(power_cubic{}, u); };
+  const auto lean_n = [](int n) { return benchmark_name("arclength_lean_cubic", peers::boost_gauss).arg("n", n); };
+  register_benchmark(lean_n(10), [lean](benchmark::State& s) { boost_gauss<10>(s, lean); });
+  register_benchmark(lean_n(15), [lean](benchmark::State& s) { boost_gauss<15>(s, lean); });
+  register_benchmark(lean_n(20), [lean](benchmark::State& s) { boost_gauss<20>(s, lean); });
+  register_benchmark(benchmark_name("u_of_s_lean_cubic", methods::newton).arg("tol", newton_tol),
+                     [](benchmark::State& s) { newton_direct(s, power_cubic{}); });
+
+  // u(s) through the parameterization (the API users call), each method with its options.
+  al::parameterization_options<double> hermite;
+  register_benchmark(benchmark_name("u_of_s", methods::hermite_table),
+                     [hermite](benchmark::State& s) { u_of_s_param(s, hermite); });
+  al::parameterization_options<double> polished;
+  polished.newton_polish = true;
+  polished.table_intervals = 256;
+  register_benchmark(benchmark_name("u_of_s", methods::hermite_table_polished).arg("M", polished.table_intervals),
+                     [polished](benchmark::State& s) { u_of_s_param(s, polished); });
+  al::parameterization_options<double> linear;
+  linear.method = al::inversion_method::linear_table;
+  linear.table_intervals = 4096;
+  register_benchmark(benchmark_name("u_of_s", methods::linear_table).arg("M", linear.table_intervals),
+                     [linear](benchmark::State& s) { u_of_s_param(s, linear); });
+  al::parameterization_options<double> newton;
+  newton.method = al::inversion_method::newton;
+  newton.newton.relative_tolerance = newton_tol;
+  register_benchmark(benchmark_name("u_of_s", methods::newton).arg("tol", newton_tol),
+                     [newton](benchmark::State& s) { u_of_s_param(s, newton); });
+  // The same Newton solve called directly (no parameterization object).
+  register_benchmark(benchmark_name("u_of_s", methods::newton)
+                         .arg("tol", newton_tol)
+                         .variant(vocab::variant_keys::api, "newton_invert"),
+                     [](benchmark::State& s) { newton_direct(s, curve()); });
+  for (std::size_t steps : {std::size_t(256), std::size_t(4096)})
+    register_benchmark(benchmark_name("u_of_s", methods::forward_difference).arg("steps", steps),
+                       [steps](benchmark::State& s) { forward_difference_u(s, steps); });
+  register_benchmark(benchmark_name("u_of_s", peers::bisection_reintegration), bisection_full_reintegration);
+  return true;
+}();
 
 }  // namespace
-
-BENCHMARK(gauss_legendre_length)->Name("arclength/gauss_legendre")->ArgName("n")->DenseRange(4, 16, 2)->Arg(20)->Arg(24);
-// The lean power-form cubic (no segment lookup): ours and Boost's rule on the same integrand.
-BENCHMARK(gauss_legendre_power_cubic)->Name("arclength_lean_cubic/gauss_legendre")->ArgName("n")->Arg(12)->Arg(16)->Arg(20);
-BENCHMARK(boost_gauss_power_cubic<10>)->Name("arclength_lean_cubic/boost_gauss/n:10");
-BENCHMARK(boost_gauss_power_cubic<15>)->Name("arclength_lean_cubic/boost_gauss/n:15");
-BENCHMARK(boost_gauss_power_cubic<20>)->Name("arclength_lean_cubic/boost_gauss/n:20");
-BENCHMARK(newton_power_cubic)->Name("arclength_lean_cubic/u_of_s_newton_no_table")->ArgName("tol_exp")->Arg(13);
-BENCHMARK(gauss_legendre_nested)->Name("arclength/gauss_legendre_nested")->ArgName("n")->Arg(4)->Arg(8);
-BENCHMARK(adaptive_gk15)->Name("arclength/adaptive_gk15")->ArgName("tol_exp")->Arg(6)->Arg(10)->Arg(13);
-BENCHMARK(forward_difference)->Name("arclength/forward_difference")->ArgName("steps")->RangeMultiplier(4)->Range(16, 4096);
-BENCHMARK(subdivision)->Name("arclength/subdivision")->ArgName("tol_exp")->Arg(4)->Arg(6)->Arg(8);
-BENCHMARK(boost_gauss<7>)->Name("arclength/boost_gauss/n:7");
-BENCHMARK(boost_gauss<10>)->Name("arclength/boost_gauss/n:10");
-BENCHMARK(boost_gauss<15>)->Name("arclength/boost_gauss/n:15");
-BENCHMARK(boost_gauss<20>)->Name("arclength/boost_gauss/n:20");
-BENCHMARK(boost_gauss_kronrod<15>)->Name("arclength/boost_gauss_kronrod15")->ArgName("tol_exp")->Arg(10)->Arg(13);
-BENCHMARK(boost_gauss_kronrod<31>)->Name("arclength/boost_gauss_kronrod31")->ArgName("tol_exp")->Arg(10)->Arg(13);
-BENCHMARK(boost_tanh_sinh)->Name("arclength/boost_tanh_sinh")->ArgName("tol_exp")->Arg(10)->Arg(13);
-BENCHMARK(u_of_s)->Name("arclength/u_of_s")->ArgNames({"method", "polish"})
-    ->Args({static_cast<int>(al::inversion_method::hermite_table), 0})
-    ->Args({static_cast<int>(al::inversion_method::hermite_table), 1})
-    ->Args({static_cast<int>(al::inversion_method::linear_table), 0})
-    ->Args({static_cast<int>(al::inversion_method::newton), 0});
-BENCHMARK(bisection_full_reintegration)->Name("arclength/u_of_s_bisection_full_reintegration");
-BENCHMARK(table_linear_search)->Name("arclength/u_of_s_table_linear_search")->ArgName("steps")->Arg(256)->Arg(4096);
-BENCHMARK(newton_no_table)->Name("arclength/u_of_s_newton_no_table")->ArgName("tol_exp")->Arg(13);

@@ -1,13 +1,18 @@
 // Bezier curves: speed of the three evaluation algorithms (de Casteljau O(L^2), direct Bernstein
 // sum O(L), Horner on power-basis coefficients converted once O(L)) at degrees 3, 7 and 20, for
-// single random parameters and for a sorted batch of 1024 parameters (the batch API). Each
-// benchmark also reports, as a counter measured once outside the timed loop, the algorithm's
-// maximum error over its parameters against the real50 de Casteljau of the same control points, in
-// units of eps(double) times the control-point scale (max |coordinate| = 1): the speed/accuracy
-// trade-off in one table (Horner is fastest and, at degree 20, ~1e8 times less accurate).
-// Names: bezier/<algorithm>_<single|sorted>/degree:<n>.
+// single random parameters (calls:single, one evaluation per iteration) and for a sorted batch of
+// 1024 parameters (calls:sorted, the batch API, 1024 evaluations per iteration). Operation
+// evaluation; the parameters are fixed in advance, so the evaluations are independent (throughput).
+// Each benchmark also reports, as counter max_err_eps measured once outside the timed loop, the
+// algorithm's maximum error over its parameters against the real50 de Casteljau of the same
+// control points, in units of eps(double) times the control-point scale (max |coordinate| = 1):
+// the speed/accuracy trade-off in one table (Horner is fastest and, at degree 20, ~1e8 times less
+// accurate).
+// Names: bezier/<algorithm>/calls:<single|sorted>/degree:<n>.
 #include "curvebench/curves/bezier.hpp"
 #include "curvebench/reference/multiprecision.hpp"
+
+#include "harness/bench_support.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -20,6 +25,7 @@
 namespace {
 
 namespace cb = curvebench;
+namespace vocab = curvebench::harness::vocab;
 
 // Random control points in [-1, 1]^3, scaled so that the largest |coordinate| is exactly 1.
 cb::point_list<double, 3> make_points(int degree) {
@@ -61,8 +67,7 @@ double max_error(const cb::bezier<double, 3>& c, const cb::bezier<cb::real50, 3>
 enum class mode { single, sorted };
 
 template <cb::bezier_algorithm Alg, mode Mode>
-void evaluate(benchmark::State& state) {
-  const int degree = static_cast<int>(state.range(0));
+void evaluate(benchmark::State& state, int degree) {
   const auto p = make_points(degree);
   const cb::bezier<double, 3> curve(p);
   const cb::bezier<cb::real50, 3> reference(cb::points_cast<cb::real50, double, 3>(p));
@@ -82,19 +87,32 @@ void evaluate(benchmark::State& state) {
     benchmark::ClobberMemory();
   }
   const double per_iteration = Mode == mode::single ? 1.0 : static_cast<double>(batch);
-  state.counters["evals"] = benchmark::Counter(per_iteration, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["max_err_eps"] = max_error(curve, reference, us, Alg);
+  curvebench::bench::per_operation(state, vocab::operations::evaluation, per_iteration);
+  curvebench::bench::set_counter(state, vocab::counters::max_err_eps, max_error(curve, reference, us, Alg));
 }
 
-void degrees(benchmark::internal::Benchmark* b) { b->ArgName("degree")->Arg(3)->Arg(7)->Arg(20); }
-
 using cb::bezier_algorithm;
+using curvebench::bench::benchmark_name;
+
+template <bezier_algorithm Alg, mode Mode>
+void add(const vocab::algorithm& id) {
+  for (int degree : {3, 7, 20})
+    curvebench::bench::register_benchmark(
+        benchmark_name("bezier", id)
+            .variant(vocab::variant_keys::calls, Mode == mode::single ? "single" : "sorted")
+            .arg("degree", degree),
+        [degree](benchmark::State& s) { evaluate<Alg, Mode>(s, degree); });
+}
+
+const bool registered = [] {
+  namespace a = vocab::algorithms;
+  add<bezier_algorithm::de_casteljau, mode::single>(a::de_casteljau);
+  add<bezier_algorithm::bernstein_sum, mode::single>(a::bernstein_sum);
+  add<bezier_algorithm::horner, mode::single>(a::horner);
+  add<bezier_algorithm::de_casteljau, mode::sorted>(a::de_casteljau);
+  add<bezier_algorithm::bernstein_sum, mode::sorted>(a::bernstein_sum);
+  add<bezier_algorithm::horner, mode::sorted>(a::horner);
+  return true;
+}();
 
 }  // namespace
-
-BENCHMARK(evaluate<bezier_algorithm::de_casteljau, mode::single>)->Name("bezier/de_casteljau_single")->Apply(degrees);
-BENCHMARK(evaluate<bezier_algorithm::bernstein_sum, mode::single>)->Name("bezier/bernstein_sum_single")->Apply(degrees);
-BENCHMARK(evaluate<bezier_algorithm::horner, mode::single>)->Name("bezier/horner_single")->Apply(degrees);
-BENCHMARK(evaluate<bezier_algorithm::de_casteljau, mode::sorted>)->Name("bezier/de_casteljau_sorted")->Apply(degrees);
-BENCHMARK(evaluate<bezier_algorithm::bernstein_sum, mode::sorted>)->Name("bezier/bernstein_sum_sorted")->Apply(degrees);
-BENCHMARK(evaluate<bezier_algorithm::horner, mode::sorted>)->Name("bezier/horner_sorted")->Apply(degrees);

@@ -1,9 +1,13 @@
 // B-spline and NURBS evaluation speed, orders 2..6 (degree 1..5), double, Dim 3, 64 control points
 // on a clamped knot vector: de Boor's algorithm vs the Cox-de Boor basis sum, the same for NURBS
-// (homogeneous coordinates plus one division), and the first derivative by each.
-// Names follow family/algorithm/arg:value.
+// (homogeneous coordinates plus one division), and the first derivative by each (NURBS by de Boor:
+// the quotient rule). Operation evaluation, one per iteration; the parameter advances by a fixed
+// stride independent of the result, so the evaluations are independent (throughput).
+// Names: <bspline|nurbs>/<algorithm>/order:<k>/derivative:<0|1>.
 #include "curvebench/curves/bspline.hpp"
 #include "curvebench/curves/nurbs.hpp"
+
+#include "harness/bench_support.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -35,37 +39,52 @@ void run(benchmark::State& state, const Curve& c, int derivative_order, curveben
     benchmark::DoNotOptimize(c.evaluate(u, derivative_order, algorithm));
     u = u < 0.999 ? u + 0.000731 : 0.0;  // a stride that visits every span in turn
   }
-  state.counters["evals"] = benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
+  curvebench::bench::per_operation(state, curvebench::harness::vocab::operations::evaluation, 1);
 }
 
-void bspline_eval(benchmark::State& state, curvebench::bspline_evaluation algorithm, int derivative_order) {
-  const int order = static_cast<int>(state.range(0));
-  const curvebench::bspline<double, 3> c(order, curvebench::bspline_clamped_knots<double>(control_count, order, 0.0, 1.0),
-                                         control_points());
+void bspline_eval(benchmark::State& state, curvebench::bspline_evaluation algorithm, int order, int derivative_order) {
+  const curvebench::bspline<double, 3> c(
+      order, curvebench::bspline_clamped_knots<double>(control_count, order, 0.0, 1.0), control_points());
   run(state, c, derivative_order, algorithm);
 }
 
-void nurbs_eval(benchmark::State& state, curvebench::bspline_evaluation algorithm, int derivative_order) {
-  const int order = static_cast<int>(state.range(0));
+void nurbs_eval(benchmark::State& state, curvebench::bspline_evaluation algorithm, int order, int derivative_order) {
   const curvebench::nurbs<double, 3> c(order, curvebench::bspline_clamped_knots<double>(control_count, order, 0.0, 1.0),
                                        control_points(), weights());
   run(state, c, derivative_order, algorithm);
 }
 
-void bspline_de_boor(benchmark::State& s) { bspline_eval(s, curvebench::bspline_evaluation::de_boor, 0); }
-void bspline_basis_sum(benchmark::State& s) { bspline_eval(s, curvebench::bspline_evaluation::basis_sum, 0); }
-void bspline_de_boor_d1(benchmark::State& s) { bspline_eval(s, curvebench::bspline_evaluation::de_boor, 1); }
-void bspline_basis_sum_d1(benchmark::State& s) { bspline_eval(s, curvebench::bspline_evaluation::basis_sum, 1); }
-void nurbs_de_boor(benchmark::State& s) { nurbs_eval(s, curvebench::bspline_evaluation::de_boor, 0); }
-void nurbs_basis_sum(benchmark::State& s) { nurbs_eval(s, curvebench::bspline_evaluation::basis_sum, 0); }
-void nurbs_de_boor_d1(benchmark::State& s) { nurbs_eval(s, curvebench::bspline_evaluation::de_boor, 1); }
+namespace vocab = curvebench::harness::vocab;
+using curvebench::bspline_evaluation;
+
+const bool registered = [] {
+  using curvebench::bench::benchmark_name;
+  using curvebench::bench::register_benchmark;
+  struct variant {
+    const vocab::algorithm* id;
+    bspline_evaluation algorithm;
+    bool nurbs;
+    int derivative;
+  };
+  // NURBS derivatives by de Boor only (the quotient rule on the homogeneous curve).
+  const variant variants[] = {{&vocab::algorithms::de_boor, bspline_evaluation::de_boor, false, 0},
+                              {&vocab::algorithms::basis_sum, bspline_evaluation::basis_sum, false, 0},
+                              {&vocab::algorithms::de_boor, bspline_evaluation::de_boor, false, 1},
+                              {&vocab::algorithms::basis_sum, bspline_evaluation::basis_sum, false, 1},
+                              {&vocab::algorithms::de_boor, bspline_evaluation::de_boor, true, 0},
+                              {&vocab::algorithms::basis_sum, bspline_evaluation::basis_sum, true, 0},
+                              {&vocab::algorithms::de_boor, bspline_evaluation::de_boor, true, 1}};
+  for (const variant& v : variants)
+    for (int order = 2; order <= 6; ++order)
+      register_benchmark(
+          benchmark_name(v.nurbs ? "nurbs" : "bspline", *v.id).arg("order", order).arg("derivative", v.derivative),
+          [v, order](benchmark::State& s) {
+            if (v.nurbs)
+              nurbs_eval(s, v.algorithm, order, v.derivative);
+            else
+              bspline_eval(s, v.algorithm, order, v.derivative);
+          });
+  return true;
+}();
 
 }  // namespace
-
-BENCHMARK(bspline_de_boor)->Name("bspline/de_boor")->ArgName("order")->DenseRange(2, 6);
-BENCHMARK(bspline_basis_sum)->Name("bspline/basis_sum")->ArgName("order")->DenseRange(2, 6);
-BENCHMARK(bspline_de_boor_d1)->Name("bspline/de_boor_derivative1")->ArgName("order")->DenseRange(2, 6);
-BENCHMARK(bspline_basis_sum_d1)->Name("bspline/basis_sum_derivative1")->ArgName("order")->DenseRange(2, 6);
-BENCHMARK(nurbs_de_boor)->Name("nurbs/de_boor")->ArgName("order")->DenseRange(2, 6);
-BENCHMARK(nurbs_basis_sum)->Name("nurbs/basis_sum")->ArgName("order")->DenseRange(2, 6);
-BENCHMARK(nurbs_de_boor_d1)->Name("nurbs/de_boor_quotient_rule_derivative1")->ArgName("order")->DenseRange(2, 6);

@@ -1,19 +1,22 @@
 // Motion along a path: the cost of one frame, position(t) = P(U(L S(x))), with each u(s) method
 // of the arc-length parameterization (linear table, Hermite table, Newton), on a Catmull-Rom path
 // through five keys (uniform knots, so |P'| varies and u(s) is not linear) eased by a sine plateau
-// over 240 frames; and the cost of the distance-time functions themselves (value + velocity).
+// over 240 frames (operation frame, one per iteration); and the cost of the distance-time functions
+// themselves (operation ease: value + velocity, one per iteration). Frames and ease parameters are
+// fixed in advance, so consecutive iterations are independent (throughput).
 // Each motion benchmark reports, measured once outside the timed loop, the largest error of the
 // arc length reached at a frame, |s(u_f) - L S(x_f)| over the 240 frames, against a 50-digit
 // adaptive Gauss-Kronrod arc length of the same spline, relative to the path length L (counter
-// max_rel_s_err): the speed/accuracy trade-off of the u(s) methods at the motion level.
-// Names: motion/position_at_frame/method:<0 linear_table | 1 hermite_table | 2 newton>,
-//        motion/ease/<name>.
+// max_ds_rel): the speed/accuracy trade-off of the u(s) methods at the motion level.
+// Names: motion/<linear_table/M:1024 | hermite_table | newton>, ease/<ease>.
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/curves/cardinal_spline.hpp"
 #include "curvebench/motion/distance_time.hpp"
 #include "curvebench/motion/motion_path.hpp"
 #include "curvebench/reference/multiprecision.hpp"
+
+#include "harness/bench_support.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -24,6 +27,8 @@ namespace {
 
 namespace cb = curvebench;
 namespace cbm = curvebench::motion;
+namespace cbb = curvebench::bench;
+namespace vocab = curvebench::harness::vocab;
 using point2 = cb::point<double, 2>;
 
 const cb::point_list<double, 2>& keys() {
@@ -51,11 +56,7 @@ double max_relative_s_error(const Motion& motion, const cbm::sine_plateau_ease<c
   return static_cast<double>(worst / L);
 }
 
-void position_at_frame(benchmark::State& state) {
-  const auto method = static_cast<cb::arclength::inversion_method>(state.range(0));
-  cb::arclength::parameterization_options<double> opt;
-  opt.method = method;
-  if (method == cb::arclength::inversion_method::linear_table) opt.table_intervals = 1024;
+void position_at_frame(benchmark::State& state, const cb::arclength::parameterization_options<double>& opt) {
   const cb::cardinal_spline<double, 2> path(keys());
   const cb::arclength::parameterization arc(path, opt);
   const cbm::sine_plateau_ease<double> ease(0.25, 0.75);
@@ -66,9 +67,10 @@ void position_at_frame(benchmark::State& state) {
     benchmark::DoNotOptimize(p);
     f = f == last_frame ? 0 : f + 1;
   }
-  state.counters["frames"] = benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["max_rel_s_err"] =
-      max_relative_s_error(motion, cbm::sine_plateau_ease<cb::real50>(cb::real50(0.25), cb::real50(0.75)));
+  cbb::per_operation(state, vocab::operations::frame, 1);
+  cbb::set_counter(
+      state, vocab::counters::max_ds_rel,
+      max_relative_s_error(motion, cbm::sine_plateau_ease<cb::real50>(cb::real50(0.25), cb::real50(0.75))));
 }
 
 template <class F>
@@ -81,6 +83,7 @@ void ease_cost(benchmark::State& state, const F& ease) {
     benchmark::DoNotOptimize(s);
     k = (k + 1) & 1023;
   }
+  cbb::per_operation(state, vocab::operations::ease, 1);
 }
 
 void ease_linear(benchmark::State& s) { ease_cost(s, cbm::linear_ease<double>{}); }
@@ -97,13 +100,34 @@ void ease_speed_cubic(benchmark::State& s) {
   ease_cost(s, cbm::speed_curve_ease<double>(t, v, cbm::speed_interpolation::monotone_cubic));
 }
 
-}  // namespace
+const bool registered = [] {
+  using cbb::benchmark_name;
+  using cbb::register_benchmark;
+  namespace al = cb::arclength;
+  al::parameterization_options<double> linear;
+  linear.method = al::inversion_method::linear_table;
+  linear.table_intervals = 1024;
+  register_benchmark(benchmark_name("motion", vocab::methods::linear_table).arg("M", linear.table_intervals),
+                     [linear](benchmark::State& s) { position_at_frame(s, linear); });
+  al::parameterization_options<double> hermite;
+  hermite.method = al::inversion_method::hermite_table;
+  register_benchmark(benchmark_name("motion", vocab::methods::hermite_table),
+                     [hermite](benchmark::State& s) { position_at_frame(s, hermite); });
+  al::parameterization_options<double> newton;
+  newton.method = al::inversion_method::newton;
+  register_benchmark(benchmark_name("motion", vocab::methods::newton),
+                     [newton](benchmark::State& s) { position_at_frame(s, newton); });
 
-BENCHMARK(position_at_frame)->Name("motion/position_at_frame")->ArgName("method")->Arg(0)->Arg(1)->Arg(2);
-BENCHMARK(ease_linear)->Name("motion/ease/linear");
-BENCHMARK(ease_sine)->Name("motion/ease/sine");
-BENCHMARK(ease_sine_plateau)->Name("motion/ease/sine_plateau");
-BENCHMARK(ease_parabolic)->Name("motion/ease/parabolic");
-BENCHMARK(ease_smootherstep)->Name("motion/ease/smootherstep");
-BENCHMARK(ease_distance_keys)->Name("motion/ease/distance_keys");
-BENCHMARK(ease_speed_cubic)->Name("motion/ease/speed_monotone_cubic");
+  namespace a = vocab::algorithms;
+  register_benchmark(benchmark_name("ease", a::ease_linear), ease_linear);
+  register_benchmark(benchmark_name("ease", a::ease_sine), ease_sine);
+  register_benchmark(benchmark_name("ease", a::ease_sine_plateau).arg("t1", 0.25).arg("t2", 0.75), ease_sine_plateau);
+  register_benchmark(benchmark_name("ease", a::ease_parabolic).arg("t1", 0.25).arg("t2", 0.75), ease_parabolic);
+  register_benchmark(benchmark_name("ease", a::ease_smootherstep), ease_smootherstep);
+  register_benchmark(benchmark_name("ease", a::ease_distance_keys), ease_distance_keys);
+  register_benchmark(benchmark_name("ease", a::ease_speed_curve).arg("interpolation", "monotone_cubic"),
+                     ease_speed_cubic);
+  return true;
+}();
+
+}  // namespace

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job: build optimized, run the accuracy sweep against 50-digit references and every
-# benchmark, and write reports/ (REPORT.md, accuracy.json/.csv, bench_*.json, plots/*.png).
+# benchmark, and write reports/ (REPORT.md, accuracy.json/.csv, bench_*.json, vocabulary.json,
+# plots/*.png).
 #   scripts/bench.sh           full run (all cases and settings, 3 benchmark repetitions; < 20 min on 2 cores)
 #   scripts/bench.sh --quick   the quick suite and short benchmarks (a few minutes)
 # Every output is written under a temporary name and renamed, so an interrupted run never leaves a
@@ -12,7 +13,8 @@ quick=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
-    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+    # The usage is the comment block under the shebang, printed without its "# ".
+    -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
     *) echo "bench.sh: unknown argument '$arg' (allowed: --quick)" >&2; exit 2 ;;
   esac
 done
@@ -80,6 +82,9 @@ EOF
 done
 
 echo "bench.sh: writing the report"
+# The ids every benchmark name, label and counter must use (report.py fails on any other).
+"$build/bench/curvebench" list vocabulary --json >"$reports/vocabulary.json.tmp"
+mv "$reports/vocabulary.json.tmp" "$reports/vocabulary.json"
 /usr/bin/python3 "$root/scripts/report.py" --reports "$reports"
 # The gate's verdict on these results (CI gates the quick suite; here it is information).
 "$build/bench/curvebench" gate --results "$reports/accuracy.json" --thresholds "$reports/thresholds.json" || true

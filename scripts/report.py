@@ -2,11 +2,15 @@
 """Generates reports/REPORT.md and reports/plots/*.png from the results of scripts/bench.sh.
 
 Inputs (all in the reports directory, all produced by scripts):
-  bench_*.json     Google Benchmark output (names family/algorithm/arg:value; algorithms whose
-                   name starts with "peer_" are peers from other libraries)
+  vocabulary.json  `curvebench list vocabulary --json`: methods, peers, algorithms, operations and
+                   counters (bench/harness/vocabulary.hpp); every benchmark must use only these
+  bench_*.json     Google Benchmark output (names family/algorithm/key:value; each benchmark labels
+                   the operation it times and sets items processed: times are shown per operation)
   accuracy.json    the accuracy runner's output: context, records, orders, properties
-Every file is written under a temporary name and renamed, so an interrupted run never leaves a
-half-written report. Uses Debian's python3-matplotlib (run with /usr/bin/python3).
+Exits 1, naming the benchmark, on a benchmark the vocabulary does not describe. Every file is
+written under a temporary name and renamed, so an interrupted run never leaves a half-written
+report. Uses Debian's python3-matplotlib (run with /usr/bin/python3); the pure helpers are in
+report_lib.py (tested by tests/python).
 """
 import argparse
 import glob
@@ -16,13 +20,15 @@ import os
 import sys
 from collections import defaultdict
 
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import report_lib as lib  # noqa: E402
+from report_lib import TARGETS, pareto_front  # noqa: E402
+
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-TARGETS = (1e-6, 1e-10, 1e-14)
-PEER_PREFIXES = ("peer_", "boost_", "eigen_")
 # Seed 001's property table as printed (EECS 487 lecture notes); data to show beside the measured one.
 SEED_001_TABLE = [
     ["Hermite", "yes", "yes", "C1", "yes", "n/a", "n/a"],
@@ -31,29 +37,6 @@ SEED_001_TABLE = [
     ["natural", "yes", "no", "C2", "yes", "n/a", "n/a"],
     ["B-Splines", "no", "yes", "C2", "yes", "yes", "yes"],
 ]
-ERROR_COUNTERS = ("rel_error", "max_ds_rel", "max_err_eps")
-
-
-def is_peer(algorithm):
-    return algorithm.startswith(PEER_PREFIXES)
-
-
-def peer_name(algorithm):
-    return algorithm[5:] if algorithm.startswith("peer_") else algorithm
-
-
-def computes(algorithm):
-    """What a benchmark computes, for pairing with peers: an inversion u(s), or anything else."""
-    return "u_of_s" if algorithm.startswith("u_of_s") else "other"
-
-
-def error_of(row):
-    for k in ERROR_COUNTERS:
-        if k in row["counters"]:
-            return k, row["counters"][k]
-    return None, None
-
-
 def atomic_write(path, text):
     tmp = path + ".tmp"
     with open(tmp, "w", encoding="utf-8") as f:
@@ -108,83 +91,47 @@ def slug(s):
 # Benchmarks
 
 
-def load_benchmarks(report_dir):
-    """(context, rows): rows are dicts with family, algorithm, args, ns (median cpu time per iteration)."""
-    context, rows = {}, []
-    for path in sorted(glob.glob(os.path.join(report_dir, "bench_*.json"))):
-        with open(path, encoding="utf-8") as f:
-            data = json.load(f)
-        context = context or data.get("context", {})
-        for b in data.get("benchmarks", []):
-            if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
-                continue
-            name = b.get("run_name", b["name"])
-            parts = name.split("/")
-            if len(parts) < 2:
-                continue
-            unit = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b.get("time_unit", "ns")]
-            counters = {k: v for k, v in b.items() if k not in ("name", "run_name", "run_type", "repetitions",
-                                                                 "repetition_index", "threads", "iterations",
-                                                                 "real_time", "cpu_time", "time_unit",
-                                                                 "aggregate_name", "aggregate_unit",
-                                                                 "family_index", "per_family_instance_index")}
-            rows.append({"program": os.path.basename(path)[:-5], "family": parts[0], "algorithm": parts[1],
-                         "args": "/".join(parts[2:]), "ns": b["cpu_time"] * unit, "counters": counters})
-    return context, rows
+def per_op(operation):
+    return f"ns per {operation}"
 
 
-def speed_section(rows):
-    """Per family and argument set: time per call, ratio to the fastest, ratio to each peer."""
+def speed_section(rows, vocab):
+    """Per family and operation: every row's time per operation, ratio to the fastest row on the
+    same data, ratio to each peer with the same settings, and its error counter."""
     lines = []
-    groups = defaultdict(list)
-    for r in rows:
-        groups[(r["family"], r["args"])].append(r)
     by_family = defaultdict(list)
-    for (family, args), rs in sorted(groups.items(), key=lambda kv: (kv[0][0], natural_key(kv[0][1]))):
-        by_family[family].append((args, rs))
-    headlines = []
-    for family, entries in by_family.items():
-        lines.append(f"\n#### {family}\n")
+    for (family, operation, data), rs in lib.speed_groups(rows, vocab).items():
+        by_family[(family, operation)].append((data, rs))
+    pairs = defaultdict(list)
+    for ours, peer in lib.peer_pairs(rows, vocab):
+        pairs[ours["name"]].append(peer)
+    for (family, operation), entries in sorted(by_family.items()):
+        lines.append(f"\n#### {family}: {per_op(operation)}\n")
         body = []
-        for args, rs in entries:
-            fastest = min(r["ns"] for r in rs)
-            peers = [r for r in rs if is_peer(r["algorithm"])]
-            for r in sorted(rs, key=lambda r: r["ns"]):
-                peer_ratios = ", ".join(f"{peer_name(p['algorithm'])}: {r['ns'] / p['ns']:.2f}" for p in peers if p is not r)
-                kind, err = error_of(r)
-                body.append([args or "-", r["algorithm"], r["ns"], r["ns"] / fastest, peer_ratios or "-",
-                             f"{kind} {fmt(err)}" if kind else "-"])
-            for p in peers:
-                # Peers compute lengths or evaluate curves; a u(s) inversion beside them is not a peer's rival.
-                ours = [r for r in rs if not is_peer(r["algorithm"]) and computes(r["algorithm"]) == computes(p["algorithm"])]
-                if ours:
-                    best = min(ours, key=lambda r: r["ns"])
-                    headlines.append((family, args, best["algorithm"], peer_name(p["algorithm"]), best["ns"] / p["ns"]))
-        lines.append(table(["args", "algorithm", "ns per call", "x fastest", "x each peer", "error (counter)"], body))
-    return "\n".join(lines), headlines
+        for data, rs in sorted(entries, key=lambda e: natural_key(lib.args_text(e[0]))):
+            fastest = min(r["ns_per_op"] for r in rs)
+            for r in sorted(rs, key=lambda r: r["ns_per_op"]):
+                ratios = ", ".join(f"{p['algorithm']}: {fmt(r['ns_per_op'] / p['ns_per_op'])}" for p in pairs[r["name"]])
+                kind, err = lib.error_of(r, vocab)
+                body.append([lib.args_text(data) or "-", lib.display_algorithm(r, vocab), r["ns_per_op"],
+                             r["ns_per_op"] / fastest, ratios or "-", f"{kind} {fmt(err)}" if kind else "-"])
+        lines.append(table(["data", "algorithm", per_op(operation), "x fastest", "x peer (same settings)",
+                            "error (counter)"], body))
+    return "\n".join(lines)
 
 
-def fastest_at_target(rows):
-    """Per family with error counters: the fastest benchmark (ours or a peer) reaching each target."""
-    fams = defaultdict(list)
-    for r in rows:
-        kind, err = error_of(r)
-        if kind in ("rel_error", "max_ds_rel") and isinstance(err, (int, float)):
-            fams[(r["family"], kind)].append((r, err))
+def fastest_at_target(rows, vocab):
     out = []
-    for (family, kind), rs in sorted(fams.items()):
-        for t in TARGETS:
-            ok = [(r, e) for r, e in rs if e <= t]
-            if not ok:
-                out.append([family, kind, f"{t:g}", "none reached", "-", "-"])
-                continue
-            r, e = min(ok, key=lambda x: x[0]["ns"])
-            peers = [(p, pe) for p, pe in ok if is_peer(p["algorithm"])]
-            best_peer = min(peers, key=lambda x: x[0]["ns"]) if peers else None
-            vs = (f"{peer_name(best_peer[0]['algorithm'])}/{best_peer[0]['args']} {fmt(best_peer[0]['ns'])} ns"
-                  if best_peer else "no peer reached it")
-            out.append([family, kind, f"{t:g}", f"{r['algorithm']}/{r['args']}", r["ns"], vs])
-    return table(["family", "error measure", "target", "fastest reaching it", "ns", "fastest peer reaching it"], out)
+    for t in lib.fastest_at_targets(rows, vocab):
+        head = [t["family"], t["counter"], f"{t['target']:g}"]
+        if t["best"] is None:
+            out.append(head + ["none reached", "-", "-"])
+            continue
+        b, p = t["best"], t["best_peer"]
+        vs = f"{lib.display_algorithm(p, vocab)} {fmt(p['ns_per_op'])} ns" if p else "no peer reached it"
+        out.append(head + [f"{lib.display_algorithm(b, vocab)} {lib.args_text(lib.data_args(b, vocab))}".strip(),
+                           f"{fmt(b['ns_per_op'])} ns per {b['operation']}", vs])
+    return table(["family", "error measure", "target", "fastest reaching it", "time", "fastest peer reaching it"], out)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -211,39 +158,15 @@ def cheapest_at(records, quantity):
     return table(["case"] + [f"cheapest at {t:g}" for t in TARGETS], rows)
 
 
-def case_times(rows):
-    """(case, method, setting) -> ns per call, from bench_arclength_cases (arclength_case/case/method/setting)."""
-    out = {}
-    for r in rows:
-        if r["program"] == "bench_arclength_cases":
-            method, _, setting = r["args"].partition("/")
-            out[(r["algorithm"], method, setting)] = r["ns"]
-    return out
-
-
-def pareto_front(points):
-    """The (time, error) points no other point beats in both: sorted by time, error strictly falling."""
-    front, best = [], float("inf")
-    for t, e, label in sorted(points):
-        if e < best:
-            front.append((t, e, label))
-            best = e
-    return front
-
-
 def pareto_section(records, times, plot_dir):
     """Length error (accuracy runner) joined with time (per-case benchmarks): the fastest method at
     each target per case, and one error-vs-time plot per case with its Pareto front."""
-    per_case = defaultdict(list)
-    for r in records:
-        if r["quantity"] != "length" or not isinstance(r.get("error"), (int, float)):
-            continue
-        ns = times.get((r["case"], r["method"], r["setting"]))
-        if ns is not None:
-            per_case[r["case"]].append((ns, max(r["error"], 1e-18), f"{r['method']} {r['setting']}", r["method"]))
+    joined, unmatched_records, unmatched_times, without_error = lib.join_lengths(records, times)
+    per_case = {case: [(ns, max(e, 1e-18), f"{m} {st}", m) for ns, e, m, st in pts] for case, pts in joined.items()}
+    notes = join_notes(unmatched_records, unmatched_times, without_error)
     if not per_case:
-        return ["No per-case timings (bench_arclength_cases) to join with the errors."]
-    md = ["Time per length computation (bench_arclength_cases, median ns; the curve behind the same "
+        return ["No per-case timings (bench_arclength_cases) joined with the errors.", ""] + notes
+    md = ["Time per length (bench_arclength_cases, median ns per length; the curve behind the same "
           "type-erased interface for every method) joined with the accuracy runner's error for the same "
           "(case, method, setting). Fastest reaching each relative error:", ""]
     rows, links = [], []
@@ -273,7 +196,7 @@ def pareto_section(records, times, plot_dir):
             xs.append(ns)
             ys.append(e)
         ax.loglog(xs, ys, color="black", lw=1.6, alpha=0.5, label="Pareto front")
-        ax.set_xlabel("time per length computation (ns)")
+        ax.set_xlabel("ns per length")
         ax.set_ylabel("relative error of the length")
         ax.set_title(f"{case}: error vs time")
         ax.grid(True, which="both", alpha=0.3)
@@ -284,6 +207,33 @@ def pareto_section(records, times, plot_dir):
     md.append(table(["case"] + [f"fastest at {t:g}" for t in TARGETS], rows))
     md += ["", "Error-vs-time plots, Pareto front in black (errors below 1e-18 drawn at 1e-18):", ""]
     md += links
+    return md + [""] + notes
+
+
+def join_notes(unmatched_records, unmatched_times, without_error):
+    """What the join left out, said in the report (and on stderr): never dropped silently."""
+    md = []
+    if unmatched_records:
+        by = defaultdict(set)
+        for case, method, setting in unmatched_records:
+            by[(method, setting)].add(case)
+        md += [f"{len(unmatched_records)} length records have no per-case timing (settings the timed sweep "
+               "does not run, or cases it skipped):", ""]
+        md.append(table(["method", "setting", "cases without a timing"],
+                        [[m, st, len(cs)] for (m, st), cs in sorted(by.items(), key=lambda kv: (kv[0][0], natural_key(kv[0][1])))]))
+        md.append("")
+    if unmatched_times:
+        md += [f"{len(unmatched_times)} per-case timings have no length record:", ""]
+        md.append(table(["case", "method", "setting"], [list(k) for k in unmatched_times]))
+        md.append("")
+    if without_error:
+        md += [f"{len(without_error)} length records have no numeric error (not plotted): "
+               + ", ".join(f"{c} {m} {st}" for c, m, st in without_error[:20])
+               + (" ..." if len(without_error) > 20 else ""), ""]
+    if unmatched_records or unmatched_times or without_error:
+        print(f"report.py: join of lengths and timings: {len(unmatched_records)} records without timing, "
+              f"{len(unmatched_times)} timings without record, {len(without_error)} records without error",
+              file=sys.stderr)
     return md
 
 
@@ -349,12 +299,21 @@ def honesty_section(records):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--reports", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "reports"))
+    ap.add_argument("--vocabulary", help="the vocabulary JSON (default: REPORTS/vocabulary.json)")
     args = ap.parse_args()
     report_dir = os.path.abspath(args.reports)
     plot_dir = os.path.join(report_dir, "plots")
     os.makedirs(plot_dir, exist_ok=True)
 
-    bench_context, bench_rows = load_benchmarks(report_dir)
+    vocab_path = args.vocabulary or os.path.join(report_dir, "vocabulary.json")
+    try:
+        vocab = lib.load_vocabulary(vocab_path)
+        bench_context, bench_rows = lib.load_benchmark_files(
+            sorted(glob.glob(os.path.join(report_dir, "bench_*.json"))), vocab)
+        times = lib.case_times(bench_rows)
+    except (OSError, lib.ReportError) as e:
+        print(f"report.py: {e}", file=sys.stderr)
+        return 1
     acc_path = os.path.join(report_dir, "accuracy.json")
     acc = {}
     if os.path.exists(acc_path):
@@ -378,19 +337,27 @@ def main():
     ]))
     md += ["", "Absolute times on a shared machine are noisy; compare the ratios, measured in the same run.", ""]
 
-    md += ["## Evaluation speed", ""]
-    times = case_times(bench_rows)
-    bench_rows = [r for r in bench_rows if r["program"] != "bench_arclength_cases"]
+    md += ["## Speed per operation", ""]
+    bench_rows = [r for r in bench_rows if r["family"] != lib.CASE_FAMILY]
     if bench_rows:
-        text, headlines = speed_section(bench_rows)
+        ops = sorted({r["operation"] for r in bench_rows})
+        md += ["Every time is CPU time per operation (the benchmark's label), whatever it does per "
+               "iteration: a batch of 1024 evaluations is divided by 1024, so single calls, batches and "
+               "sorted batches compare directly. Rows are ranked only against rows timing the same "
+               "operation on the same data. Operations:", ""]
+        md += [f"- **{o}**: {vocab.operations[o]['doc']}" for o in ops] + [""]
+        headlines = lib.headline_ratios(bench_rows, vocab)
         if headlines:
-            md += ["Headline ratios (our fastest algorithm / peer; < 1 means faster than the peer):", ""]
-            md.append(table(["family", "args", "ours", "peer", "ratio"], headlines))
+            md += ["Headline ratios (our fastest with the peer's settings on the same data / the peer, per "
+                   "operation; < 1 means faster than the peer):", ""]
+            md.append(table(["family", "data", "ours", "peer", "ns per op (ours)", "ratio"],
+                            [[o["family"], lib.args_text(lib.data_args(o, vocab)) or "-", lib.display_algorithm(o, vocab),
+                              lib.display_algorithm(p, vocab), o["ns_per_op"], ratio] for o, p, ratio in headlines]))
             md.append("")
-        md += ["", "### Fastest at an error target (benchmarks with an error counter)", ""]
-        md.append(fastest_at_target(bench_rows))
+        md += ["", "### Fastest at an error target (benchmarks with a relative error counter)", ""]
+        md.append(fastest_at_target(bench_rows, vocab))
         md += ["", "### All benchmarks", ""]
-        md.append(text)
+        md.append(speed_section(bench_rows, vocab))
     else:
         md.append("No benchmark results found.")
 

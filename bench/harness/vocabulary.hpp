@@ -7,7 +7,8 @@
 //
 // Formats:
 //   record setting     "key=value[,key=value]"         ("n=8", "tol=1e-10", "n=3,panels=4")
-//   benchmark name     family/algorithm[/key:value]... (Google Benchmark's argument convention)
+//   benchmark name     family/algorithm[/key:value]... (Google Benchmark's argument convention;
+//                      algorithm: a method, a peer or an algorithm id below)
 //   peers              algorithm ids start with "peer_" and name the library
 // Every benchmark reports its time per operation: it declares the operation it times (the label)
 // and how many it performs per iteration (items processed), so a batch of 1024 evaluations and a
@@ -130,6 +131,87 @@ inline constexpr const operation* all_operations[] = {&operations::evaluation, &
                                                       &operations::length,     &operations::query,
                                                       &operations::frame,      &operations::ease};
 
+/// An algorithm a benchmark times that is not a method above: the evaluation algorithms each
+/// family offers (and the ease functions), as the benchmark names spell them.
+struct algorithm {
+  std::string_view id;
+  std::string_view settings;  ///< its setting keys in benchmark names, space-separated ("" when none)
+  std::string_view doc;
+};
+
+namespace algorithms {
+inline constexpr algorithm power{"power", "",
+                                 "piecewise cubic: Horner on power-basis coefficients (the engine's default)"};
+inline constexpr algorithm matrix{"matrix", "", "piecewise cubic: T M G per call (basis matrix times geometry)"};
+inline constexpr algorithm bezier{"bezier", "", "piecewise cubic: de Casteljau on the segment's Bezier form"};
+inline constexpr algorithm to_piecewise_cubic{"to_piecewise_cubic", "",
+                                              "a cubic B-spline converted once to the piecewise cubic engine "
+                                              "(power form; O(1) segment lookup on uniform knots)"};
+inline constexpr algorithm de_casteljau{"de_casteljau", "", "Bezier: de Casteljau's algorithm, O(degree^2)"};
+inline constexpr algorithm bernstein_sum{"bernstein_sum", "", "Bezier: the Bernstein sum, O(degree)"};
+inline constexpr algorithm horner{"horner", "", "Bezier: Horner on power coefficients converted once, O(degree)"};
+inline constexpr algorithm de_boor{"de_boor", "",
+                                   "B-spline/NURBS: de Boor's algorithm (NURBS: in homogeneous "
+                                   "coordinates, derivatives by the quotient rule)"};
+inline constexpr algorithm basis_sum{"basis_sum", "",
+                                     "B-spline/NURBS: the Cox-de Boor basis functions times the points"};
+inline constexpr algorithm recursion{"recursion", "",
+                                     "all Bernstein polynomials of degree n by the triangular recursion"};
+inline constexpr algorithm closed_form{"closed_form", "", "each Bernstein polynomial by its closed form"};
+inline constexpr algorithm ease_linear{"linear", "", "ease: S(t) = t"};
+inline constexpr algorithm ease_sine{"sine", "", "ease: sine ease-in/ease-out"};
+inline constexpr algorithm ease_sine_plateau{"sine_plateau", "t1 t2",
+                                             "ease: sine acceleration, constant speed, sine deceleration"};
+inline constexpr algorithm ease_parabolic{"parabolic", "t1 t2",
+                                          "ease: constant acceleration, constant speed, constant deceleration"};
+inline constexpr algorithm ease_smootherstep{"smootherstep", "", "ease: the quintic 6t^5 - 15t^4 + 10t^3"};
+inline constexpr algorithm ease_distance_keys{"distance_keys", "",
+                                              "ease: monotone interpolation of (time, distance) keys"};
+inline constexpr algorithm ease_speed_curve{"speed_curve", "interpolation",
+                                            "ease: the integral of an interpolated speed curve"};
+}  // namespace algorithms
+
+inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
+                                                      &algorithms::matrix,
+                                                      &algorithms::bezier,
+                                                      &algorithms::to_piecewise_cubic,
+                                                      &algorithms::de_casteljau,
+                                                      &algorithms::bernstein_sum,
+                                                      &algorithms::horner,
+                                                      &algorithms::de_boor,
+                                                      &algorithms::basis_sum,
+                                                      &algorithms::recursion,
+                                                      &algorithms::closed_form,
+                                                      &algorithms::ease_linear,
+                                                      &algorithms::ease_sine,
+                                                      &algorithms::ease_sine_plateau,
+                                                      &algorithms::ease_parabolic,
+                                                      &algorithms::ease_smootherstep,
+                                                      &algorithms::ease_distance_keys,
+                                                      &algorithms::ease_speed_curve};
+
+/// A benchmark-name key whose value picks a variant of how the algorithm is called, not the data
+/// or the method's setting: the report ranks rows that differ only in these keys and in settings
+/// together (e.g. single calls against a sorted batch, per evaluation).
+struct variant_key {
+  std::string_view id;
+  std::string_view values;  ///< its allowed values, space-separated
+  std::string_view doc;
+};
+
+namespace variant_keys {
+inline constexpr variant_key calls{"calls", "single batch sorted",
+                                   "single: one call per evaluation; batch: one call over 1024 parameters; "
+                                   "sorted: one call over the same 1024 parameters sorted"};
+inline constexpr variant_key estimate{"estimate", "none nested",
+                                      "none: the rule alone; nested: with the nested estimate (fixed_estimate)"};
+inline constexpr variant_key api{"api", "newton_invert",
+                                 "newton_invert: the solver called directly, not through the parameterization"};
+}  // namespace variant_keys
+
+inline constexpr const variant_key* all_variant_keys[] = {&variant_keys::calls, &variant_keys::estimate,
+                                                          &variant_keys::api};
+
 /// A benchmark counter. Kinds: "error" (an error of the result, compared across methods),
 /// "estimate" (the method's own error estimate), "count" (per operation), "setting" (an input).
 struct counter {
@@ -175,6 +257,12 @@ inline constexpr const counter* all_counters[] = {&counters::evaluations, &count
 [[nodiscard]] constexpr const quantity* find_quantity(std::string_view id) {
   for (const quantity* q : all_quantities)
     if (q->id == id) return q;
+  return nullptr;
+}
+
+[[nodiscard]] constexpr const algorithm* find_algorithm(std::string_view id) {
+  for (const algorithm* a : all_algorithms)
+    if (a->id == id) return a;
   return nullptr;
 }
 

@@ -1,0 +1,28 @@
+"""The scripts' command lines: `bench.sh --help` prints its usage comment and nothing else (it
+printed `set -euo pipefail`, a fixed line range having drifted from the comment)."""
+import os
+import subprocess
+import unittest
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+
+class BenchHelp(unittest.TestCase):
+    def test_help_is_the_usage_comment(self):
+        path = os.path.join(ROOT, "scripts", "bench.sh")
+        with open(path, encoding="utf-8") as f:
+            lines = f.read().splitlines()
+        comment = []
+        for line in lines[1:]:
+            if not line.startswith("#"):
+                break
+            comment.append(line[2:] if line.startswith("# ") else line[1:])
+        p = subprocess.run(["bash", path, "--help"], capture_output=True, text=True, timeout=60)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertEqual(p.stdout.splitlines(), comment)
+        self.assertIn("scripts/bench.sh --quick", p.stdout)
+        self.assertNotIn("set -euo pipefail", p.stdout)
+
+
+if __name__ == "__main__":
+    unittest.main()
