@@ -149,10 +149,13 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
     EXPECT_TRUE(r["error"].is_number());
   }
   // Every method of the vocabulary produced records for each of its quantities.
-  for (const hv::method* m : hv::all_methods)
-    for (const hv::quantity* q : hv::all_quantities)
-      if (hv::lists(m->quantities, q->id))
+  for (const hv::method* m : hv::all_methods) {
+    for (const hv::quantity* q : hv::all_quantities) {
+      if (hv::lists(m->quantities, q->id)) {
         EXPECT_TRUE(seen.count({std::string(q->id), std::string(m->id)})) << q->id << " " << m->id;
+      }
+    }
+  }
   for (const char* algorithm : {"de_casteljau", "bernstein_sum", "horner"})
     EXPECT_TRUE(seen.count({"eval", algorithm})) << algorithm;
   // Orders carry the vocabulary's theory order of their method.
