@@ -9,9 +9,11 @@
 // Own flags (removed before Google Benchmark sees the rest):
 //   --cases=DIR     the case directory (default: the source tree's bench/cases)
 //   --quick-suite   only the cases of the quick suite (scripts/bench.sh --quick)
-// Counters: evaluations (curve-derivative evaluations per call, set-up included).
+// Operation: vocab::operations::length (one arc length of the whole curve, set-up included), one
+// per iteration. Counters: vocab::counters::evaluations (curve-derivative evaluations per length).
 #include "harness/cases.hpp"
 #include "harness/sweep.hpp"
+#include "harness/vocabulary.hpp"
 
 #include "curvebench/io/spec.hpp"
 
@@ -29,6 +31,7 @@ namespace {
 namespace cb = curvebench;
 namespace al = curvebench::arclength;
 using cb::harness::case_info;
+namespace vocab = cb::harness::vocab;
 
 template <int Dim>
 void register_case(const case_info& info, const cb::harness::sweep& w) {
@@ -37,8 +40,8 @@ void register_case(const case_info& info, const cb::harness::sweep& w) {
   // The subdivision tolerance is tol * L; any accurate L names the same setting.
   const double length = al::adaptive_length(*c).value;
   cb::harness::for_each_length_method(
-      *c, w, length, [&](const std::string& method, const std::string& setting, double, auto run) {
-        const std::string name = "arclength_case/" + info.name + "/" + method + "/" + setting;
+      *c, w, length, [&](const vocab::method& method, const std::string& setting, auto run) {
+        const std::string name = "arclength_case/" + info.name + "/" + std::string(method.id) + "/" + setting;
         // run refers to *c, which the shared pointer keeps alive for the benchmark's lifetime.
         benchmark::RegisterBenchmark(name.c_str(), [c, run](benchmark::State& st) {
           std::size_t evaluations = 0;
@@ -47,7 +50,9 @@ void register_case(const case_info& info, const cb::harness::sweep& w) {
             benchmark::DoNotOptimize(r.value);
             evaluations = r.evaluations;
           }
-          st.counters["evaluations"] = static_cast<double>(evaluations);
+          st.SetItemsProcessed(st.iterations());
+          st.SetLabel(std::string(vocab::operations::length.id));
+          st.counters[std::string(vocab::counters::evaluations.name)] = static_cast<double>(evaluations);
         });
       });
 }

@@ -1,8 +1,13 @@
 // The CI gate names every breach, passes clean results, and fails on an injected regression.
 #include "harness/gate.hpp"
 
+#include "curvebench/core/error.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
 
 using nlohmann::json;
 using curvebench::harness::check_gate;
@@ -11,21 +16,21 @@ using ::testing::HasSubstr;
 namespace {
 json thresholds() {
   return json::parse(R"J({"rules": [
-    {"quantity": "length", "method": "gauss_kronrod", "group": "*", "max_error": 1e-13, "honest": true,
+    {"quantity": "length", "method": "adaptive_gk", "group": "*", "max_error": 1e-13, "honest": true,
      "why": "test rule"},
     {"quantity": "length", "method": "forward_difference", "group": "smooth", "min_order": 1.8, "why": "O(h^2)"},
-    {"quantity": "length", "method": "forward_difference", "setting": "N=64", "max_error": 1e-4, "why": "one setting"}
+    {"quantity": "length", "method": "forward_difference", "setting": "steps=64", "max_error": 1e-4, "why": "one setting"}
   ]})J");
 }
 json clean_results() {
   return json::parse(R"J({
     "records": [
-      {"case": "helix", "group": "smooth", "quantity": "length", "method": "gauss_kronrod", "setting": "tol=1e-14",
+      {"case": "helix", "group": "smooth", "quantity": "length", "method": "adaptive_gk", "setting": "tol=1e-14",
        "error": 2e-16, "estimate": 1e-15, "bounded": true, "evaluations": 30, "status": "converged"},
-      {"case": "loop", "group": "loop", "quantity": "length", "method": "gauss_kronrod", "setting": "tol=1e-14",
+      {"case": "loop", "group": "loop", "quantity": "length", "method": "adaptive_gk", "setting": "tol=1e-14",
        "error": 4e-15, "estimate": 9e-15, "bounded": true, "evaluations": 90, "status": "converged"},
-      {"case": "helix", "group": "smooth", "quantity": "length", "method": "forward_difference", "setting": "N=64",
-       "error": 1e-5, "estimate": null, "bounded": null, "evaluations": 65, "status": "ok"}
+      {"case": "helix", "group": "smooth", "quantity": "length", "method": "forward_difference", "setting": "steps=64",
+       "error": 1e-5, "estimate": null, "bounded": null, "evaluations": 65, "status": "not_guaranteed"}
     ],
     "orders": [
       {"case": "helix", "group": "smooth", "quantity": "length", "method": "forward_difference", "observed": 2.01, "theory": 2}
@@ -42,7 +47,7 @@ TEST(gate, names_each_breach_with_measured_and_allowed) {
   r["orders"][0]["observed"] = 1.0;     // a deliberately coarse table: order dropped
   const auto breaches = check_gate(r, thresholds());
   ASSERT_EQ(breaches.size(), 3u);
-  EXPECT_EQ(breaches[0].rule, "length/gauss_kronrod/*");
+  EXPECT_EQ(breaches[0].rule, "length/adaptive_gk/*");
   EXPECT_EQ(breaches[0].where, "case helix setting tol=1e-14");
   EXPECT_THAT(breaches[0].message, HasSubstr("not honest"));
   EXPECT_EQ(breaches[1].where, "case loop setting tol=1e-14");
@@ -52,12 +57,12 @@ TEST(gate, names_each_breach_with_measured_and_allowed) {
 
 TEST(gate, a_rule_may_name_one_setting) {
   json r = clean_results();
-  r["records"][2]["error"] = 2e-4;  // the N=64 table got worse
+  r["records"][2]["error"] = 2e-4;  // the steps=64 table got worse
   const auto breaches = check_gate(r, thresholds());
   ASSERT_EQ(breaches.size(), 1u);
-  EXPECT_EQ(breaches[0].rule, "length/forward_difference/*/N=64");
+  EXPECT_EQ(breaches[0].rule, "length/forward_difference/*/steps=64");
   EXPECT_EQ(breaches[0].message, "error 0.0002 > allowed 0.0001");
-  r["records"][2]["setting"] = "N=32";  // the named setting vanished
+  r["records"][2]["setting"] = "steps=32";  // the named setting vanished
   EXPECT_EQ(check_gate(r, thresholds()).back().message,
             "rule matched no result record (method or case group missing)");
 }
@@ -70,4 +75,37 @@ TEST(gate, missing_method_or_nan_error_is_a_breach) {
   ASSERT_EQ(breaches.size(), 2u);
   EXPECT_THAT(breaches[0].message, HasSubstr("no error measured"));
   EXPECT_THAT(breaches[1].message, HasSubstr("matched no observed order"));
+}
+
+TEST(gate, rejects_a_rule_naming_an_id_outside_the_vocabulary) {
+  const auto message = [](const char* rules) {
+    try {
+      (void)check_gate(clean_results(), json::parse(rules));
+    } catch (const curvebench::invalid_input& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  // composite_gauss3 was the records' name before the vocabulary: a stale threshold must not pass silently.
+  EXPECT_EQ(message(R"({"rules": [{"quantity": "*", "honest": true},
+                                   {"quantity": "length", "method": "composite_gauss3", "min_order": 3}]})"),
+            "thresholds rule 1: method \"composite_gauss3\" is not a method of the vocabulary (curvebench list methods)");
+  EXPECT_EQ(message(R"({"rules": [{"quantity": "lenght", "method": "*", "max_error": 1}]})"),
+            "thresholds rule 0: quantity \"lenght\" is not a quantity of the vocabulary");
+  EXPECT_THAT(message(R"({"rules": [{"quantity": "length", "method": "newton", "max_error": 1}]})"),
+              HasSubstr("thresholds rule 0: method \"newton\" has no length records"));
+  EXPECT_THAT(message(R"({"rules": [{"method": "de_casteljau", "max_error": 1}]})"),
+              HasSubstr("rule 0: method \"de_casteljau\" is not a method"));
+  // For eval any algorithm is accepted (the families' own names); "*" always.
+  EXPECT_EQ(message(R"({"rules": [{"quantity": "eval", "method": "de_casteljau", "max_error": 8},
+                                   {"quantity": "*", "method": "*", "honest": true}]})"),
+            "accepted");
+}
+
+TEST(gate, the_checked_in_thresholds_name_vocabulary_ids_only) {
+  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/reports/thresholds.json");
+  ASSERT_TRUE(in) << "reports/thresholds.json not found";
+  const json t = json::parse(in);
+  ASSERT_GT(t["rules"].size(), 10u);
+  EXPECT_NO_THROW((void)check_gate(json::object(), t));
 }

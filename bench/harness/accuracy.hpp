@@ -8,20 +8,26 @@
 //   u_of_s   max over targets s_j of |s(u_method(s_j)) - s_j| / L   (the |ds| measure of issue 4)
 //   eval     max over parameters of |P_method(u) - P(u)|_inf / (eps(double) * scale), the
 //            evaluation error of each algorithm in units of double's epsilon times the curve's size
+// (vocab::quantities; the methods, settings and theory orders are those of harness/vocabulary.hpp.
+// Eval records name the evaluation algorithm, have the setting "" and the status "not_guaranteed":
+// an evaluation gives no error estimate of its own.)
 // Costs: length records count the evaluations of one call; s_of_u and u_of_s records count one
 // query plus the set-up (tables, segment lengths) amortized over `amortized_queries` queries.
 // The reference is the same spec instantiated on real50 (exact twin of the double data) and
 // integrated by reference::reference_arc_length (Boost.Math, ~1e-45).
-// Implementation: bench/tool/accuracy.cpp (the one translation unit with 50-digit families).
+// Implementation: the curvebench_harness library (bench/harness/): one unit per sweep
+// (sweep_length, sweep_s_of_u, sweep_u_of_s, sweep_eval, sweep_audit), the 50-digit reference and
+// u(s) anchors (reference.cpp, the one unit with 50-digit families), the record sink and order fit
+// (records, order_fit), the worker pool (pool), the writers (writers) and run_case/run_accuracy
+// composing them (accuracy.cpp).
 #pragma once
 
 #include "harness/cases.hpp"
+#include "harness/order_fit.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <string>
-#include <utility>
-#include <vector>
 
 namespace curvebench::harness {
 
@@ -36,14 +42,17 @@ struct accuracy_options {
   std::string only;               ///< run only cases whose name contains this text
 };
 
-/// Runs the sweep and writes `out` (JSON) and the same path with .csv (records); returns 0.
+/// Runs every selected case (on opt.threads threads) and writes `out` (JSON) and the same path
+/// with .csv (records) from the cases that ran. Returns 0 when every case ran, 1 when any case
+/// failed (each failure is printed on stderr and its records left out; the files are written
+/// either way). Throws invalid_input when no case matches or the cases cannot be loaded.
 int run_accuracy(const accuracy_options& opt);
 
 /// One case's records and orders: {"records": [...], "orders": [...], "case": {...}}.
+/// Throws invalid_input for a case that is not 2D or 3D (or whose spec is invalid).
 nlohmann::json run_case(const case_info& c, bool quick);
 
-/// The convergence order -d log(error) / d log(cost) by least squares over the points whose error
-/// lies in (floor, ceiling); nullopt-like NaN when fewer than 3 points qualify.
-double fit_order(const std::vector<std::pair<double, double>>& cost_error, double floor, double ceiling);
+/// The compiler that built the harness, "gcc 12.2.0" or "clang 16.0.6" (its __VERSION__ for others).
+std::string compiler_id();
 
 }  // namespace curvebench::harness

@@ -3,8 +3,10 @@
 // Results (written by the accuracy runner, reports/accuracy.json) hold "records", one per
 // case x quantity x method x setting:
 //   {"case", "group", "quantity", "method", "setting", "error", "estimate", "bounded", "evaluations", "status"}
-// ("estimate"/"bounded" are null where a method gives no estimate) and "orders", one per case x
-// quantity x method: {"case", "group", "quantity", "method", "observed", "theory"}.
+// ("estimate"/"bounded" are null where a method gives no estimate; "status" is a result_status
+// name, "not_guaranteed" for eval records) and "orders", one per case x quantity x method:
+// {"case", "group", "quantity", "method", "observed", "theory"}. Quantity and method ids are those of
+// harness/vocabulary.hpp (eval records name evaluation algorithms), settings "key=value[,key=value]".
 // Thresholds (reports/thresholds.json) hold "rules":
 //   {"quantity", "method", "group", "setting"  (each may be "*" or left out: any),
 //    "max_error"  (optional: every matching record's error must be <= it),
@@ -12,8 +14,15 @@
 //    "honest"     (optional: every matching record with an estimate must have bounded = true),
 //    "why"        (the reason for the number: measured figure and margin)}
 // A rule that matches no record is itself a breach: a gate must not pass because a method or a
-// case group disappeared.
+// case group disappeared. A rule naming a quantity or method that is not in the vocabulary is an
+// error (invalid_input naming the rule's index and the value): a misspelt or renamed id must not
+// silently turn into a rule that matches nothing. For quantity "eval" any method is accepted (the
+// evaluation algorithms are the families' own).
 #pragma once
+
+#include "harness/vocabulary.hpp"
+
+#include "curvebench/core/error.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -43,6 +52,24 @@ inline std::string rule_name(const nlohmann::json& rule) {
   if (rule.contains("setting")) name += "/" + rule["setting"].get<std::string>();
   return name;
 }
+/// Throws invalid_input when rule `index` names a quantity or method outside the vocabulary.
+inline void check_rule_ids(const nlohmann::json& rule, std::size_t index) {
+  const std::string where = "thresholds rule " + std::to_string(index) + ": ";
+  for (const char* key : {"quantity", "method", "group", "setting"})
+    if (rule.contains(key) && !rule[key].is_string())
+      throw invalid_input(where + key + " " + rule[key].dump() + " is not a string");
+  const std::string quantity = rule.value("quantity", std::string("*"));
+  const std::string method = rule.value("method", std::string("*"));
+  if (quantity != "*" && !vocab::find_quantity(quantity))
+    throw invalid_input(where + "quantity \"" + quantity + "\" is not a quantity of the vocabulary");
+  if (method == "*" || quantity == vocab::quantities::eval.id) return;
+  const vocab::method* m = vocab::find_method(method);
+  if (!m)
+    throw invalid_input(where + "method \"" + method + "\" is not a method of the vocabulary (curvebench list methods)");
+  if (quantity != "*" && !vocab::lists(m->quantities, quantity))
+    throw invalid_input(where + "method \"" + method + "\" has no " + quantity + " records (its quantities: " +
+                        std::string(m->quantities) + ")");
+}
 inline std::string number(double x) {
   std::ostringstream os;
   os.precision(3);
@@ -51,9 +78,12 @@ inline std::string number(double x) {
 }
 }  // namespace detail
 
-/// Every breach of `thresholds` by `results`; empty when the gate passes.
+/// Every breach of `thresholds` by `results`; empty when the gate passes. Throws invalid_input for
+/// a rule naming a quantity or method outside the vocabulary (see above).
 inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohmann::json& thresholds) {
   std::vector<breach> out;
+  std::size_t index = 0;
+  for (const auto& rule : thresholds.at("rules")) detail::check_rule_ids(rule, index++);
   const nlohmann::json empty = nlohmann::json::array();
   const nlohmann::json& records = results.contains("records") ? results["records"] : empty;
   const nlohmann::json& orders = results.contains("orders") ? results["orders"] : empty;

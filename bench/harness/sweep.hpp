@@ -1,15 +1,17 @@
-// The settings the harness sweeps, shared by the accuracy runner (errors, bench/tool/accuracy.cpp)
+// The settings the harness sweeps, shared by the accuracy runner (errors, harness/sweep_*.cpp)
 // and the per-case arc-length benchmarks (times, bench/bench_arclength_cases.cpp), so that a
 // record's (case, method, setting) and a benchmark's name arclength_case/<case>/<method>/<setting>
 // denote the same computation and report.py can join error with time.
 #pragma once
+
+#include "harness/setting.hpp"
+#include "harness/vocabulary.hpp"
 
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
 #include "curvebench/arclength/length.hpp"
 
 #include <cstddef>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -46,49 +48,45 @@ inline sweep settings(bool quick) {
           4e6};
 }
 
-/// A setting's number as it appears in records and benchmark names ("1e-06", "0.5").
-inline std::string fmt(double x) {
-  std::ostringstream os;
-  os << x;
-  return os.str();
-}
-
-/// Calls f(method, setting, theory, run) for every length method and setting of the sweep, in
-/// series: run() (which refers to c, so c must outlive it) computes the length of c once and returns its quadrature_result (evaluations
-/// include the set-up, e.g. a forward-difference table's); theory is the convergence order in
-/// evaluations to fit over the series, 0 where none is fitted. `length` scales the subdivision
-/// tolerances, which are absolute (tol * length).
+/// Calls f(method, setting, run) for every length method (a vocab::method; its `theory` is the
+/// convergence order in evaluations to fit over its series, 0 where none is fitted) and setting
+/// (harness/setting.hpp) of the sweep, in series: run() (which refers to c, so c must outlive it)
+/// computes the length of c once and returns its quadrature_result (evaluations include the
+/// set-up, e.g. a forward-difference table's). `length` scales the subdivision tolerances, which
+/// are absolute (tol * length).
 template <class C, class F>
 void for_each_length_method(const C& c, const sweep& w, double length, F&& f) {
   namespace al = curvebench::arclength;
   using result = al::quadrature_result<double>;
   const double segments = static_cast<double>(c.breakpoints().size() - 1);
+  namespace m = vocab::methods;
   for (int n : w.gauss_n)
-    f("gauss", "n=" + std::to_string(n), 0.0, [&c, n] { return al::gauss_length(c, n, al::fixed_estimate::nested); });
+    f(m::gauss, setting(m::gauss, {{"n", n}}), [&c, n] { return al::gauss_length(c, n, al::fixed_estimate::nested); });
   // The rule cache outlives every run (gauss_legendre returns a reference into it).
-  const al::gauss_legendre_rule<double>* rule3 = &al::gauss_legendre<double>(3);
+  constexpr int composite_n = 3;
+  const al::gauss_legendre_rule<double>* rule = &al::gauss_legendre<double>(composite_n);
   for (int p : w.panels)
-    f("composite_gauss3", "panels=" + std::to_string(p), 6.0,
-      [&c, p, rule3] { return al::composite_gauss_length(c, p, *rule3); });
+    f(m::composite_gauss, setting(m::composite_gauss, {{"n", composite_n}, {"panels", p}}),
+      [&c, p, rule] { return al::composite_gauss_length(c, p, *rule); });
   for (double tol : w.adaptive_tol)
-    f("adaptive_gk", "tol=" + fmt(tol), 0.0, [&c, tol] {
+    f(m::adaptive_gk, setting(m::adaptive_gk, {{"tol", tol}}), [&c, tol] {
       al::adaptive_options<double> o;
       o.relative_tolerance = tol;
       return al::adaptive_length(c, o);
     });
-  for (bool richardson : {false, true})
+  for (const vocab::method* table : {&m::forward_difference, &m::richardson})
     for (std::size_t steps : w.table_steps) {
       if (static_cast<double>(steps) * segments > w.max_table_evals) break;
-      f(richardson ? "richardson" : "forward_difference", "steps=" + std::to_string(steps), richardson ? 4.0 : 2.0,
-        [&c, steps, richardson] {
-          const al::forward_difference_table<double> t(c, steps);
-          result r = richardson ? t.richardson_length() : t.length();
-          r.evaluations = t.evaluations();
-          return r;
-        });
+      const bool richardson = table == &m::richardson;
+      f(*table, setting(*table, {{"steps", steps}}), [&c, steps, richardson] {
+        const al::forward_difference_table<double> t(c, steps);
+        result r = richardson ? t.richardson_length() : t.length();
+        r.evaluations = t.evaluations();
+        return r;
+      });
     }
   for (double tol : w.subdivision_tol)
-    f("subdivision", "tol=" + fmt(tol), 2.0, [&c, tol, length] {
+    f(m::subdivision, setting(m::subdivision, {{"tol", tol}}), [&c, tol, length] {
       al::subdivision_options<double> o;
       o.tolerance = tol * length;
       return al::subdivision_length(c, o);

@@ -1,14 +1,17 @@
 // curvebench: the command-line tool.
-//   curvebench list [families|methods|cases]
+//   curvebench list [families|methods|cases|vocabulary] [--json]
 //   curvebench sample SPEC.json [--count N] [--by u|arclength] [--method ...] [--ease ...]   CSV on stdout
 //   curvebench length SPEC.json [--method ...] [--tol T] [--n N] [--panels P] [--steps N]    JSON on stdout
 //   curvebench accuracy [--quick] [--cases DIR] [--out FILE] [--threads N]                 the accuracy runner
 //   curvebench gate [--results FILE] [--thresholds FILE]                                   the CI gate
+// Method ids are those of harness/vocabulary.hpp (`curvebench list vocabulary --json` prints it all).
 // Errors (bad spec, bad option) print "curvebench: error: ..." on stderr and exit with 1; usage
 // errors exit with CLI11's code.
 #include "harness/accuracy.hpp"
 #include "harness/cases.hpp"
 #include "harness/gate.hpp"
+#include "harness/vocabulary.hpp"
+#include "harness/vocabulary_json.hpp"
 
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
@@ -26,9 +29,11 @@
 #include <sstream>
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace cb = curvebench;
 namespace al = curvebench::arclength;
+namespace vocab = curvebench::harness::vocab;
 
 namespace {
 
@@ -66,10 +71,24 @@ ease_fn parse_ease(const std::string& text) {
                           ": not one of linear, sine, smoothstep, smootherstep, sine_plateau:T1,T2, parabolic:T1,T2");
 }
 
+/// The u(s) methods `sample --method` takes (the hermite_table_polished of the records is
+/// hermite_table with --polish).
+constexpr const vocab::method* sample_methods[] = {&vocab::methods::linear_table, &vocab::methods::hermite_table,
+                                                   &vocab::methods::newton};
+
+/// The length methods `length --method` takes: every method of the vocabulary with length records.
+std::vector<std::string> length_method_ids() {
+  std::vector<std::string> ids;
+  for (const vocab::method* m : vocab::all_methods)
+    if (vocab::lists(m->quantities, vocab::quantities::length.id)) ids.emplace_back(m->id);
+  return ids;
+}
+
 al::inversion_method parse_inversion(const std::string& m) {
-  if (m == "linear_table") return al::inversion_method::linear_table;
-  if (m == "hermite_table") return al::inversion_method::hermite_table;
-  return al::inversion_method::newton;
+  if (m == vocab::methods::linear_table.id) return al::inversion_method::linear_table;
+  if (m == vocab::methods::hermite_table.id) return al::inversion_method::hermite_table;
+  if (m == vocab::methods::newton.id) return al::inversion_method::newton;
+  throw cb::invalid_input("--method " + m + ": not a u(s) method of sample");
 }
 
 // ---- sample ----------------------------------------------------------------------------------
@@ -78,7 +97,7 @@ struct sample_args {
   std::string spec;
   std::size_t count = 11;
   std::string by = "u";
-  std::string method = "hermite_table";
+  std::string method{vocab::methods::hermite_table.id};
   bool polish = false;
   std::string ease = "linear";
 };
@@ -122,7 +141,7 @@ void sample(const cb::io::field& spec, const sample_args& a) {
 
 struct length_args {
   std::string spec;
-  std::string method = "adaptive";
+  std::string method{vocab::methods::adaptive_gk.id};
   double tol = 1e-12;
   int n = 5;
   int panels = 4;
@@ -132,22 +151,25 @@ struct length_args {
 template <int Dim>
 void length(const cb::io::field& spec, const length_args& a) {
   const cb::any_curve<double, Dim> c = cb::io::curve_from_spec<double, Dim>(spec);
+  namespace m = vocab::methods;
   al::quadrature_result<double> r;
-  if (a.method == "gauss") {
+  if (a.method == m::gauss.id) {
     r = al::gauss_length(c, a.n, al::fixed_estimate::nested);
-  } else if (a.method == "composite") {
+  } else if (a.method == m::composite_gauss.id) {
     r = al::composite_gauss_length(c, a.panels, al::gauss_legendre<double>(a.n));
-  } else if (a.method == "adaptive") {
+  } else if (a.method == m::adaptive_gk.id) {
     al::adaptive_options<double> o;
     o.relative_tolerance = a.tol;
     r = al::adaptive_length(c, o);
-  } else if (a.method == "forward_difference" || a.method == "richardson") {
+  } else if (a.method == m::forward_difference.id || a.method == m::richardson.id) {
     const al::forward_difference_table<double> t(c, a.steps);
-    r = a.method == "richardson" ? t.richardson_length() : t.length();
-  } else {
+    r = a.method == m::richardson.id ? t.richardson_length() : t.length();
+  } else if (a.method == m::subdivision.id) {
     al::subdivision_options<double> o;
     o.tolerance = a.tol;
     r = al::subdivision_length(c, o);
+  } else {
+    throw cb::invalid_input("--method " + a.method + ": not a length method");
   }
   nlohmann::json j{{"method", a.method},
                    {"value", r.value},
@@ -174,9 +196,11 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::string list_what = "all";
-  auto* list = app.add_subcommand("list", "list curve families (spec types), arc-length methods and cases");
-  list->add_option("what", list_what, "families, methods, cases or all")
-      ->check(CLI::IsMember({"families", "methods", "cases", "all"}));
+  bool list_json = false;
+  auto* list = app.add_subcommand("list", "list curve families (spec types), methods, cases or the vocabulary");
+  list->add_option("what", list_what, "families, methods, cases, vocabulary or all")
+      ->check(CLI::IsMember({"families", "methods", "cases", "vocabulary", "all"}));
+  list->add_flag("--json", list_json, "vocabulary: as JSON (quantities, methods, peers, operations, counters)");
   std::string cases_dir = CURVEBENCH_CASES_DIR;
   list->add_option("--cases", cases_dir, "case directory")->check(CLI::ExistingDirectory);
 
@@ -186,8 +210,9 @@ int main(int argc, char** argv) {
   samp->add_option("--count", sa.count, "number of samples")->check(CLI::Range(1, 100000000));
   samp->add_option("--by", sa.by, "spacing: equal steps in u, or in arc length (with --ease)")
       ->check(CLI::IsMember({"u", "arclength"}));
-  samp->add_option("--method", sa.method, "u(s) method for --by arclength")
-      ->check(CLI::IsMember({"linear_table", "hermite_table", "newton"}));
+  std::vector<std::string> sample_ids;
+  for (const vocab::method* m : sample_methods) sample_ids.emplace_back(m->id);
+  samp->add_option("--method", sa.method, "u(s) method for --by arclength")->check(CLI::IsMember(sample_ids));
   samp->add_flag("--polish", sa.polish, "one Newton step after a table lookup");
   samp->add_option("--ease", sa.ease,
                    "distance-time function for --by arclength: linear, sine, smoothstep, smootherstep, "
@@ -196,11 +221,13 @@ int main(int argc, char** argv) {
   length_args la;
   auto* len = app.add_subcommand("length", "arc length of a curve spec: JSON value, error estimate, evaluations");
   len->add_option("spec", la.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
-  len->add_option("--method", la.method, "gauss, composite, adaptive, forward_difference, richardson, subdivision")
-      ->check(CLI::IsMember({"gauss", "composite", "adaptive", "forward_difference", "richardson", "subdivision"}));
+  const std::vector<std::string> length_ids = length_method_ids();
+  std::string length_help;
+  for (const auto& id : length_ids) length_help += (length_help.empty() ? "" : ", ") + id;
+  len->add_option("--method", la.method, length_help)->check(CLI::IsMember(length_ids));
   len->add_option("--tol", la.tol, "tolerance (adaptive: relative; subdivision: absolute)")->check(CLI::PositiveNumber);
   len->add_option("--n", la.n, "Gauss points per panel")->check(CLI::Range(1, 200));
-  len->add_option("--panels", la.panels, "panels per segment (composite)")->check(CLI::Range(1, 1000000));
+  len->add_option("--panels", la.panels, "panels per segment (composite_gauss)")->check(CLI::Range(1, 1000000));
   len->add_option("--steps", la.steps, "table steps per segment (forward_difference)")->check(CLI::Range(1, 10000000));
 
   cb::harness::accuracy_options ao;
@@ -221,19 +248,40 @@ int main(int argc, char** argv) {
 
   try {
     if (*list) {
+      if (list_what == "vocabulary" && list_json) {
+        std::cout << std::setw(1) << cb::harness::vocabulary_json() << "\n";
+        return 0;
+      }
+      if (list_json) throw cb::invalid_input("list " + list_what + " --json: only the vocabulary is listed as JSON");
       if (list_what == "families" || list_what == "all") {
         std::cout << "families (spec types):\n";
         for (const auto& t : cb::io::spec_types()) std::cout << "  " << std::left << std::setw(18) << t.type << t.fields << "\n";
       }
       if (list_what == "methods" || list_what == "all") {
-        std::cout << "arc-length methods (length --method):\n"
-                     "  gauss               fixed n-point Gauss-Legendre per segment (--n)\n"
-                     "  composite           n-point rule on P equal panels per segment (--n, --panels)\n"
-                     "  adaptive            adaptive Gauss-Kronrod G7-K15 to a relative tolerance (--tol)\n"
-                     "  forward_difference  chord sums of a table of N steps per segment (--steps)\n"
-                     "  richardson          Richardson extrapolation of two chord tables (--steps)\n"
-                     "  subdivision         adaptive subdivision, Parent's chord test (--tol absolute)\n"
-                     "u(s) methods (sample --method): linear_table, hermite_table, newton\n";
+        std::cout << "methods (length --method takes those with length records; sample --method linear_table, "
+                     "hermite_table, newton):\n";
+        for (const vocab::method* m : vocab::all_methods) {
+          std::cout << "  " << std::left << std::setw(24) << m->id << std::setw(28)
+                    << std::string(m->quantities) << std::setw(12)
+                    << (m->settings.empty() ? std::string("-") : std::string(m->settings)) << m->doc << "\n";
+        }
+      }
+      if (list_what == "vocabulary") {
+        std::cout << "quantities:\n";
+        for (const vocab::quantity* q : vocab::all_quantities)
+          std::cout << "  " << std::left << std::setw(24) << q->id << q->doc << "\n";
+        std::cout << "methods:\n";
+        for (const vocab::method* m : vocab::all_methods)
+          std::cout << "  " << std::left << std::setw(24) << m->id << m->doc << "\n";
+        std::cout << "peers:\n";
+        for (const vocab::peer* p : vocab::all_peers)
+          std::cout << "  " << std::left << std::setw(36) << p->id << p->library << ": " << p->doc << "\n";
+        std::cout << "operations:\n";
+        for (const vocab::operation* o : vocab::all_operations)
+          std::cout << "  " << std::left << std::setw(24) << o->id << o->doc << "\n";
+        std::cout << "counters:\n";
+        for (const vocab::counter* c : vocab::all_counters)
+          std::cout << "  " << std::left << std::setw(24) << c->name << std::setw(10) << c->kind << c->doc << "\n";
       }
       if (list_what == "cases" || list_what == "all") {
         std::cout << "cases (" << cases_dir << "):\n";

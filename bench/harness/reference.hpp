@@ -1,0 +1,66 @@
+// The 50-digit side of the accuracy runner, behind a facade that speaks double only: a case's
+// curve instantiated at real50 (the exact twin of the double data, io::curve_from_spec) and its
+// reference arc length (reference::reference_arc_length, ~1e-45), plus the u(s) anchors cache.
+// harness/reference.cpp is the one translation unit that instantiates families at real50 (the slow
+// one to compile), explicitly for Dim 2 and 3; the sweeps (harness/sweep_*.cpp) compile double
+// code only and get every exact quantity they compare against through this class.
+#pragma once
+
+#include "curvebench/core/point.hpp"
+#include "curvebench/io/json_fields.hpp"
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+
+namespace curvebench::harness {
+
+/// The 50-digit reference of one case, for Dim 2 or 3. Not thread-safe (the u(s) anchors are a
+/// cache): one per case and thread.
+template <int Dim>
+class case_reference {
+ public:
+  /// Builds the spec's curve at real50 and integrates its reference length (seconds on hard cases).
+  explicit case_reference(const io::field& spec);
+  ~case_reference();
+  case_reference(const case_reference&) = delete;
+  case_reference& operator=(const case_reference&) = delete;
+
+  [[nodiscard]] double length() const;              ///< L rounded to double
+  [[nodiscard]] std::string length_text() const;    ///< L to 40 significant digits
+  [[nodiscard]] double length_error() const;        ///< the reference's own error estimate / L
+  [[nodiscard]] std::size_t speed_minima() const;   ///< interior speed minima the reference split at
+
+  /// |value - L| / L, the difference taken in 50 digits.
+  [[nodiscard]] double length_error_of(double value) const;
+
+  /// Integrates the exact s(u_j) at the parameters us (inside the domain) for s_error.
+  void set_s_parameters(std::span<const double> us);
+  /// |value - s(u_j)| / L (L in double) for the j-th parameter of set_s_parameters.
+  [[nodiscard]] double s_error(std::size_t j, double value) const;
+
+  /// The u(s) measure |s(u) - s| / L with the exact s(u) of an answer u (inside the domain: the
+  /// caller clamps) to the target s. The first answer for a target is integrated from the
+  /// reference's splits; every later one (all methods' answers lie near the same u*) from that
+  /// anchor, one short panel, unless a split lies between them. The anchors live as long as this
+  /// object. Not enough for degree-20 Runge on equispaced nodes: inaccurate answers there cross its
+  /// many splits, and each 50-digit s(u) on that curve costs seconds.
+  [[nodiscard]] double ds(double u, double s);
+
+  /// Evaluates the exact points P(u_j) at the parameters us and the curve's size (the largest
+  /// coordinate magnitude among them; 1 when all are 0) for eval_error.
+  void set_eval_parameters(std::span<const double> us);
+  /// max over j and coordinates of |p[j] - P(u_j)| / (eps(double) x size), p[j] computed at the
+  /// j-th parameter of set_eval_parameters (p.size() must equal their count).
+  [[nodiscard]] double eval_error(std::span<const point<double, Dim>> p) const;
+
+ private:
+  struct impl;
+  std::unique_ptr<impl> impl_;
+};
+
+extern template class case_reference<2>;
+extern template class case_reference<3>;
+
+}  // namespace curvebench::harness

@@ -1,0 +1,248 @@
+// The harness library: settings follow the vocabulary, run_case's records carry only vocabulary ids
+// and declared setting keys and agree with the reference, run_accuracy's exit code reports a
+// failed case, the results name the real compiler, and the pool, writers and order fit do their jobs.
+#include "harness/accuracy.hpp"
+#include "harness/order_fit.hpp"
+#include "harness/pool.hpp"
+#include "harness/setting.hpp"
+#include "harness/vocabulary.hpp"
+#include "harness/vocabulary_json.hpp"
+#include "harness/writers.hpp"
+
+#include "curvebench/arclength/result.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace hv = curvebench::harness::vocab;
+namespace fs = std::filesystem;
+using curvebench::invalid_input;
+using nlohmann::json;
+using ::testing::HasSubstr;
+
+namespace {
+
+// Tolerances, each the gate's own number for the quick suite (reports/thresholds.json), applied to
+// the two cases below (a quadratic and a cubic Bezier arch, both in the "smooth" group):
+constexpr double adaptive_1e14_max = 2e-15;  // length, adaptive_gk tol=1e-14: measured max 3.0e-16
+constexpr double gauss16_max = 1e-13;        // length, gauss n=16 on smooth cases: measured 9.4e-15
+constexpr double eval_default_max = 8;       // eval, default, in eps x size: measured max 1.8
+constexpr double newton_1e12_max = 2e-12;    // u_of_s, newton tol=1e-12: the tolerance, 2x margin
+
+/// A scratch case directory, removed at the end of the test.
+struct case_dir {
+  fs::path path;
+  explicit case_dir(const std::string& name) : path(fs::temp_directory_path() / ("curvebench_" + name)) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~case_dir() { fs::remove_all(path); }
+  void add(const std::string& name, const std::string& body) const {
+    std::ofstream(path / (name + ".json")) << R"({"name": ")" << name
+                                           << R"(", "group": "smooth", "reason": "test case", )" << body << "}";
+  }
+};
+
+const char* parabola = R"("type": "bezier", "points": [[0, 0], [1, 2], [3, 0]])";
+const char* arch = R"("type": "bezier", "points": [[0, 0], [1, 2], [3, 2], [4, 0]])";
+
+bool is_status(const std::string& s) {
+  namespace al = curvebench::arclength;
+  for (auto st : {al::result_status::converged, al::result_status::cap_hit, al::result_status::rounding_limited,
+                  al::result_status::not_guaranteed})
+    if (s == al::to_string(st)) return true;
+  return false;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+TEST(setting, formats_declared_keys_in_order) {
+  using curvebench::harness::setting;
+  EXPECT_EQ(setting(hv::methods::composite_gauss, {{"n", 3}, {"panels", 16}}), "n=3,panels=16");
+  EXPECT_EQ(setting(hv::methods::adaptive_gk, {{"tol", 1e-10}}), "tol=1e-10");
+  EXPECT_EQ(setting(hv::methods::forward_difference, {{"steps", std::size_t{256}}}), "steps=256");
+  EXPECT_EQ(setting(hv::methods::segments_adaptive, {}), "");
+}
+
+TEST(setting, rejects_undeclared_missing_and_reordered_keys) {
+  using curvebench::harness::setting;
+  try {
+    (void)setting(hv::methods::gauss, {{"panels", 4}});
+    FAIL() << "an undeclared key was accepted";
+  } catch (const invalid_input& e) {
+    EXPECT_THAT(e.what(), HasSubstr("gauss"));
+    EXPECT_THAT(e.what(), HasSubstr("\"panels\""));
+  }
+  EXPECT_THROW((void)setting(hv::methods::composite_gauss, {{"n", 3}}), invalid_input);                 // missing
+  EXPECT_THROW((void)setting(hv::methods::composite_gauss, {{"panels", 4}, {"n", 3}}), invalid_input);  // order
+  EXPECT_THROW((void)setting(hv::methods::segments_adaptive, {{"n", 3}}), invalid_input);               // none declared
+  EXPECT_THROW((void)curvebench::harness::parse_setting("n=3,panels"), invalid_input);
+}
+
+TEST(vocabulary, json_lists_every_entry_with_its_fields) {
+  const json v = curvebench::harness::vocabulary_json();
+  ASSERT_EQ(v["methods"].size(), std::size(hv::all_methods));
+  ASSERT_EQ(v["quantities"].size(), std::size(hv::all_quantities));
+  ASSERT_EQ(v["peers"].size(), std::size(hv::all_peers));
+  ASSERT_EQ(v["operations"].size(), std::size(hv::all_operations));
+  ASSERT_EQ(v["counters"].size(), std::size(hv::all_counters));
+  std::set<std::string> ids;
+  for (const auto& m : v["methods"]) {
+    EXPECT_TRUE(ids.insert(m["id"].get<std::string>()).second) << "duplicate method id " << m["id"];
+    EXPECT_FALSE(m["quantities"].empty()) << m["id"];
+    for (const auto& q : m["quantities"]) EXPECT_NE(hv::find_quantity(q.get<std::string>()), nullptr) << q;
+  }
+  const json& cg = v["methods"][1];
+  EXPECT_EQ(cg["id"], "composite_gauss");
+  EXPECT_EQ(cg["settings"], json::array({"n", "panels"}));
+  EXPECT_EQ(cg["theory"], 6.0);
+  EXPECT_EQ(v["counters"][0], json({{"name", "evaluations"}, {"kind", "count"},
+                                    {"doc", std::string(hv::counters::evaluations.doc)}}));
+}
+
+TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses) {
+  const case_dir dir("run_case");
+  dir.add("arch", arch);
+  const auto cases = curvebench::harness::load_cases(dir.path.string());
+  ASSERT_EQ(cases.size(), 1u);
+  const json out = curvebench::harness::run_case(cases[0], true);
+  std::set<std::pair<std::string, std::string>> seen;  // (quantity, method)
+  for (const auto& r : out["records"]) {
+    const std::string q = r["quantity"], method = r["method"], setting = r["setting"], status = r["status"];
+    SCOPED_TRACE(q + " " + method + " " + setting);
+    EXPECT_EQ(r["case"], "arch");
+    ASSERT_NE(hv::find_quantity(q), nullptr);
+    EXPECT_TRUE(is_status(status));
+    seen.emplace(q, method);
+    if (q == hv::quantities::eval.id) {  // the algorithms of the family: no setting, no estimate
+      EXPECT_EQ(setting, "");
+      EXPECT_EQ(status, "not_guaranteed");
+      EXPECT_TRUE(r["estimate"].is_null());
+      continue;
+    }
+    const hv::method* m = hv::find_method(method);
+    ASSERT_NE(m, nullptr) << "method not in the vocabulary";
+    EXPECT_TRUE(hv::lists(m->quantities, q)) << "method declares no " << q << " records";
+    std::string keys;
+    for (const auto& [key, value] : curvebench::harness::parse_setting(setting)) {
+      EXPECT_TRUE(hv::lists(m->settings, key)) << "undeclared setting key " << key;
+      EXPECT_FALSE(value.empty());
+      keys += (keys.empty() ? "" : " ") + key;
+    }
+    EXPECT_EQ(keys, m->settings) << "every declared key, in order";
+    EXPECT_TRUE(r["error"].is_number());
+  }
+  // Every method of the vocabulary produced records for each of its quantities.
+  for (const hv::method* m : hv::all_methods) {
+    for (const hv::quantity* q : hv::all_quantities) {
+      if (hv::lists(m->quantities, q->id)) {
+        EXPECT_TRUE(seen.count({std::string(q->id), std::string(m->id)})) << q->id << " " << m->id;
+      }
+    }
+  }
+  for (const char* algorithm : {"de_casteljau", "bernstein_sum", "horner"})
+    EXPECT_TRUE(seen.count({"eval", algorithm})) << algorithm;
+  // Orders carry the vocabulary's theory order of their method.
+  ASSERT_FALSE(out["orders"].empty());
+  for (const auto& o : out["orders"]) {
+    const hv::method* m = hv::find_method(o["method"].get<std::string>());
+    ASSERT_NE(m, nullptr);
+    EXPECT_GT(m->theory, 0);
+    EXPECT_EQ(o["theory"].get<double>(), m->theory);
+  }
+  // The values agree with the 50-digit reference as the gate requires.
+  const auto record = [&](const std::string& q, const std::string& method, const std::string& setting) {
+    for (const auto& r : out["records"])
+      if (r["quantity"] == q && r["method"] == method && r["setting"] == setting) return r;
+    ADD_FAILURE() << "no record " << q << " " << method << " " << setting;
+    return json();
+  };
+  EXPECT_LE(record("length", "adaptive_gk", "tol=1e-14")["error"].get<double>(), adaptive_1e14_max);
+  EXPECT_LE(record("length", "gauss", "n=16")["error"].get<double>(), gauss16_max);
+  EXPECT_LE(record("eval", "default", "")["error"].get<double>(), eval_default_max);
+  EXPECT_LE(record("u_of_s", "newton", "tol=1e-12")["error"].get<double>(), newton_1e12_max);
+  EXPECT_TRUE(record("length", "composite_gauss", "n=3,panels=4").is_object());
+  EXPECT_EQ(out["case"]["family"], "bezier");
+}
+
+TEST(run_accuracy, returns_1_and_leaves_out_a_failed_case_0_when_all_run) {
+  const case_dir dir("run_accuracy");
+  dir.add("parabola", parabola);
+  dir.add("line_1d", R"("type": "polyline", "points": [[0], [1], [3]])");  // loads, but the runner takes 2D/3D only
+  curvebench::harness::accuracy_options o;
+  o.quick = true;
+  o.cases_dir = dir.path.string();
+  o.out = (dir.path / "out" / "results.json").string();
+  o.threads = 2;
+  EXPECT_EQ(curvebench::harness::run_accuracy(o), 1);
+  json r = json::parse(read(o.out));
+  ASSERT_EQ(r["cases"].size(), 1u);
+  EXPECT_EQ(r["cases"][0]["name"], "parabola");
+  EXPECT_EQ(r["suite"]["cases"], 2);
+  for (const auto& rec : r["records"]) EXPECT_EQ(rec["case"], "parabola");
+  EXPECT_EQ(r["context"]["compiler"], curvebench::harness::compiler_id());
+  // The CSV beside it quotes the settings that hold a comma.
+  const std::string csv = read(dir.path / "out" / "results.csv");
+  EXPECT_THAT(csv, HasSubstr(",length,composite_gauss,\"n=3,panels=4\","));
+
+  o.only = "parabola";
+  EXPECT_EQ(curvebench::harness::run_accuracy(o), 0);
+  r = json::parse(read(o.out));
+  EXPECT_EQ(r["suite"]["cases"], 1);
+  o.only = "no_such_case";
+  EXPECT_THROW((void)curvebench::harness::run_accuracy(o), invalid_input);
+}
+
+TEST(compiler_id, names_the_compiler_that_built_the_harness) {
+  // The harness and this test are built by the same compiler.
+  const std::string id = curvebench::harness::compiler_id();
+#if defined(__clang__)
+  EXPECT_EQ(id.rfind("clang " + std::to_string(__clang_major__) + ".", 0), 0u) << id;
+#elif defined(__GNUC__)
+  EXPECT_EQ(id.rfind("gcc " + std::to_string(__GNUC__) + ".", 0), 0u) << id;
+#endif
+  EXPECT_THAT(id, ::testing::Not(HasSubstr("g++")));
+}
+
+TEST(fit_order, recovers_a_power_law_and_needs_three_points) {
+  using curvebench::harness::fit_order;
+  std::vector<std::pair<double, double>> series;
+  for (double cost : {10.0, 20.0, 40.0, 80.0, 1e6}) series.emplace_back(cost, 0.5 * std::pow(cost, -4.0));
+  // The point at cost 1e6 (error 5e-25) is below the floor 1e-12 and left out; the slope is exact.
+  EXPECT_NEAR(fit_order(series, 1e-12, 1e-2), 4.0, 1e-12);
+  series.resize(2);
+  EXPECT_TRUE(std::isnan(fit_order(series, 1e-12, 1e-2)));
+}
+
+TEST(pool, runs_every_job_once_and_rethrows_a_failure) {
+  std::vector<std::size_t> order{3, 0, 2, 1, 4};
+  std::vector<std::atomic<int>> runs(order.size());
+  std::vector<std::size_t> finished;
+  curvebench::harness::run_pool(
+      order, 3, [&](std::size_t i) { ++runs[i]; },
+      [&](std::size_t, std::size_t k) { finished.push_back(k); });
+  for (const auto& r : runs) EXPECT_EQ(r.load(), 1);
+  EXPECT_EQ(finished, (std::vector<std::size_t>{1, 2, 3, 4, 5}));
+  EXPECT_THROW(curvebench::harness::run_pool(
+                   order, 2, [](std::size_t i) { if (i == 2) throw std::runtime_error("job 2"); },
+                   [](std::size_t, std::size_t) {}),
+               std::runtime_error);
+  EXPECT_EQ(curvebench::harness::pool_threads(0, 1), 1u);
+  EXPECT_EQ(curvebench::harness::pool_threads(8, 3), 3u);
+}
