@@ -26,7 +26,9 @@ nlohmann::json vocabulary_json() {
                    {"methods", nlohmann::json::array()},
                    {"peers", nlohmann::json::array()},
                    {"operations", nlohmann::json::array()},
-                   {"counters", nlohmann::json::array()}};
+                   {"counters", nlohmann::json::array()},
+                   {"algorithms", nlohmann::json::array()},
+                   {"variant_keys", nlohmann::json::array()}};
   for (const vocab::quantity* q : vocab::all_quantities) v["quantities"].push_back({{"id", str(q->id)}, {"doc", str(q->doc)}});
   for (const vocab::method* m : vocab::all_methods)
     v["methods"].push_back({{"id", str(m->id)},
@@ -40,6 +42,10 @@ nlohmann::json vocabulary_json() {
     v["operations"].push_back({{"id", str(o->id)}, {"doc", str(o->doc)}});
   for (const vocab::counter* c : vocab::all_counters)
     v["counters"].push_back({{"name", str(c->name)}, {"kind", str(c->kind)}, {"doc", str(c->doc)}});
+  for (const vocab::algorithm* a : vocab::all_algorithms)
+    v["algorithms"].push_back({{"id", str(a->id)}, {"settings", words(a->settings)}, {"doc", str(a->doc)}});
+  for (const vocab::variant_key* k : vocab::all_variant_keys)
+    v["variant_keys"].push_back({{"id", str(k->id)}, {"values", words(k->values)}, {"doc", str(k->doc)}});
   return v;
 }
 
