@@ -4,7 +4,7 @@
 // spec parser (io/spec.hpp), `curvebench list`, the accuracy runner and the README's spec section
 // (families_markdown(), checked by tests/test_registry.cpp) all read it.
 //
-// Adding a spec type: its entry file, and one line in `all_families` below.
+// Adding a spec type: its entry file, its #include below and its name in `all_families`.
 //
 // Compile-time access: for_each_family_type(f) calls f(std::type_identity<Entry>{}) per entry.
 // Runtime access: families() / for_each_family(f) / find_family(type) give family_descriptor's;
