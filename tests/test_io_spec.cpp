@@ -100,6 +100,15 @@ TEST(io_spec, each_type_builds_the_family) {
                                 "segments": [[[0,0],[1,1],[2,0]], [[2,0],[3,-1],[3,2],[4,0]]]})"),
                     cb::composite_bezier<double, 2>(std::span<const cb::point_list<double, 2>>(segs),
                                                     std::span<const double>(seg_knots)));
+  expect_same_curve(make<2>(R"({"type": "conic", "points": [[0,0],[1,1],[2,0]], "w": 0.5})"),
+                    cb::conic<double, 2>(p2(0, 0), p2(1, 1), p2(2, 0), 0.5));
+  expect_same_curve(make<2>(R"({"type": "circle", "center": [1, 2], "radius": 3, "control": 7})"),
+                    cb::nurbs_circle_7<double>(p2(1, 2), 3.0));
+  expect_same_curve(make<2>(R"({"type": "bspline", "degree": 3, "knot_vector": "periodic",
+                                "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::periodic_bspline<double, 2>(4, std::span<const p2>(pts)));
+  expect_same_curve(make<2>(R"({"type": "bezier", "domain": [2, 5], "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+                    cb::bezier<double, 2>(std::span<const p2>(pts), cb::interval<double>{2, 5}));
   // 3D, and the metadata fields of a case file
   const auto helix = make<3>(R"({"type": "catmull_rom", "name": "h", "group": "smooth", "reason": "r",
                                  "points": [[1,0,0],[0,1,0.5],[-1,0,1],[0,-1,1.5],[1,0,2]]})");
@@ -182,5 +191,11 @@ TEST(io_spec, malformed_specs_name_the_field) {
               HasSubstr("spec.points[1]: expected an array of 2 numbers, got [1,1,1]"));
   EXPECT_THAT(error_of(R"({"type": "circle", "center": [0, 0], "radius": 1, "control": 8})"),
               HasSubstr("spec.control: 8 is not allowed (9 or 7 control points)"));
+  EXPECT_THAT(error_of(R"({"type": "conic", "points": [[0,0],[1,1]], "w": 1})"),
+              HasSubstr("spec.points: a conic has exactly 3 points, got 2"));
+  // Arcs and circles are resolved into rational data before they are built: a misspelled field
+  // must be refused before that drops it.
+  EXPECT_THAT(error_of(R"({"type": "arc", "center": [0, 0], "radius": 2, "start": 0, "sweep": 1, "swep": 2})"),
+              HasSubstr("spec: unknown field \"swep\" for type \"arc\""));
   EXPECT_THAT(error_of(R"(["not", "an", "object"])"), HasSubstr("spec: expected an object"));
 }
