@@ -96,10 +96,13 @@ TEST(gate, rejects_a_rule_naming_an_id_outside_the_vocabulary) {
               HasSubstr("thresholds rule 0: method \"newton\" has no length records"));
   EXPECT_THAT(message(R"({"rules": [{"method": "de_casteljau", "max_error": 1}]})"),
               HasSubstr("rule 0: method \"de_casteljau\" is not a method"));
-  // For eval any algorithm is accepted (the families' own names); "*" always.
+  // For eval the methods are "default" and the algorithms of the family registry; "*" always.
   EXPECT_EQ(message(R"({"rules": [{"quantity": "eval", "method": "de_casteljau", "max_error": 8},
+                                   {"quantity": "eval", "method": "default", "max_error": 8},
                                    {"quantity": "*", "method": "*", "honest": true}]})"),
             "accepted");
+  EXPECT_THAT(message(R"({"rules": [{"quantity": "eval", "method": "de_casteljeau", "max_error": 8}]})"),
+              HasSubstr("thresholds rule 0: method \"de_casteljeau\" is not an evaluation algorithm of any family"));
 }
 
 TEST(gate, the_checked_in_thresholds_name_vocabulary_ids_only) {

@@ -10,6 +10,7 @@
 #include <gmock/gmock.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -91,6 +92,25 @@ TEST(registry, every_family_has_a_case_file_and_every_case_a_family) {
     EXPECT_TRUE(case_types.contains(std::string(d.type)))
         << "no case under bench/cases has \"type\": \"" << d.type << "\" (add bench/cases/<name>.json)";
   });
+}
+
+TEST(registry, every_family_appears_in_curvebench_list) {
+#ifndef CURVEBENCH_TOOL
+  GTEST_SKIP() << "the curvebench tool is not built in this configuration (CURVEBENCH_BUILD_BENCH=OFF)";
+#else
+  const std::string command = std::string(CURVEBENCH_TOOL) + " list families";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr) << command;
+  std::string out;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+  ASSERT_EQ(pclose(pipe), 0) << command << " failed:\n" << out;
+  io::for_each_family([&](const io::family_descriptor& d) {
+    EXPECT_THAT(out, HasSubstr("  " + std::string(d.type) + " ")) << "curvebench list families misses " << d.type;
+    EXPECT_THAT(out, HasSubstr(std::string(d.summary))) << d.type;
+    EXPECT_THAT(out, HasSubstr(io::fields_line(d))) << d.type;
+  });
+#endif
 }
 
 TEST(registry, names_are_unique_and_spec_types_follow_the_registry) {

@@ -16,13 +16,14 @@
 // A rule that matches no record is itself a breach: a gate must not pass because a method or a
 // case group disappeared. A rule naming a quantity or method that is not in the vocabulary is an
 // error (invalid_input naming the rule's index and the value): a misspelt or renamed id must not
-// silently turn into a rule that matches nothing. For quantity "eval" any method is accepted (the
-// evaluation algorithms are the families' own).
+// silently turn into a rule that matches nothing. For quantity "eval" the methods are "default" and
+// the evaluation algorithms the families offer in the family registry (io/registry.hpp).
 #pragma once
 
 #include "harness/vocabulary.hpp"
 
 #include "curvebench/core/error.hpp"
+#include "curvebench/io/registry.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -62,7 +63,19 @@ inline void check_rule_ids(const nlohmann::json& rule, std::size_t index) {
   const std::string method = rule.value("method", std::string("*"));
   if (quantity != "*" && !vocab::find_quantity(quantity))
     throw invalid_input(where + "quantity \"" + quantity + "\" is not a quantity of the vocabulary");
-  if (method == "*" || quantity == vocab::quantities::eval.id) return;
+  if (method == "*") return;
+  if (quantity == vocab::quantities::eval.id) {
+    if (method == vocab::methods::eval_default.id) return;
+    std::string known;
+    for (const io::family_descriptor& f : io::families())
+      for (std::string_view a : f.algorithms) {
+        if (a == method) return;
+        if (known.find(std::string(a) + ",") == std::string::npos) known += std::string(a) + ",";
+      }
+    known.pop_back();
+    throw invalid_input(where + "method \"" + method + "\" is not an evaluation algorithm of any family (default, " +
+                        known + ")");
+  }
   const vocab::method* m = vocab::find_method(method);
   if (!m)
     throw invalid_input(where + "method \"" + method + "\" is not a method of the vocabulary (curvebench list methods)");

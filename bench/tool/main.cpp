@@ -255,7 +255,9 @@ int main(int argc, char** argv) {
       if (list_json) throw cb::invalid_input("list " + list_what + " --json: only the vocabulary is listed as JSON");
       if (list_what == "families" || list_what == "all") {
         std::cout << "families (spec types):\n";
-        for (const auto& t : cb::io::spec_types()) std::cout << "  " << std::left << std::setw(18) << t.type << t.fields << "\n";
+        for (const cb::io::family_descriptor& f : cb::io::families())
+          std::cout << "  " << std::left << std::setw(18) << f.type << f.summary << "\n"
+                    << "  " << std::setw(18) << "" << "fields: " << cb::io::fields_line(f) << "\n";
       }
       if (list_what == "methods" || list_what == "all") {
         std::cout << "methods (length --method takes those with length records; sample --method linear_table, "
