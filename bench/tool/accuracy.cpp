@@ -1,13 +1,13 @@
 // The accuracy runner (see harness/accuracy.hpp). This is the one translation unit that
 // instantiates every family at 50 digits; keep it that way, it is the slow one to compile.
 #include "harness/accuracy.hpp"
+#include "harness/audit_table.hpp"
 #include "harness/sweep.hpp"
 
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/arclength/parameterization.hpp"
-#include "curvebench/curves/property_audit.hpp"
 #include "curvebench/io/spec.hpp"
 #include "curvebench/reference/arc_length.hpp"
 #include "curvebench/reference/multiprecision.hpp"
@@ -325,11 +325,11 @@ json audit(const case_info& info) {
   if (hermite && !spec.has("slopes")) return {};
   point_list<double, 2> items = spec.member("points").points<double, 2>();
   const std::size_t n = items.size();
-  std::vector<control_role> roles(n, control_role::point);
+  std::vector<analysis::control_role> roles(n, analysis::control_role::point);
   if (hermite) {
     const point_list<double, 2> slopes = spec.member("slopes").points<double, 2>();
     items.insert(items.end(), slopes.begin(), slopes.end());
-    roles.resize(items.size(), control_role::tangent);
+    roles.resize(items.size(), analysis::control_role::tangent);
   }
   const auto build = [&](std::span<const point<double, 2>> it) {
     json s = info.spec;
@@ -338,7 +338,7 @@ json audit(const case_info& info) {
     return io::curve_from_spec<double, 2>(io::root(s, info.name));
   };
   try {
-    const auto r = audit_properties<double, 2>(build, std::span<const point<double, 2>>(items), roles);
+    const auto r = analysis::audit_properties<double, 2>(build, std::span<const point<double, 2>>(items), roles);
     return audit_markdown_row(info.name + " (" + type + ")", r);
   } catch (const invalid_input& e) {
     // Some families constrain their data (a periodic spline's last point equals its first), so
