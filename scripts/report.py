@@ -400,7 +400,7 @@ def main():
         md.append("")
         md.append(table(["Cubic", "Interpolate?", "Local?", "Continuity", "Affine?", "Convex hull?", "VD?"],
                         SEED_001_TABLE))
-        md += ["", "Measured by `curvebench::audit_properties` on each 2D case of the suite (the family rebuilt "
+        md += ["", "Measured by `curvebench::analysis::audit_properties` on each 2D case of the suite (the family rebuilt "
                "from perturbed control data; see docs/properties.md for how each column is measured and why "
                "the answers differ from the seed's):", ""]
         md.append("| Case (family) | Interpolates | Local control | Continuity | Affine invariant | Convex hull | "

@@ -36,7 +36,7 @@
 #include "curvebench/curves/polyline.hpp"
 #include "curvebench/curves/rational_bezier.hpp"
 
-#include "curvebench/curves/property_audit.hpp"
+#include "curvebench/analysis/property_audit.hpp"
 
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
