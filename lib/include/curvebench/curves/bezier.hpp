@@ -126,7 +126,10 @@ class bezier {
   void evaluate(std::span<const Real> us, std::span<point_type> out, bezier_algorithm algorithm,
                 int order = 0) const {
     validate::same_count("out", out.size(), "us", us.size());
-    for (std::size_t i = 0; i < us.size(); ++i) out[i] = derivative(us[i], order, algorithm);
+    for (std::size_t i = 0; i < us.size(); ++i) {
+      check_parameter(us[i], domain_, "us", i);
+      out[i] = derivative(us[i], order, algorithm);
+    }
   }
 
   /// d^order P / du^order by de Casteljau on the precomputed hodograph control points.

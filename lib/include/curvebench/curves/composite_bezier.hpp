@@ -120,7 +120,10 @@ class composite_bezier {
     for (std::size_t i = 0; i < us.size(); ++i) {
       const Real& u = us[i];
       const bool inside = knots_[seg] <= u && (u < knots_[seg + 1] || (seg == last && u <= knots_[seg + 1]));
-      if (!inside) seg = segment_index(u);
+      if (!inside) {
+        check_parameter(u, domain(), "us", i);  // NaN is never inside: it ends here
+        seg = segment_index(u);
+      }
       out[i] = segments_[seg].derivative(u, order);
     }
   }

@@ -174,29 +174,32 @@ class piecewise_cubic {
     validate::derivative_order(order);
     const interval<Real> d = domain();
     for (std::size_t k = 0; k < us.size(); ++k) {
-      check_parameter(us[k], d);
+      check_parameter(us[k], d, "us", k);
       const std::size_t i = locate(us[k]);
       out[k] = eval_segment(i, (us[k] - knots_[i]) / h_[i], order, algorithm);
     }
   }
 
   /// As evaluate_batch for non-decreasing parameters: walks the segments forward, hoisting each
-  /// segment's data. Throws invalid_input at the first us[k] < us[k-1] (out[0..k) already written).
+  /// segment's data. Every parameter is checked (out[0..k) is already written when us[k] throws):
+  /// std::domain_error for one above the domain or NaN, invalid_input for us[k] < us[k-1]. Two
+  /// comparisons per parameter: us[0] >= u0 and non-decreasing imply the lower bound for the rest.
   void evaluate_sorted(std::span<const Real> us, std::span<point_type> out, int order = 0,
                        cubic_algorithm algorithm = cubic_algorithm::power) const {
     validate::same_count("out", out.size(), "us", us.size());
     validate::derivative_order(order);
     if (us.empty()) return;
     const interval<Real> d = domain();
-    check_parameter(us.front(), d);
+    check_parameter(us.front(), d, "us", 0);
     std::size_t i = locate(us.front());
     const std::size_t last = segment_count() - 1;
     for (std::size_t k = 0; k < us.size(); ++k) {
       const Real& u = us[k];
+      // Written so that NaN fails it (every comparison with NaN is false).
+      if (!(u <= d.hi)) check_parameter(u, d, "us", k);
       if (k > 0 && u < us[k - 1])
         validate::fail("us must be non-decreasing for evaluate_sorted: " + validate::indexed("us", k) + " = " +
                        to_text(u) + " < " + validate::indexed("us", k - 1) + " = " + to_text(us[k - 1]));
-      if (u > d.hi) check_parameter(u, d);
       while (i < last && !(u < knots_[i + 1])) ++i;
       if (algorithm == cubic_algorithm::power && order == 0) {
         // The hot loop of the fast path: coefficients of segment i hoisted, Horner in t.
