@@ -85,7 +85,7 @@ struct gauss_kronrod_rule {
     p.kronrod = k * half;
     p.gauss = g * half;
     p.magnitude = kabs * abs(half);
-    p.rounding_floor = Real(50) * epsilon<Real>() * p.magnitude;
+    p.rounding_floor = detail::rounding_floor(p.magnitude);
     p.evaluations = nodes.size();
     p.error_estimate = abs(p.kronrod - p.gauss) + p.rounding_floor;
     return p;
@@ -114,7 +114,7 @@ struct gauss_kronrod_rule {
     p.kronrod = k * half;
     p.gauss = g * half;
     p.magnitude = kabs * abs(half);
-    p.rounding_floor = Real(50) * epsilon<Real>() * p.magnitude;
+    p.rounding_floor = detail::rounding_floor(p.magnitude);
     p.evaluations = nodes.size();
     asc *= abs(half);
     Real diff = abs(p.kronrod - p.gauss);
@@ -252,7 +252,7 @@ template <class Real>
 template <class Real>
 struct adaptive_options {
   Real absolute_tolerance{0};
-  Real relative_tolerance{Real(128) * epsilon<Real>()};  ///< above the 50 eps rounding floor of the panels
+  Real relative_tolerance{Real(128) * epsilon<Real>()};  ///< above the panels' rounding floor (detail/roundoff.hpp)
   std::size_t max_intervals{4000};  ///< cap on the number of panels (global) / 2^max_depth (recursive)
   int gauss_points{7};              ///< n of the G_n - K_{2n+1} pair
   error_model model{error_model::gauss_difference};

@@ -109,7 +109,7 @@ quadrature_result<Real> fixed_panel(F&& f, const Real& a, const Real& b, const g
   r.evaluations += 6 * rule.nodes.size();
   r.value = quarters;
   // The speed is >= 0, so |integral| bounds integral |f|: the floor covers the rounding of f and the sums.
-  const Real floor = Real(50) * epsilon<Real>() * abs(quarters);
+  const Real floor = rounding_floor(abs(quarters));
   const Real d1 = abs(whole - halves), d2 = abs(halves - quarters);
   r.error_estimate = d2 + floor;
   // On a smooth speed the rule converges at order 2n >= 4 (n >= 2) once the panels resolve it:

@@ -86,7 +86,7 @@ class segment_lengths {
       cumulative_error_.push_back(err_sum + Real(4) * epsilon<Real>() * abs(cum));
       // One-sided end speeds (just inside the segment) for the initial guess of inversions.
       const Real w = bp[i + 1] - bp[i];
-      const Real d = Real(16) * epsilon<Real>() * (abs(bp[i]) + abs(bp[i + 1]));
+      const Real d = detail::knot_offset(Real(abs(bp[i]) + abs(bp[i + 1])));
       start_speed_.push_back(w > Real(2) * d ? speed(c, Real(bp[i] + d)) : Real(0));
       end_speed_.push_back(w > Real(2) * d ? speed(c, Real(bp[i + 1] - d)) : Real(0));
       total_.evaluations += 2;
@@ -95,7 +95,7 @@ class segment_lengths {
     total_.error_estimate = cumulative_error_.back();
   }
 
-  /// G7-K15 to 128 eps relative per segment (above the 50 eps rounding floor), at most 4000
+  /// G7-K15 to 128 eps relative per segment (above the panels' rounding floor), at most 4000
   /// panels per segment.
   [[nodiscard]] static adaptive_options<Real> default_options() { return adaptive_options<Real>{}; }
 

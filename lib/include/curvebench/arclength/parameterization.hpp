@@ -396,18 +396,18 @@ class parameterization {
   }
 
   // The knots whose arc-length position is known from the segment lengths, with one-sided speeds
-  // (evaluated 16 eps inside each neighbouring segment, as segment_lengths does). A knot closer
-  // than 64 eps L to the previous one in s (a zero-length segment) is dropped: u(s) is ambiguous
+  // (evaluated detail::knot_offset inside each neighbouring segment, as segment_lengths does). A
+  // knot closer than detail::knot_gap_eps L to the previous one in s (a zero-length segment) is dropped: u(s) is ambiguous
   // there, and the table keeps the first.
   void collect_knots() {
     using std::abs;
     const auto p = segments_.parameters();
     const auto cum = segments_.cumulative();
-    const Real gap = Real(64) * epsilon<Real>() * length();
+    const Real gap = Real(detail::knot_gap_eps) * epsilon<Real>() * length();
     for (std::size_t i = 1; i + 1 < p.size(); ++i) {
       if (!(cum[i] > gap && cum[i] < length() - gap)) continue;
       if (!knots_.empty() && !(cum[i] - knots_.back().s > gap)) continue;
-      const Real d = Real(16) * epsilon<Real>() * (abs(p[i - 1]) + abs(p[i + 1]));
+      const Real d = detail::knot_offset(Real(abs(p[i - 1]) + abs(p[i + 1])));
       const Real left = p[i] - p[i - 1] > Real(2) * d ? speed(curve_, Real(p[i] - d)) : speed(curve_, p[i]);
       const Real right = p[i + 1] - p[i] > Real(2) * d ? speed(curve_, Real(p[i] + d)) : speed(curve_, p[i]);
       build_evaluations_ += 2;
@@ -416,11 +416,11 @@ class parameterization {
   }
 
   // The Hermite table on the node set (s_j = j ds, u_j, |P'(u_j)|), cells split at the knots
-  // strictly inside them (64 eps L away from the cell's ends).
+  // strictly inside them (detail::knot_gap_eps L away from the cell's ends).
   [[nodiscard]] hermite_table make_hermite(const std::vector<Real>& us, const std::vector<Real>& ss,
                                            const std::vector<Real>& sp) const {
     const std::size_t m = us.size() - 1;
-    const Real gap = Real(64) * epsilon<Real>() * length();
+    const Real gap = Real(detail::knot_gap_eps) * epsilon<Real>() * length();
     hermite_table h;
     h.first.reserve(m + 1);
     h.pieces.reserve(m + knots_.size());
