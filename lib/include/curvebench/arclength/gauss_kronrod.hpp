@@ -343,18 +343,16 @@ template <class Real, class F>
   }
   std::make_heap(heap.begin(), heap.end(), less);
   // Exact-as-possible totals: the value by Neumaier's compensated summation (error <= 2 eps |sum|
-  // + O(n eps^2) for any number of panels), estimates and floors by plain sums.
-  auto totals = [&](Real& value, Real& err, Real& floor) {
+  // + O(n eps^2) for any number of panels), estimates by a plain sum.
+  auto totals = [&](Real& value, Real& err) {
     value = Real(0);
     err = Real(0);
-    floor = Real(0);
     Real comp(0);
     auto add = [&](const detail::heap_panel<Real>& h) {
       const Real t = value + h.r.kronrod;
       comp += abs(value) >= abs(h.r.kronrod) ? (value - t) + h.r.kronrod : (h.r.kronrod - t) + value;
       value = t;
       err += h.r.error_estimate;
-      floor += h.r.rounding_floor;
     };
     for (const auto& h : heap) add(h);
     for (const auto& h : frozen) add(h);
@@ -363,12 +361,12 @@ template <class Real, class F>
   // The compensated sum of the panels rounds by at most ~2 eps |value|: part of every estimate.
   auto estimate = [&](const Real& e, const Real& v) { return e + Real(4) * epsilon<Real>() * abs(v); };
   auto target = [&](const Real& v) { return max(opt.absolute_tolerance, opt.relative_tolerance * abs(v)); };
-  Real value, err, floor;
-  totals(value, err, floor);
+  Real value, err;
+  totals(value, err);
   out.status = result_status::converged;
   while (true) {
     if (estimate(err, value) <= target(value)) {
-      totals(value, err, floor);  // confirm with exact sums (the running ones drift by rounding)
+      totals(value, err);  // confirm with exact sums (the running ones drift by rounding)
       if (estimate(err, value) <= target(value)) break;
     }
     if (heap.empty()) {
@@ -406,7 +404,7 @@ template <class Real, class F>
     heap.push_back(right);
     std::push_heap(heap.begin(), heap.end(), less);
   }
-  totals(value, err, floor);
+  totals(value, err);
   out.value = value;
   out.error_estimate = estimate(err, value);
   return out;

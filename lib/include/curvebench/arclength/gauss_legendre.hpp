@@ -118,12 +118,6 @@ template <class Real>
   return detail::rule_cache<gauss_legendre_rule<Real>>::get(n, &make_gauss_legendre<Real>);
 }
 
-/// The n-point rule on [a, b] (cached rule).
-template <class Real, class F>
-[[nodiscard]] Real integrate_gauss_legendre(F&& f, const Real& a, const Real& b, int n) {
-  return gauss_legendre<Real>(n).integrate(f, a, b);
-}
-
 /// The composite rule: [a, b] cut into `panels` equal panels, the rule on each. Throws
 /// invalid_input when panels < 1.
 template <class Real, class F>
