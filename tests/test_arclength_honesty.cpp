@@ -52,15 +52,20 @@ R reference_length(const cb::bezier<R, 2>& c) {
   return r.length();
 }
 
-// converged => |value - L| <= estimate; otherwise the status says so and, for not_guaranteed, the
-// estimate is +inf.
+// Every status but not_guaranteed promises a bound (arclength/result.hpp: cap_hit's estimate is
+// "still meant as a bound", rounding_limited's "includes that floor"), so |value - L| <= estimate
+// for converged, cap_hit and rounding_limited alike; not_guaranteed must carry +inf.
 ::testing::AssertionResult honest(const al::quadrature_result<double>& r, const R& length) {
+  if (r.status == al::result_status::not_guaranteed) {
+    if (!std::isinf(r.error_estimate))
+      return ::testing::AssertionFailure() << "not_guaranteed with a finite estimate " << r.error_estimate;
+    return ::testing::AssertionSuccess();
+  }
   const R err = abs(R(r.value) - length);
-  if (r.status == al::result_status::converged && !(err <= R(r.error_estimate)))
-    return ::testing::AssertionFailure() << "converged with estimate " << r.error_estimate / static_cast<double>(length)
-                                         << " < true error " << static_cast<double>(err / length) << " (relative)";
-  if (r.status == al::result_status::not_guaranteed && !std::isinf(r.error_estimate))
-    return ::testing::AssertionFailure() << "not_guaranteed with a finite estimate " << r.error_estimate;
+  if (!(err <= R(r.error_estimate)))
+    return ::testing::AssertionFailure() << al::to_string(r.status) << " with estimate "
+                                         << r.error_estimate / static_cast<double>(length) << " < true error "
+                                         << static_cast<double>(err / length) << " (relative)";
   return ::testing::AssertionSuccess();
 }
 
@@ -99,16 +104,27 @@ TEST(arclength_honesty, fixed_gauss_nested_on_the_exact_cusp_case) {
 }
 
 // The guard is a rule, not a patch for one curve: dips from mild to deep, every n, the partial
-// length too.
+// length too. Honest is not enough (an answer of not_guaranteed for everything is honest): on the
+// mild dips (0.7, 0.9: a shallow speed minimum, branch points far from the real axis) every rule
+// with n >= 5 must come back with a bound. Measured: there n = 3 and n >= 5 are converged, n = 1, 2
+// and 4 not_guaranteed (their nested differences do not show the order 2n), and no n has a bound
+// from dip 0.5 down (the branch points are within 1/8 of a piece of the minimum).
 TEST(arclength_honesty, fixed_gauss_nested_over_dip_depths) {
-  for (double dip : {0.3, 0.05, 0.01, 1e-4}) {
+  for (double dip : {0.9, 0.7, 0.3, 0.05, 0.01, 1e-4}) {
     SCOPED_TRACE("dip = " + std::to_string(dip));
     const auto c = cusp_family<double>(dip);
     const R length = reference_length(cusp_family<R>(dip));
+    const bool mild = dip >= 0.7;
     for (int n = 1; n <= 20; ++n) {
       SCOPED_TRACE("n = " + std::to_string(n));
-      EXPECT_TRUE(honest(al::gauss_length(c, n, al::fixed_estimate::nested), length));
-      EXPECT_TRUE(honest(al::gauss_length(c, 0.0, 1.0, al::gauss_legendre<double>(n), al::fixed_estimate::nested), length));
+      const auto whole = al::gauss_length(c, n, al::fixed_estimate::nested);
+      const auto partial = al::gauss_length(c, 0.0, 1.0, al::gauss_legendre<double>(n), al::fixed_estimate::nested);
+      EXPECT_TRUE(honest(whole, length));
+      EXPECT_TRUE(honest(partial, length));
+      if (mild && n >= 5) {
+        EXPECT_EQ(whole.status, al::result_status::converged);
+        EXPECT_EQ(partial.status, al::result_status::converged);
+      }
     }
   }
 }
@@ -146,7 +162,9 @@ TEST(arclength_honesty, adaptive_gauss_kronrod_on_the_near_cusp_case) {
   EXPECT_TRUE(honest(seg.total(), length));
 }
 
-// The grading is a rule: dips from mild to very deep, coarse to fine tolerances.
+// The grading is a rule: dips from mild to very deep, coarse to fine tolerances. Every one of the
+// 30 results must also be converged (measured: all are, down to dip 1e-6 at 1e-12), so that an
+// integrator answering not_guaranteed, honest but useless, fails here.
 TEST(arclength_honesty, adaptive_gauss_kronrod_over_dip_depths) {
   for (double dip : {0.3, 0.05, 0.01, 1e-4, 1e-6}) {
     SCOPED_TRACE("dip = " + std::to_string(dip));
@@ -156,7 +174,9 @@ TEST(arclength_honesty, adaptive_gauss_kronrod_over_dip_depths) {
       SCOPED_TRACE("tol = " + std::to_string(tol));
       al::adaptive_options<double> o;
       o.relative_tolerance = tol;
-      EXPECT_TRUE(honest(al::adaptive_length(c, o), length));
+      const auto r = al::adaptive_length(c, o);
+      EXPECT_TRUE(honest(r, length));
+      EXPECT_EQ(r.status, al::result_status::converged);
     }
   }
 }
