@@ -10,9 +10,9 @@
 // kink inside a panel 4x, an endpoint singularity x^a (a > 0) 2^(1 + a).
 //
 // One stagnation is not evidence: |K - G| also comes out small by coincidence on an unresolved
-// panel (seen on a near-cusp, where the halves' estimates were 5e5 times the parent's). So a
-// bisection stops only at the second stagnation in a row, parent to halves and then half to
-// quarters: a coincidence in the parent is exposed by its halves' genuine estimates.
+// panel (a near-cusp can do it). So a bisection stops only at the second stagnation in a row,
+// parent to halves and then half to quarters: a coincidence in the parent is exposed by its
+// halves' genuine estimates.
 #pragma once
 
 #include "curvebench/core/real.hpp"
