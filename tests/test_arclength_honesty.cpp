@@ -52,15 +52,20 @@ R reference_length(const cb::bezier<R, 2>& c) {
   return r.length();
 }
 
-// converged => |value - L| <= estimate; otherwise the status says so and, for not_guaranteed, the
-// estimate is +inf.
+// Every status but not_guaranteed promises a bound (arclength/result.hpp: cap_hit's estimate is
+// "still meant as a bound", rounding_limited's "includes that floor"), so |value - L| <= estimate
+// for converged, cap_hit and rounding_limited alike; not_guaranteed must carry +inf.
 ::testing::AssertionResult honest(const al::quadrature_result<double>& r, const R& length) {
+  if (r.status == al::result_status::not_guaranteed) {
+    if (!std::isinf(r.error_estimate))
+      return ::testing::AssertionFailure() << "not_guaranteed with a finite estimate " << r.error_estimate;
+    return ::testing::AssertionSuccess();
+  }
   const R err = abs(R(r.value) - length);
-  if (r.status == al::result_status::converged && !(err <= R(r.error_estimate)))
-    return ::testing::AssertionFailure() << "converged with estimate " << r.error_estimate / static_cast<double>(length)
-                                         << " < true error " << static_cast<double>(err / length) << " (relative)";
-  if (r.status == al::result_status::not_guaranteed && !std::isinf(r.error_estimate))
-    return ::testing::AssertionFailure() << "not_guaranteed with a finite estimate " << r.error_estimate;
+  if (!(err <= R(r.error_estimate)))
+    return ::testing::AssertionFailure() << al::to_string(r.status) << " with estimate "
+                                         << r.error_estimate / static_cast<double>(length) << " < true error "
+                                         << static_cast<double>(err / length) << " (relative)";
   return ::testing::AssertionSuccess();
 }
 
@@ -99,16 +104,27 @@ TEST(arclength_honesty, fixed_gauss_nested_on_the_exact_cusp_case) {
 }
 
 // The guard is a rule, not a patch for one curve: dips from mild to deep, every n, the partial
-// length too.
+// length too. Honest is not enough (an answer of not_guaranteed for everything is honest): on the
+// mild dips (0.7, 0.9: a shallow speed minimum, branch points far from the real axis) every rule
+// with n >= 5 must come back with a bound. Measured: there n = 3 and n >= 5 are converged, n = 1, 2
+// and 4 not_guaranteed (their nested differences do not show the order 2n), and no n has a bound
+// from dip 0.5 down (the branch points are within 1/8 of a piece of the minimum).
 TEST(arclength_honesty, fixed_gauss_nested_over_dip_depths) {
-  for (double dip : {0.3, 0.05, 0.01, 1e-4}) {
+  for (double dip : {0.9, 0.7, 0.3, 0.05, 0.01, 1e-4}) {
     SCOPED_TRACE("dip = " + std::to_string(dip));
     const auto c = cusp_family<double>(dip);
     const R length = reference_length(cusp_family<R>(dip));
+    const bool mild = dip >= 0.7;
     for (int n = 1; n <= 20; ++n) {
       SCOPED_TRACE("n = " + std::to_string(n));
-      EXPECT_TRUE(honest(al::gauss_length(c, n, al::fixed_estimate::nested), length));
-      EXPECT_TRUE(honest(al::gauss_length(c, 0.0, 1.0, al::gauss_legendre<double>(n), al::fixed_estimate::nested), length));
+      const auto whole = al::gauss_length(c, n, al::fixed_estimate::nested);
+      const auto partial = al::gauss_length(c, 0.0, 1.0, al::gauss_legendre<double>(n), al::fixed_estimate::nested);
+      EXPECT_TRUE(honest(whole, length));
+      EXPECT_TRUE(honest(partial, length));
+      if (mild && n >= 5) {
+        EXPECT_EQ(whole.status, al::result_status::converged);
+        EXPECT_EQ(partial.status, al::result_status::converged);
+      }
     }
   }
 }
@@ -146,7 +162,9 @@ TEST(arclength_honesty, adaptive_gauss_kronrod_on_the_near_cusp_case) {
   EXPECT_TRUE(honest(seg.total(), length));
 }
 
-// The grading is a rule: dips from mild to very deep, coarse to fine tolerances.
+// The grading is a rule: dips from mild to very deep, coarse to fine tolerances. Every one of the
+// 30 results must also be converged (measured: all are, down to dip 1e-6 at 1e-12), so that an
+// integrator answering not_guaranteed, honest but useless, fails here.
 TEST(arclength_honesty, adaptive_gauss_kronrod_over_dip_depths) {
   for (double dip : {0.3, 0.05, 0.01, 1e-4, 1e-6}) {
     SCOPED_TRACE("dip = " + std::to_string(dip));
@@ -156,7 +174,9 @@ TEST(arclength_honesty, adaptive_gauss_kronrod_over_dip_depths) {
       SCOPED_TRACE("tol = " + std::to_string(tol));
       al::adaptive_options<double> o;
       o.relative_tolerance = tol;
-      EXPECT_TRUE(honest(al::adaptive_length(c, o), length));
+      const auto r = al::adaptive_length(c, o);
+      EXPECT_TRUE(honest(r, length));
+      EXPECT_EQ(r.status, al::result_status::converged);
     }
   }
 }
@@ -393,5 +413,41 @@ TEST(arclength_honesty, newton_inversion_short_steps_on_the_runge_wiggles) {
     EXPECT_TRUE(q.converged()) << "k=" << k << " " << al::to_string(q.status);
     EXPECT_LE(error, R(q.s_error_estimate) + R(1e-12 * L)) << "k=" << k << " u=" << q.u;
     EXPECT_LE(error, R(1e-6 * L)) << "k=" << k << " u=" << q.u;
+  }
+}
+
+TEST(arclength_honesty, table_polish_on_the_runge_wiggles) {
+  // The polished Hermite table u(s) on degree-20 Runge, M = 32 and 128, at the runner's 33 targets:
+  // the polish must never make a target worse (slack 1e-12 L: the double curve's own rounding bias,
+  // see the Newton test below) and must improve most of them 4x (measured: 29 of 33 at both M).
+  // At M = 32 the cells are wide in u where the curve is slow; at s = frac(51 / phi) L one panel
+  // of G3-K7 across a wiggle has |G - K| = 0.043 L, far above the residual 6.0e-4 L, so the
+  // safeguard refused the step and the table value stood; G7-K15, newton_inversion's short-step
+  // rule, resolves the panel and the polish reaches 2.6e-5 L.
+  const cb::lagrange<double, 2> c = runge_equispaced();
+  const auto& r = runge_reference();
+  const double L = static_cast<double>(r.length());
+  constexpr double inv_phi = 0.6180339887498949;
+  auto error = [&](double u, double s) { return static_cast<double>(abs(r.s(R(u)) - R(s)) / r.length()); };
+  for (std::size_t m : {32u, 128u}) {
+    al::parameterization_options<double> o;
+    o.table_intervals = m;
+    const al::parameterization<cb::lagrange<double, 2>> plain(c, o);
+    o.newton_polish = true;
+    const al::parameterization<cb::lagrange<double, 2>> polished(c, o);
+    int improved = 0;
+    for (int k = 0; k <= 32; ++k) {
+      const double fraction = k == 0 ? 0.0 : k == 32 ? 1.0 : std::fmod(k * inv_phi, 1.0);
+      const double s = std::min(L * fraction, plain.length());
+      const double e_plain = error(plain.u(s), s), e_pol = error(polished.u(s), s);
+      EXPECT_LE(e_pol, e_plain + 1e-12) << "M=" << m << " k=" << k;
+      improved += e_pol < e_plain / 4;
+    }
+    EXPECT_GE(improved, 26) << "M=" << m;  // 90% of the measured 29
+    if (m == 32) {
+      const double s = plain.length() * std::fmod(51 * inv_phi, 1.0);
+      const double e_plain = error(plain.u(s), s), e_pol = error(polished.u(s), s);
+      EXPECT_LT(e_pol, e_plain / 10) << "plain " << e_plain << " polished " << e_pol;
+    }
   }
 }

@@ -559,4 +559,15 @@ TEST(bezier_bad_input, outside_the_domain_is_a_domain_error) {
   } catch (const std::domain_error& e) {
     EXPECT_THAT(e.what(), HasSubstr("u = 2.5 is outside the domain [0, 2]"));
   }
+  // Batch evaluation names the offending element by index, NaN included, at any position.
+  const std::vector<float> us{0.0f, 0.5f, 1.0f, 1.5f, 2.0f, std::numeric_limits<float>::quiet_NaN(), 1.0f};
+  std::vector<cb::point<float, 2>> out(us.size());
+  for (alg a : all_algorithms) {
+    try {
+      c.evaluate(std::span<const float>(us), std::span<cb::point<float, 2>>(out), a);
+      FAIL() << "NaN at us[5] accepted";
+    } catch (const std::domain_error& e) {
+      EXPECT_THAT(e.what(), HasSubstr("us[5] = nan is outside the domain [0, 2]"));
+    }
+  }
 }

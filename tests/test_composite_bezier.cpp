@@ -295,6 +295,15 @@ TEST(composite_bad_input, messages_name_argument_index_and_value) {
               HasSubstr("out: 1 given, must match us: 2"));
   out.resize(2);
   EXPECT_THROW(c.evaluate(std::span<const double>(us), std::span<P>(out)), std::domain_error);
+  // NaN anywhere in the batch is a domain error naming its index (the segment cache never holds it).
+  const std::vector<double> with_nan{0.0, 0.25, 0.5, 0.75, 1.0, nan, 1.5};
+  std::vector<P> out7(with_nan.size());
+  try {
+    c.evaluate(std::span<const double>(with_nan), std::span<P>(out7));
+    ADD_FAILURE() << "NaN at us[5] accepted";
+  } catch (const std::domain_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("us[5] = nan is outside the domain [0, 2]"));
+  }
   EXPECT_THROW((void)c(2.5), std::domain_error);
   EXPECT_THROW((void)c.segment_index(-0.5), std::domain_error);
   EXPECT_THROW((void)c.derivative(-0.5, 1), std::domain_error);

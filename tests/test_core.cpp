@@ -92,6 +92,21 @@ TEST(core, validation_messages_name_argument_index_value) {
   EXPECT_THROW(cb::validate::finite("tension", std::numeric_limits<cb::real50>::infinity()), cb::invalid_input);
 }
 
+// point<Real, Dim> (and so every family built on it) takes only floating Real types: with an
+// integer Real the generic code's Real(1) / Real(2) would be 0, silently.
+template <class R>
+concept has_point2 = requires { typename cb::point<R, 2>; };
+
+TEST(core, point_accepts_only_real_numbers) {
+  EXPECT_TRUE(has_point2<float>);
+  EXPECT_TRUE(has_point2<double>);
+  EXPECT_TRUE(has_point2<long double>);
+  EXPECT_TRUE(has_point2<cb::real50>);
+  EXPECT_FALSE(has_point2<int>);
+  EXPECT_FALSE(has_point2<long long>);
+  EXPECT_FALSE(has_point2<bool>);
+}
+
 TEST(core, binomial_is_exact) {
   // C(62, 31) = 465428353255261088 needs 59 bits: exact through the split multiplicative formula.
   EXPECT_EQ(cb::binomial<cb::real50>(62, 31), cb::real50("465428353255261088"));

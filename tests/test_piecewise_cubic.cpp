@@ -242,6 +242,46 @@ TEST(engine, batch_and_sorted_paths_equal_single_evaluation) {
   EXPECT_THROW(c.evaluate_batch(outside, o2), std::domain_error);
 }
 
+TEST(engine, batch_and_sorted_paths_reject_nan_anywhere_in_the_span) {
+  // The error policy: a parameter outside the domain throws std::domain_error naming it, never a
+  // silent value. A NaN fails every comparison, so a check written as "u > hi" or "u < previous"
+  // lets it through; it must be caught at any index, not only at us[0], and reported by index.
+  const auto c = q_engine(q_data<double>());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> us{-1.0, -0.5, 0.0, 0.25, 0.5, nan, 1.0, 1.5};
+  std::vector<cb::point<double, 2>> out(us.size());
+  for (int order : {0, 1})
+    for (auto alg : algorithms) {
+      try {
+        c.evaluate_sorted(us, out, order, alg);
+        FAIL() << "NaN at us[5] accepted by evaluate_sorted (order " << order << ", " << cb::to_string(alg) << ")";
+      } catch (const std::domain_error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("us[5] = nan"));
+        EXPECT_THAT(e.what(), HasSubstr("outside the domain [-1, 2]"));
+      }
+      try {
+        c.evaluate_batch(us, out, order, alg);
+        FAIL() << "NaN at us[5] accepted by evaluate_batch";
+      } catch (const std::domain_error& e) {
+        EXPECT_THAT(e.what(), HasSubstr("us[5] = nan"));
+      }
+    }
+  // Also directly after the first element, and last.
+  for (std::size_t at : {std::size_t{1}, us.size() - 1}) {
+    std::vector<double> v{-1.0, -0.5, 0.0, 0.25, 0.5, 0.75, 1.0, 1.5};
+    v[at] = nan;
+    EXPECT_THROW(c.evaluate_sorted(v, out), std::domain_error) << "NaN at " << at;
+  }
+  // An unsorted span is rejected wherever the descent is (the API documents non-decreasing input).
+  std::vector<double> down{-1.0, -0.5, 0.0, 0.25, 0.5, 0.4, 1.0, 1.5};
+  try {
+    c.evaluate_sorted(down, out);
+    FAIL() << "unsorted input accepted";
+  } catch (const cb::invalid_input& e) {
+    EXPECT_THAT(e.what(), HasSubstr("us[5] = 0.40000000000000002 < us[4] = 0.5"));
+  }
+}
+
 TEST(engine, hermite_assembly_is_c1_and_broken_slopes_break_it) {
   // Random-ish non-polynomial data: equal incoming/outgoing slopes give continuous value and first
   // derivative at every interior knot (to rounding: 8 ulps of the data scale ~ 4); different ones

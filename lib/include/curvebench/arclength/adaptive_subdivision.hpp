@@ -1,24 +1,14 @@
-// Adaptive subdivision arc length (Parent's chord test): compare the chord of an interval with the
-// sum of the chords of its two halves; if they differ by less than the tolerance, accept the
-// halves' sum, otherwise recurse on both halves with half the tolerance each.
-//
-// The false positive: the test only sees three points. When P(a), P(m), P(b) are collinear and
-// evenly placed while the curve wanders between them (the S-curve (u, u^3 - u) on [-1, 1]: all
-// three on the x-axis), chord and half-chords agree exactly, the test passes at once, and the
-// length is badly underestimated (2 instead of 2.62...). Guards, both on by default:
-//   - min_depth: always subdivide at least that many levels before trusting the test (Parent's
-//     remedy);
-//   - look_ahead: accept only if the test also passes one level down (the quarter chords agree with
-//     the half chords), so a single coincidence of three points is not enough.
-// Neither can be proof against a curve that is designed to pass at every sampled level (no
-// sampling method can); tests/test_arclength.cpp shows the false positive and both guards.
-// Error estimate: without look-ahead, the accepted halves' sum S2 has error (S2 - S1)/(2^p - 1),
-// p the local order (2 for a smooth piece, the chord defect scaling as h^3; 1 at a cusp), so the
-// sum of the accepted S2 - S1 is reported (assumes p >= 1, not checked); with look-ahead the order
-// is checked as above. Plus rounding. Status: converged when every leaf passed; cap_hit when max_depth
-// forced a leaf. Sources: Parent, "Computer Animation: Algorithms and Techniques", 3.2.2 (adaptive
-// approach); seed 002 ("adaptive forward differencing"). Cost: ~2 position evaluations per
-// accepted leaf (+2 for look-ahead), leaves ~ L / tolerance^(1/3); order 2 in the leaf size.
+// Adaptive subdivision arc length (Parent's chord test): compare an interval's chord with the sum
+// of its halves' chords; accept the halves within the tolerance, else recurse with half of it.
+// Three points can be fooled (collinear, evenly spaced samples of a wandering curve such as
+// (u, u^3 - u) on [-1, 1]), so two guards are on by default: min_depth levels before trusting the
+// test, and look_ahead (the quarter chords must agree too, at an observed order >= log2 3). No
+// sampling method is proof against a curve designed to pass at every level.
+// Estimate: the accepted differences (order >= 1 assumed without look-ahead, checked with it) plus
+// rounding. Status: converged when every leaf passed, cap_hit when max_depth forced one.
+// Sources: Parent (2012), 3.2.2; seed 002 ("adaptive forward differencing").
+// Cost: ~2 position evaluations per accepted leaf (+2 with look-ahead), ~L / tolerance^(1/3)
+// leaves. Accuracy: order 2 in the leaf size on smooth pieces.
 #pragma once
 
 #include "curvebench/arclength/result.hpp"

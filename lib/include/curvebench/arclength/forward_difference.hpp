@@ -1,29 +1,15 @@
-// Forward-differencing arc-length table (seed 002): sample the curve at equally spaced parameters,
-// accumulate the chord lengths; s(u) by linear interpolation in the table, u(s) by binary search +
-// linear interpolation; Richardson extrapolation of two tables.
-//
-// Algorithm: each segment [u_i, u_{i+1}] (breakpoints are always table nodes) is cut into N equal
-// steps h; the chord |P(u_{k+1}) - P(u_k)| underestimates the arc by kappa^2 |P'|^3 h^3 / 24 +
-// O(h^5) per step, so the table's length has error c h^2 + O(h^4) (order 2, measured in the tests).
-// Error estimate: chord sums only grow under refinement and converge to L, so with the coarser
-// sums L_2h and L_4h over every other and every fourth node (free: same samples), d2 = L_h - L_2h
-// and d1 = L_2h - L_4h, the estimate d2 bounds L - L_h = d2 / (r - 1) when the differences shrink
-// geometrically with ratio r = d1 / d2 >= 2. The ratio is checked, not assumed: it must lie in
-// [3, 6] (observed order log2 3 to log2 6 around the theoretical 2; a smooth segment gives r -> 4).
-// Outside it, for N not divisible by 4 and for N < 16 (L_4h needs 4 chords per segment to be a
-// sample of the shape at all: at N = 4 a single chord, and degree-20 Runge's ratio then fell in
-// the range by coincidence, with the error 1000x d2), the length has no estimate
-// (not_guaranteed): features the table does not resolve make the chord sums creep, stall and
-// jump. On degree-20 Runge (its
-// end wiggles have speed 1e4 against 2 in the middle) the error fell 12x from N = 128 to 256 and
-// 1.1x from 256 to 512; at N = 128 d2 was 25x below L - L_h while r = 414. Richardson:
-// R = L_h + d2 / 3 cancels the h^2 term; its order (4 for smooth segments) is measured by the
-// tests, not assumed; |R - L_h| = d2 / 3 is its estimate, a bound under the same check
-// (|R - L| <= d2 / 6 for 3 <= r <= 6).
-// The table of s(u) has the same O(h^2) error plus the linear interpolation's O(h^2) between nodes.
-// Sources: seed 002 ("Forward Differencing", table lookup, binary search); Parent, "Computer
-// Animation: Algorithms and Techniques", 3.2. Cost: N + 1 position evaluations per segment to
-// build; s(u) and u(s) O(log(table size)), no curve evaluation.
+// Forward-differencing arc-length table: the curve sampled at N equal steps per segment
+// (breakpoints are nodes), chord lengths accumulated; s(u) by linear interpolation, u(s) by binary
+// search and linear interpolation; Richardson extrapolation of two tables.
+// Error: a chord falls short of its arc by kappa^2 |P'|^3 h^3 / 24, so the length has error
+// c h^2 + O(h^4). Estimate: with the coarser sums L_2h, L_4h over the same samples, d2 = L_h - L_2h
+// bounds L - L_h when the ratio r = (L_2h - L_4h) / d2 lies in [3, 6] (observed order about 2) and
+// N >= 16, N divisible by 4; otherwise not_guaranteed, since features the table does not resolve
+// make chord sums creep, stall and jump. Richardson R = L_h + d2 / 3, estimate d2 / 3 under the same
+// check.
+// Sources: seed 002 ("Forward Differencing", table lookup); Parent, Computer Animation (2012), 3.2.
+// Cost: N + 1 position evaluations per segment to build; s(u), u(s) O(log N), no evaluation.
+// Accuracy: O(h^2) (the table and its interpolation), Richardson O(h^4) on smooth segments.
 #pragma once
 
 #include "curvebench/arclength/newton_inversion.hpp"

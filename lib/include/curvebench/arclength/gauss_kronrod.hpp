@@ -1,28 +1,14 @@
 // Gauss-Kronrod quadrature of our own: the (2n + 1)-point Kronrod extension of the n-point
-// Gauss-Legendre rule for any n (G7-K15 by default), computed in Real; a single-panel rule with
-// error estimate; a globally adaptive integrator (bisect the panel of largest error) with an
+// Gauss-Legendre rule for any n (G7-K15 by default), computed in Real (the Stieltjes polynomial's
+// zeros by safeguarded Newton between the Gauss nodes, weights from the Legendre moment system; see
+// make_gauss_kronrod); a single-panel rule with error estimate |G - K| (the Gauss rule's error, a
+// conservative bound for smooth f) or QUADPACK's heuristic, both plus a rounding floor
+// (detail/roundoff.hpp); a globally adaptive integrator (bisect the panel of largest error) with an
 // interval cap and a status; and an allocation-free recursive variant for hot paths.
-//
-// Construction of the rule (derived here, checked by tests against Boost.Math's stored constants
-// and by polynomial exactness): the n + 1 new nodes are the zeros of the Stieltjes polynomial
-// E_{n+1}, defined by  integral_{-1}^{1} E_{n+1}(x) P_n(x) P_k(x) dx = 0 for k = 0..n.
-// Writing E_{n+1} = P_{n+1} + sum_{j<n} c_j P_j (only j of the parity of n + 1), the conditions
-// for odd k form a small linear system whose entries, integrals of products of three Legendre
-// polynomials (degree <= 3n + 1), are computed exactly by a Gauss-Legendre rule of
-// ceil((3n + 2)/2) + 1 points. The zeros interlace with the Gauss nodes (Szego), so each is found
-// by safeguarded Newton in its bracket (-1, g_1), (g_1, g_2), ..., (g_n, 1). The 2n + 1 weights
-// solve sum_i w_i P_k(x_i) = 2 delta_k0, k = 0..2n (Legendre basis: well conditioned). Nodes and
-// weights are symmetrized. Everything runs in Real, so a real50 rule is exact to 50 digits.
-// Sources: Kronrod (1965); Monegato, "Stieltjes polynomials and related quadrature rules", SIAM
-// Review 24 (1982); Piessens et al., QUADPACK (1983) for the adaptive strategy and the optional
-// error heuristic err = resasc * min(1, (200 |K - G| / resasc)^1.5) (that model allocates its
-// 2n + 1 values; the default one does not).
-// Cost: rule construction O(n^3) once (cached like Gauss-Legendre); a panel costs 2n + 1
-// evaluations. Accuracy: K_{2n+1} is exact for degree <= 3n + 1, and <= 3n + 2 for odd n (odd
-// monomials integrate to zero by symmetry); G_n for degree <= 2n - 1. The default error estimate |G - K| is the error of the Gauss
-// rule, which for smooth f exceeds the Kronrod error by orders of magnitude: a conservative bound.
-// Every panel's estimate also carries a rounding floor 50 eps * integral |f| (QUADPACK's), so an
-// estimate is never below what Real can resolve.
+// Sources: Kronrod (1965); Monegato (1982); Piessens et al. (1983, QUADPACK) for the adaptive
+// strategy and the heuristic resasc * min(1, (200 |K - G| / resasc)^1.5) (which allocates).
+// Cost: rule O(n^3) once (cached); a panel 2n + 1 evaluations.
+// Accuracy: K_{2n+1} exact for degree <= 3n + 1 (3n + 2 for odd n), G_n for degree <= 2n - 1.
 #pragma once
 
 #include "curvebench/arclength/detail/linear_solve.hpp"
@@ -85,7 +71,7 @@ struct gauss_kronrod_rule {
     p.kronrod = k * half;
     p.gauss = g * half;
     p.magnitude = kabs * abs(half);
-    p.rounding_floor = Real(50) * epsilon<Real>() * p.magnitude;
+    p.rounding_floor = detail::rounding_floor(p.magnitude);
     p.evaluations = nodes.size();
     p.error_estimate = abs(p.kronrod - p.gauss) + p.rounding_floor;
     return p;
@@ -114,7 +100,7 @@ struct gauss_kronrod_rule {
     p.kronrod = k * half;
     p.gauss = g * half;
     p.magnitude = kabs * abs(half);
-    p.rounding_floor = Real(50) * epsilon<Real>() * p.magnitude;
+    p.rounding_floor = detail::rounding_floor(p.magnitude);
     p.evaluations = nodes.size();
     asc *= abs(half);
     Real diff = abs(p.kronrod - p.gauss);
@@ -144,6 +130,16 @@ void legendre_all(int m, const Real& x, std::vector<Real>& p, std::vector<Real>&
 
 }  // namespace detail
 
+// Construction of the rule (derived here, checked by tests against Boost.Math's stored constants
+// and by polynomial exactness): the n + 1 new nodes are the zeros of the Stieltjes polynomial
+// E_{n+1}, defined by  integral_{-1}^{1} E_{n+1}(x) P_n(x) P_k(x) dx = 0 for k = 0..n.
+// Writing E_{n+1} = P_{n+1} + sum_{j<n} c_j P_j (only j of the parity of n + 1), the conditions
+// for odd k form a small linear system whose entries, integrals of products of three Legendre
+// polynomials (degree <= 3n + 1), are computed exactly by a Gauss-Legendre rule of
+// ceil((3n + 2)/2) + 1 points. The zeros interlace with the Gauss nodes (Szego), so each is found
+// by safeguarded Newton in its bracket (-1, g_1), (g_1, g_2), ..., (g_n, 1). The 2n + 1 weights
+// solve sum_i w_i P_k(x_i) = 2 delta_k0, k = 0..2n (Legendre basis: well conditioned). Nodes and
+// weights are symmetrized. Everything runs in Real, so a real50 rule is exact to 50 digits.
 /// Computes the G_n - K_{2n+1} rule in Real (uncached). Throws invalid_input unless 1 <= n <= 60.
 template <class Real>
 [[nodiscard]] gauss_kronrod_rule<Real> make_gauss_kronrod(int n) {
@@ -252,7 +248,7 @@ template <class Real>
 template <class Real>
 struct adaptive_options {
   Real absolute_tolerance{0};
-  Real relative_tolerance{Real(128) * epsilon<Real>()};  ///< above the 50 eps rounding floor of the panels
+  Real relative_tolerance{Real(128) * epsilon<Real>()};  ///< above the panels' rounding floor (detail/roundoff.hpp)
   std::size_t max_intervals{4000};  ///< cap on the number of panels (global) / 2^max_depth (recursive)
   int gauss_points{7};              ///< n of the G_n - K_{2n+1} pair
   error_model model{error_model::gauss_difference};
@@ -343,18 +339,16 @@ template <class Real, class F>
   }
   std::make_heap(heap.begin(), heap.end(), less);
   // Exact-as-possible totals: the value by Neumaier's compensated summation (error <= 2 eps |sum|
-  // + O(n eps^2) for any number of panels), estimates and floors by plain sums.
-  auto totals = [&](Real& value, Real& err, Real& floor) {
+  // + O(n eps^2) for any number of panels), estimates by a plain sum.
+  auto totals = [&](Real& value, Real& err) {
     value = Real(0);
     err = Real(0);
-    floor = Real(0);
     Real comp(0);
     auto add = [&](const detail::heap_panel<Real>& h) {
       const Real t = value + h.r.kronrod;
       comp += abs(value) >= abs(h.r.kronrod) ? (value - t) + h.r.kronrod : (h.r.kronrod - t) + value;
       value = t;
       err += h.r.error_estimate;
-      floor += h.r.rounding_floor;
     };
     for (const auto& h : heap) add(h);
     for (const auto& h : frozen) add(h);
@@ -363,12 +357,12 @@ template <class Real, class F>
   // The compensated sum of the panels rounds by at most ~2 eps |value|: part of every estimate.
   auto estimate = [&](const Real& e, const Real& v) { return e + Real(4) * epsilon<Real>() * abs(v); };
   auto target = [&](const Real& v) { return max(opt.absolute_tolerance, opt.relative_tolerance * abs(v)); };
-  Real value, err, floor;
-  totals(value, err, floor);
+  Real value, err;
+  totals(value, err);
   out.status = result_status::converged;
   while (true) {
     if (estimate(err, value) <= target(value)) {
-      totals(value, err, floor);  // confirm with exact sums (the running ones drift by rounding)
+      totals(value, err);  // confirm with exact sums (the running ones drift by rounding)
       if (estimate(err, value) <= target(value)) break;
     }
     if (heap.empty()) {
@@ -406,7 +400,7 @@ template <class Real, class F>
     heap.push_back(right);
     std::push_heap(heap.begin(), heap.end(), less);
   }
-  totals(value, err, floor);
+  totals(value, err);
   out.value = value;
   out.error_estimate = estimate(err, value);
   return out;

@@ -1,23 +1,15 @@
 // Gauss-Legendre quadrature: nodes and weights for any n, computed in Real, cached; the fixed
 // n-point rule on [a, b] and the composite rule over equal panels.
-//
-// Algorithm: the n nodes are the roots of the Legendre polynomial P_n, found by Newton's method
-// on the three-term recurrence (k + 1) P_{k+1} = (2k + 1) x P_k - k P_{k-1}, with
-// P_n'(x) = n (x P_n - P_{n-1}) / (x^2 - 1), from Tricomi's initial guesses
-//   x_i ~ (1 - (n - 1) / (8 n^3)) cos(pi (i - 1/4) / (n + 1/2)),
-// iterated in Real itself until the step is below eps(Real) and then once more, so a real50 rule
-// is exact to 50 digits (no double-precision constants involved). Weights
-// w_i = 2 / ((1 - x_i^2) P_n'(x_i)^2). Nodes are mirrored (x_{n+1-i} = -x_i) so the rule is exactly
-// symmetric. Sources: seed 002 (Gaussian quadrature for arc length); Davis & Rabinowitz, "Methods of
-// Numerical Integration", 2.7; Abramowitz & Stegun 25.4.29 and 22.16.6 (Tricomi).
-// Cost: computing the rule is O(n^2) per Newton sweep (a few sweeps); the n-point rule costs n
-// evaluations of f. Accuracy: exact for polynomials of degree <= 2n - 1; for f analytic in a
-// Bernstein ellipse of parameter rho around [a, b] the error is O(rho^(-2n)). The composite rule
-// with m panels of n points has error O(h^(2n)), h = (b - a) / m, for f in C^(2n).
-//
-// Caching: `gauss_legendre<Real>(n)` returns a reference to a process-wide rule, computed once
-// under a mutex and kept until exit (thread-safe; sizes n <= 128 are looked up lock-free after the
-// first call). Hot paths fetch the rule once and keep the reference.
+// Nodes: roots of P_n by Newton on the three-term recurrence from Tricomi's initial guesses,
+// iterated in Real until the step is below eps(Real) and once more (a real50 rule is exact to 50
+// digits); weights 2 / ((1 - x^2) P_n'(x)^2); nodes mirrored so the rule is exactly symmetric.
+// gauss_legendre<Real>(n) returns a process-wide rule computed once under a mutex (lock-free look
+// up for n <= 128); hot paths keep the reference.
+// Sources: seed 002 (Gaussian quadrature for arc length); Davis & Rabinowitz (1984), 2.7;
+// Abramowitz & Stegun 25.4.29, 22.16.6.
+// Cost: the rule O(n^2) per Newton sweep, once; n evaluations per application.
+// Accuracy: exact for degree <= 2n - 1; O(rho^-2n) for f analytic in the Bernstein ellipse rho;
+// composite with panels h: O(h^2n) for f in C^2n.
 #pragma once
 
 #include "curvebench/arclength/detail/rule_cache.hpp"
@@ -116,12 +108,6 @@ template <class Real>
 template <class Real>
 [[nodiscard]] const gauss_legendre_rule<Real>& gauss_legendre(int n) {
   return detail::rule_cache<gauss_legendre_rule<Real>>::get(n, &make_gauss_legendre<Real>);
-}
-
-/// The n-point rule on [a, b] (cached rule).
-template <class Real, class F>
-[[nodiscard]] Real integrate_gauss_legendre(F&& f, const Real& a, const Real& b, int n) {
-  return gauss_legendre<Real>(n).integrate(f, a, b);
 }
 
 /// The composite rule: [a, b] cut into `panels` equal panels, the rule on each. Throws

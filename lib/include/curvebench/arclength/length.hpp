@@ -1,47 +1,18 @@
 // Gaussian arc length of any curve: s = integral |P'(u)| du, split at every breakpoint.
 //
-// - `speed(c, u)`: |P'(u)| from the curve's exact first derivative (one derivative evaluation).
-// - `gauss_length`: the fixed n-point Gauss-Legendre rule on each segment (seed 002, "Gaussian
-//   quadrature"). With estimate::none the cost is n evaluations per segment and no error bound
-//   (status not_guaranteed, estimate +inf). With fixed_estimate::nested each segment is first
-//   searched for deep interior speed minima (17 samples of |P'|^2 plus Newton, see
-//   detail/speed_minima.hpp) and split there; each piece is integrated as 1, 2 and 4 panels (7n
-//   evaluations per piece); the 4-panel value Q4 is reported with estimate |Q2 - Q4| + rounding
-//   floor (the error of Q2, which exceeds Q4's by ~2^(2n) on smooth pieces), trusted (converged)
-//   only when |Q1 - Q2| >= 16 |Q2 - Q4| (the observed order is >= 4, as for n >= 2 on a speed the
-//   panels resolve), else not_guaranteed. Splitting makes an exact cusp harmless (the speed is
-//   |linear|, analytic on each side). A near-cusp is not: the speed has branch points at
-//   m +- i delta (delta = sqrt(g0/g2) from the quadratic model of |P'|^2 at the minimum m), and a
-//   piece ending at m converges only like (1 + sqrt(2 delta / h))^(-2n) on its panels of width h,
-//   so Q1, Q2, Q4 can all be pre-asymptotic with |Q2 - Q4| far below Q4's error (measured on
-//   bench/cases/near_cusp_cubic.json, delta ~ 1.2e-4: estimates 2.7e-8, 3.6e-8, 3.5e-8 for
-//   n = 4, 8, 16 against true relative errors 2.4e-7, 1.7e-7, 1.0e-7). Such a piece (delta below
-//   1/8 of its width, i.e. the branch point closer to its finest panel than half that panel's
-//   width, Bernstein-ellipse parameter < 2.9) is reported not_guaranteed with estimate +inf; use
-//   adaptive_length there.
-// - `composite_gauss_length`: m equal panels per segment, n points each; error O(h^(2n)) for a
-//   speed in C^(2n) (measured in tests), no error bound (not_guaranteed).
-// - `adaptive_length`: globally adaptive Gauss-Kronrod (G7-K15 by default) to a tolerance, with the
-//   honest |G - K| estimate and a status (see gauss_kronrod.hpp). Each segment is first split at
-//   the interior minima of the speed (16 samples of |P'|^2, Newton on P'.P''): a near-cusp dip
-//   narrower than the first panels would otherwise be missed by G and K alike, and |G - K| would
-//   not see it (tests/test_arclength.cpp shows it on the near-cusp curve). Towards a near-cusp
-//   minimum the split points are graded geometrically, m +- delta 4^k (k = 0, 1, ... while the
-//   next level stays inside the piece): every panel is then at least as far from the branch point
-//   as a third of its own width (Bernstein-ellipse parameter >= 3), where |G7 - K15| is a sound
-//   bound of K15's error (K15's error is ~3^-9 of G7's). Without it the two panels that end at the
-//   minimum have the branch point at distance ~delta from their end: G7 and K15 are both
-//   pre-asymptotic, their errors of the same sign and size, and |G - K| under-estimated the error
-//   on bench/cases/near_cusp_cubic.json (9.45e-8 reported, 1.26e-7 true, relative, at 1e-6
-//   tolerance). Cost: log4(width / delta) + 1 panels more per side of each near-cusp (7 on that
-//   case); none for exact cusps (delta at rounding level, see detail::branch_point_matters).
-// Partial lengths between a and b (any order: the result is signed, the estimate is not) split
-// at the breakpoints strictly between them. Accuracy: Gauss-Legendre with n points per segment
-// converges geometrically in n on segments whose speed is analytic near the segment (polynomial
-// and rational segments away from cusps); near a cusp the speed has a kink and convergence is only
-// algebraic: use adaptive_length there. Sources: seed 002; Guenter & Parent, "Computing the arc
-// length of parametric curves", IEEE CG&A 10(3), 1990; Trefethen, "Approximation Theory and
-// Approximation Practice" (2013), ch. 19, for the Bernstein-ellipse error of Gauss rules.
+// speed(c, u) = |P'(u)| (one derivative evaluation). gauss_length: the fixed n-point
+// Gauss-Legendre rule per segment; with fixed_estimate::nested each segment is first split at its
+// deep speed minima (detail/speed_minima.hpp), each piece integrated as 1, 2 and 4 panels, Q4
+// reported with estimate |Q2 - Q4| + rounding floor, trusted only at an observed order >= 4
+// (|Q1 - Q2| >= 16 |Q2 - Q4|); a piece ending at a near-cusp whose branch point is within 1/8 of its
+// width gets no bound (not_guaranteed, +inf). composite_gauss_length: m equal panels of n points,
+// no bound. adaptive_length: adaptive Gauss-Kronrod (gauss_kronrod.hpp) after the same split, with
+// split points graded geometrically (m +- delta 4^k) towards a near-cusp so every panel is at least
+// a third of its width from the branch point (Bernstein-ellipse parameter >= 3).
+// Sources: seed 002; Guenter & Parent (1990); Trefethen (2013), ch. 19, for the Bernstein-ellipse
+// error of Gauss rules. Cost: n evaluations per segment (7n per piece nested); adaptive: per the
+// tolerance, plus log4(width / delta) + 1 panels per side of a near-cusp.
+// Accuracy: geometric in n where the speed is analytic near the segment; algebraic at a kink.
 #pragma once
 
 #include "curvebench/arclength/gauss_kronrod.hpp"
@@ -109,7 +80,7 @@ quadrature_result<Real> fixed_panel(F&& f, const Real& a, const Real& b, const g
   r.evaluations += 6 * rule.nodes.size();
   r.value = quarters;
   // The speed is >= 0, so |integral| bounds integral |f|: the floor covers the rounding of f and the sums.
-  const Real floor = Real(50) * epsilon<Real>() * abs(quarters);
+  const Real floor = rounding_floor(abs(quarters));
   const Real d1 = abs(whole - halves), d2 = abs(halves - quarters);
   r.error_estimate = d2 + floor;
   // On a smooth speed the rule converges at order 2n >= 4 (n >= 2) once the panels resolve it:

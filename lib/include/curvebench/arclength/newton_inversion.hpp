@@ -1,23 +1,16 @@
 // Inversion of the arc length: u with s(u) = s*, by Newton's method inside a bracket.
 //
-// Algorithm: the segment lengths are computed once (adaptive Gauss-Kronrod per segment, with their
-// error estimates: `segment_lengths`). A query s* finds its segment by binary search on the
-// cumulative lengths; that segment is the first bracket [lo, hi] with known s(lo) <= s* <= s(hi).
-// From the first guess, each iteration computes s(u) as s(known) + integral from the NEAREST known
-// point (a bracket end: the segment ends at first, then the previous iterates, whose s is now
-// known), never from u0, by allocation-free recursive G7-K15; shrinks the bracket with the sign of
-// s(u) - s*; and takes the Newton step u <- u - (s(u) - s*) / |P'(u)|, falling back to bisection
-// when the step leaves the bracket or |P'(u)| = 0 (a cusp, or a curve whose speed vanishes on an
-// interval). It stops when |s(u) - s*| + (error bound on s(u)) <= tolerance (converged), at the
-// iteration cap (cap_hit), or when the bracket cannot shrink further in Real (rounding_limited).
-// The error bound on s(u) accumulates the estimates of every integral on the path to u.
-// Sources: seed 002 (arc-length reparameterization: find u2 with arclength(u1, u2) = s);
-// Guenter & Parent, IEEE CG&A 10(3), 1990; Eberly, "Moving along a curve with specified speed" (2008).
-// The first guess inverts a monotone cubic Hermite model of s(u) on the segment built from its end
-// lengths and end speeds (stored with the segment lengths; no evaluation per query).
-// Cost: O(log segments) + per iteration 2n + 2 derivative evaluations for a long step (n = 15:
-// 32) and 16 for a step shorter than 1/32 of the bracket (G7-K15); typically one long and two or
-// three short iterations; no allocation per query.
+// The segment lengths are computed once (segment_lengths: adaptive Gauss-Kronrod with estimates);
+// a query finds its segment by binary search on the cumulative lengths, the first bracket. The
+// first guess inverts a monotone cubic Hermite model of s(u) from the segment's end lengths and
+// speeds. Each iteration integrates from the nearest known point (a bracket end) by recursive
+// Gauss-Kronrod (G15-K31, or the G7-K15 short-step rule for steps under 1/32 of the bracket),
+// shrinks the bracket and steps u <- u - (s(u) - s*) / |P'(u)|, bisecting when the step leaves
+// the bracket or |P'| = 0. Stops when |s(u) - s*| + its error bound <= tolerance (converged), at
+// the iteration cap (cap_hit) or when the bracket cannot shrink in Real (rounding_limited).
+// Sources: seed 002 (find u2 with arclength(u1, u2) = s); Guenter & Parent (1990); Eberly (2008).
+// Cost: O(log segments) + 32 evaluations per long and 16 per short iteration, typically one long
+// and two or three short; no allocation per query.
 // Accuracy: quadratic convergence in u where |P'| > 0; linear (bisection) where it vanishes.
 #pragma once
 
@@ -86,7 +79,7 @@ class segment_lengths {
       cumulative_error_.push_back(err_sum + Real(4) * epsilon<Real>() * abs(cum));
       // One-sided end speeds (just inside the segment) for the initial guess of inversions.
       const Real w = bp[i + 1] - bp[i];
-      const Real d = Real(16) * epsilon<Real>() * (abs(bp[i]) + abs(bp[i + 1]));
+      const Real d = detail::knot_offset(Real(abs(bp[i]) + abs(bp[i + 1])));
       start_speed_.push_back(w > Real(2) * d ? speed(c, Real(bp[i] + d)) : Real(0));
       end_speed_.push_back(w > Real(2) * d ? speed(c, Real(bp[i + 1] - d)) : Real(0));
       total_.evaluations += 2;
@@ -95,7 +88,7 @@ class segment_lengths {
     total_.error_estimate = cumulative_error_.back();
   }
 
-  /// G7-K15 to 128 eps relative per segment (above the 50 eps rounding floor), at most 4000
+  /// G7-K15 to 128 eps relative per segment (above the panels' rounding floor), at most 4000
   /// panels per segment.
   [[nodiscard]] static adaptive_options<Real> default_options() { return adaptive_options<Real>{}; }
 
@@ -169,11 +162,9 @@ struct newton_options {
   int gauss_points{15};   ///< n of the inner G_n - K_{2n+1} pair for long steps (G15-K31: one panel
                           ///< is usually enough for half a polynomial segment)
   int max_depth{16};      ///< recursion cap of each inner adaptive integral
-  /// Inner integrals over less than 1/short_fraction of the bracket use the G7-K15 pair (15
-  /// evaluations instead of 31): near convergence the steps are tiny and 15 points are exact to
-  /// rounding there. (It was G3-K7 until the full sweep caught its |G - K| fooled on degree-20
-  /// Runge: a step of 1/600 of the bracket across an end wiggle, estimate 7e-8 L, error 4.4e-5 L.)
-  /// 0 disables.
+  /// Inner integrals over less than 1/short_fraction of the bracket use detail::short_step_rule
+  /// (G7-K15, 15 evaluations instead of 31): near convergence the steps are tiny and 15 points are
+  /// exact to rounding there. 0 disables.
   int short_fraction{32};
   /// After convergence, one more Newton step (one short integral and one speed evaluation): the
   /// quadratic convergence takes the residual from the tolerance down to rounding level. Used for
@@ -190,6 +181,15 @@ struct newton_bracket {
 };
 
 namespace detail {
+
+/// The Gauss-Kronrod pair of every short arc-length step: Newton's steps shorter than
+/// 1/short_fraction of the bracket and the table polish of parameterization.hpp. G7-K15, because
+/// the |G - K| estimate of G3-K7 can be fooled by a feature narrower than the step that both rules
+/// miss alike (tests: arclength_honesty's Runge cases).
+template <class Real>
+[[nodiscard]] const gauss_kronrod_rule<Real>& short_step_rule() {
+  return gauss_kronrod<Real>(7);
+}
 
 template <class Real>
 void check_newton_options(const newton_options<Real>& opt) {
@@ -212,7 +212,7 @@ template <curve C>
   using Real = typename C::real_type;
   using std::abs;
   const gauss_kronrod_rule<Real>& rule = gauss_kronrod<Real>(opt.gauss_points);
-  const gauss_kronrod_rule<Real>& short_rule = gauss_kronrod<Real>(7);
+  const gauss_kronrod_rule<Real>& short_rule = detail::short_step_rule<Real>();
   auto f = [&c](const Real& u) { return speed(c, u); };
   const Real width = br.u_hi - br.u_lo;
   auto pick = [&](const Real& len) -> const gauss_kronrod_rule<Real>& {

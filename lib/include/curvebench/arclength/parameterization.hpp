@@ -1,40 +1,17 @@
 // The arc-length parameterization of a curve: s(u), u(s) and constant-speed sampling.
 //
-// What: for any curve P(u) (the curve concept), the object precomputes the cumulative segment
-// lengths (adaptive Gauss-Kronrod) and, unless the method is Newton, a table of u_j = u(s_j) on a
-// uniform s-grid s_j = j L / M with the slopes du/ds = 1 / |P'(u_j)|. Queries:
-//   s(u)   s at the nearest known point at or left of u (a table node or a segment start) plus the
-//          integral from there (recursive Gauss-Kronrod, the Newton long-step pair): no
-//          integration from u0.
-//   u(s)   (a) linear_table: j = floor(s / ds) (O(1)), linear interpolation of u_j, u_{j+1}:
-//              error O(ds^2);
-//          (b) hermite_table: the same O(1) lookup, cubic Hermite of u(s) with the slopes
-//              du/ds (Fritsch-Carlson limited where a slope exceeds 3x the secant, so u(s) is
-//              monotone; a node where |P'| = 0 uses the secant): error O(ds^4). A cell that
-//              contains the arc-length position of a knot (interior breakpoint) is split there
-//              into two pieces (u and the one-sided speeds at the knot are known exactly), since
-//              u(s) has a jump in u'' (C1 curves) or u' (C0) at a knot and one cubic across it
-//              converges only like ds^2: on a 4-segment Catmull-Rom path the automatic sizing hit
-//              its 65536-interval cap at 9.2e-11 L that way; split, it converges at 65536 with
-//              5.6e-16 L. The lookup stays O(1): j = floor(s / ds), then one comparison per knot
-//              inside cell j (none in most cells; several only where segments are shorter than
-//              L / M). Optionally polished by one safeguarded Newton step (s(u) from the nearer
-//              table node by one G3-K7 panel; the step is kept only inside the cell and only when
-//              it provably reduces the residual, see polish());
-//          (c) newton: Newton in the segment bracket (newton_inversion.hpp), no table.
-//   constant_speed_parameters(n): the u of n points equally spaced in arc length, ends included.
-// The table size M is given, or found by doubling from 16 per segment (rounded up to a power of
-// two) until the Hermite table's measured error (at the midpoints, against Newton values,
-// |du| * |P'|) is below table_tolerance * L; the table kept is the doubled one (about 16x more
-// accurate than measured). The nodes are solved in a chain, each from the previous one, in arc
-// lengths relative to it (see compute_nodes), so their error stays at ~eps L for any M.
-// Sources: seed 002 (arc-length table, forward differencing and u = U(s) by table lookup);
-// Eberly (2008); Fritsch & Carlson, SIAM J. Numer. Anal. 17 (1980) for the monotone limiter.
-// Cost: construction O(M) Newton solves; u(s) O(1) with the tables (a few ns), 7 or 15
-// evaluations more for the polish; Newton see newton_inversion.hpp (~50 evaluations on a curved
-// cubic segment).
-// s(u) O(log M) + one adaptive Gauss-Kronrod integral from the nearest node.
-// The object holds a copy of the curve; every const member is thread-safe.
+// Built once: the cumulative segment lengths (adaptive Gauss-Kronrod) and, unless the method is
+// Newton, a table of u_j = u(s_j) on a uniform grid s_j = j L / M with slopes du/ds = 1 / |P'(u_j)|,
+// the nodes solved in a chain, each relative to the previous one. s(u): from the nearest known
+// point at or left of u, one recursive Gauss-Kronrod integral. u(s): (a) linear_table, O(1),
+// error O(ds^2); (b) hermite_table, O(1), cubic Hermite of u(s) with Fritsch-Carlson limited
+// slopes, cells split at the arc-length positions of knots (where u'' or u' jumps), error O(ds^4);
+// (c) newton (newton_inversion.hpp). (a) and (b) may add one safeguarded Newton polish over one
+// panel of the short-step rule. M is given, or doubled from 16 per segment until the Hermite
+// table's measured midpoint error is below table_tolerance * L.
+// Sources: seed 002 (arc-length table, u = U(s) by lookup); Eberly (2008); Fritsch & Carlson (1980).
+// Cost: construction O(M) Newton solves; u(s) O(1) (+15 or 31 evaluations with the polish);
+// s(u) O(log M) + one integral. Holds a copy of the curve; const members are thread-safe.
 #pragma once
 
 #include "curvebench/arclength/gauss_kronrod.hpp"
@@ -276,13 +253,13 @@ class parameterization {
     return opt_.newton_polish ? polish(s, uu, j, evaluations) : uu;
   }
 
-  // s(x) - s for x in cell j, integrated from the nearer cell end by one G3-K7 panel; err gets the
-  // panel's estimate |G3 - K7| + rounding floor. The node's own error (nodes_err_, a loose bound
+  // s(x) - s for x in cell j, integrated from the nearer cell end by one panel of the short-step
+  // rule (detail::short_step_rule, G7-K15); err gets the panel's estimate |G - K| + rounding floor. The node's own error (nodes_err_, a loose bound
   // that includes the segment lengths' estimates) is left out: it biases r0 and r1 alike, and a
   // step can only end as close to s as the node is, which the table value is no closer than.
   [[nodiscard]] Real cell_residual(const Real& s, const Real& x, std::size_t j, Real& err,
                                    std::size_t& evaluations) const {
-    const gauss_kronrod_rule<Real>& rule = gauss_kronrod<Real>(3);
+    const gauss_kronrod_rule<Real>& rule = detail::short_step_rule<Real>();
     auto f = [this](const Real& v) { return speed(curve_, v); };
     const bool from_left = x - nodes_u_[j] <= nodes_u_[j + 1] - x;
     const kronrod_panel<Real> p = from_left ? rule.apply(f, nodes_u_[j], x) : rule.apply(f, x, nodes_u_[j + 1]);
@@ -296,12 +273,9 @@ class parameterization {
   // above its own error estimate e0 (otherwise it is quadrature noise and a step would follow the
   // panel's error, not the table's), must stay inside the bracket, and is kept only when its
   // residual bound |r1| + e1 is below the table value's lower bound |r0| - e0; otherwise the table
-  // value stands. The unguarded step (integral from u_j, no checks) made results worse wherever
-  // the table was already better than the G3-K7 panel: on the s-grid itself (the nodes are exact)
-  // with the panel spanning a whole cell, by up to 6.4e-3 L at M = 16 next to the exact cusp of
-  // bench/cases/exact_cusp_cubic.json (the kink inside the panel) and 3.3e-12 L on smooth cases,
-  // against ~1e-15 L unpolished. Integrating from the nearer end halves the panel. Cost: 7
-  // evaluations when the residual is noise, 15 when a step is tried.
+  // value stands. Without these checks a step follows the panel's error wherever the table is
+  // already better than one panel (on the s-grid, next to a kink). Integrating from the nearer
+  // end halves the panel. Cost: 15 evaluations when the residual is noise, 31 when a step is tried.
   [[nodiscard]] Real polish(const Real& s, const Real& uu, std::size_t j, std::size_t& evaluations) const {
     using std::abs;
     Real e0, e1;
@@ -396,18 +370,18 @@ class parameterization {
   }
 
   // The knots whose arc-length position is known from the segment lengths, with one-sided speeds
-  // (evaluated 16 eps inside each neighbouring segment, as segment_lengths does). A knot closer
-  // than 64 eps L to the previous one in s (a zero-length segment) is dropped: u(s) is ambiguous
+  // (evaluated detail::knot_offset inside each neighbouring segment, as segment_lengths does). A
+  // knot closer than detail::knot_gap_eps L to the previous one in s (a zero-length segment) is dropped: u(s) is ambiguous
   // there, and the table keeps the first.
   void collect_knots() {
     using std::abs;
     const auto p = segments_.parameters();
     const auto cum = segments_.cumulative();
-    const Real gap = Real(64) * epsilon<Real>() * length();
+    const Real gap = Real(detail::knot_gap_eps) * epsilon<Real>() * length();
     for (std::size_t i = 1; i + 1 < p.size(); ++i) {
       if (!(cum[i] > gap && cum[i] < length() - gap)) continue;
       if (!knots_.empty() && !(cum[i] - knots_.back().s > gap)) continue;
-      const Real d = Real(16) * epsilon<Real>() * (abs(p[i - 1]) + abs(p[i + 1]));
+      const Real d = detail::knot_offset(Real(abs(p[i - 1]) + abs(p[i + 1])));
       const Real left = p[i] - p[i - 1] > Real(2) * d ? speed(curve_, Real(p[i] - d)) : speed(curve_, p[i]);
       const Real right = p[i + 1] - p[i] > Real(2) * d ? speed(curve_, Real(p[i] + d)) : speed(curve_, p[i]);
       build_evaluations_ += 2;
@@ -416,11 +390,11 @@ class parameterization {
   }
 
   // The Hermite table on the node set (s_j = j ds, u_j, |P'(u_j)|), cells split at the knots
-  // strictly inside them (64 eps L away from the cell's ends).
+  // strictly inside them (detail::knot_gap_eps L away from the cell's ends).
   [[nodiscard]] hermite_table make_hermite(const std::vector<Real>& us, const std::vector<Real>& ss,
                                            const std::vector<Real>& sp) const {
     const std::size_t m = us.size() - 1;
-    const Real gap = Real(64) * epsilon<Real>() * length();
+    const Real gap = Real(detail::knot_gap_eps) * epsilon<Real>() * length();
     hermite_table h;
     h.first.reserve(m + 1);
     h.pieces.reserve(m + knots_.size());

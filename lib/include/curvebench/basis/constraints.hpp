@@ -1,35 +1,15 @@
-// Basis matrices from value / derivative constraints: `basis_from_constraints`.
+// Basis matrices from value / derivative constraints: basis_from_constraints.
 //
-// A polynomial of degree n is written, as everywhere in curvebench (see cubic_matrices.hpp),
-//     P(t) = T(t) · M · G,   T(t) = [1  t  t^2 ... t^n],
-// with G the (n + 1) x Dim geometry (one constraint value per row). Each constraint j says
-// "the order_j-th derivative of P at t_j equals G_j" (order 0 is the value). Writing P(t) = T(t) a
-// with the power coefficients a, constraint j reads T^(order_j)(t_j) · a = G_j, so
-//     C · a = G,   C(j, k) = d^order_j/dt^order_j t^k at t_j = k!/(k - order_j)! t_j^(k - order_j),
-// and the basis matrix is M = C^{-1}; column j of T · M is the blending function of constraint j.
-// Source: seed 000 (CS 174C, "curves from geometric constraints", endpoints + mid-point tangent),
-// seed 001 (EECS 487, constraint matrix C and basis matrix B = C^-1, the quadratic f(.5), f'(.5),
-// f''(.5) example), Foley et al., "Computer Graphics: Principles and Practice", 11.2.
-//
-// API
-//   constraint<Real>{t, order}                        one row of C
-//   power_basis_row(degree, t, order)                  d^order/dt^order [1 t ... t^degree]
-//   constraint_matrix(constraints)                     C, degree = count - 1 (no checks beyond shape)
-//   basis_from_constraints(constraints)                -> constraint_basis{c = C, m = M, rcond}
-//   basis_from_constraint_matrix(C)                    -> constraint_basis for a C built by hand (rows
-//                                                        that are combinations of constraints, e.g.
-//                                                        seed 001's Catmull-Rom rows p0 = f(1) - 2 f'(0))
-// Matrices are Eigen dynamic-size (`matrix_x<Real>`) so any degree works; convert to matrix4 with
-// `matrix4<Real> m = result.m;` for cubics.
-//
-// Errors (invalid_input, naming the constraints and the reason): no constraint; t not finite;
-// negative order; order > degree (a zero row of C); the same (t, order) twice (two equal rows);
-// otherwise numerically singular C (the rows found linearly dependent are listed), or a reciprocal
-// condition estimate below eps (M would have no correct digit).
-//
-// Algorithm and cost: C is inverted with Eigen's fully pivoted LU (works for every Real, including
-// real50): O(n^3) once. Accuracy: M is within about cond(C) · n · eps of the exact inverse
-// (relative to its norm); `rcond` = 1 / (||C||_1 ||M||_1) reports the conditioning so callers can judge.
+// A polynomial of degree n is P(t) = T(t) · M · G with T(t) = [1 t ... t^n] and G the (n + 1) x Dim
+// geometry (cubic_matrices.hpp). Constraint j says "the order_j-th derivative at t_j equals G_j", so
+// the power coefficients a solve C a = G with C(j, k) = k!/(k - order_j)! t_j^(k - order_j), and
+// M = C^{-1}; column j of T · M is the blending function of constraint j. C is inverted by Eigen's
+// fully pivoted LU (any Real, real50 included); rcond = 1 / (||C||_1 ||M||_1) is reported.
+// Errors (invalid_input, naming the constraints): none given, non-finite t, negative order,
+// order > degree, a repeated (t, order), a numerically singular C (the dependent rows are listed) or
+// rcond below eps. Sources: seed 000 (curves from geometric constraints), seed 001 (constraint
+// matrix C, basis matrix B = C^-1); Foley et al. (1990), 11.2.
+// Cost: O(n^3) once. Accuracy: M within about cond(C) · n · eps of the exact inverse (relative).
 #pragma once
 
 #include "curvebench/core/error.hpp"
@@ -52,6 +32,16 @@ namespace curvebench::basis {
 template <class Real>
 using matrix_x = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
 
+// API
+//   constraint<Real>{t, order}                        one row of C
+//   power_basis_row(degree, t, order)                  d^order/dt^order [1 t ... t^degree]
+//   constraint_matrix(constraints)                     C, degree = count - 1 (no checks beyond shape)
+//   basis_from_constraints(constraints)                -> constraint_basis{c = C, m = M, rcond}
+//   basis_from_constraint_matrix(C)                    -> constraint_basis for a C built by hand (rows
+//                                                        that are combinations of constraints, e.g.
+//                                                        seed 001's Catmull-Rom rows p0 = f(1) - 2 f'(0))
+// Matrices are Eigen dynamic-size (`matrix_x<Real>`) so any degree works; convert to matrix4 with
+// `matrix4<Real> m = result.m;` for cubics.
 /// "The order-th derivative of P at t is the corresponding geometry row" (order 0 = the value).
 template <class Real>
 struct constraint {

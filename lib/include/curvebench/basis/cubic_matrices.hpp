@@ -1,21 +1,12 @@
 // Named cubic basis matrices and conversions between them.
-//
-// Convention (used everywhere in curvebench): a cubic segment is
-//     P(t) = T(t) · M · G,   T(t) = [1  t  t^2  t^3],  t in [0, 1],
-// where G is the 4 x Dim geometry matrix (one control item per row) and M · G is the column of
-// power coefficients [a0 a1 a2 a3]^T (row k of M gives the coefficient of t^k). Seeds 000 and 002
-// print [t^3 t^2 t 1], which is this M with its rows in reverse order; seed 001 uses this order.
-//
-// Geometry orders:
-//   hermite   G = [P0, P1, T0, T1]       (end points, end tangents dP/dt)
-//   bezier    G = [P0, P1, P2, P3]       (control polygon)
-//   cardinal  G = [P_{-1}, P0, P1, P2]   segment from P0 to P1, tangents s (P1 - P_{-1}), s (P2 - P0);
-//                                         s = 1/2 is Catmull-Rom, s = (1 - tension)/2
-//   bspline   G = [P_{-1}, P0, P1, P2]   uniform cubic B-spline segment
-// Sources: seeds 000, 001, 002 (with DESIGN.md's errata: seed 002's Catmull-Rom matrix lacks 1/2);
-// Foley et al., "Computer Graphics: Principles and Practice", 11.2.
-// Converting geometry between bases: the same curve has M_a G_a = M_b G_b, so
-// G_b = M_b^{-1} M_a G_a (`geometry_conversion`). Exact in rationals; O(1).
+// Convention (everywhere in curvebench): P(t) = T(t) · M · G, T(t) = [1 t t^2 t^3], t in [0, 1],
+// G the 4 x Dim geometry (one control item per row); row k of M gives the coefficient of t^k
+// (seeds 000 and 002 print [t^3 t^2 t 1], the same M with its rows reversed). Geometries:
+// hermite [P0, P1, T0, T1]; bezier [P0, P1, P2, P3]; cardinal [P_-1, P0, P1, P2] with tangents
+// s (P1 - P_-1), s (P2 - P0) (s = 1/2 Catmull-Rom); bspline [P_-1, P0, P1, P2] (uniform).
+// geometry_conversion gives G_b = M_b^-1 M_a G_a (the same curve in another basis).
+// Sources: seeds 000, 001, 002 (seed 002's Catmull-Rom matrix lacks the factor 1/2);
+// Foley et al. (1990), 11.2. Cost: O(1). Accuracy: exact rationals, one rounding per entry.
 #pragma once
 
 #include "curvebench/core/error.hpp"

@@ -16,9 +16,11 @@
 #include "curvebench/core/real.hpp"
 
 #include <concepts>
+#include <cstddef>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace curvebench {
 
@@ -43,12 +45,16 @@ concept curve = requires(const C& c, const typename C::real_type& u, int order) 
   { c.breakpoints() } -> std::convertible_to<std::span<const typename C::real_type>>;
 };
 
-/// Throws std::domain_error unless u lies in the closed domain:
-/// "u = 1.5 is outside the domain [0, 1]".
+/// Throws std::domain_error unless u lies in the closed domain (NaN fails too):
+/// "u = 1.5 is outside the domain [0, 1]"; batch evaluators pass the span's name and the index:
+/// "us[5] = nan is outside the domain [0, 1]".
 template <class Real>
-void check_parameter(const Real& u, const interval<Real>& domain) {
+void check_parameter(const Real& u, const interval<Real>& domain, std::string_view name = "u",
+                     std::size_t index = std::string::npos) {
   if (domain.contains(u)) return;
-  throw std::domain_error("u = " + to_text(u) + " is outside the domain [" + to_text(domain.lo) + ", " +
+  std::string what(name);
+  if (index != std::string::npos) what += "[" + std::to_string(index) + "]";
+  throw std::domain_error(what + " = " + to_text(u) + " is outside the domain [" + to_text(domain.lo) + ", " +
                           to_text(domain.hi) + "]");
 }
 

@@ -18,7 +18,11 @@ namespace curvebench {
 /// Largest dimension the library is instantiated and tested for.
 inline constexpr int max_dimension = 4;
 
-template <class Real, int Dim>
+/// Real must be a real_number (core/real.hpp): every curve family, and through the curve concept
+/// every arc-length and motion template, is built on this alias, so an integer or other
+/// non-floating Real is rejected here, at compile time, instead of computing with integer
+/// division (Real(1) / Real(2) == 0).
+template <real_number Real, int Dim>
   requires(Dim >= 1 && Dim <= max_dimension)
 using point = Eigen::Matrix<Real, Dim, 1>;
 
@@ -30,14 +34,6 @@ using point_list = std::vector<point<Real, Dim>>;
 template <class Real, int Dim>
 [[nodiscard]] point<Real, Dim> zero_point() {
   return point<Real, Dim>::Zero();
-}
-
-/// True when every coordinate of p is finite.
-template <class Real, int Dim>
-[[nodiscard]] bool is_finite_point(const point<Real, Dim>& p) {
-  for (int d = 0; d < Dim; ++d)
-    if (!is_finite(p[d])) return false;
-  return true;
 }
 
 /// Converts a point to another Real type (e.g. double control data to the 50-digit reference).

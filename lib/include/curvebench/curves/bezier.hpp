@@ -1,36 +1,17 @@
-// Bezier curves of any degree L (1 <= L <= bezier_max_degree = 60): P(t) = sum_k B_k^L(t) P_k.
-//
-// Source: seed 000 (CS 174C week 3: de Casteljau, Bernstein polynomials, properties, derivatives
-// P' = L sum B_k^{L-1} dP_k), seed 002; Farin, "Curves and Surfaces for CAGD", ch. 4-6.
-//
-// Domain [a, b] (default [0, 1]), mapped affinely to t = (u - a) / (b - a); the k-th derivative
-// in u is the k-th derivative in t divided by (b - a)^k.
-//
-// Three evaluation algorithms, selected by the caller (`evaluate(u, algorithm)`):
-//   - de_casteljau  : L(L+1)/2 convex combinations, O(L^2); backward stable, error ~ L ulps of the
-//                     control-point scale. `operator()` uses it.
-//   - bernstein_sum : sum of C(L,k) t^k (1-t)^(L-k) P_k with incremental powers, O(L); all weights
-//                     non-negative, error ~ L ulps of the control-point scale.
-//   - horner        : the control points are converted ONCE, in the constructor, to power-basis
-//                     coefficients, then Horner's rule, O(L). Fast, but the conversion cancels
-//                     binomially large terms: the a-priori bound is ~3^L ulps of the scale, and the
-//                     measured error at L = 20 is ~4e8 ulps in float, double and long double alike
-//                     (tests/test_bezier.cpp, degree_20_error_by_algorithm): no digit left in float,
-//                     ~1e-7 relative in double. Kept that way on purpose: it is what the bench shows.
-// Derivatives of any order by the hodograph: the k-th derivative is the degree L-k Bezier curve of
-// the control points L!/(L-k)! D^k P_i / (b-a)^k. All levels k = 0..L are precomputed in the
-// constructor ((L+1)(L+2)/2 points), so `derivative(u, k)` does not allocate; order > L is zero.
-//
-// Also: batch `evaluate(us, out, algorithm, order)`, `split(u)` (de Casteljau subdivision into
-// two curves on [a, u] and [u, b], O(L^2)), `elevate()` (the same curve at degree L + 1, O(L)),
-// `hodograph()`, `power_coefficients()`.
-//
-// Memory and threads: evaluation uses a stack buffer of bezier_max_degree points (no allocation,
-// no mutable state), so a const curve may be evaluated from many threads at once. That buffer is
-// why the degree is capped at 60 (binomials up to C(60, 30) are also exact 64-bit integers).
-// Errors: fewer than 2 or more than bezier_max_degree + 1 control points, non-finite coordinates,
-// a domain that is not finite with a < b -> invalid_input at construction; u outside the domain ->
-// std::domain_error; negative derivative order -> invalid_input.
+// Bezier curves of any degree L (1 <= L <= bezier_max_degree = 60): P(t) = sum_k B_k^L(t) P_k on a
+// domain [a, b] (default [0, 1]), t = (u - a) / (b - a).
+// Algorithms (evaluate(u, algorithm)): de_casteljau (operator()), L(L+1)/2 convex combinations,
+// O(L^2), backward stable, error ~L ulps of the control-point scale; bernstein_sum, O(L),
+// non-negative weights, error ~L ulps; horner, power-basis coefficients converted once in the
+// constructor, O(L), but the conversion cancels binomially large terms: error bound ~3^L ulps
+// (kept on purpose: it is what the bench shows; tests/test_bezier.cpp measures it at L = 20).
+// Derivatives of any order by the hodograph levels, all precomputed ((L+1)(L+2)/2 points), so
+// derivative(u, k) does not allocate. Also: batch evaluate, split (de Casteljau, O(L^2)),
+// elevate (O(L)), hodograph, power_coefficients. Evaluation uses a stack buffer of 61 points (the
+// reason for the cap): no allocation, no mutable state, thread-safe. Bad data throw invalid_input;
+// u outside the domain std::domain_error.
+// Sources: seed 000 (de Casteljau, Bernstein polynomials, derivatives), seed 002; Farin (2002),
+// ch. 4-6. Accuracy: O(L eps) for de Casteljau and Bernstein, O(3^L eps) for Horner.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -126,7 +107,10 @@ class bezier {
   void evaluate(std::span<const Real> us, std::span<point_type> out, bezier_algorithm algorithm,
                 int order = 0) const {
     validate::same_count("out", out.size(), "us", us.size());
-    for (std::size_t i = 0; i < us.size(); ++i) out[i] = derivative(us[i], order, algorithm);
+    for (std::size_t i = 0; i < us.size(); ++i) {
+      check_parameter(us[i], domain_, "us", i);
+      out[i] = derivative(us[i], order, algorithm);
+    }
   }
 
   /// d^order P / du^order by de Casteljau on the precomputed hodograph control points.

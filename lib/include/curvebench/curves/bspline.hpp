@@ -1,42 +1,17 @@
-// B-spline curves of any order m (degree m - 1, 1 <= m <= bspline_max_order = 16) on
-// non-uniform knots: P(u) = sum_i N_{i,m}(u) P_i.
-//
-// Source: seed 000 (CS 174C week 3: the Cox-de Boor recursion
-//   N_{i,1}(u) = 1 if t_i <= u < t_{i+1}, else 0,
-//   N_{i,m}(u) = (u - t_i)/(t_{i+m-1} - t_i) N_{i,m-1}(u) + (t_{i+m} - u)/(t_{i+m} - t_{i+1}) N_{i+1,m-1}(u)),
-// seed 001 (the B-spline row of the property table); de Boor, "A Practical Guide to Splines"
-// (the algorithm), Boehm 1980 (knot insertion), Piegl & Tiller, "The NURBS Book", ch. 2-5.
-//
-// Indexing (stated once, used everywhere): control points P_0 .. P_{n-1} (n >= m), knots
-// t_0 <= t_1 <= ... <= t_{n+m-1} (n + m of them), domain [t_{m-1}, t_n]. (With the seed's
-// L + 1 = n points P_0..P_L this is the usual [t_{m-1}, t_{L+1}].) Breakpoints are the distinct
-// knots inside the domain.
-// Conventions:
-//   - 0/0 = 0 in the recursion (more generally x/0 = 0: a zero-length knot interval carries a zero
-//     basis function, so the term it would divide vanishes);
-//   - spans are half-open, [t_k, t_{k+1}): at an interior knot the curve takes the value from the
-//     right (it matters only where the curve is discontinuous, i.e. multiplicity m);
-//   - the right end u = t_n is special: with the half-open rule every N_{i,1} would vanish there
-//     (and a clamped curve would evaluate to 0); instead the last non-empty span is used, which
-//     gives the limit from the left, so a clamped curve ends exactly at P_{n-1}.
-// Evaluation, two algorithms selectable per call (`evaluate(u, order, algorithm)`):
-//   - de Boor (default): m(m-1)/2 convex combinations of control points for u in the domain,
-//     O(m^2 Dim), backward stable: error ~ m ulps of the control-point scale;
-//   - basis sum: the m non-zero N_{i,m}(u) by the Cox-de Boor recursion (triangular form, O(m^2)),
-//     then sum N_i P_i (O(m Dim)); every N >= 0 and they sum to 1, so the error is also ~ m ulps.
-//   Both run in stack arrays of bspline_max_order entries: no allocation.
-// Derivatives: the r-th derivative is the B-spline of order m - r with control
-//   Q^r_i = (m - r) (Q^{r-1}_{i+1} - Q^{r-1}_i) / (t_{i+m} - t_{i+r})  (0/0 = 0), knots t_r..t_{n+m-1-r},
-// precomputed for every r < m in the constructor (n m points); order >= m is zero. Exact up to
-// rounding: the differences lose relative accuracy only where control points nearly coincide.
-// Continuity at an interior knot of multiplicity mu: C^{m-1-mu}.
-// Also: Boehm knot insertion (the curve is unchanged), knot-vector builders (uniform, clamped /
-// open, periodic with a closed-curve helper) and, for m = 4, conversion to the shared
-// piecewise_cubic engine (one Hermite segment per non-empty span).
-// Errors (invalid_input at construction, message names what and where): order outside [1, 16],
-// fewer than m control points, knots.size() != n + m, NaN / infinite / decreasing knots, a knot of
-// multiplicity > m, an empty domain, non-finite control points. u outside the domain ->
-// std::domain_error.
+// B-spline curves of any order m (degree m - 1, 1 <= m <= bspline_max_order = 16) on non-uniform
+// knots: P(u) = sum_i N_{i,m}(u) P_i, control points P_0 .. P_{n-1}, knots t_0 .. t_{n+m-1},
+// domain [t_{m-1}, t_n] (indexing and the conventions at knots: see the comment above the class).
+// Evaluation by de Boor's algorithm (default; m(m-1)/2 convex combinations, O(m^2 Dim)) or the
+// Cox-de Boor basis sum (O(m^2)), both in stack arrays; derivatives by the precomputed derivative
+// control points (order m - r for the r-th); continuity C^{m-1-mu} at a knot of multiplicity mu.
+// Also: Boehm knot insertion, knot-vector builders (uniform, clamped, periodic) and, for m = 4,
+// conversion to the piecewise_cubic engine. Bad data throw invalid_input naming what and where;
+// u outside the domain std::domain_error.
+// Sources: seed 000 (the Cox-de Boor recursion), seed 001 (the property table); de Boor (1978);
+// Boehm (1980); Piegl & Tiller (1997), ch. 2-5.
+// Cost: O(m^2) per value, no allocation; construction O(n m). Accuracy: backward stable, error
+// ~m ulps of the control-point scale; derivative differences lose relative accuracy only where
+// control points nearly coincide.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -154,6 +129,29 @@ template <class Real>
 
 // ---------------------------------------------------------------------------------------------
 
+// Indexing (stated once, used everywhere): control points P_0 .. P_{n-1} (n >= m), knots
+// t_0 <= t_1 <= ... <= t_{n+m-1} (n + m of them), domain [t_{m-1}, t_n]. (With the seed's
+// L + 1 = n points P_0..P_L this is the usual [t_{m-1}, t_{L+1}].) Breakpoints are the distinct
+// knots inside the domain.
+// Conventions:
+//   - 0/0 = 0 in the recursion (more generally x/0 = 0: a zero-length knot interval carries a zero
+//     basis function, so the term it would divide vanishes);
+//   - spans are half-open, [t_k, t_{k+1}): at an interior knot the curve takes the value from the
+//     right (it matters only where the curve is discontinuous, i.e. multiplicity m);
+//   - the right end u = t_n is special: with the half-open rule every N_{i,1} would vanish there
+//     (and a clamped curve would evaluate to 0); instead the last non-empty span is used, which
+//     gives the limit from the left, so a clamped curve ends exactly at P_{n-1}.
+// Evaluation, two algorithms selectable per call (`evaluate(u, order, algorithm)`):
+//   - de Boor (default): m(m-1)/2 convex combinations of control points for u in the domain,
+//     O(m^2 Dim), backward stable: error ~ m ulps of the control-point scale;
+//   - basis sum: the m non-zero N_{i,m}(u) by the Cox-de Boor recursion (triangular form, O(m^2)),
+//     then sum N_i P_i (O(m Dim)); every N >= 0 and they sum to 1, so the error is also ~ m ulps.
+//   Both run in stack arrays of bspline_max_order entries: no allocation.
+// Derivatives: the r-th derivative is the B-spline of order m - r with control
+//   Q^r_i = (m - r) (Q^{r-1}_{i+1} - Q^{r-1}_i) / (t_{i+m} - t_{i+r})  (0/0 = 0), knots t_r..t_{n+m-1-r},
+// precomputed for every r < m in the constructor (n m points); order >= m is zero. Exact up to
+// rounding: the differences lose relative accuracy only where control points nearly coincide.
+// Continuity at an interior knot of multiplicity mu: C^{m-1-mu}.
 template <class Real, int Dim>
 class bspline {
  public:
@@ -161,7 +159,7 @@ class bspline {
   using point_type = point<Real, Dim>;
   static constexpr int dimension = Dim;
 
-  /// order m in [1, 16], knots: control_points.size() + m values (see the header comment).
+  /// order m in [1, 16], knots: control_points.size() + m values (see the comment above the class).
   bspline(int order, std::vector<Real> knots, point_list<Real, Dim> control_points) {
     validate::finite_points<Real, Dim>("control_points", control_points);
     core_ = detail::bspline_core<Real, point_type>(order, std::move(knots), std::move(control_points));

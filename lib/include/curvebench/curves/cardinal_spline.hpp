@@ -1,6 +1,29 @@
-// cardinal_spline: cardinal cubic splines (Catmull-Rom for s = 1/2) with alpha parameterization.
-//
-// An interpolating C1 cubic spline whose slopes are computed from the points (seeds 000, 001, 002).
+// cardinal_spline: cardinal cubic splines (Catmull-Rom for s = 1/2) with alpha parameterization:
+// interpolating C1 cubics whose slope at a point is 2s times the derivative of the parabola
+// through its neighbours, on given knots or knots from |P_{i+1} - P_i|^alpha (alpha = 0 uniform,
+// 1/2 centripetal, 1 chordal); s = 1/2 is the Barry-Goldman non-uniform Catmull-Rom curve (as
+// Boost.Math's catmull_rom). Ends: phantom, one_sided, given_tangents, closed (formulas, and the
+// erratum to seed 000's difference formula, above cardinal_end). Evaluated by piecewise_cubic.
+// Sources: seeds 000, 001, 002 (cardinal matrix, finite-difference slopes, extrapolated ends);
+// Barry & Goldman (1988).
+// Cost: O(n) construction, O(1) evaluation; local control (moving P_j changes at most segments
+// j-2 .. j+1). Accuracy: interpolates the points to rounding; C1 at the knots; reproduces
+// quadratics (s = 1/2, one_sided ends) on any knots.
+#pragma once
+
+#include "curvebench/core/error.hpp"
+#include "curvebench/core/point.hpp"
+#include "curvebench/curves/detail/cubic_family.hpp"
+#include "curvebench/curves/piecewise_cubic.hpp"
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace curvebench {
+
 // Knots: given, or from the points by u_0 = 0, u_{i+1} = u_i + |P_{i+1} - P_i|^alpha with alpha = 0
 // (uniform), 1/2 (centripetal), 1 (chordal). The slope dP/du at an interior point is 2s times the
 // derivative of the parabola through the three neighbouring points,
@@ -17,25 +40,7 @@
 //                  end knot: seed 000's second-order one-sided difference
 //   given_tangents the user's dP/du at both ends (not scaled by 2s)
 //   closed         a closed loop: the segment P_{n-1} -> P_0 is added and slopes wrap around
-// Cost O(n) construction, O(1) evaluation (engine); local control: moving P_j changes at most the
-// four segments j-2..j+1 (on given or uniform knots). Accuracy: interpolates the points to
-// rounding; C1 at the knots; reproduces quadratics (s = 1/2, one_sided ends) on any knots.
-#pragma once
-
-#include "curvebench/core/error.hpp"
-#include "curvebench/core/point.hpp"
-#include "curvebench/curves/detail/cubic_family.hpp"
-#include "curvebench/curves/piecewise_cubic.hpp"
-
-#include <cstddef>
-#include <span>
-#include <string>
-#include <utility>
-#include <vector>
-
-namespace curvebench {
-
-/// How a cardinal spline treats its ends (see the header comment).
+/// How a cardinal spline treats its ends (see the comment above).
 enum class cardinal_end { phantom, one_sided, given_tangents, closed };
 
 [[nodiscard]] inline const char* to_string(cardinal_end e) {

@@ -1,25 +1,14 @@
-// Composite Bezier curves: a chain of Bezier segments (bezier.hpp), each of its own degree (mixed
-// degrees allowed), on strictly increasing knots u_0 < u_1 < ... < u_n. Segment i is the Bezier
-// curve of its control points on [u_i, u_{i+1}], i.e. local t = (u - u_i) / (u_{i+1} - u_i).
-//
-// Source: seed 000 and seed 002 (piecewise curves, continuity at joins); Farin, "Curves and Surfaces
-// for CAGD", ch. 7 (piecewise Bezier curves, C1 and G1 conditions).
-//
-// Evaluation: binary search for the segment (O(log n)), then the segment's de Casteljau (O(L^2));
-// the batch `evaluate(us, out, order)` keeps the previous segment while u stays in it (O(1) lookups
-// for sorted parameters).
-// Derivatives of any order by the chain rule: the local t-derivative divided by h_i^k (done by the
-// segment, whose hodograph levels are precomputed); order > L_i gives zero. Accuracy as bezier.hpp:
-// ~L ulps of the segment's control-point scale.
-// Convention at a knot: an interior knot u_i (0 < i < n) belongs to the RIGHT segment i (whose value
-// there is its first control point), the last knot u_n to the last segment. So the value at a knot
-// where the chain is discontinuous is the right-hand limit, and derivatives at a knot are right
-// derivatives (left ones at u_n).
-// Segment ends that do not meet are ALLOWED (a chain may jump, e.g. stepped keys); the join check
-// `continuity_at_joins(tol)` reports, per interior knot, whether the chain is C0, C1 and G1 there.
-// Errors: no segment, a segment with fewer than 2 or more than bezier_max_degree + 1 points,
-// non-finite coordinates, knots.size() != segments + 1, knots not finite and strictly increasing ->
-// invalid_input; u outside [u_0, u_n] -> std::domain_error.
+// Composite Bezier curves: a chain of Bezier segments (bezier.hpp) of any, mixed, degrees on
+// strictly increasing knots u_0 < ... < u_n; segment i is its Bezier curve on [u_i, u_{i+1}].
+// Evaluation: binary search for the segment, then its de Casteljau; the batch evaluate keeps the
+// previous segment while u stays in it (O(1) lookups for sorted parameters). Derivatives of any
+// order by the chain rule (h_i^-k). An interior knot belongs to the segment on its right (right
+// limits and right derivatives there), u_n to the last. Segments need not meet (stepped keys);
+// continuity_at_joins(tol) reports C0, C1 and G1 per interior knot. Bad data (no segment, bad
+// point counts, non-finite values, bad knots) throw invalid_input; u outside std::domain_error.
+// Sources: seeds 000, 002 (piecewise curves, continuity at joins); Farin (2002), ch. 7.
+// Cost: O(log n) + O(L^2) per value. Accuracy: as bezier.hpp, ~L ulps of the segment's
+// control-point scale.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -120,7 +109,10 @@ class composite_bezier {
     for (std::size_t i = 0; i < us.size(); ++i) {
       const Real& u = us[i];
       const bool inside = knots_[seg] <= u && (u < knots_[seg + 1] || (seg == last && u <= knots_[seg + 1]));
-      if (!inside) seg = segment_index(u);
+      if (!inside) {
+        check_parameter(u, domain(), "us", i);  // NaN is never inside: it ends here
+        seg = segment_index(u);
+      }
       out[i] = segments_[seg].derivative(u, order);
     }
   }

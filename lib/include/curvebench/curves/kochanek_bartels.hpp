@@ -1,26 +1,13 @@
-// kochanek_bartels: Kochanek-Bartels (TCB) splines: interpolating cubic Hermite splines whose
-// tangents are shaped per key by tension t, continuity c and bias b.
-//
-// Source: D. Kochanek, R. Bartels, "Interpolating splines with local tension, continuity, and
-// bias control", SIGGRAPH 1984; seed 000 (tension, bias and continuity formulas one at a time).
-// With chords L_i = P_i - P_{i-1} (arriving) and R_i = P_{i+1} - P_i (leaving), the tangents at key
-// i in "per segment" units are
-//   outgoing (start of segment i)  DD_i = (1-t)(1+b)(1+c)/2 L_i + (1-t)(1-b)(1-c)/2 R_i
-//   incoming (end of segment i-1)  DS_i = (1-t)(1+b)(1-c)/2 L_i + (1-t)(1-b)(1+c)/2 R_i.
-// t = c = b = 0 is Catmull-Rom. Seed 000's tension and continuity formulas are these; its bias
-// formula is printed with the opposite sign of b (it weights L by (1 - b)); we follow the paper:
-// b = +1 weights the arriving chord ("overshoot" after the key).
-// Non-uniform time (the paper's adjustment): for frame counts (knot intervals) N_{i-1} = h_{i-1},
-// N_i = h_i around key i, DS_i is scaled by 2 N_{i-1}/(N_{i-1} + N_i) and DD_i by 2 N_i/(N_{i-1} + N_i).
-// In slopes per unit of u (our Hermite convention, local tangent = h dP/du) both become
-// dP/du = 2 D / (h_{i-1} + h_i): with c = 0 the spline is C1 in u on ANY knots (derivation: the
-// velocity on each side is the adjusted tangent divided by that side's h). Without the adjustment
-// the tangents are used as local tangents as they are (dP/du = DD_i / h_i, DS_i / h_{i-1}), C1 only on
-// uniform knots.
-// Ends of an open spline: phantom keys P_{-1} = 2 P_0 - P_1, P_{n+1} = 2 P_n - P_{n-1} at mirrored
-// times (so L_0 = R_0 and R_n = L_n). Closed: the keys wrap around, the last knot is the return to
-// P_0. Cost O(n) construction, O(1) evaluation (engine); local control (a key moves at most four
-// segments); interpolates the keys to rounding.
+// kochanek_bartels: Kochanek-Bartels (TCB) splines, interpolating cubic Hermite splines whose
+// tangents are shaped per key by tension t, continuity c and bias b (t = c = b = 0: Catmull-Rom).
+// The tangents from the arriving and leaving chords, the bias sign (the paper's, not seed 000's
+// misprint) and the paper's non-uniform time adjustment (dP/du = 2 D / (h_{i-1} + h_i), C1 in u on
+// any knots when c = 0) are derived above kochanek_bartels_tangents. Open ends use phantom keys
+// P_{-1} = 2 P_0 - P_1, P_{n+1} = 2 P_n - P_{n-1} at mirrored times; closed splines wrap around.
+// Evaluated by the piecewise_cubic engine.
+// Sources: Kochanek & Bartels (1984); seed 000 (tension, continuity and bias one at a time).
+// Cost: O(n) construction, O(1) evaluation; local control (a key moves at most four segments).
+// Accuracy: interpolates the keys to rounding.
 #pragma once
 
 #include "curvebench/core/error.hpp"
@@ -42,6 +29,20 @@ struct tcb {
   Real bias = Real(0);
 };
 
+// With chords L_i = P_i - P_{i-1} (arriving) and R_i = P_{i+1} - P_i (leaving), the tangents at key
+// i in "per segment" units are
+//   outgoing (start of segment i)  DD_i = (1-t)(1+b)(1+c)/2 L_i + (1-t)(1-b)(1-c)/2 R_i
+//   incoming (end of segment i-1)  DS_i = (1-t)(1+b)(1-c)/2 L_i + (1-t)(1-b)(1+c)/2 R_i.
+// t = c = b = 0 is Catmull-Rom. Seed 000's tension and continuity formulas are these; its bias
+// formula is printed with the opposite sign of b (it weights L by (1 - b)); we follow the paper:
+// b = +1 weights the arriving chord ("overshoot" after the key).
+// Non-uniform time (the paper's adjustment): for frame counts (knot intervals) N_{i-1} = h_{i-1},
+// N_i = h_i around key i, DS_i is scaled by 2 N_{i-1}/(N_{i-1} + N_i) and DD_i by 2 N_i/(N_{i-1} + N_i).
+// In slopes per unit of u (our Hermite convention, local tangent = h dP/du) both become
+// dP/du = 2 D / (h_{i-1} + h_i): with c = 0 the spline is C1 in u on ANY knots (derivation: the
+// velocity on each side is the adjusted tangent divided by that side's h). Without the adjustment
+// the tangents are used as local tangents as they are (dP/du = DD_i / h_i, DS_i / h_{i-1}), C1 only on
+// uniform knots.
 /// Outgoing (DD) and incoming (DS) tangents at a key from its arriving chord L and leaving chord R,
 /// in per-segment units (before any time adjustment).
 template <class Real, int Dim>

@@ -1,44 +1,17 @@
 // Lagrange interpolation: the polynomial curve of degree n through n + 1 points P_j at parameters
-// u_0 < ... < u_n, in two algorithms the caller selects (`lagrange_algorithm`):
-//
-//   - barycentric (default): the second ("true") barycentric formula
-//         P(u) = sum_j (w_j / (u - u_j)) P_j  /  sum_j w_j / (u - u_j),   w_j = 1 / prod_{k != j} (u_j - u_k),
-//     weights computed once in the constructor (O(n^2), scaled by a common factor to stay in range),
-//     O(n) per evaluation, P_j returned exactly at u = u_j. Forward stable for nodes with a small
-//     Lebesgue constant (Chebyshev); for equispaced nodes the problem itself is ill-conditioned
-//     (Lebesgue constant ~ 2^n / (e n log n)) and the error grows with it, not beyond.
-//     Source: Berrut & Trefethen, "Barycentric Lagrange interpolation", SIAM Review 46 (2004);
-//     Higham, "The numerical stability of barycentric Lagrange interpolation", IMA J. Numer. Anal. 24 (2004).
-//   - monomial: the numerically poor reference of seeds 001/002 ("solve for the coefficients":
-//     Vandermonde system V a = P, V(j, k) = u_j^k, solved in Real by partially pivoted LU, O(n^3) once),
-//     then Horner, O(n). cond(V) grows exponentially with n: at n = 20 on equispaced [0, 1] its values
-//     are ~1e10 times less accurate than the barycentric form's in double (measured in
-//     tests/test_lagrange.cpp: max error 6.3e-1 against 4.1e-11, for values of size 60).
-//
-// Derivatives of any order are exact (no finite differences).
-//   - monomial: Horner on the differentiated power series, O(n m) for order m.
-//   - barycentric: divided differences with a repeated argument. For fixed u, q_k(z) = P[z, u, ..., u]
-//     (u repeated k times) is a polynomial of degree n - k in z, so the barycentric formula
-//     reproduces it; q_k(u) = P[u, ..., u] (k + 1 times) = P^(k)(u) / k!, and
-//         q_0(u_j) = P_j,   q_k(u_j) = (q_{k-1}(u) - q_{k-1}(u_j)) / (u - u_j)
-//     (Schneider & Werner, "Some new aspects of rational interpolation", Math. Comp. 47 (1986)).
-//     The division by u - u_i is unstable when u is close to a node u_i, so at the nearest node i the
-//     value q_k(u_i) is instead taken from the identity sum_j w_j q(u_j) = 0, valid for any polynomial q
-//     of degree < n (it is the leading coefficient of q's interpolant):
-//         q_k(u_i) = -(1 / w_i) sum_{j != i} w_j q_k(u_j)          (k >= 1)
-//     which at u = u_i is the differentiation-matrix formula of Berrut & Trefethen (sec. 9). Then
-//         q_k(u) = sum_j c_j q_k(u_j) / sum_j c_j,  c_j = w_j / (u - u_j)   (q_k(u) = q_k(u_i) at u = u_i).
-//     Cost O(n m^2) for order m (the chains q_1(u_j) .. q_m(u_j) are recomputed per level so that
-//     nothing of size n is stored); orders <= 15 use a stack buffer, higher orders allocate m + 1
-//     points. Order > n is zero.
-//
-// Default parameters: n + 1 equispaced values on [0, 1] (`equispaced_parameters`); `chebyshev_parameters`
-// gives the Chebyshev points of the second kind (extrema of T_n, endpoints included) on [a, b].
-// The domain is [u_0, u_n] (no extrapolation); breakpoints are {u_0, u_n} (the curve is smooth).
-// Errors: fewer than 2 points (a curve needs u_0 < u_n), non-finite coordinates, a parameter count
-// that does not match, non-finite or non-increasing (so also repeated) parameters, barycentric weights
-// that overflow Real (too many equispaced points: ~ 250 in float), or a non-finite monomial
-// coefficient -> invalid_input at construction; u outside [u_0, u_n] -> std::domain_error.
+// u_0 < ... < u_n, by one of two algorithms (lagrange_algorithm):
+//   barycentric (default): the second barycentric formula P(u) = sum_j (w_j / (u - u_j)) P_j /
+//     sum_j w_j / (u - u_j), weights w_j = 1 / prod_{k != j} (u_j - u_k) once (O(n^2)); O(n) per
+//     value, P_j exactly at u_j; forward stable, error growing with the Lebesgue constant (small for
+//     Chebyshev nodes, ~2^n / (e n log n) for equispaced ones). Derivatives of any order exactly, by
+//     divided differences with a repeated argument (Schneider & Werner 1986), O(n m^2) for order m.
+//   monomial: the poor reference of seeds 001/002: the Vandermonde system solved by pivoted LU
+//     (O(n^3) once), then Horner, O(n); cond(V) grows exponentially with n.
+// equispaced_parameters and chebyshev_parameters (second kind, ends included) give the u_j. The
+// domain is [u_0, u_n]; breakpoints {u_0, u_n}. Bad data (fewer than 2 points, non-finite values,
+// non-increasing parameters, overflowing weights) throw invalid_input; u outside std::domain_error.
+// Sources: Berrut & Trefethen (2004); Higham (2004); Schneider & Werner (1986).
+// Accuracy: barycentric O(Lebesgue constant * eps); monomial O(cond(V) * eps).
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -247,8 +220,21 @@ class lagrange {
     return i;
   }
 
-  // P^(order)(u) by the repeated-argument divided differences (see the header comment). d[k] holds
-  // q_k(u) = P^(k)(u) / k!; d has order + 1 entries.
+  // Derivatives by divided differences with a repeated argument. For fixed u, q_k(z) = P[z, u, ..., u]
+  // (u repeated k times) is a polynomial of degree n - k in z, so the barycentric formula
+  // reproduces it; q_k(u) = P[u, ..., u] (k + 1 times) = P^(k)(u) / k!, and
+  //     q_0(u_j) = P_j,   q_k(u_j) = (q_{k-1}(u) - q_{k-1}(u_j)) / (u - u_j)
+  // (Schneider & Werner, "Some new aspects of rational interpolation", Math. Comp. 47 (1986)).
+  // The division by u - u_i is unstable when u is close to a node u_i, so at the nearest node i the
+  // value q_k(u_i) is instead taken from the identity sum_j w_j q(u_j) = 0, valid for any polynomial q
+  // of degree < n (it is the leading coefficient of q's interpolant):
+  //     q_k(u_i) = -(1 / w_i) sum_{j != i} w_j q_k(u_j)          (k >= 1)
+  // which at u = u_i is the differentiation-matrix formula of Berrut & Trefethen (sec. 9). Then
+  //     q_k(u) = sum_j c_j q_k(u_j) / sum_j c_j,  c_j = w_j / (u - u_j)   (q_k(u) = q_k(u_i) at u = u_i).
+  // Cost O(n m^2) for order m (the chains q_1(u_j) .. q_m(u_j) are recomputed per level so that
+  // nothing of size n is stored); orders <= 15 use a stack buffer, higher orders allocate m + 1
+  // points. Order > n is zero.
+  // d[k] holds q_k(u) = P^(k)(u) / k!; d has order + 1 entries.
   point_type barycentric_derivative(const Real& u, int order, std::span<point_type> d) const {
     const std::size_t n1 = params_.size();
     const std::size_t i = nearest_node(u);

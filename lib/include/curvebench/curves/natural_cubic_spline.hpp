@@ -1,19 +1,12 @@
 // natural_cubic_spline: the C2 interpolating cubic spline on non-uniform knots (the draftsman's
-// spline of seed 001), with the end conditions natural (P'' = 0), clamped (given end slopes),
-// not-a-knot (P''' continuous at u_1 and u_{n-1}) and periodic (closed, C2 across the seam).
-//
-// Algorithm: the slopes m_i = dP/du at the knots solve the C2 conditions, for interior knots
-//     h_i m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_{i-1} m_{i+1} = 3 (h_i D_{i-1} + h_{i-1} D_i),
-// D_i = (P_{i+1} - P_i)/h_i (second derivatives of adjacent Hermite segments equal at u_i), plus
-// one row per end: natural 2 m_0 + m_1 = 3 D_0; clamped m_0 = given; not-a-knot
-// h_1 m_0 + (h_0 + h_1) m_1 = (h_1 (3 h_0 + 2 h_1) D_0 + h_0^2 D_1)/(h_0 + h_1) (the P''' condition
-// with m_2 eliminated through the first interior row, de Boor, "A Practical Guide to Splines",
-// ch. IV), mirrored at the other end; periodic: the interior row wraps around (m_n = m_0).
-// The tridiagonal system is solved by Thomas elimination, the cyclic one by Sherman-Morrison
-// (detail/tridiagonal.hpp), O(n), any Real, no dense solve. The spline is then a Hermite spline
-// on the piecewise_cubic engine. Accuracy: interpolates to rounding; reproduces cubics
-// (not-a-knot; clamped with exact end slopes), and for natural ends, linear functions; O(h^4)
-// away from natural ends for smooth data.
+// spline of seed 001), with natural (P'' = 0), clamped, not-a-knot and periodic end conditions.
+// The knot slopes solve the C2 conditions (rows above spline_end), a tridiagonal system by Thomas
+// elimination or, periodic, a cyclic one by Sherman-Morrison (detail/tridiagonal.hpp), in any
+// Real; the spline is then a Hermite spline on the piecewise_cubic engine.
+// Sources: seed 001; de Boor (1978), ch. IV (not-a-knot).
+// Cost: O(n) construction, O(1) evaluation. Accuracy: interpolates to rounding; reproduces cubics
+// (not-a-knot, clamped with exact slopes) and, with natural ends, linear functions; O(h^4) away
+// from natural ends for smooth data.
 #pragma once
 
 #include "curvebench/core/error.hpp"
@@ -30,6 +23,13 @@
 
 namespace curvebench {
 
+// Algorithm: the slopes m_i = dP/du at the knots solve the C2 conditions, for interior knots
+//     h_i m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_{i-1} m_{i+1} = 3 (h_i D_{i-1} + h_{i-1} D_i),
+// D_i = (P_{i+1} - P_i)/h_i (second derivatives of adjacent Hermite segments equal at u_i), plus
+// one row per end: natural 2 m_0 + m_1 = 3 D_0; clamped m_0 = given; not-a-knot
+// h_1 m_0 + (h_0 + h_1) m_1 = (h_1 (3 h_0 + 2 h_1) D_0 + h_0^2 D_1)/(h_0 + h_1) (the P''' condition
+// with m_2 eliminated through the first interior row, de Boor, "A Practical Guide to Splines",
+// ch. IV), mirrored at the other end; periodic: the interior row wraps around (m_n = m_0).
 /// End conditions of the C2 cubic spline.
 enum class spline_end { natural, clamped, not_a_knot, periodic };
 

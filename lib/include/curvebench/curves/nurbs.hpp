@@ -1,26 +1,15 @@
-// NURBS curves (non-uniform rational B-splines) of any order m <= 16:
-//   C(u) = sum_i N_{i,m}(u) w_i P_i / sum_i N_{i,m}(u) w_i,   weights w_i > 0.
-//
-// Source: seed 000 (rational quadratic: w < 1 ellipse, w = 1 parabola, w > 1 hyperbola), seed 001
-// ("only rational bases can be perspective transformed (see NURBS)"); Piegl & Tiller, "The NURBS
-// Book", ch. 4 (homogeneous form, eq. 4.8 derivatives), ch. 7 (circles).
-//
-// Representation: the homogeneous curve H(u) = (A(u), W(u)) = sum_i N_{i,m}(u) (w_i P_i, w_i) is an
-// ordinary B-spline in Dim + 1 dimensions on the same knots (indexing, domain [t_{m-1}, t_n],
-// half-open spans and the right-end rule as in curves/bspline.hpp). It shares the B-spline engine
-// (detail/bspline_core.hpp): de Boor or the Cox-de Boor basis sum in Dim + 1, then C = A / W.
-// Derivatives of any order k, exact, by the quotient rule in Leibniz form: from A = W C,
-//   A^(k) = sum_{i=0..k} C(k, i) W^(i) C^(k-i)  =>  C^(k) = (A^(k) - sum_{i=1..k} C(k, i) W^(i) C^(k-i)) / W,
-// with A^(j), W^(j) the homogeneous B-spline derivatives (zero for j >= m).
-// Cost: one homogeneous de Boor, O(m^2 (Dim + 1)), plus a division for the value; O(k m^2 + k^2)
-// for derivative k. No allocation for k < 32 (stack buffers); higher orders use a heap buffer.
-// Accuracy: value ~ m ulps of the control scale times max w / min w (the division by W adds one
-// rounding); derivatives lose a factor ~ (m / h)^k like any B-spline derivative.
-// Circles: `nurbs_circle_9` (square of 9 control points, weights 1 and sqrt(2)/2, knots at quarter
-// turns) and `nurbs_circle_7` (circumscribed equilateral triangle, weights 1 and 1/2) are exact
-// circles in exact arithmetic; in floating point |C(u) - c| = r to a few ulps (tests/test_nurbs.cpp).
-// Errors (invalid_input at construction): those of the B-spline, weights count != points count,
-// a weight that is not finite or not > 0.
+// NURBS curves of any order m <= 16: C(u) = sum_i N_{i,m}(u) w_i P_i / sum_i N_{i,m}(u) w_i, w_i > 0.
+// The homogeneous curve (A, W) = sum_i N_{i,m} (w_i P_i, w_i) is a B-spline in Dim + 1 dimensions
+// on the same knots (indexing and conventions of bspline.hpp), evaluated by the shared engine
+// (detail/bspline_core.hpp), then C = A / W. Derivatives of any order exactly, by Leibniz's
+// quotient rule C^(k) = (A^(k) - sum_{i=1..k} C(k, i) W^(i) C^(k-i)) / W. nurbs_circle_9 and
+// nurbs_circle_7 build exact circles (9-point square, 7-point triangle).
+// Errors (invalid_input): the B-spline's, a weight count mismatch, a weight not finite or <= 0.
+// Sources: seed 000 (rational quadratic conics), seed 001 (rational bases and perspective);
+// Piegl & Tiller (1997), ch. 4 (eq. 4.8) and ch. 7 (circles).
+// Cost: one homogeneous de Boor, O(m^2 (Dim + 1)), plus a division; O(k m^2 + k^2) for derivative
+// k; no allocation for k < 32. Accuracy: value ~m ulps of the control scale times max w / min w;
+// derivatives lose ~(m / h)^k like any B-spline's.
 #pragma once
 
 #include "curvebench/core/curve.hpp"

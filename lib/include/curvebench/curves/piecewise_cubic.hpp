@@ -1,31 +1,16 @@
-// piecewise_cubic: the shared evaluation engine of every cubic spline family in curvebench
-// (Hermite, cardinal/Catmull-Rom, Kochanek-Bartels, natural/C2 splines, cubic B-splines).
-//
-// Representation. Knots u_0 < u_1 < ... < u_n; segment i covers [u_i, u_{i+1}], h_i = u_{i+1} - u_i,
-// with the LOCAL parameter t = (u - u_i) / h_i in [0, 1]. Each segment is given as a geometry G_i
-// (4 x Dim, one control item per row) and a basis matrix M_i, P_i(t) = T(t) · M_i · G_i with
-// T(t) = [1 t t^2 t^3] (basis/cubic_matrices.hpp; seeds 000, 001, 002). At construction the engine
-// stores, per segment:
-//   - the power coefficients a_i = M_i G_i (rows a0..a3: P_i(t) = a0 + a1 t + a2 t^2 + a3 t^3),
-//   - G_i and M_i themselves (for the matrix algorithm),
-//   - the Bezier control points b_i = M_bezier^{-1} M_i G_i (for the de Casteljau algorithm).
-// A parameter u exactly at an interior knot u_i belongs to segment i (the right one); u_n belongs
-// to the last segment.
-//
-// Algorithms (cubic_algorithm), all exact in exact arithmetic, selectable per call:
-//   power   Horner on the precomputed power coefficients       ~ 3 fma per coordinate, O(1)
-//   matrix  T(t) · M · G evaluated per call (16 + 4 Dim mults)  the textbook form, O(1)
-//   bezier  de Casteljau on the precomputed Bezier points       6 lerps per coordinate, O(1)
-// Derivatives of order k <= 3 are exact: d^k P / du^k = h_i^{-k} d^k P_i / dt^k (chain rule);
-// order > 3 is zero. Error: O(eps · scale) for all three, where scale is the size of the
-// coefficients (power) or of the control items (matrix, bezier); de Casteljau is the most stable
-// (convex combinations), power form may lose digits when |a_k| >> |P|.
-//
-// Segment lookup: O(1) when the knots are uniform (detected at construction; the floating index
-// is corrected against the neighbouring knots, so lookup is exact even for nearly uniform knots),
-// binary search O(log n) otherwise. Batched evaluation writes into caller storage and never
-// allocates; `evaluate_sorted` walks non-decreasing parameters segment by segment, hoisting each
-// segment's coefficients.
+// piecewise_cubic: the shared evaluation engine of every cubic spline family (Hermite,
+// cardinal/Catmull-Rom, Kochanek-Bartels, natural, cubic B-splines).
+// Knots u_0 < ... < u_n; segment i on [u_i, u_{i+1}] with local t = (u - u_i) / h_i is
+// P_i(t) = T(t) · M_i · G_i, T = [1 t t^2 t^3] (basis/cubic_matrices.hpp); an interior knot belongs
+// to the segment on its right, u_n to the last. Stored per segment: power coefficients M_i G_i,
+// G_i and M_i, and Bezier points. Algorithms (cubic_algorithm, per call): power (Horner, ~3 fma per
+// coordinate), matrix (T · M · G per call, the textbook form), bezier (de Casteljau, 6 lerps).
+// Derivatives of order <= 3 exact by the chain rule h_i^-k; higher orders zero. Segment lookup O(1)
+// for uniform knots (index corrected against the neighbours), else binary search; evaluate_batch
+// and evaluate_sorted (non-decreasing parameters, segment data hoisted) never allocate.
+// Sources: seeds 000, 001, 002 (basis matrices, T · M · G); Farin (2002) for de Casteljau.
+// Cost: O(1) per value after lookup. Accuracy: O(eps · scale), scale the coefficients' size (power)
+// or the control items' (matrix, bezier); de Casteljau the most stable.
 #pragma once
 
 #include "curvebench/basis/cubic_matrices.hpp"
@@ -174,29 +159,32 @@ class piecewise_cubic {
     validate::derivative_order(order);
     const interval<Real> d = domain();
     for (std::size_t k = 0; k < us.size(); ++k) {
-      check_parameter(us[k], d);
+      check_parameter(us[k], d, "us", k);
       const std::size_t i = locate(us[k]);
       out[k] = eval_segment(i, (us[k] - knots_[i]) / h_[i], order, algorithm);
     }
   }
 
   /// As evaluate_batch for non-decreasing parameters: walks the segments forward, hoisting each
-  /// segment's data. Throws invalid_input at the first us[k] < us[k-1] (out[0..k) already written).
+  /// segment's data. Every parameter is checked (out[0..k) is already written when us[k] throws):
+  /// std::domain_error for one above the domain or NaN, invalid_input for us[k] < us[k-1]. Two
+  /// comparisons per parameter: us[0] >= u0 and non-decreasing imply the lower bound for the rest.
   void evaluate_sorted(std::span<const Real> us, std::span<point_type> out, int order = 0,
                        cubic_algorithm algorithm = cubic_algorithm::power) const {
     validate::same_count("out", out.size(), "us", us.size());
     validate::derivative_order(order);
     if (us.empty()) return;
     const interval<Real> d = domain();
-    check_parameter(us.front(), d);
+    check_parameter(us.front(), d, "us", 0);
     std::size_t i = locate(us.front());
     const std::size_t last = segment_count() - 1;
     for (std::size_t k = 0; k < us.size(); ++k) {
       const Real& u = us[k];
+      // Written so that NaN fails it (every comparison with NaN is false).
+      if (!(u <= d.hi)) check_parameter(u, d, "us", k);
       if (k > 0 && u < us[k - 1])
         validate::fail("us must be non-decreasing for evaluate_sorted: " + validate::indexed("us", k) + " = " +
                        to_text(u) + " < " + validate::indexed("us", k - 1) + " = " + to_text(us[k - 1]));
-      if (u > d.hi) check_parameter(u, d);
       while (i < last && !(u < knots_[i + 1])) ++i;
       if (algorithm == cubic_algorithm::power && order == 0) {
         // The hot loop of the fast path: coefficients of segment i hoisted, Horner in t.

@@ -1,23 +1,13 @@
-// Polyline: the piecewise linear curve through vertices P_0 .. P_{n-1} at parameters u_0 < ... < u_{n-1}.
-//
-// Source: seed 000 ("piecewise linear spline": a_i = (y_{i+1} - y_i) / (t_{i+1} - t_i), C0 but not
-// C1), seed 001 ("polyline: connect each pair of consecutive vertices with a line segment").
-//
-// Parameters: given per vertex (finite, strictly increasing), or by default uniform u_i = i, so the
-// domain is [0, n - 1]. `chord_length_parameters(vertices)` gives u_0 = 0, u_i = u_{i-1} + |P_i - P_{i-1}|,
-// with which the polyline has unit speed and u is arc length.
-// On segment i, u in [u_i, u_{i+1}], with h = u_{i+1} - u_i:
-//     P(u) = ((u_{i+1} - u) / h) P_i + ((u - u_i) / h) P_{i+1},
-// a form that returns the vertices exactly at both ends of the segment and is within a few ulps of
-// the vertex scale inside (each weight has <= 2 roundings). Cost: the segment is found by binary
-// search over the parameters, O(log n); evaluation O(Dim); nothing is allocated.
-// Derivatives are exact: order 1 is the segment's constant slope (P_{i+1} - P_i) / h; order >= 2
-// is zero. The first derivative is discontinuous at interior vertices: at u = u_i the right-hand
-// segment [u_i, u_{i+1}] is used, except at the last vertex, where the last segment is used (the
-// left-hand one). Breakpoints are the vertex parameters.
-// Errors: fewer than 2 vertices, non-finite coordinates, a parameter count that does not match the
-// vertex count, non-finite or non-increasing parameters -> invalid_input at construction;
-// u outside [u_0, u_{n-1}] -> std::domain_error; negative derivative order -> invalid_input.
+// Polyline: the piecewise linear curve through vertices P_0 .. P_{n-1} at parameters
+// u_0 < ... < u_{n-1} (default u_i = i; chord_length_parameters gives unit speed).
+// On segment i: P(u) = ((u_{i+1} - u) / h) P_i + ((u - u_i) / h) P_{i+1}, exact at both vertices.
+// Derivative of order 1 is the segment's slope (discontinuous at interior vertices: the right-hand
+// segment is used, the left-hand one at the last vertex); orders >= 2 are zero. Breakpoints are the
+// vertex parameters. Bad data (fewer than 2 vertices, non-finite values, non-increasing
+// parameters) throw invalid_input; u outside the domain std::domain_error.
+// Sources: seed 000 (piecewise linear spline), seed 001 (polyline).
+// Cost: O(log n) lookup, O(Dim) evaluation, no allocation. Accuracy: a few ulps of the vertex
+// scale (each weight has <= 2 roundings).
 #pragma once
 
 #include "curvebench/core/curve.hpp"

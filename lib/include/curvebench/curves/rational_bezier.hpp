@@ -1,24 +1,13 @@
 // Rational Bezier curves of any degree L (1 <= L <= bezier_max_degree) with positive weights:
-//   C(t) = sum_k B_k^L(t) w_k P_k / sum_k B_k^L(t) w_k = A(t) / w(t),
-// and the rational quadratic conics C(t) = (P0 (1-t)^2 + 2 w P1 t(1-t) + P2 t^2) / ((1-t)^2 +
-// 2 w t(1-t) + t^2) (seed 000, "Rational Parametric": w < 1 ellipse, w = 1 parabola, w > 1
-// hyperbola), including the circular arc of sweep theta with middle weight cos(theta / 2).
-//
-// Source: seed 000; Farin, "Curves and Surfaces for CAGD", ch. 13 (rational Bezier curves, conics);
-// Piegl and Tiller, "The NURBS Book", 2.5 and 7.5 (derivatives of rational curves, circular arcs).
-//
-// Evaluation: homogeneous coordinates. The numerator A (control points w_k P_k) and the
-// denominator w (control values w_k) are polynomial Bezier curves (bezier.hpp), both evaluated by
-// de Casteljau, then divided: O(L^2), backward stable in the homogeneous space; with positive
-// weights w(t) >= min w_k > 0, so the division loses nothing: error ~ L ulps of the scale.
-// Derivatives of any order k, exact: A = w C differentiated k times by Leibniz gives
-//   C^(k) = (A^(k) - sum_{j=1..min(k,L)} C(k, j) w^(j) C^(k-j)) / w,
-// a recurrence over the previous L derivatives (w^(j) = 0 for j > L), kept in a stack ring buffer
-// of L + 1 points: O(k L (L + Dim)), no allocation. Unlike the polynomial case, derivatives of order
-// > L do not vanish.
-// Errors: fewer than 2 or more than bezier_max_degree + 1 control points, a weight count that does
-// not match, non-finite coordinates, non-positive or non-finite weights, a bad domain ->
-// invalid_input; u outside the domain -> std::domain_error.
+// C(t) = sum_k B_k^L w_k P_k / sum_k B_k^L w_k = A(t) / w(t), and the rational quadratic conics
+// (w < 1 ellipse, w = 1 parabola, w > 1 hyperbola; the circular arc of sweep theta has middle
+// weight cos(theta / 2)). Numerator and denominator are evaluated by de Casteljau and divided;
+// derivatives of any order exactly by Leibniz's rule on A = w C (details above the class). Bad
+// data (point or weight counts, non-finite values, weights <= 0, a bad domain) throw invalid_input;
+// u outside the domain std::domain_error.
+// Sources: seed 000 ("Rational Parametric"); Farin (2002), ch. 13; Piegl & Tiller (1997), 2.5, 7.5.
+// Cost: O(L^2) per value, O(k L (L + Dim)) for derivative k, no allocation.
+// Accuracy: ~L ulps of the scale (w(t) >= min w_k > 0, so the division loses nothing).
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -65,6 +54,15 @@ template <class Real>
 
 }  // namespace detail
 
+// Evaluation: homogeneous coordinates. The numerator A (control points w_k P_k) and the
+// denominator w (control values w_k) are polynomial Bezier curves (bezier.hpp), both evaluated by
+// de Casteljau, then divided: O(L^2), backward stable in the homogeneous space; with positive
+// weights w(t) >= min w_k > 0, so the division loses nothing: error ~ L ulps of the scale.
+// Derivatives of any order k, exact: A = w C differentiated k times by Leibniz gives
+//   C^(k) = (A^(k) - sum_{j=1..min(k,L)} C(k, j) w^(j) C^(k-j)) / w,
+// a recurrence over the previous L derivatives (w^(j) = 0 for j > L), kept in a stack ring buffer
+// of L + 1 points: O(k L (L + Dim)), no allocation. Unlike the polynomial case, derivatives of order
+// > L do not vanish.
 template <class Real, int Dim>
 class rational_bezier {
  public:
@@ -97,7 +95,7 @@ class rational_bezier {
     return a / denominator_(u)[0];
   }
 
-  /// d^order C / du^order by the Leibniz recurrence (exact; see the header comment).
+  /// d^order C / du^order by the Leibniz recurrence (exact; see the comment above the class).
   [[nodiscard]] point_type derivative(const Real& u, int order) const {
     validate::derivative_order(order);
     check_parameter(u, domain());

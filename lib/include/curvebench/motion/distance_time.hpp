@@ -1,32 +1,15 @@
-// Distance-time (speed-control) functions: normalized s = S(t) on t in [0, 1] with S(0) = 0 and
-// S(1) = 1, with exact velocity S'(t) and acceleration S''(t).
-//
-// What: the "ease" curves of seed 002 (shared/seeds/002_*.txt, "Speed Control Function",
-// "Ease-in/Ease-out"; R. Parent, Computer Animation, section 3.2): S relates equally spaced time to
-// the fraction of arc length travelled, so the motion P(U(L S(t))) of motion/motion_path.hpp
-// traces the whole curve in the given time with the speed profile S'. Families:
-//   linear_ease             S = t                                    (constant speed)
-//   sine_ease               S = (sin(pi t - pi/2) + 1) / 2 = sin^2(pi t / 2)
-//   sine_plateau_ease       sine acceleration on [0, t1], constant speed, sine deceleration on [t2, 1]
-//   parabolic_ease          constant acceleration on [0, t1], constant speed, constant deceleration
-//   smoothstep_ease         S = 3 t^2 - 2 t^3
-//   smootherstep_ease       S = 6 t^5 - 15 t^4 + 10 t^3
-//   distance_keys_ease      user (t, s) keys through a monotone cubic (motion/monotone_cubic.hpp)
-//   speed_curve_ease        user speed keys v(t) (piecewise linear or monotone cubic), integrated
-//                           exactly and normalized: S(t) = int_0^t v / int_0^1 v
-// Every formula is derived in the comment of its class (the seeds give only the sine ease).
-//
-// Interface (the `distance_time` concept): `f(t)`, `f.velocity(t)`, `f.acceleration(t)`,
-// `f.derivative(t, order, side)` for order 0..2 (side picks the piece at a joint, see
-// monotone_cubic.hpp), `f.breakpoints()` (0, the joints, 1), `f.continuity()` (the order k such
-// that S is C^k at every interior joint; infinitely_smooth when there is none) and
-// `f.rest_continuity()` (the order k such that S, extended by S = 0 before t = 0 and S = 1 after
-// t = 1 - the object at rest before and after the move - is C^k at t = 0 and t = 1; capped at 2).
-// t outside [0, 1] throws std::domain_error; bad parameters throw invalid_input at construction.
-//
-// Cost: O(1) per evaluation (one sin/cos or a polynomial), O(log n) for the key-based ones.
-// Accuracy: closed forms, a few ulps; the forms are chosen to avoid cancellation near both ends
-// (1 - cos x is evaluated as 2 sin^2(x/2), the ease-out pieces are written as 1 - (...)(1 - t)).
+// Distance-time (speed-control) functions: s = S(t) on [0, 1], S(0) = 0, S(1) = 1, with exact
+// velocity S' and acceleration S''; the motion P(U(L S(t))) of motion_path.hpp follows S'.
+// Families: linear, sine (sin^2(pi t / 2)), sine_plateau and parabolic (accelerate, cruise,
+// decelerate), smoothstep, smootherstep, distance_keys_ease (user (t, s) keys through a monotone
+// cubic, monotone_cubic.hpp) and speed_curve_ease (user speed keys integrated exactly, normalized).
+// Each formula is derived in its class comment. Interface (the distance_time concept): f(t),
+// velocity, acceleration, derivative(t, order, side), breakpoints(), continuity() at the joints,
+// rest_continuity() at t = 0 and 1 against rest (capped at 2). t outside [0, 1] throws
+// std::domain_error; bad parameters throw invalid_input at construction.
+// Sources: seed 002 ("Speed Control Function", "Ease-in/Ease-out"); Parent, Computer Animation
+// (2012), 3.2. Cost: O(1) per evaluation, O(log n) for the key-based ones.
+// Accuracy: closed forms to a few ulps, written without cancellation near both ends.
 #pragma once
 
 #include "curvebench/core/curve.hpp"

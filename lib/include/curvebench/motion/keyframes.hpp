@@ -1,30 +1,16 @@
-// Keyframes: (frame, value) keys for any animated channel - position (Dim = 2, 3), scale, an
-// orientation angle or a color channel (scalars are Dim = 1 points), a color (Dim = 3) - turned
-// into a curve of the chosen family with the key frames as knots, so value(f) = P(f).
-//
-// What: seed 002 ("Maya keyframe interpolation: position, orientation, scale, color, shape...";
-// the parameters to interpolate are position, scale, orientation, joint angle, color). Families:
-//   linear         polyline through the keys (C0; curves/polyline.hpp)
-//   catmull_rom    cardinal spline with s = 1/2 on the frame knots (C1; curves/cardinal_spline.hpp:
-//                  non-uniform Catmull-Rom slope = derivative of the parabola through 3 keys)
-//   cardinal       the same with a given tangent scale s (s = (1 - tension) / 2)
-//   natural_cubic  the C2 interpolating spline (curves/natural_cubic_spline.hpp), natural ends by
-//                  default
-//   hermite        cubic Hermite with the user's slopes per key (value units per frame; C1)
-//   monotone       cubic Hermite with Fritsch-Carlson slopes computed coordinate by coordinate
-//                  (motion/monotone_cubic.hpp): no overshoot - each coordinate stays between its
-//                  neighbouring keys and is flat at a key that is a local extremum; the choice for
-//                  colors and scales that must stay in range (C1)
-// Because the knots are the frames, the curve's parameter IS time in frames: derivative(f, 1) is
-// the rate of change per frame (multiply by fps for per second). For motion at a controlled speed
-// along a position track, bind the track's curve to an arc-length parameterization and a
-// distance-time function (motion/motion_path.hpp) instead of evaluating it at frames directly.
-// Angles are interpolated as plain numbers (no wrap-around to (-pi, pi]).
-// Errors: fewer than 2 keys (the families may need more: one-sided/closed cardinal ends 3,
-// not-a-knot 4), frames not strictly increasing, non-finite values or slopes, slope count
-// mismatch -> invalid_input naming the key; evaluation outside [first frame, last frame] ->
-// std::domain_error. Cost: the family's (O(n) construction; O(log n) evaluation on the non-uniform
-// frame knots) plus one virtual call through any_curve for keyframe_track.
+// Keyframes: (frame, value) keys for any animated channel (position, scale, an angle or a color
+// channel; scalars are Dim = 1 points) turned into a curve of the chosen family with the key
+// frames as knots, so value(f) = P(f) and derivative(f, 1) is the rate per frame. Families: linear
+// (polyline, C0), catmull_rom and cardinal (cardinal_spline.hpp, C1), natural_cubic (C2),
+// hermite (the user's slopes per frame, C1) and monotone (Fritsch-Carlson slopes per coordinate,
+// monotone_cubic.hpp: no overshoot, for colors and scales that must stay in range). Angles are
+// plain numbers (no wrap-around). For motion at a controlled speed use motion_path.hpp instead.
+// Errors: too few keys for the family, frames not strictly increasing, non-finite values or
+// slopes, a slope count mismatch -> invalid_input naming the key; a frame outside the keys ->
+// std::domain_error.
+// Source: seed 002 (Maya keyframe interpolation of position, orientation, scale, color).
+// Cost: the family's (O(n) construction, O(log n) evaluation on non-uniform frame knots) plus one
+// virtual call through any_curve for keyframe_track. Accuracy: the family's.
 #pragma once
 
 #include "curvebench/core/any_curve.hpp"

@@ -1,41 +1,15 @@
 // Scalar piecewise cubics for speed control: a shape-preserving (monotone) cubic Hermite
 // interpolant y(x) with exact derivatives and an exact running integral.
-//
-// What: given knots x_0 < ... < x_n and values y_i, a C1 piecewise cubic Hermite interpolant whose
-// knot slopes are chosen so that the interpolant is monotone on every interval where the data are
-// monotone, and constant where two neighbouring values are equal (no overshoot, no wiggle). It is
-// what turns user (t, s) keys into a distance-time function that never runs backwards, and user
-// speed keys into a speed curve that never goes negative (motion/distance_time.hpp).
-//
-// Algorithm (Fritsch & Carlson, "Monotone piecewise cubic interpolation", SIAM J. Numer. Anal. 17,
-// 1980; slopes by the weighted harmonic mean of Fritsch & Butland, SIAM J. Sci. Stat. Comput. 5,
-// 1984, the rule also used by SLATEC PCHIP). With h_k = x_{k+1} - x_k and secants
-// d_k = (y_{k+1} - y_k) / h_k:
-//   interior slope m_k = 0 when d_{k-1} d_k <= 0 (a local extremum or a flat neighbour), else
-//   m_k = 3 (h_{k-1} + h_k) / ((2 h_k + h_{k-1}) / d_{k-1} + (h_k + 2 h_{k-1}) / d_k);
-//   end slope m_0 = ((2 h_0 + h_1) d_0 - h_0 d_1) / (h_0 + h_1) (the slope of the parabola through
-//   the first three points), set to 0 if its sign differs from d_0 and to 3 d_0 if the secants
-//   change sign and |m_0| > 3 |d_0|; symmetrically at the last knot; m_0 = m_1 = d_0 for two knots.
-//
-// Why it is monotone (derivation, tested in tests/test_distance_time.cpp). On one interval with
-// secant d != 0 write m_k = a d, m_{k+1} = b d and tau = (x - x_k) / h in [0, 1]. The Hermite
-// cubic's derivative is
-//   y'(tau) / d = a (1 - tau)(1 - 3 tau) + b tau (3 tau - 2) + 6 tau (1 - tau).
-// For fixed tau this is affine in (a, b), so over the box [0, 3]^2 its minimum is at a corner:
-//   (0, 0): 6 tau (1 - tau);  (3, 0): 3 (1 - tau)^2;  (0, 3): 3 tau^2;  (3, 3): 3 (1 - 2 tau)^2,
-// all >= 0. Hence (a, b) in [0, 3]^2 is sufficient for monotonicity (Fritsch-Carlson's box).
-// The harmonic-mean slope has the sign of d and is 1 / (w_1 / d_{k-1} + w_2 / d_k) with weights
-// w_1 = (2 h_k + h_{k-1}) / (3 (h_{k-1} + h_k)) >= 1/3 and w_2 >= 1/3, so m_k <= 3 d_{k-1} and
-// m_k <= 3 d_k: a, b in [0, 3]. The end rule keeps the sign of d_0 (else 0), and |m_0| <= 3 |d_0|:
-// when d_1 has the sign of d_0, m_0 = d_0 + h_0 (d_0 - d_1) / (h_0 + h_1) is below 2 d_0 in
-// magnitude; otherwise the clamp to 3 d_0 applies. When d = 0 both end slopes are 0 and the
-// piece is constant. Consequently the interpolant also stays inside [min(y_k, y_{k+1}),
-// max(y_k, y_{k+1})] on every interval, so non-negative data give a non-negative interpolant.
-//
-// Cost: construction O(n); evaluation O(log n) (binary search for the interval) plus a Horner
-// cubic; no allocation after construction. Accuracy: a C1 interpolant, O(h^3) for smooth monotone
-// data away from extrema (the limiter reduces it to O(h^2) near them); derivatives and the running
-// integral are exact for the piecewise cubic (a few roundings).
+// Given knots x_0 < ... < x_n and values y_i: a C1 piecewise cubic whose knot slopes keep it
+// monotone wherever the data are, and constant between equal neighbours (no overshoot), so user
+// (t, s) keys give a distance-time function that never runs backwards and speed keys a speed that
+// never goes negative (distance_time.hpp). Slopes: the weighted harmonic mean of Fritsch & Butland
+// (1984) inside, the three-point parabola's slope clamped at the ends (as SLATEC PCHIP), both inside
+// Fritsch & Carlson's (1980) monotonicity box; see monotone_slopes for the rule and the proof.
+// Cost: construction O(n); evaluation O(log n) plus a Horner cubic; no allocation after
+// construction. Accuracy: O(h^3) for smooth monotone data away from extrema (O(h^2) near them
+// where the limiter acts); derivatives and the running integral exact for the cubic (a few
+// roundings).
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -147,7 +121,30 @@ template <class Real>
   return {y0, m0, (Real(3) * secant - Real(2) * m0 - m1) / h, (m0 + m1 - Real(2) * secant) / (h * h)};
 }
 
-/// The shape-preserving knot slopes of Fritsch-Carlson / Fritsch-Butland (see the header comment).
+// Algorithm (Fritsch & Carlson, "Monotone piecewise cubic interpolation", SIAM J. Numer. Anal. 17,
+// 1980; slopes by the weighted harmonic mean of Fritsch & Butland, SIAM J. Sci. Stat. Comput. 5,
+// 1984, the rule also used by SLATEC PCHIP). With h_k = x_{k+1} - x_k and secants
+// d_k = (y_{k+1} - y_k) / h_k:
+//   interior slope m_k = 0 when d_{k-1} d_k <= 0 (a local extremum or a flat neighbour), else
+//   m_k = 3 (h_{k-1} + h_k) / ((2 h_k + h_{k-1}) / d_{k-1} + (h_k + 2 h_{k-1}) / d_k);
+//   end slope m_0 = ((2 h_0 + h_1) d_0 - h_0 d_1) / (h_0 + h_1) (the slope of the parabola through
+//   the first three points), set to 0 if its sign differs from d_0 and to 3 d_0 if the secants
+//   change sign and |m_0| > 3 |d_0|; symmetrically at the last knot; m_0 = m_1 = d_0 for two knots.
+// Why it is monotone (derivation, tested in tests/test_distance_time.cpp). On one interval with
+// secant d != 0 write m_k = a d, m_{k+1} = b d and tau = (x - x_k) / h in [0, 1]. The Hermite
+// cubic's derivative is
+//   y'(tau) / d = a (1 - tau)(1 - 3 tau) + b tau (3 tau - 2) + 6 tau (1 - tau).
+// For fixed tau this is affine in (a, b), so over the box [0, 3]^2 its minimum is at a corner:
+//   (0, 0): 6 tau (1 - tau);  (3, 0): 3 (1 - tau)^2;  (0, 3): 3 tau^2;  (3, 3): 3 (1 - 2 tau)^2,
+// all >= 0. Hence (a, b) in [0, 3]^2 is sufficient for monotonicity (Fritsch-Carlson's box).
+// The harmonic-mean slope has the sign of d and is 1 / (w_1 / d_{k-1} + w_2 / d_k) with weights
+// w_1 = (2 h_k + h_{k-1}) / (3 (h_{k-1} + h_k)) >= 1/3 and w_2 >= 1/3, so m_k <= 3 d_{k-1} and
+// m_k <= 3 d_k: a, b in [0, 3]. The end rule keeps the sign of d_0 (else 0), and |m_0| <= 3 |d_0|:
+// when d_1 has the sign of d_0, m_0 = d_0 + h_0 (d_0 - d_1) / (h_0 + h_1) is below 2 d_0 in
+// magnitude; otherwise the clamp to 3 d_0 applies. When d = 0 both end slopes are 0 and the
+// piece is constant. Consequently the interpolant also stays inside [min(y_k, y_{k+1}),
+// max(y_k, y_{k+1})] on every interval, so non-negative data give a non-negative interpolant.
+/// The shape-preserving knot slopes of Fritsch-Carlson / Fritsch-Butland (rule and proof above).
 /// x strictly increasing (>= 2 knots), y of the same size; no validation here (callers validate
 /// with their own argument names).
 template <class Real>

@@ -1,32 +1,16 @@
 // Motion along a path: position(t) = P(U(L S((t - t0) / (t1 - t0)))), with velocity, speed and
 // acceleration, over a time interval or a range of integer frames at a frame rate.
-//
-// What: the last layer of DESIGN.md (curves -> arclength -> motion). A motion binds
-//   - an arc-length parameterization of a curve P(u) (anything with length(), u(s) and curve():
-//     the `arc_length_map` concept; arclength/parameterization.hpp with any inversion method), and
-//   - a distance-time function S (motion/distance_time.hpp, the `distance_time` concept),
-// to a time interval [t0, t1] of duration T (or frames [f0, f1] at fps frames per unit time,
-// t = f / fps). At time t, with x = (t - t0) / T the normalized time:
-//   distance   sigma(t) = L S(x)                       (arc length travelled, seed 002's s = S(t))
-//   parameter  u(t) = U(sigma(t))                       (the arc-length inversion)
-//   position   r(t) = P(u(t))
-//   speed      sigma'(t) = L S'(x) / T                  (chain rule, dx/dt = 1 / T)
-//   velocity   r'(t) = sigma'(t) T_hat, T_hat = P'(u) / |P'(u)|   (since dsigma/du = |P'(u)|)
-//   tangential acceleration sigma''(t) = L S''(x) / T^2
-//   acceleration r''(t) = sigma'' T_hat + sigma'^2 k N,  k N = dT_hat/dsigma
-//                = (P''(u) - T_hat (T_hat . P''(u))) / |P'(u)|^2   (curvature vector).
-// The speed and the tangential acceleration are exact (they do not depend on the inversion); the
-// position, velocity direction and normal acceleration carry the inversion's error in u. At a
-// stationary point of the curve (P'(u) = 0) the forward unit tangent is the limit P''/|P''|; the
-// curvature term is undefined there, so acceleration() throws std::domain_error if the motion is
-// moving at that instant (at rest it is sigma'' T_hat); where P' = P'' = 0 and the motion is not at
-// rest, velocity() throws too.
-// Frames: frame f maps to x = (f - f0) / (f1 - f0), computed from integers (one rounding), so the
-// first and last frames are exactly S(0) = 0 and S(1) = 1.
-// Source: seed 002 ("Distance Time Function and Speed Control": p = P(U(S(t)))); R. Parent,
-// Computer Animation, 3.2. Cost: one S evaluation, one u(s) (the parameterization's cost: O(1) for
-// the tables), one to three curve evaluations; no allocation except the vector-returning sampler.
-// Accuracy: position error = |P'| times the inversion's u error; speed exact to a few ulps.
+// A motion binds an arc-length parameterization of a curve (the arc_length_map concept:
+// arclength/parameterization.hpp with any inversion method) and a distance-time function S
+// (distance_time.hpp) to a time interval [t0, t1] or frames [f0, f1] at fps (formulas above the
+// class). Speed and tangential acceleration are exact; position, velocity direction and normal
+// acceleration carry the inversion's error in u. Where P' = 0 while moving, acceleration() (and,
+// if P'' = 0 too, velocity()) throws std::domain_error. Frame f maps to x = (f - f0) / (f1 - f0)
+// from integers, so the first and last frames are exactly S(0) = 0 and S(1) = 1.
+// Sources: seed 002 ("Distance Time Function and Speed Control": p = P(U(S(t)))); Parent (2012),
+// 3.2. Cost: one S evaluation, one u(s), one to three curve evaluations; no allocation except the
+// vector-returning sampler. Accuracy: position error = |P'| times the inversion's u error; speed
+// exact to a few ulps.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -78,6 +62,22 @@ struct motion_sample {
   point<Real, Dim> acceleration;   ///< sigma'' T_hat + sigma'^2 k N
 };
 
+// to a time interval [t0, t1] of duration T (or frames [f0, f1] at fps frames per unit time,
+// t = f / fps). At time t, with x = (t - t0) / T the normalized time:
+// distance   sigma(t) = L S(x)                       (arc length travelled, seed 002's s = S(t))
+// parameter  u(t) = U(sigma(t))                       (the arc-length inversion)
+// position   r(t) = P(u(t))
+// speed      sigma'(t) = L S'(x) / T                  (chain rule, dx/dt = 1 / T)
+// velocity   r'(t) = sigma'(t) T_hat, T_hat = P'(u) / |P'(u)|   (since dsigma/du = |P'(u)|)
+// tangential acceleration sigma''(t) = L S''(x) / T^2
+// acceleration r''(t) = sigma'' T_hat + sigma'^2 k N,  k N = dT_hat/dsigma
+//              = (P''(u) - T_hat (T_hat . P''(u))) / |P'(u)|^2   (curvature vector).
+// The speed and the tangential acceleration are exact (they do not depend on the inversion); the
+// position, velocity direction and normal acceleration carry the inversion's error in u. At a
+// stationary point of the curve (P'(u) = 0) the forward unit tangent is the limit P''/|P''|; the
+// curvature term is undefined there, so acceleration() throws std::domain_error if the motion is
+// moving at that instant (at rest it is sigma'' T_hat); where P' = P'' = 0 and the motion is not at
+// rest, velocity() throws too.
 template <arc_length_map A, distance_time F>
   requires std::same_as<typename A::real_type, typename F::real_type>
 class motion_path {

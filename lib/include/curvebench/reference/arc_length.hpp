@@ -1,38 +1,18 @@
-// The high-precision reference arc length: s(u) and u(s) of a curve (normally one converted to
-// real50 by convert.hpp) integrated by Boost.Math, independent of curvebench's own quadrature.
-//
-// Algorithm: the speed |P'(u)| is analytic inside a segment except where P' = 0 (a cusp: the speed
-// is |linear| there, a kink) and nearly so where |P'| is small (a near-cusp: complex singularities
-// close to the real axis). So each segment [u_i, u_{i+1}] is split at the interior local minima of
-// the speed: |P'|^2 is sampled at `samples_per_segment` points, every interior local minimum of the
-// samples is refined by Brent's minimization (Boost.Math) and then by Newton on
-// (|P'|^2)'/2 = P'.P'' with derivative |P''|^2 + P'.P''' (exact derivatives of any order are part of
-// the curve concept), which locates a cusp to full precision; minima below
-// split_ratio * (max speed on the segment) become split points. A piece that ends at one is graded
-// geometrically towards it (panels [m + h/2^(k+1), m + h/2^k]), so a near-singularity is never
-// closer to a panel than the panel's own size (plain bisection towards it makes Boost's
-// recursion, whose absolute tolerance halves per level, blow up exponentially). A minimum whose
-// branch points come within 1/32 of the segment width h gets log2(h / delta) + 4 levels (at most
-// 48; an exact cusp gets 48), delta = sqrt(g_min / g'') being their distance from the real axis
-// (|P'|^2 ~ g_min + g'' (t - m)^2): enough to put the last panel inside that scale. Left
-// ungraded, a dip to 1/100 of the maximum speed (dip 0.01 of the near-cusp family in
-// tests/test_arclength_honesty.cpp, h / delta ~ 800) reached only 1.5e-21 relative with depth 6;
-// grading every mild minimum made the accuracy runner 10-100x slower on nurbs_weighted_3d, whose
-// minima Boost resolves without it. (A deep minimum that is not a cusp, such as the speed 2 of
-// degree-20 Runge between its wiggles of speed 1e4, needs ~20 levels, not 48.)
-// Every panel is integrated by Boost's G30-K61 rule (boost::math::quadrature::gauss_kronrod<Real,
-// 61>, one application per panel), bisected while its error estimate exceeds the panel's share of
-// the relative tolerance, to depth max_depth, and stopped early at the speed's rounding floor (see
-// integrate_panel); or, ungraded, by tanh_sinh (whose nodes cluster at the ends already) when
-// chosen. The error estimates are summed; they measure truncation, not the rounding of the speed
-// itself (on an ill-conditioned curve, such as degree-20 Runge, that rounding dominates: its
-// 50-digit length is within 4e-47 of the 100-digit one while the estimate says 9e-49). s(u)
-// integrates from the split point at or left of u; u(s) solves s(u) = s by bracketed Newton
-// (Boost's newton_raphson_iterate) on those integrals.
-// Sources: Piessens et al. (QUADPACK); Takahasi & Mori (tanh-sinh); Brent, "Algorithms for
-// minimization without derivatives" (1973). Cost: per piece a few hundred evaluations at 50 digits
-// for polynomial segments, ~50 panels more per speed minimum; u(s) costs one integral per Newton step. Accuracy: ~1e-45 relative for
-// real50 on the test suite (checked against every closed form in tests/test_reference.cpp).
+// The high-precision reference arc length: s(u) and u(s) of a curve (normally converted to real50
+// by convert.hpp) integrated by Boost.Math, independent of curvebench's own quadrature.
+// Algorithm: each segment is split at the interior minima of the speed (|P'|^2 sampled, minima
+// refined by Brent's method, then Newton on P'.P'' to full precision); a piece ending at a minimum
+// whose branch points (distance delta = sqrt(g_min / g'') from the axis) come within 1/32 of the
+// segment width h is graded geometrically towards it, log2(h / delta) + 4 levels (at most 48, an
+// exact cusp 48), so no singularity is closer to a panel than the panel's size. Each panel: Boost's
+// G30-K61 rule, bisected while its estimate exceeds its share of the tolerance, to max_depth,
+// stopped at the speed's rounding floor (detail/roundoff.hpp); or tanh-sinh, ungraded. s(u) from
+// the split point at or left of u; u(s) by Boost's bracketed newton_raphson_iterate.
+// The estimates measure truncation, not the rounding of the speed itself.
+// Sources: Piessens et al. (1983, QUADPACK); Takahasi & Mori (1974, tanh-sinh); Brent (1973).
+// Cost: a few hundred evaluations per polynomial piece at 50 digits, ~50 panels more per speed
+// minimum; u(s) one integral per Newton step. Accuracy: ~1e-45 relative in real50 against every
+// closed form of the suite (tests/test_reference.cpp).
 #pragma once
 
 #include "curvebench/arclength/detail/roundoff.hpp"

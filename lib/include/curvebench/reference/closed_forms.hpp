@@ -1,27 +1,13 @@
-// Closed-form arc lengths, the independent references of the arc-length tests.
-//
-// - segment_length(a, b) = |b - a|; a straight line in any basis with a monotone parameter has
-//   that length; `straight_polynomial_length` handles a line traversed back and forth: for
-//   P(t) = p0 + x(t) d with |d| = 1 and a scalar polynomial x, the length on [t0, t1] is
-//   sum |x(r_{k+1}) - x(r_k)| over t0, the zeros of x' inside, t1.
-// - Circular arc of radius r and angle theta: r |theta|. As a rational quadratic Bezier with
-//   weights (1, cos(theta/2), 1) (`circular_arc_rational`), a proper degree-2 rational
-//   parameterization of the circle, like the stereographic one tan(phi/2); two such differ by a
-//   Mobius map, symmetric about u = 1/2 here, hence linear: tan(phi/2) = tan(theta/4) (2u - 1) with
-//   phi measured from the arc's bisector, so s(u) = r (2 atan(tan(theta/4) (2u - 1)) + theta/2).
-// - Quadratic Bezier (parabola) P0, P1, P2: P'(t) = 2 (a + t b), a = P1 - P0, b = P0 - 2 P1 + P2;
-//   |P'| = 2 sqrt(Q), Q = A t^2 + B t + C, A = |b|^2, B = 2 a.b, C = |a|^2. With
-//   D = 4AC - B^2 = 4 |a ^ b|^2 (Lagrange's identity, computed that way: no cancellation) > 0,
-//     integral sqrt(Q) = (2At + B) sqrt(Q) / (4A) + D / (8 A^(3/2)) asinh((2At + B) / sqrt(D)),
-//   derived by differentiating (the asinh term contributes D / (8 A sqrt(Q)), using
-//   D + (2At + B)^2 = 4 A Q). D = 0 (collinear control points): sqrt(Q) = sqrt(A) |t - t*|,
-//   t* = -B / (2A), integrated piecewise. A = 0: straight, uniform speed 2 sqrt(C).
-// - Helix (r cos(w u), r sin(w u), c u): sqrt(r^2 w^2 + c^2) |u1 - u0|.
-// - Semicubical cusp (t^2, t^3): integral |t| sqrt(4 + 9 t^2) dt, odd antiderivative
-//   sign(t) ((4 + 9 t^2)^(3/2) - 8) / 27.
-// All in Real (use real50 for 50-digit references); cost O(1) (O(degree) for the straight
-// polynomial). Sources: Farin, "Curves and Surfaces for CAGD" (conics as rational quadratics);
-// Gradshteyn & Ryzhik 2.262 (integral of sqrt of a quadratic).
+// Closed-form arc lengths, the independent references of the arc-length tests: a segment |b - a|;
+// a straight line traversed back and forth (p0 + x(t) d, the total travel of x between the zeros
+// of x'); a circular arc r |theta| and s(u) of its rational quadratic Bezier form; a quadratic
+// Bezier (parabola) by the integral of sqrt(quadratic) with Lagrange's identity for the
+// discriminant, the collinear and straight cases separately; a helix sqrt(r^2 w^2 + c^2) |du|; the
+// semicubical cusp (t^2, t^3) by an odd antiderivative continuous through the cusp. The
+// derivations are with the functions.
+// Sources: Farin (2002), conics as rational quadratics; Gradshteyn & Ryzhik 2.262.
+// Cost: O(1) (O(degree) for the straight polynomial). Accuracy: a few ulps of Real (use real50
+// for 50-digit references).
 #pragma once
 
 #include "curvebench/core/error.hpp"
@@ -115,6 +101,11 @@ template <class Real>
   return a;
 }
 
+// Circular arc of radius r and angle theta: r |theta|. As a rational quadratic Bezier with
+// weights (1, cos(theta/2), 1) (`circular_arc_rational`), a proper degree-2 rational
+// parameterization of the circle, like the stereographic one tan(phi/2); two such differ by a
+// Mobius map, symmetric about u = 1/2 here, hence linear: tan(phi/2) = tan(theta/4) (2u - 1) with
+// phi measured from the arc's bisector, so s(u) = r (2 atan(tan(theta/4) (2u - 1)) + theta/2).
 /// s(u) of that rational quadratic arc: r (2 atan(tan(theta/4) (2u - 1)) + theta/2).
 template <class Real>
 [[nodiscard]] Real circular_arc_rational_s(const Real& radius, const Real& theta, const Real& u) {
@@ -123,6 +114,13 @@ template <class Real>
   return radius * (Real(2) * atan(tan(theta / Real(4)) * (Real(2) * u - Real(1))) + theta / Real(2));
 }
 
+// Quadratic Bezier (parabola) P0, P1, P2: P'(t) = 2 (a + t b), a = P1 - P0, b = P0 - 2 P1 + P2;
+// |P'| = 2 sqrt(Q), Q = A t^2 + B t + C, A = |b|^2, B = 2 a.b, C = |a|^2. With
+// D = 4AC - B^2 = 4 |a ^ b|^2 (Lagrange's identity, computed that way: no cancellation) > 0,
+//   integral sqrt(Q) = (2At + B) sqrt(Q) / (4A) + D / (8 A^(3/2)) asinh((2At + B) / sqrt(D)),
+// derived by differentiating (the asinh term contributes D / (8 A sqrt(Q)), using
+// D + (2At + B)^2 = 4 A Q). D = 0 (collinear control points): sqrt(Q) = sqrt(A) |t - t*|,
+// t* = -B / (2A), integrated piecewise. A = 0: straight, uniform speed 2 sqrt(C).
 /// Arc length from t = 0 to t of the quadratic Bezier P0, P1, P2 (t in [0, 1]).
 template <class Real, int Dim>
 [[nodiscard]] Real quadratic_bezier_length(const point<Real, Dim>& p0, const point<Real, Dim>& p1,

@@ -8,17 +8,7 @@
 // with h' = |P''|^2 + P'.P''', kept inside its sampling bracket (a failed step keeps the best point
 // so far); an end sample below that level with the speed falling towards it is examined too (see
 // speed_features). Cost: samples + 1 + 3 per Newton step derivative evaluations (counted).
-//
-// Branch point: the speed is sqrt(g) with g(t) = P'(t).P'(t), analytic wherever g != 0. Near a
-// minimum m, g(t) ~ g0 + g2 (t - m)^2 with g0 = |P'(m)|^2 and g2 = |P''(m)|^2 + P'(m).P'''(m), so
-// the speed has square-root branch points at t = m +- i delta, delta = sqrt(g0 / g2). An exact cusp
-// (g0 = 0) has delta = 0: the speed is then |linear| and analytic on each side of m. A near-cusp
-// has a small delta > 0: a Gauss rule on a panel that ends at m (or contains it) sees a
-// singularity at distance delta from the panel, and its error estimate is meaningless until the
-// panel is not much wider than delta (length.hpp). delta is taken from the model at the last
-// Newton iterate (g0 - h^2/g2 is the model's minimum whichever iterate it is taken at). A minimum
-// where the model fails (g2 <= 0: a flatter than quadratic minimum) reports delta = b - a, i.e.
-// "as far as the piece is wide": no grading, and the fixed rule leaves it to its order test.
+// The branch-point distance delta is explained above speed_model.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -37,6 +27,16 @@ struct speed_minimum {
   Real delta;
 };
 
+// Branch point: the speed is sqrt(g) with g(t) = P'(t).P'(t), analytic wherever g != 0. Near a
+// minimum m, g(t) ~ g0 + g2 (t - m)^2 with g0 = |P'(m)|^2 and g2 = |P''(m)|^2 + P'(m).P'''(m), so
+// the speed has square-root branch points at t = m +- i delta, delta = sqrt(g0 / g2). An exact cusp
+// (g0 = 0) has delta = 0: the speed is then |linear| and analytic on each side of m. A near-cusp
+// has a small delta > 0: a Gauss rule on a panel that ends at m (or contains it) sees a
+// singularity at distance delta from the panel, and its error estimate is meaningless until the
+// panel is not much wider than delta (length.hpp). delta is taken from the model at the last
+// Newton iterate (g0 - h^2/g2 is the model's minimum whichever iterate it is taken at). A minimum
+// where the model fails (g2 <= 0: a flatter than quadratic minimum) reports delta = b - a, i.e.
+// "as far as the piece is wide": no grading, and the fixed rule leaves it to its order test.
 /// The quadratic model of g = |P'|^2 at x: g0 = g(x), h = g'(x)/2 = P'.P'', dh = g''(x)/2.
 template <class Real>
 struct speed_model {
