@@ -378,8 +378,9 @@ def main():
     md += ["", "## Evaluation-algorithm accuracy", ""]
     ev = [r for r in records if r["quantity"] == "eval"]
     if ev:
-        md.append(table(["case", "algorithm", "setting", "max error (x scale)"],
-                        [[r["case"], r["method"], r["setting"], r["error"]] for r in ev]))
+        family = {c["name"]: c.get("family", "-") for c in acc.get("cases", [])}
+        md.append(table(["case", "family", "algorithm", "max error (eps x size)"],
+                        [[r["case"], family.get(r["case"], "-"), r["method"], r["error"]] for r in ev]))
     else:
         md.append("No results.")
 

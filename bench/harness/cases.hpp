@@ -17,7 +17,7 @@ namespace curvebench::harness {
 
 /// The suite's name and version: bump the version when a case changes, so reports are comparable.
 inline constexpr const char* suite_name = "curvebench-cases";
-inline constexpr int suite_version = 1;
+inline constexpr int suite_version = 2;  // 2: conic_ellipse_arc and rational_cubic_weighted added
 
 struct case_info {
   std::string name;
