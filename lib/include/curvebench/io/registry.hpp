@@ -9,7 +9,7 @@
 // Compile-time access: for_each_family_type(f) calls f(std::type_identity<Entry>{}) per entry.
 // Runtime access: families() / for_each_family(f) / find_family(type) give family_descriptor's;
 // evaluation_algorithms(curve, spec), audit_items_of(spec) and with_items(spec, items) dispatch
-// on the spec's "type". Cost: a linear scan of 15 names per dispatch.
+// on the spec's "type". Cost: a linear scan of the names per dispatch.
 #pragma once
 
 #include "curvebench/io/families/bezier.hpp"
