@@ -20,6 +20,9 @@ for arg in "$@"; do
 done
 
 bash "$root/scripts/setup.sh"
+# ccache keys on absolute paths unless told the checkout's root: with it, a fresh clone anywhere
+# (CI's) reuses the objects of an earlier build of the same sources.
+export CCACHE_BASEDIR="$root"
 build="$root/build-bench"
 flags="-O3 -march=native -fno-math-errno -DNDEBUG"
 # Warnings are errors in the test build (scripts/test.sh); here a compiler's false positive at -O3

@@ -16,6 +16,9 @@ for arg in "$@"; do
 done
 
 bash "$root/scripts/setup.sh"
+# ccache keys on absolute paths unless told the checkout's root: with it, a fresh clone anywhere
+# (CI's) reuses the objects of an earlier build of the same sources.
+export CCACHE_BASEDIR="$root"
 jobs=$(nproc)
 
 if [[ $sanitize -eq 1 ]]; then
