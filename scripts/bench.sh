@@ -4,20 +4,28 @@
 # plots/*.png).
 #   scripts/bench.sh           full run (all cases and settings, 3 benchmark repetitions; < 20 min on 2 cores)
 #   scripts/bench.sh --quick   the quick suite and short benchmarks (a few minutes)
+#   scripts/bench.sh --publish full run, then docs/results.md, docs/results/ and the README's figures
+#                              (scripts/publish.py; commit them with the revision they name)
 # Every output is written under a temporary name and renamed, so an interrupted run never leaves a
 # half-written file. Progress is printed as cases and benchmarks finish.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
 quick=0
+publish=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
+    --publish) publish=1 ;;
     # The usage is the comment block under the shebang, printed without its "# ".
     -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
-    *) echo "bench.sh: unknown argument '$arg' (allowed: --quick)" >&2; exit 2 ;;
+    *) echo "bench.sh: unknown argument '$arg' (allowed: --quick, --publish)" >&2; exit 2 ;;
   esac
 done
+if [[ $quick -eq 1 && $publish -eq 1 ]]; then
+  echo "bench.sh: --publish needs the full run; drop --quick" >&2
+  exit 2
+fi
 
 bash "$root/scripts/setup.sh"
 # ccache keys on absolute paths unless told the checkout's root: with it, a fresh clone anywhere
@@ -91,4 +99,9 @@ mv "$reports/vocabulary.json.tmp" "$reports/vocabulary.json"
 /usr/bin/python3 "$root/scripts/report.py" --reports "$reports"
 # The gate's verdict on these results (CI gates the quick suite; here it is information).
 "$build/bench/curvebench" gate --results "$reports/accuracy.json" --thresholds "$reports/thresholds.json" || true
+printf '{"quick": %s, "seconds_after_build": %d}\n' "$([[ $quick -eq 1 ]] && echo true || echo false)" \
+       "$((SECONDS - start))" >"$reports/run.json"
+if [[ $publish -eq 1 ]]; then
+  /usr/bin/python3 "$root/scripts/publish.py" --reports "$reports" --docs "$root/docs" --readme "$root/README.md"
+fi
 echo "bench.sh: done in $((SECONDS - start)) s after the build; see reports/REPORT.md"

@@ -1,0 +1,371 @@
+#!/usr/bin/python3
+"""Publishes a full scripts/bench.sh run: docs/results.md, docs/results/ (headline.json and at
+most a dozen plots) and the README's generated figures, between its `results:begin`/`results:end`
+markers. Run by `scripts/bench.sh --publish` after a full run; by hand:
+  /usr/bin/python3 scripts/publish.py --reports reports --docs docs --readme README.md
+Refuses a quick run (its figures are not the ones to publish) unless --allow-quick.
+
+Nothing here is typed by hand: every figure comes from the run's files (accuracy.json,
+bench_*.json, vocabulary.json, run.json) through headline(), which is pure; docs/results/
+headline.json keeps that data, and the README block is rendered from it alone (render_readme), so
+tests/python can check that the README says what headline.json says.
+Budget: the plots copied under docs/results/ stay under MAX_PLOT_BYTES together (the history stays
+small); publishing fails otherwise.
+"""
+import argparse
+import glob
+import json
+import math
+import os
+import shutil
+import statistics
+import sys
+from collections import defaultdict
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import report_lib as lib  # noqa: E402
+
+MAX_PLOTS = 12
+MAX_PLOT_BYTES = 2_000_000
+BEGIN, END = "<!-- results:begin -->", "<!-- results:end -->"
+# Cases whose error-vs-time plots are published first (the hard ones and one of each kind); the
+# rest of the dozen is filled by name order. A case missing from the run is skipped.
+PREFERRED_PLOTS = ("runge", "cusp", "bezier_degree_20", "helix", "knot_ratio", "nurbs_circle", "piecewise_linear")
+
+
+class PublishError(Exception):
+    pass
+
+
+def fmt(x):
+    """Three significant digits, exponent form outside [1e-3, 1e4): the one number format of the
+    published text."""
+    if x is None:
+        return "-"
+    if isinstance(x, bool):
+        return "yes" if x else "no"
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        if math.isnan(x):
+            return "nan"
+        if x == 0:
+            return "0"
+        if abs(x) >= 1e4 or abs(x) < 1e-3:
+            return f"{x:.2e}"
+        return f"{x:.3g}"
+    return str(x)
+
+
+def table(headers, rows):
+    out = ["| " + " | ".join(headers) + " |", "|" + "|".join("---" for _ in headers) + "|"]
+    out += ["| " + " | ".join(fmt(c) for c in r) + " |" for r in rows]
+    return "\n".join(out)
+
+
+# ---------------------------------------------------------------------------------------------
+# The data: pure functions of the run's files
+
+
+def eval_spread(records, cases):
+    """Per case with more than one evaluation algorithm: each algorithm's max error (eps x size),
+    worst first by the ratio of the worst algorithm to the best."""
+    family = {c["name"]: c.get("family", "-") for c in cases}
+    per_case = defaultdict(dict)
+    for r in records:
+        if r["quantity"] == "eval" and r["method"] != "default" and isinstance(r.get("error"), (int, float)):
+            per_case[r["case"]][r["method"]] = r["error"]
+    out = []
+    for case, algs in per_case.items():
+        if len(algs) < 2:
+            continue
+        lo, hi = min(algs.values()), max(algs.values())
+        out.append({"case": case, "family": family.get(case, "-"), "errors": dict(sorted(algs.items())),
+                    "spread": hi / lo if lo > 0 else math.inf})
+    out.sort(key=lambda e: (-e["spread"], e["case"]))
+    return out
+
+
+def peer_ratios(bench_rows, vocab):
+    return [{"family": o["family"], "data": lib.args_text(lib.data_args(o, vocab)),
+             "ours": lib.display_algorithm(o, vocab), "ours_ns": o["ns_per_op"],
+             "peer": lib.display_algorithm(p, vocab), "peer_ns": p["ns_per_op"], "ratio": ratio,
+             "operation": o["operation"]}
+            for o, p, ratio in lib.headline_ratios(bench_rows, vocab)]
+
+
+def targets(bench_rows, vocab):
+    out = []
+    for t in lib.fastest_at_targets(bench_rows, vocab):
+        b, p = t["best"], t["best_peer"]
+        out.append({"family": t["family"], "operation": t["operation"], "counter": t["counter"],
+                    "target": t["target"],
+                    "best": None if b is None else f"{lib.display_algorithm(b, vocab)} {lib.args_text(lib.data_args(b, vocab))}".strip(),
+                    "best_ns": None if b is None else b["ns_per_op"],
+                    "best_is_peer": None if b is None else vocab.is_peer(b["algorithm"]),
+                    "peer": None if p is None else lib.display_algorithm(p, vocab),
+                    "peer_ns": None if p is None else p["ns_per_op"]})
+    return out
+
+
+def orders_summary(orders):
+    """Per (quantity, method): the median observed order over the cases, its range and theory."""
+    by = defaultdict(list)
+    theory = {}
+    for o in orders:
+        if isinstance(o.get("observed"), (int, float)):
+            by[(o["quantity"], o["method"])].append(o["observed"])
+            theory[(o["quantity"], o["method"])] = o.get("theory")
+    return [{"quantity": q, "method": m, "median": statistics.median(v), "min": min(v), "max": max(v),
+             "cases": len(v), "theory": theory[(q, m)]} for (q, m), v in sorted(by.items())]
+
+
+def honesty(records):
+    """Records with an estimate (a bool "bounded"), how many bound their error, and those that do not."""
+    with_estimate = [r for r in records if isinstance(r.get("bounded"), bool)]
+    dishonest = [{"case": r["case"], "quantity": r["quantity"], "method": r["method"], "setting": r["setting"],
+                  "status": r.get("status"), "error": r.get("error"), "estimate": r.get("estimate")}
+                 for r in with_estimate if not r["bounded"]]
+    return {"records": len(records), "with_estimate": len(with_estimate),
+            "bounded": len(with_estimate) - len(dishonest), "dishonest": dishonest}
+
+
+def pareto_fastest(records, times):
+    """Per case and target: the fastest length method reaching it (ns per length), from the join of
+    the sweep's errors with the per-case timings."""
+    joined, *_ = lib.join_lengths(records, times)
+    out = []
+    for case, pts in sorted(joined.items()):
+        row = {"case": case}
+        for t in lib.TARGETS:
+            ok = [p for p in pts if p[1] <= t]
+            best = min(ok) if ok else None
+            row[f"{t:g}"] = None if best is None else {"method": f"{best[2]} {best[3]}".strip(), "ns": best[0]}
+        out.append(row)
+    return out
+
+
+def headline(acc, bench_context, bench_rows, vocab, run):
+    """Everything the published pages say, as plain data (JSON-serialisable)."""
+    ctx = acc.get("context", {})
+    records = acc.get("records", [])
+    times = lib.case_times(bench_rows)
+    rows = [r for r in bench_rows if r["family"] != lib.CASE_FAMILY]
+    suite = acc.get("suite", {})
+    return {
+        "run": {"revision": ctx.get("revision") or bench_context.get("git_revision", "unknown"),
+                "date": bench_context.get("date", "-"), "host": bench_context.get("host_name", "-"),
+                "cpus": bench_context.get("num_cpus"), "mhz": bench_context.get("mhz_per_cpu"),
+                "compiler": ctx.get("compiler", "-"), "flags": bench_context.get("flags", ctx.get("flags", "-")),
+                "quick": bool(ctx.get("quick")), "suite": suite.get("name", "-"),
+                "suite_version": suite.get("version"), "cases": len(acc.get("cases", [])),
+                "records": len(records), "seconds_after_build": run.get("seconds_after_build"),
+                "accuracy_seconds": ctx.get("seconds")},
+        "eval": eval_spread(records, acc.get("cases", [])),
+        "peers": peer_ratios(rows, vocab),
+        "targets": targets(rows, vocab),
+        "pareto": pareto_fastest(records, times),
+        "orders": orders_summary(acc.get("orders", [])),
+        "honesty": honesty(records),
+    }
+
+
+# ---------------------------------------------------------------------------------------------
+# The pages
+
+
+def run_line(h):
+    r = h["run"]
+    return (f"revision {r['revision']}, {r['date'][:10]}, host `{r['host']}` ({r['cpus']} CPUs at {r['mhz']} MHz), "
+            f"{r['compiler']}, `{r['flags'].strip()}`; suite {r['suite']} v{r['suite_version']}, {r['cases']} cases, "
+            f"{r['records']} accuracy records" + (" (QUICK run)" if r["quick"] else ""))
+
+
+def describe_peer(p):
+    data = f" ({p['data']})" if p["data"] else ""
+    faster = "faster" if p["ratio"] < 1 else "slower"
+    factor = 1 / p["ratio"] if p["ratio"] < 1 else p["ratio"]
+    return (f"{p['family']}{data}: ours `{p['ours']}` {fmt(p['ours_ns'])} ns vs `{p['peer']}` "
+            f"{fmt(p['peer_ns'])} ns per {p['operation']} ({fmt(factor)}x {faster})")
+
+
+def readme_peers(peers):
+    """One row per (family, peer): random queries where the data names an order (sorted queries and
+    the other settings are in docs/results.md)."""
+    chosen = {}
+    for p in peers:
+        key = (p["family"], p["peer"].split(" ")[0])
+        if key not in chosen or ("random" in p["data"] and "random" not in chosen[key]["data"]):
+            chosen[key] = p
+    return [chosen[k] for k in sorted(chosen)]
+
+
+def render_readme(h):
+    """The README's generated block: a few lines per topic, every figure from h."""
+    r = h["run"]
+    lines = [BEGIN, "<!-- generated by scripts/publish.py from docs/results/headline.json; do not edit -->", "",
+             f"From a full `scripts/bench.sh` ({run_line(h)}). The run took "
+             f"{fmt(r['seconds_after_build'])} s after the build. Shared 2-core VM: compare ratios, "
+             "not absolute times. All tables and plots: [docs/results.md](docs/results.md).", ""]
+    spread = [e for e in h["eval"] if e["spread"] >= 10]
+    if spread:
+        lines.append("- **Evaluation algorithms** (max error in eps(double) x the curve's size, against 50 digits), "
+                     "largest spreads between algorithms on the same data:")
+        for e in spread[:3]:
+            algs = ", ".join(f"{a} {fmt(v)}" for a, v in sorted(e["errors"].items(), key=lambda kv: kv[1]))
+            lines.append(f"  {e['case']} ({e['family']}): {algs}.")
+    peers = readme_peers(h["peers"])
+    if peers:
+        lines.append("- **Against peers, same data and settings** (time per operation; random queries where "
+                     "the data has an order):")
+        lines += [f"  {describe_peer(p)};" for p in peers]
+        lines[-1] = lines[-1][:-1] + "."
+    uos = [t for t in h["targets"] if t["family"] == "u_of_s" and t["best"] is not None]
+    if uos:
+        lines.append("- **u(s), fastest reaching |ds| / L** (one curve, benchmarks): " + "; ".join(
+            f"{t['target']:g}: `{t['best']}` {fmt(t['best_ns'])} ns" + (f" (`{t['peer']}` {fmt(t['peer_ns'])} ns)" if t["peer"] else "")
+            for t in uos) + ".")
+    if h["orders"]:
+        lines.append("- **Observed convergence orders** (median over cases, theory in brackets): " + ", ".join(
+            f"{o['quantity']} {o['method']} {fmt(o['median'])}" + (f" [{fmt(o['theory'])}]" if o["theory"] else "")
+            for o in h["orders"]) + ".")
+    ho = h["honesty"]
+    lines.append(f"- **Honest estimates**: {ho['bounded']} of the {ho['with_estimate']} records that carry an "
+                 f"error estimate bound their true error ({len(ho['dishonest'])} do not"
+                 + (": " + ", ".join(f"{d['case']} {d['method']} {d['setting']}".strip() for d in ho["dishonest"][:5])
+                    + (" ..." if len(ho["dishonest"]) > 5 else "") if ho["dishonest"] else "") + ").")
+    lines += ["", END]
+    return "\n".join(lines)
+
+
+def render_results(h, plots):
+    r = h["run"]
+    md = ["# curvebench results", "",
+          "Generated by `scripts/bench.sh --publish` (scripts/publish.py) from one full run; do not edit by hand. "
+          "The complete report of a run is `reports/REPORT.md`.", "", "## Machine and run", ""]
+    md.append(table(["item", "value"], [
+        ["revision", r["revision"]], ["date", r["date"]], ["host", r["host"]],
+        ["CPUs", f"{r['cpus']} x {r['mhz']} MHz"], ["compiler", r["compiler"]], ["flags", r["flags"].strip()],
+        ["suite", f"{r['suite']} v{r['suite_version']}, {r['cases']} cases, {r['records']} records"
+                  + (" (quick)" if r["quick"] else "")],
+        ["seconds after the build", r["seconds_after_build"]], ["accuracy sweep seconds", r["accuracy_seconds"]]]))
+    md += ["", "Absolute times on a shared machine are noisy; the ratios are measured in the same run.", ""]
+
+    md += ["## Against peers", "", "Our fastest row with the peer's settings on the same data, time per operation "
+           "(ratio < 1: ours faster).", ""]
+    md.append(table(["family", "data", "ours", "ns", "peer", "ns", "ours / peer"],
+                    [[p["family"], p["data"] or "-", p["ours"], p["ours_ns"], p["peer"], p["peer_ns"], p["ratio"]]
+                     for p in h["peers"]]) if h["peers"] else "No peer benchmarks in this run.")
+    md += ["", "## Fastest reaching an error target (benchmarks)", ""]
+    md.append(table(["family", "error counter", "target", "fastest", "ns per op", "fastest peer", "ns per op"],
+                    [[t["family"], t["counter"], f"{t['target']:g}", t["best"] or "none reached", t["best_ns"],
+                      t["peer"] or "-", t["peer_ns"]] for t in h["targets"]]))
+    md += ["", "## Arc length per case: fastest method reaching each relative error", "",
+           "Per-case timings (`bench_arclength_cases`) joined with the accuracy sweep's errors.", ""]
+    md.append(table(["case"] + [f"at {t:g}" for t in lib.TARGETS],
+                    [[p["case"]] + [f"{p[f'{t:g}']['method']} ({fmt(p[f'{t:g}']['ns'])} ns)" if p[f"{t:g}"] else "none reached"
+                                    for t in lib.TARGETS] for p in h["pareto"]]) if h["pareto"] else "No per-case timings.")
+    md += ["", "## Evaluation algorithms", "", "Max error in eps(double) x the curve's size against the 50-digit "
+           "evaluation of the same data; cases with more than one algorithm, largest spread first.", ""]
+    md.append(table(["case", "family", "errors per algorithm", "worst / best"],
+                    [[e["case"], e["family"], ", ".join(f"{a} {fmt(v)}" for a, v in e["errors"].items()), e["spread"]]
+                     for e in h["eval"]]))
+    md += ["", "## Convergence orders", ""]
+    md.append(table(["quantity", "method", "median observed", "min", "max", "cases", "theory"],
+                    [[o["quantity"], o["method"], o["median"], o["min"], o["max"], o["cases"], o["theory"]]
+                     for o in h["orders"]]))
+    ho = h["honesty"]
+    md += ["", "## Error-estimate honesty", "",
+           f"{ho['bounded']} of {ho['with_estimate']} records with an estimate bound their error "
+           f"({ho['records']} records in all).", ""]
+    if ho["dishonest"]:
+        md.append(table(["case", "quantity", "method", "setting", "status", "error", "estimate"],
+                        [[d["case"], d["quantity"], d["method"], d["setting"], d["status"], d["error"], d["estimate"]]
+                         for d in ho["dishonest"]]))
+        md.append("")
+    if plots:
+        md += ["## Plots", ""] + [f"![{name}](results/{name})" for name in plots] + [""]
+    return "\n".join(md)
+
+
+def choose_plots(plot_dir):
+    """At most MAX_PLOTS of the run's plots: the convergence plot, then per-case error-vs-time
+    plots of the preferred cases, then the rest by name."""
+    pareto = sorted(os.path.basename(p) for p in glob.glob(os.path.join(plot_dir, "pareto_length_*.png")))
+    chosen = [n for n in ("convergence.png",) if os.path.exists(os.path.join(plot_dir, n))]
+    for key in PREFERRED_PLOTS:
+        chosen += [n for n in pareto if key in n and n not in chosen][:1]
+    chosen += [n for n in pareto if n not in chosen]
+    return chosen[:MAX_PLOTS]
+
+
+def replace_block(text, block, path):
+    i, j = text.find(BEGIN), text.find(END)
+    if i < 0 or j < i:
+        raise PublishError(f"{path}: no {BEGIN} ... {END} block to replace")
+    return text[:i] + block + text[j + len(END):]
+
+
+def atomic_write(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def load_run(report_dir):
+    vocab = lib.load_vocabulary(os.path.join(report_dir, "vocabulary.json"))
+    bench_context, bench_rows = lib.load_benchmark_files(sorted(glob.glob(os.path.join(report_dir, "bench_*.json"))), vocab)
+    with open(os.path.join(report_dir, "accuracy.json"), encoding="utf-8") as f:
+        acc = json.load(f)
+    run = {}
+    if os.path.exists(os.path.join(report_dir, "run.json")):
+        with open(os.path.join(report_dir, "run.json"), encoding="utf-8") as f:
+            run = json.load(f)
+    return acc, bench_context, bench_rows, vocab, run
+
+
+def publish(report_dir, docs_dir, readme, allow_quick=False):
+    acc, bench_context, bench_rows, vocab, run = load_run(report_dir)
+    h = headline(acc, bench_context, bench_rows, vocab, run)
+    if h["run"]["quick"] and not allow_quick:
+        raise PublishError(f"{report_dir}/accuracy.json is a quick run: publish a full `scripts/bench.sh` run")
+    out = os.path.join(docs_dir, "results")
+    os.makedirs(out, exist_ok=True)
+    plots = choose_plots(os.path.join(report_dir, "plots"))
+    size = sum(os.path.getsize(os.path.join(report_dir, "plots", n)) for n in plots)
+    if size > MAX_PLOT_BYTES:
+        raise PublishError(f"the {len(plots)} chosen plots take {size} bytes, over the {MAX_PLOT_BYTES} budget")
+    for old in glob.glob(os.path.join(out, "*.png")):
+        if os.path.basename(old) not in plots:
+            os.remove(old)
+    for n in plots:
+        shutil.copyfile(os.path.join(report_dir, "plots", n), os.path.join(out, n))
+    atomic_write(os.path.join(out, "headline.json"), json.dumps(h, indent=1, sort_keys=True) + "\n")
+    atomic_write(os.path.join(docs_dir, "results.md"), render_results(h, plots) + "\n")
+    if readme:
+        with open(readme, encoding="utf-8") as f:
+            text = f.read()
+        atomic_write(readme, replace_block(text, render_readme(h), readme))
+    return h
+
+
+def main():
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--reports", default=os.path.join(root, "reports"))
+    ap.add_argument("--docs", default=os.path.join(root, "docs"))
+    ap.add_argument("--readme", default=os.path.join(root, "README.md"), help="README to update ('' for none)")
+    ap.add_argument("--allow-quick", action="store_true", help="publish a quick run (for trying the script)")
+    args = ap.parse_args()
+    try:
+        h = publish(os.path.abspath(args.reports), os.path.abspath(args.docs), args.readme, args.allow_quick)
+    except (OSError, ValueError, lib.ReportError, PublishError) as e:
+        print(f"publish.py: {e}", file=sys.stderr)
+        return 1
+    print(f"publish.py: wrote {args.docs}/results.md and results/ (revision {h['run']['revision']})")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

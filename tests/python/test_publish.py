@@ -1,0 +1,170 @@
+"""Tests of scripts/publish.py: the headline data from a run's files, the refusal of quick runs, the
+plot budget, and that what is checked in (README's results block, docs/results.md) is exactly what
+publish.py renders from docs/results/headline.json, so no figure in them is typed by hand.
+Run by ctest (report_py): /usr/bin/python3 -m unittest discover -s tests/python"""
+import glob
+import json
+import os
+import shutil
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import publish  # noqa: E402
+import report_lib as lib  # noqa: E402
+
+FIXTURES = os.path.join(HERE, "fixtures")
+
+
+def record(case, quantity, method, error, setting="", estimate=None, bounded=None, status="not_guaranteed"):
+    r = {"case": case, "quantity": quantity, "method": method, "setting": setting, "error": error,
+         "evaluations": 10.0, "status": status, "group": "smooth"}
+    if bounded is not None:
+        r.update({"estimate": estimate, "bounded": bounded})
+    return r
+
+
+def accuracy(quick=False):
+    return {"context": {"compiler": "gcc 12.2.0", "flags": " -O3", "quick": quick, "revision": "abc1234",
+                        "seconds": 12.5},
+            "suite": {"name": "curvebench-cases", "version": 2},
+            "cases": [{"name": "deg20", "family": "bezier"}, {"name": "cr", "family": "catmull_rom"}],
+            "records": [record("deg20", "eval", "de_casteljau", 1.0), record("deg20", "eval", "horner", 2.0e7),
+                        record("deg20", "eval", "default", 1.0), record("cr", "eval", "power", 0.5),
+                        record("cr", "eval", "bezier", 1.5),
+                        record("cr", "length", "gauss", 1e-9, "n=4", 1e-8, True, "converged"),
+                        record("cr", "length", "gauss", 1e-7, "n=2", 1e-8, False, "converged")],
+            "orders": [{"case": "cr", "quantity": "length", "method": "composite_gauss", "observed": 5.0, "theory": 6.0},
+                       {"case": "deg20", "quantity": "length", "method": "composite_gauss", "observed": 7.0, "theory": 6.0},
+                       {"case": "x", "quantity": "length", "method": "composite_gauss", "observed": 6.5, "theory": 6.0}]}
+
+
+def make_run(directory, quick=False):
+    for name in ("vocabulary.json", "bench_peers.json"):
+        shutil.copy(os.path.join(FIXTURES, name), directory)
+    with open(os.path.join(directory, "accuracy.json"), "w", encoding="utf-8") as f:
+        json.dump(accuracy(quick), f)
+    with open(os.path.join(directory, "run.json"), "w", encoding="utf-8") as f:
+        json.dump({"quick": quick, "seconds_after_build": 321}, f)
+    os.makedirs(os.path.join(directory, "plots"))
+    for name in ("convergence.png", "pareto_length_runge_equispaced.png", "pareto_length_arch.png", "unrelated.png"):
+        with open(os.path.join(directory, "plots", name), "wb") as f:
+            f.write(b"\x89PNG" + name.encode())
+
+
+class Headline(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp()
+        make_run(self.tmp)
+        self.h = publish.headline(*publish.load_run(self.tmp))
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp)
+
+    def test_eval_spread_ranks_cases_by_worst_over_best(self):
+        ev = self.h["eval"]
+        self.assertEqual([e["case"] for e in ev], ["deg20", "cr"])
+        self.assertAlmostEqual(ev[0]["spread"], 2.0e7)
+        self.assertNotIn("default", ev[0]["errors"])  # the default is one of the algorithms, not another
+        self.assertAlmostEqual(ev[1]["spread"], 3.0)
+
+    def test_honesty_names_each_estimate_that_does_not_bound(self):
+        ho = self.h["honesty"]
+        self.assertEqual((ho["with_estimate"], ho["bounded"]), (2, 1))
+        self.assertEqual([(d["case"], d["setting"]) for d in ho["dishonest"]], [("cr", "n=2")])
+
+    def test_orders_are_medians_over_cases(self):
+        (o,) = self.h["orders"]
+        self.assertEqual((o["median"], o["min"], o["max"], o["cases"], o["theory"]), (6.5, 5.0, 7.0, 3, 6.0))
+
+    def test_peers_come_from_the_benchmarks(self):
+        self.assertTrue(self.h["peers"])
+        for p in self.h["peers"]:
+            self.assertAlmostEqual(p["ratio"], p["ours_ns"] / p["peer_ns"])
+            self.assertTrue(p["peer"].startswith("peer_"))
+
+    def test_readme_block_quotes_the_data(self):
+        text = publish.render_readme(self.h)
+        self.assertTrue(text.startswith(publish.BEGIN) and text.endswith(publish.END))
+        self.assertIn("abc1234", text)
+        self.assertIn("321 s after the build", text)
+        self.assertIn("horner 2.00e+07", text)
+        self.assertNotIn("catmull_rom): power", text)  # a spread of 3 is not a headline
+        self.assertIn("1 of the 2 records", text)
+
+
+class Publish(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp()
+        self.reports = os.path.join(self.tmp, "reports")
+        self.docs = os.path.join(self.tmp, "docs")
+        os.makedirs(self.reports)
+        self.readme = os.path.join(self.tmp, "README.md")
+        with open(self.readme, "w", encoding="utf-8") as f:
+            f.write(f"intro\n{publish.BEGIN}\nstale 1.0 ns\n{publish.END}\noutro\n")
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp)
+
+    def test_full_run_writes_pages_and_replaces_only_the_block(self):
+        make_run(self.reports)
+        h = publish.publish(self.reports, self.docs, self.readme)
+        with open(self.readme, encoding="utf-8") as f:
+            text = f.read()
+        self.assertTrue(text.startswith("intro\n") and text.endswith("\noutro\n"))
+        self.assertNotIn("stale", text)
+        self.assertIn(publish.render_readme(h), text)
+        plots = sorted(os.path.basename(p) for p in glob.glob(os.path.join(self.docs, "results", "*.png")))
+        self.assertEqual(plots[0], "convergence.png")
+        self.assertIn("pareto_length_runge_equispaced.png", plots)
+        self.assertNotIn("unrelated.png", plots)
+        with open(os.path.join(self.docs, "results", "headline.json"), encoding="utf-8") as f:
+            self.assertEqual(json.load(f)["run"]["revision"], "abc1234")
+
+    def test_quick_run_is_refused(self):
+        make_run(self.reports, quick=True)
+        with self.assertRaises(publish.PublishError):
+            publish.publish(self.reports, self.docs, self.readme)
+
+    def test_readme_without_markers_is_an_error(self):
+        make_run(self.reports)
+        with open(self.readme, "w", encoding="utf-8") as f:
+            f.write("no block\n")
+        with self.assertRaisesRegex(publish.PublishError, "results:begin"):
+            publish.publish(self.reports, self.docs, self.readme)
+
+
+class CheckedIn(unittest.TestCase):
+    """What the repository holds was rendered from its own headline.json, from a full run."""
+
+    def setUp(self):
+        with open(os.path.join(ROOT, "docs", "results", "headline.json"), encoding="utf-8") as f:
+            self.h = json.load(f)
+
+    def test_headline_is_a_full_run(self):
+        self.assertFalse(self.h["run"]["quick"])
+
+    def test_readme_figures_are_generated(self):
+        with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as f:
+            readme = f.read()
+        self.assertIn(publish.render_readme(self.h), readme)
+
+    def test_results_page_is_generated_and_small(self):
+        plots = sorted(os.path.basename(p) for p in glob.glob(os.path.join(ROOT, "docs", "results", "*.png")))
+        with open(os.path.join(ROOT, "docs", "results.md"), encoding="utf-8") as f:
+            page = f.read()
+        self.assertLessEqual(len(plots), publish.MAX_PLOTS)
+        for p in plots:
+            self.assertIn(f"(results/{p})", page)
+        size = sum(os.path.getsize(p) for p in glob.glob(os.path.join(ROOT, "docs", "results", "*")))
+        self.assertLess(size + len(page.encode()), publish.MAX_PLOT_BYTES)
+        # Same text as publish.py renders, whatever order the plots were chosen in.
+        shown = [line[len("![") : line.index("]")] for line in page.splitlines() if line.startswith("![")]
+        self.assertEqual(page, publish.render_results(self.h, shown) + "\n")
+
+
+if __name__ == "__main__":
+    unittest.main()
