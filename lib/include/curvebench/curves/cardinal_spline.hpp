@@ -121,9 +121,8 @@ class cardinal_spline : public detail::cubic_family<Real, Dim> {
       : cardinal_spline(build(checked_alpha_knots(points, opt), points, opt), points, opt) {}
 
   /// Given knots (e.g. key times): points.size() knots, or points.size() + 1 for a closed loop
-  /// (the last knot is the return to points[0]); control_points: the curve's domain is
-  /// [knots[1], knots[n-2]]. options.alpha must be 0 (the knots ARE the
-  /// parameterization).
+  /// (the last knot is the return to points[0]); with control_points ends the curve's domain is
+  /// [knots[1], knots[n-2]]. options.alpha must be 0 (the knots ARE the parameterization).
   cardinal_spline(const std::vector<Real>& knots, const point_list<Real, Dim>& points, const options& opt)
       : cardinal_spline(build(knots, points, check_given_knots(opt)), points, opt) {}
 
