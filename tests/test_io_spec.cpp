@@ -132,6 +132,7 @@ TEST(io_spec, real50_twin_of_derived_data_is_exact) {
   for (const char* text : {
            R"({"type": "catmull_rom", "alpha": 0.5, "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
            R"({"type": "cardinal", "tension": 0.3, "alpha": 1, "end": "closed", "points": [[0,0],[1,2],[3,3],[4,0]]})",
+           R"({"type": "catmull_rom", "alpha": 0.3, "end": "control_points", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
            R"({"type": "lagrange", "nodes": "chebyshev", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
            R"({"type": "bspline", "degree": 3, "points": [[0,0],[1,2],[3,3],[4,0],[6,1],[7,0],[8,2]]})",
            R"({"type": "circle", "center": [1, 2], "radius": 3})",
@@ -198,4 +199,62 @@ TEST(io_spec, malformed_specs_name_the_field) {
   EXPECT_THAT(error_of(R"({"type": "arc", "center": [0, 0], "radius": 2, "start": 0, "sweep": 1, "swep": 2})"),
               HasSubstr("spec: unknown field \"swep\" for type \"arc\""));
   EXPECT_THAT(error_of(R"(["not", "an", "object"])"), HasSubstr("spec: expected an object"));
+}
+
+TEST(io_spec, catmull_rom_and_cardinal_with_end_control_points) {
+  // The textbook Catmull-Rom: the first and last of the eight points only shape the end segments.
+  const std::string points = "[[0,0],[1,2],[3,3],[4,0],[6,1],[7,4],[9,3],[10,0]]";
+  const cb::point_list<double, 2> pts{{0, 0}, {1, 2}, {3, 3}, {4, 0}, {6, 1}, {7, 4}, {9, 3}, {10, 0}};
+  const auto j = io::parse(R"({"type": "catmull_rom", "points": )" + points +
+                           R"(, "alpha": 0.5, "end": "control_points"})");
+  cb::cardinal_options<double, 2> co;
+  co.alpha = 0.5;
+  co.end = cb::cardinal_end::control_points;
+  const cb::cardinal_spline<double, 2> lib(pts, co);
+  const auto c = io::curve_from_spec<double, 2>(io::root(j));
+  expect_same_curve(c, lib);
+  // The curve runs from P_1 to P_6 on [u_1, u_6] of the centripetal knots of all eight points.
+  const auto knots = cb::alpha_knots<double, 2>(std::span<const cb::point<double, 2>>(pts), 0.5);
+  EXPECT_EQ(c.domain().lo, knots[1]);
+  EXPECT_EQ(c.domain().hi, knots[6]);
+  EXPECT_EQ(c(c.domain().lo), pts[1]);
+  // real50: the spec's knots are resolved once in double; the 50-digit twin is the library's
+  // 50-digit spline on those knots and the same points, bit for bit.
+  const auto c50 = io::curve_from_spec<cb::real50, 2>(io::root(j));
+  cb::cardinal_options<cb::real50, 2> co50;
+  co50.end = cb::cardinal_end::control_points;
+  const cb::cardinal_spline<cb::real50, 2> lib50(std::vector<cb::real50>(knots.begin(), knots.end()),
+                                                 cb::points_cast<cb::real50, double, 2>(pts), co50);
+  ASSERT_EQ(c50.domain().lo, lib50.domain().lo);
+  ASSERT_EQ(c50.domain().hi, lib50.domain().hi);
+  for (int k = 0; k <= 16; ++k) {
+    const cb::real50 u = lib50.domain().lo + (lib50.domain().hi - lib50.domain().lo) * k / 16;
+    ASSERT_EQ(c50(u), lib50(u)) << k;
+    ASSERT_EQ(c50.derivative(u, 1), lib50.derivative(u, 1)) << k;
+    // And the double curve is its rounding (a few ulps of the size 10, here <= 8).
+    const double ud = static_cast<double>(u);
+    ASSERT_TRUE((cbt::point_within<double, 2>(c(ud), c50(cb::real50(ud)), cb::real50(10), 8))) << k;
+  }
+  // The cardinal type takes the same end, with its tension, and given knots.
+  co.s = (1 - 0.4) / 2.0;
+  expect_same_curve(make<2>(R"({"type": "cardinal", "tension": 0.4, "alpha": 0.5, "end": "control_points", "points": )" +
+                            points + "}"),
+                    cb::cardinal_spline<double, 2>(pts, co));
+  co.alpha = 0;
+  const std::vector<double> given{0, 1, 1.5, 3, 4, 4.25, 6, 7};
+  expect_same_curve(make<2>(R"({"type": "cardinal", "tension": 0.4, "end": "control_points", "knots": [0, 1, 1.5, 3, 4, 4.25, 6, 7], "points": )" +
+                            points + "}"),
+                    cb::cardinal_spline<double, 2>(given, pts, co));
+  // Too few points: the error names the field, the count and the end mode; a repeated point with
+  // alpha > 0 is still refused.
+  for (const char* type : {"catmull_rom", "cardinal"})
+    for (const char* alpha : {"0", "0.5"})
+      EXPECT_THAT(error_of(std::string(R"({"type": ")") + type + R"(", "alpha": )" + alpha +
+                           R"(, "end": "control_points", "points": [[0,0],[1,1],[2,0]]})"),
+                  HasSubstr("points: 3 given, at least 4 required (end = control_points"))
+          << type << " alpha " << alpha;
+  EXPECT_THAT(error_of(R"({"type": "catmull_rom", "alpha": 0.5, "end": "control_points", "points": [[0,0],[1,1],[1,1],[2,0]]})"),
+              HasSubstr("points[2] repeats points[1]"));
+  EXPECT_THAT(error_of(R"({"type": "catmull_rom", "end": "control", "points": [[0,0],[1,1],[2,0],[3,1]]})"),
+              HasSubstr("spec.end: \"control\" is not one of"));
 }

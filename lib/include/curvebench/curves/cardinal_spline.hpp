@@ -2,13 +2,15 @@
 // interpolating C1 cubics whose slope at a point is 2s times the derivative of the parabola
 // through its neighbours, on given knots or knots from |P_{i+1} - P_i|^alpha (alpha = 0 uniform,
 // 1/2 centripetal, 1 chordal); s = 1/2 is the Barry-Goldman non-uniform Catmull-Rom curve (as
-// Boost.Math's catmull_rom). Ends: phantom, one_sided, given_tangents, closed (formulas, and the
-// erratum to seed 000's difference formula, above cardinal_end). Evaluated by piecewise_cubic.
+// Boost.Math's catmull_rom). Ends: phantom, one_sided, given_tangents, closed, control_points (the
+// textbook form through P_1..P_{n-2}; formulas, and the erratum to seed 000's difference formula,
+// above cardinal_end). Evaluated by piecewise_cubic.
 // Sources: seeds 000, 001, 002 (cardinal matrix, finite-difference slopes, extrapolated ends);
 // Barry & Goldman (1988).
 // Cost: O(n) construction, O(1) evaluation; local control (moving P_j changes at most segments
-// j-2 .. j+1). Accuracy: interpolates the points to rounding; C1 at the knots; reproduces
-// quadratics (s = 1/2, one_sided ends) on any knots.
+// j-2 .. j+1; with control_points ends, whose segment k starts at P_{k+1}, segments j-3 .. j).
+// Accuracy: interpolates the points to rounding; C1 at the knots; reproduces quadratics (s = 1/2,
+// one_sided or control_points ends) on any knots.
 #pragma once
 
 #include "curvebench/core/error.hpp"
@@ -40,8 +42,14 @@ namespace curvebench {
 //                  end knot: seed 000's second-order one-sided difference
 //   given_tangents the user's dP/du at both ends (not scaled by 2s)
 //   closed         a closed loop: the segment P_{n-1} -> P_0 is added and slopes wrap around
+//   control_points the first and last points only shape the end segments (seed 001's "all but the
+//                  endpoints", the textbook Catmull-Rom): n >= 4 points, knots from all n (or n
+//                  given), and the curve runs from P_1 to P_{n-2} on [u_1, u_{n-2}] (n - 3
+//                  segments), each P_i with the interior slope above from its real neighbours. For
+//                  s = 1/2 each segment is the four-point Barry-Goldman pyramid; on uniform knots it
+//                  is given_tangents on P_1..P_{n-2} with s (P_2 - P_0) and s (P_{n-1} - P_{n-3}).
 /// How a cardinal spline treats its ends (see the comment above).
-enum class cardinal_end { phantom, one_sided, given_tangents, closed };
+enum class cardinal_end { phantom, one_sided, given_tangents, closed, control_points };
 
 [[nodiscard]] inline const char* to_string(cardinal_end e) {
   switch (e) {
@@ -53,6 +61,8 @@ enum class cardinal_end { phantom, one_sided, given_tangents, closed };
       return "given_tangents";
     case cardinal_end::closed:
       return "closed";
+    case cardinal_end::control_points:
+      return "control_points";
   }
   return "unknown";
 }
@@ -111,13 +121,14 @@ class cardinal_spline : public detail::cubic_family<Real, Dim> {
       : cardinal_spline(build(checked_alpha_knots(points, opt), points, opt), points, opt) {}
 
   /// Given knots (e.g. key times): points.size() knots, or points.size() + 1 for a closed loop
-  /// (the last knot is the return to points[0]). options.alpha must be 0 (the knots ARE the
-  /// parameterization).
+  /// (the last knot is the return to points[0]); with control_points ends the curve's domain is
+  /// [knots[1], knots[n-2]]. options.alpha must be 0 (the knots ARE the parameterization).
   cardinal_spline(const std::vector<Real>& knots, const point_list<Real, Dim>& points, const options& opt)
       : cardinal_spline(build(knots, points, check_given_knots(opt)), points, opt) {}
 
   [[nodiscard]] const point_list<Real, Dim>& points() const { return points_; }
-  /// The slopes dP/du at the knots (closed: n + 1 entries, the last equal to the first).
+  /// The slopes dP/du at the knots (closed: n + 1 entries, the last equal to the first;
+  /// control_points: n - 2 entries, at P_1..P_{n-2}, the curve's breakpoints).
   [[nodiscard]] const point_list<Real, Dim>& slopes() const { return slopes_; }
   [[nodiscard]] const options& settings() const { return options_; }
 
@@ -144,6 +155,10 @@ class cardinal_spline : public detail::cubic_family<Real, Dim> {
 
   static void check_options(const point_list<Real, Dim>& points, const options& opt) {
     validate::finite("s", opt.s);
+    if (opt.end == cardinal_end::control_points)
+      validate::count_at_least("points", points.size(), 4,
+                               "end = control_points: the first and last points only shape the end segments, so "
+                               "one segment needs four points");
     const bool needs3 = opt.end == cardinal_end::one_sided || opt.end == cardinal_end::closed;
     validate::count_at_least("points", points.size(), needs3 ? 3 : 2,
                              needs3 ? "one-sided ends and closed loops need three points" : "a segment needs two");
@@ -184,6 +199,15 @@ class cardinal_spline : public detail::cubic_family<Real, Dim> {
         slopes[0] = two_s * detail::parabola_slope_mid<Real, Dim>(h(n - 1), h(0), v[n - 1], v[0], v[1]);
         slopes[n] = slopes[0];
         break;
+      case cardinal_end::control_points: {
+        // P_0 and P_n only entered the slopes at P_1 and P_{n-1}: the curve is the interior part.
+        std::vector<Real> inner_knots(knots.begin() + 1, knots.end() - 1);
+        point_list<Real, Dim> inner_values(v.begin() + 1, v.end() - 1);
+        point_list<Real, Dim> inner_slopes(slopes.begin() + 1, slopes.end() - 1);
+        auto engine =
+            base::engine_type::from_hermite(std::move(inner_knots), inner_values, inner_slopes, inner_slopes);
+        return built{std::move(engine), std::move(inner_slopes)};
+      }
     }
     auto engine = base::engine_type::from_hermite(knots, v, slopes, slopes);
     return built{std::move(engine), std::move(slopes)};

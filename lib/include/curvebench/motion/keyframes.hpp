@@ -115,6 +115,9 @@ template <class Real, int Dim>
     validate::fail(std::string("ends = ") + to_string(ends) +
                    ": keyframe tracks use phantom or one_sided ends (a closed loop needs an extra key "
                    "frame; for given end tangents use hermite_track)");
+  if (ends == cardinal_end::control_points)
+    validate::fail("ends = control_points: a keyframe track passes through every key, and control_points would "
+                   "leave the first and last keys off the track");
   cardinal_options<Real, Dim> opt;
   opt.s = s;
   opt.end = ends;

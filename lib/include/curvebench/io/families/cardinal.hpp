@@ -19,11 +19,13 @@ any_curve<Real, Dim> build_cardinal(const field& spec) {
   if (spec.has("tension")) opt.s = (Real(1) - Real(spec.member("tension").number())) / Real(2);
   opt.alpha = real_or<Real>(spec, "alpha", Real(0));
   if (spec.has("end")) {
-    const std::string e = spec.member("end").one_of({"phantom", "one_sided", "tangents", "closed"});
+    const std::string e =
+        spec.member("end").one_of({"phantom", "one_sided", "tangents", "closed", "control_points"});
     opt.end = e == "phantom"     ? cardinal_end::phantom
               : e == "one_sided" ? cardinal_end::one_sided
               : e == "tangents"  ? cardinal_end::given_tangents
-                                 : cardinal_end::closed;
+              : e == "closed"    ? cardinal_end::closed
+                                 : cardinal_end::control_points;
   }
   if (opt.end == cardinal_end::given_tangents) {
     opt.start_tangent = one_point<Real, Dim>(spec.member("start_tangent", "end is \"tangents\""));
@@ -33,7 +35,14 @@ any_curve<Real, Dim> build_cardinal(const field& spec) {
   return cardinal_spline<Real, Dim>(p, opt);
 }
 
-/// Knots from |dP|^alpha (alpha > 0, no knots given) computed once in double; alpha becomes 0.
+/// The "end" field's doc, shared by cardinal and catmull_rom.
+inline constexpr std::string_view end_doc =
+    "phantom (extrapolated end points, default), one_sided (2nd-order differences), tangents, closed, "
+    "control_points (the textbook form: the first and last points only shape the end segments, the curve "
+    "runs from the second point to the second-to-last on [u_1, u_n-2]; at least 4 points)";
+
+/// Knots from |dP|^alpha (alpha > 0, no knots given) computed once in double, from all the points
+/// (closed: with the closing chord; control_points: the end points' chords too); alpha becomes 0.
 template <int Dim>
 json resolve_alpha_knots(const field& spec) {
   json r = spec.value;
@@ -60,7 +69,7 @@ struct cardinal_family : audited_by_points {
       {"s", "the slope scale (default 1/2: Catmull-Rom); not with tension"},
       {"tension", "1 - 2s (default 0); not with s"},
       {"alpha", "knots u_i+1 - u_i = |P_i+1 - P_i|^alpha: 0 uniform (default), 0.5 centripetal, 1 chordal"},
-      {"end", "phantom (extrapolated end points, default), one_sided (2nd-order differences), tangents, closed"},
+      {"end", detail::end_doc},
       {"start_tangent", "dP/du at the first point (end \"tangents\")"},
       {"end_tangent", "dP/du at the last point (end \"tangents\")"},
       {"knots", "the parameter of each point, increasing (instead of alpha's)"},
@@ -98,13 +107,14 @@ struct catmull_rom_family : audited_by_points {
   static constexpr field_doc fields[] = {
       {"points", "the interpolated points", presence::required},
       {"alpha", "knots u_i+1 - u_i = |P_i+1 - P_i|^alpha: 0 uniform (default), 0.5 centripetal, 1 chordal"},
-      {"end", "phantom (extrapolated end points, default), one_sided (2nd-order differences), tangents, closed"},
+      {"end", detail::end_doc},
       {"start_tangent", "dP/du at the first point (end \"tangents\")"},
       {"end_tangent", "dP/du at the last point (end \"tangents\")"},
       {"knots", "the parameter of each point, increasing (instead of alpha's)"},
   };
   static constexpr std::string_view examples[] = {
       R"({"type": "catmull_rom", "points": [[0,0],[1,2],[3,3],[4,0]], "end": "tangents", "start_tangent": [1,0], "end_tangent": [1,0]})",
+      R"({"type": "catmull_rom", "points": [[0,0],[1,2],[3,3],[4,0],[6,1],[7,4]], "alpha": 0.5, "end": "control_points"})",
   };
   static constexpr std::array<std::string_view, 3> algorithms = detail::cubic_engine_algorithms;
 
