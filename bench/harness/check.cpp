@@ -160,7 +160,6 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
     for (int i = 0; i < Dim; ++i) p[i] = row[cp[static_cast<std::size_t>(i)]];
     cr.point_ulps = ref.difference(cr.u, 0, p) / (eps * res.size);
     cr.error = cr.point_ulps;
-    cr.relative = cr.point_ulps * eps;
     worst_point = std::max(worst_point, cr.point_ulps);
     if (K > 0) cr.derivative_ulps.assign(static_cast<std::size_t>(K), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t oi = 0; oi < orders.size(); ++oi) {
@@ -172,6 +171,7 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
       worst_derivative[ki] = std::max(worst_derivative[ki], e);
       cr.error = std::max(cr.error, e);
     }
+    cr.relative = cr.error * eps;
     if (cs != csv_table::npos) {
       cr.s = row[cs];
       cr.s_error = ref.ds(cr.u, cr.s);

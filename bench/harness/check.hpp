@@ -15,9 +15,9 @@
 //            the largest coordinate magnitude of the exact points at the rows' parameters and at 65
 //            equally spaced parameters across the domain (1 when all are 0): the eval records'
 //            definition, over a fixed grid too so that a file of one row is measured against the
-//            whole curve; relative = error x eps(double). Derivative order k likewise in ulps of
-//            its own size (the same parameters, the k-th derivative), in `derivative_ulps`; the
-//            row's error is the largest of the point's and the derivatives'. An s column gives
+//            whole curve. Derivative order k likewise in ulps of its own size (the same
+//            parameters, the k-th derivative), in `derivative_ulps`; the row's error is the
+//            largest of the point's and the derivatives', relative = error x eps(double). An s column gives
 //            s_error = |s_user - s(u)| / L.
 //   lengths  error = |length - (s(u1) - s(u0))| / L (L: the curve's total length);
 //            relative = the same over the segment's own length (infinite for an empty segment
@@ -64,7 +64,7 @@ struct check_row {
   double u1 = 0;                 ///< lengths: u1 (0 otherwise)
   double s = 0;                  ///< inverse: the target s; values: the user's s (when given)
   double error = 0;              ///< values: ulps of size (largest over point and derivatives); else / L
-  double relative = 0;           ///< values: |p - P|_inf / size; lengths: per segment; inverse: = error
+  double relative = 0;           ///< values: error x eps(double); lengths: per segment; inverse: = error
   double point_ulps = 0;         ///< values: the point's error in ulps of size
   std::vector<double> derivative_ulps;  ///< values: order k = 1..K at index k - 1 (empty without)
   double s_error = -1;           ///< values with an s column: |s_user - s(u)| / L; -1 without

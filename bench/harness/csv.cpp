@@ -41,7 +41,10 @@ std::string quote_cell(std::string_view text) {
 bool parse_finite(std::string_view text, double& out) {
   text = trim(text);
   if (text.empty()) return false;
-  if (text.front() == '+') text.remove_prefix(1);  // from_chars takes no '+'; "+-1" still fails below
+  if (text.front() == '+') {  // from_chars takes no '+'; "+-1" and "++1" are junk
+    text.remove_prefix(1);
+    if (text.empty() || text.front() == '-' || text.front() == '+') return false;
+  }
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, out);
   return ec == std::errc() && ptr == end && std::isfinite(out);
@@ -89,9 +92,14 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
       header = true;
       continue;
     }
-    if (cells.size() != t.columns.size())
-      throw invalid_input(row_name + ": " + std::to_string(cells.size()) + " values, but the header names " +
-                          std::to_string(t.columns.size()) + " columns (" + quote_cell(trim(line)) + ")");
+    if (cells.size() < t.columns.size())
+      throw invalid_input(row_name + ", column " + t.columns[cells.size()] + ": missing value (" +
+                          std::to_string(cells.size()) + " values, but the header names " +
+                          std::to_string(t.columns.size()) + " columns: " + quote_cell(trim(line)) + ")");
+    if (cells.size() > t.columns.size())
+      throw invalid_input(row_name + ", column " + std::to_string(t.columns.size() + 1) + ": " +
+                          quote_cell(cells[t.columns.size()]) + " has no column (" + std::to_string(cells.size()) +
+                          " values, but the header names " + std::to_string(t.columns.size()) + " columns)");
     std::vector<double> row(cells.size());
     for (std::size_t c = 0; c < cells.size(); ++c)
       if (!parse_finite(cells[c], row[c]))
