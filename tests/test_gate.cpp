@@ -112,3 +112,31 @@ TEST(gate, the_checked_in_thresholds_name_vocabulary_ids_only) {
   ASSERT_GT(t["rules"].size(), 10u);
   EXPECT_NO_THROW((void)check_gate(json::object(), t));
 }
+
+// A user's implementation (curvebench check, harness/check.hpp) writes records with "subject": true
+// and its own name as the method: rules may name it when the results hold it, and only then.
+TEST(gate, a_rule_may_name_a_subject_of_the_results) {
+  json r = clean_results();
+  r["records"].push_back(json::parse(R"({"case": "arch", "group": "subject", "quantity": "eval", "method": "my_engine",
+      "setting": "", "error": 3.5, "estimate": null, "bounded": null, "evaluations": 11,
+      "status": "not_guaranteed", "subject": true})"));
+  r["records"].push_back(json::parse(R"({"case": "arch", "group": "subject", "quantity": "eval", "method": "my_engine",
+      "setting": "derivative=1", "error": 40, "estimate": null, "bounded": null, "evaluations": 11,
+      "status": "not_guaranteed", "subject": true})"));
+  const json rules = json::parse(R"({"rules": [
+      {"quantity": "eval", "method": "my_engine", "setting": "", "max_error": 4, "why": "test"},
+      {"quantity": "eval", "method": "my_engine", "setting": "derivative=1", "max_error": 8, "why": "test"}]})");
+  const auto breaches = check_gate(r, rules);
+  ASSERT_EQ(breaches.size(), 1u);  // the point passes at 3.5 <= 4, the derivative breaches at 40 > 8
+  EXPECT_EQ(breaches[0].rule, "eval/my_engine/*/derivative=1");
+  EXPECT_EQ(breaches[0].where, "case arch setting derivative=1");
+  EXPECT_EQ(breaches[0].message, "error 40 > allowed 8");
+  // The same name without a subject record is still a misspelt method, and the quantity is still checked.
+  EXPECT_THROW((void)check_gate(clean_results(), rules), curvebench::invalid_input);
+  r["records"][3]["subject"] = false;
+  r["records"][4].erase("subject");
+  EXPECT_THROW((void)check_gate(r, rules), curvebench::invalid_input);
+  r["records"][3]["subject"] = true;
+  EXPECT_THROW((void)check_gate(r, json::parse(R"({"rules": [{"quantity": "evals", "method": "my_engine",
+      "max_error": 4}]})")), curvebench::invalid_input);
+}

@@ -18,6 +18,9 @@
 // error (invalid_input naming the rule's index and the value): a misspelt or renamed id must not
 // silently turn into a rule that matches nothing. For quantity "eval" the methods are "default" and
 // the evaluation algorithms the families offer in the family registry (io/registry.hpp).
+// Records of a user's own implementation (a "subject": `curvebench check`, harness/check.hpp) carry
+// "subject": true and the subject's name as "method"; a rule may name such a method when the
+// results hold a subject record of that name (the quantity must still be in the vocabulary).
 #pragma once
 
 #include "harness/vocabulary.hpp"
@@ -27,6 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -53,8 +57,17 @@ inline std::string rule_name(const nlohmann::json& rule) {
   if (rule.contains("setting")) name += "/" + rule["setting"].get<std::string>();
   return name;
 }
-/// Throws invalid_input when rule `index` names a quantity or method outside the vocabulary.
-inline void check_rule_ids(const nlohmann::json& rule, std::size_t index) {
+/// The methods of the subject records ("subject": true) among `records`.
+inline std::set<std::string> subject_methods(const nlohmann::json& records) {
+  std::set<std::string> out;
+  for (const auto& r : records)
+    if (r.is_object() && r.value("subject", false) && r.contains("method") && r["method"].is_string())
+      out.insert(r["method"].get<std::string>());
+  return out;
+}
+/// Throws invalid_input when rule `index` names a quantity outside the vocabulary, or a method that
+/// is neither in the vocabulary nor one of `subjects` (the results' subject methods).
+inline void check_rule_ids(const nlohmann::json& rule, std::size_t index, const std::set<std::string>& subjects = {}) {
   const std::string where = "thresholds rule " + std::to_string(index) + ": ";
   for (const char* key : {"quantity", "method", "group", "setting"})
     if (rule.contains(key) && !rule[key].is_string())
@@ -63,7 +76,7 @@ inline void check_rule_ids(const nlohmann::json& rule, std::size_t index) {
   const std::string method = rule.value("method", std::string("*"));
   if (quantity != "*" && !vocab::find_quantity(quantity))
     throw invalid_input(where + "quantity \"" + quantity + "\" is not a quantity of the vocabulary");
-  if (method == "*") return;
+  if (method == "*" || subjects.count(method)) return;
   if (quantity == vocab::quantities::eval.id) {
     if (method == vocab::methods::eval_default.id) return;
     std::string known;
@@ -92,13 +105,14 @@ inline std::string number(double x) {
 }  // namespace detail
 
 /// Every breach of `thresholds` by `results`; empty when the gate passes. Throws invalid_input for
-/// a rule naming a quantity or method outside the vocabulary (see above).
+/// a rule naming a quantity or method outside the vocabulary and the results' subjects (see above).
 inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohmann::json& thresholds) {
   std::vector<breach> out;
-  std::size_t index = 0;
-  for (const auto& rule : thresholds.at("rules")) detail::check_rule_ids(rule, index++);
   const nlohmann::json empty = nlohmann::json::array();
   const nlohmann::json& records = results.contains("records") ? results["records"] : empty;
+  const std::set<std::string> subjects = detail::subject_methods(records);
+  std::size_t index = 0;
+  for (const auto& rule : thresholds.at("rules")) detail::check_rule_ids(rule, index++, subjects);
   const nlohmann::json& orders = results.contains("orders") ? results["orders"] : empty;
   for (const auto& rule : thresholds.at("rules")) {
     const std::string name = detail::rule_name(rule);

@@ -88,6 +88,49 @@ double case_reference<Dim>::ds(double u, double s) {
 }
 
 template <int Dim>
+interval<double> case_reference<Dim>::domain() const {
+  const interval<real50> d = impl_->ref.curve().domain();
+  return {static_cast<double>(d.lo), static_cast<double>(d.hi)};
+}
+
+namespace {
+template <int Dim>
+point<real50, Dim> exact_at(const any_curve<real50, Dim>& c, double u, int order) {
+  if (order < 0 || order > 3)
+    throw invalid_input("case_reference: derivative order " + std::to_string(order) + " is not in 0..3");
+  return order == 0 ? c(real50(u)) : c.derivative(real50(u), order);
+}
+}  // namespace
+
+template <int Dim>
+point<double, Dim> case_reference<Dim>::exact(double u, int order) const {
+  const point<real50, Dim> q = exact_at(impl_->ref.curve(), u, order);
+  point<double, Dim> p;
+  for (int i = 0; i < Dim; ++i) p[i] = static_cast<double>(q[i]);
+  return p;
+}
+
+template <int Dim>
+double case_reference<Dim>::difference(double u, int order, const point<double, Dim>& p) const {
+  using std::abs;
+  const point<real50, Dim> q = exact_at(impl_->ref.curve(), u, order);
+  real50 worst(0);
+  for (int i = 0; i < Dim; ++i) worst = std::max(worst, real50(abs(real50(p[i]) - q[i])));
+  return static_cast<double>(worst);
+}
+
+template <int Dim>
+double case_reference<Dim>::length_between(double u0, double u1) const {
+  return static_cast<double>(impl_->ref.s(real50(u1)) - impl_->ref.s(real50(u0)));
+}
+
+template <int Dim>
+double case_reference<Dim>::length_between_error(double u0, double u1, double value) const {
+  using std::abs;
+  return static_cast<double>(abs(real50(value) - (impl_->ref.s(real50(u1)) - impl_->ref.s(real50(u0)))));
+}
+
+template <int Dim>
 void case_reference<Dim>::set_eval_parameters(std::span<const double> us) {
   using std::abs;
   impl_->exact.resize(us.size());
@@ -111,6 +154,7 @@ double case_reference<Dim>::eval_error(std::span<const point<double, Dim>> p) co
   return static_cast<double>(worst / (impl_->scale * real50(epsilon<double>())));
 }
 
+template class case_reference<1>;
 template class case_reference<2>;
 template class case_reference<3>;
 

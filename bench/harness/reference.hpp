@@ -2,10 +2,11 @@
 // curve instantiated at real50 (the exact twin of the double data, io::curve_from_spec) and its
 // reference arc length (reference::reference_arc_length, ~1e-45), plus the u(s) anchors cache.
 // harness/reference.cpp is the one translation unit that instantiates families at real50 (the slow
-// one to compile), explicitly for Dim 2 and 3; the sweeps (harness/sweep_*.cpp) compile double
+// one to compile), explicitly for Dim 1, 2 and 3; the sweeps (harness/sweep_*.cpp) compile double
 // code only and get every exact quantity they compare against through this class.
 #pragma once
 
+#include "curvebench/core/curve.hpp"
 #include "curvebench/core/point.hpp"
 #include "curvebench/io/json_fields.hpp"
 
@@ -16,7 +17,7 @@
 
 namespace curvebench::harness {
 
-/// The 50-digit reference of one case, for Dim 2 or 3. Not thread-safe (the u(s) anchors are a
+/// The 50-digit reference of one case, for Dim 1, 2 or 3. Not thread-safe (the u(s) anchors are a
 /// cache): one per case and thread.
 template <int Dim>
 class case_reference {
@@ -48,6 +49,19 @@ class case_reference {
   /// many splits, and each 50-digit s(u) on that curve costs seconds.
   [[nodiscard]] double ds(double u, double s);
 
+  /// The curve's domain (the same doubles as the double curve's: the spec is resolved once).
+  [[nodiscard]] interval<double> domain() const;
+
+  /// The exact `order`-th derivative (0: the point; 0..3) at u (inside the domain), rounded.
+  [[nodiscard]] point<double, Dim> exact(double u, int order = 0) const;
+  /// max over coordinates of |p_i - P^(order)_i(u)|, the difference taken in 50 digits, then rounded.
+  [[nodiscard]] double difference(double u, int order, const point<double, Dim>& p) const;
+
+  /// s(u1) - s(u0) (signed; u0, u1 inside the domain), the 50-digit arc length between them, rounded.
+  [[nodiscard]] double length_between(double u0, double u1) const;
+  /// |value - (s(u1) - s(u0))|, the difference taken in 50 digits, then rounded.
+  [[nodiscard]] double length_between_error(double u0, double u1, double value) const;
+
   /// Evaluates the exact points P(u_j) at the parameters us and the curve's size (the largest
   /// coordinate magnitude among them; 1 when all are 0) for eval_error.
   void set_eval_parameters(std::span<const double> us);
@@ -60,6 +74,7 @@ class case_reference {
   std::unique_ptr<impl> impl_;
 };
 
+extern template class case_reference<1>;
 extern template class case_reference<2>;
 extern template class case_reference<3>;
 

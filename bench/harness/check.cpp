@@ -1,0 +1,390 @@
+// The check core (harness/check.hpp): column roles, the 50-digit differences through
+// case_reference, the summary and the records.
+#include "harness/check.hpp"
+
+#include "harness/reference.hpp"
+
+#include "curvebench/arclength/result.hpp"
+#include "curvebench/core/error.hpp"
+#include "curvebench/io/spec.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+
+namespace curvebench::harness {
+
+namespace {
+
+constexpr const char* coordinate_names[] = {"x", "y", "z"};
+constexpr int max_derivative = 3;
+constexpr std::size_t size_grid = 65;  // equally spaced parameters across the domain that size covers
+
+std::string num(double x, int digits = 17) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+/// "d" for order 1, "d2", "d3" for higher: the prefix of `sample --derivatives`'s columns.
+std::string derivative_prefix(int order) { return order == 1 ? "d" : "d" + std::to_string(order); }
+
+std::string column_list(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ",") + n;
+  return s;
+}
+
+/// The index of a required column; errors name the file, the column and the columns there are.
+std::size_t need(const csv_table& t, const std::string& name, const std::string& role) {
+  const std::size_t c = t.column(name);
+  if (c == csv_table::npos)
+    throw invalid_input(t.file + ": row 1 (the header): no column " + name + " (" + role + "); the header names " +
+                        column_list(t.columns));
+  return c;
+}
+
+/// Every column of t must be in `allowed`.
+void only(const csv_table& t, const std::vector<std::string>& allowed, const std::string& kind) {
+  for (const auto& c : t.columns)
+    if (std::find(allowed.begin(), allowed.end(), c) == allowed.end())
+      throw invalid_input(t.file + ": row 1 (the header), column " + c + ": unknown column; " + kind +
+                          " takes the columns " + column_list(allowed));
+}
+
+/// The parameter column: u; t is for time-based specs, which this one is not.
+std::size_t parameter_column(const csv_table& t) {
+  if (t.column("u") == csv_table::npos && t.column("t") != csv_table::npos)
+    throw invalid_input(t.file + ": row 1 (the header), column t: this spec's parameter is u, not time t "
+                        "(name the column u)");
+  return need(t, "u", "the curve parameter");
+}
+
+void check_domain(const csv_table& t, std::size_t r, std::size_t c, interval<double> d) {
+  const double u = t.rows[r][c];
+  if (!(d.lo <= u && u <= d.hi))
+    throw invalid_input(t.where(r, c) + ": " + num(u) + " is outside the curve's domain [" + num(d.lo) + ", " +
+                        num(d.hi) + "]");
+}
+
+void summarize(check_result& res, std::size_t worst) {
+  check_summary& s = res.summary;
+  s.rows = res.rows.size();
+  double sq = 0, sq_rel = 0;
+  for (const check_row& r : res.rows) {
+    s.max = std::max(s.max, r.error);
+    s.max_relative = std::max(s.max_relative, r.relative);
+    sq += r.error * r.error;
+    sq_rel += r.relative * r.relative;
+  }
+  if (s.rows > 0) {
+    s.rms = std::sqrt(sq / static_cast<double>(s.rows));
+    s.rms_relative = std::sqrt(sq_rel / static_cast<double>(s.rows));
+  }
+  std::vector<std::size_t> order(res.rows.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return res.rows[a].error > res.rows[b].error; });
+  order.resize(std::min(order.size(), worst));
+  res.worst = std::move(order);
+}
+
+template <int Dim>
+check_result check_values(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
+  check_result res;
+  res.kind = check_kind::values;
+  res.file = t.file;
+  res.length = ref.length();
+  const std::size_t cu = parameter_column(t);
+  std::vector<std::string> allowed{"u", "s"};
+  std::array<std::size_t, Dim> cp{};
+  for (int i = 0; i < Dim; ++i) {
+    allowed.emplace_back(coordinate_names[i]);
+    cp[static_cast<std::size_t>(i)] = need(t, coordinate_names[i], "coordinate " + std::to_string(i + 1) + " of the point");
+  }
+  // Derivative orders present: all of an order's coordinates, or none.
+  std::vector<int> orders;
+  std::vector<std::array<std::size_t, Dim>> cd;
+  for (int k = 1; k <= max_derivative; ++k) {
+    std::array<std::size_t, Dim> cols{};
+    int present = 0;
+    for (int i = 0; i < Dim; ++i) {
+      const std::string name = derivative_prefix(k) + coordinate_names[i];
+      allowed.push_back(name);
+      cols[static_cast<std::size_t>(i)] = t.column(name);
+      if (cols[static_cast<std::size_t>(i)] != csv_table::npos) ++present;
+    }
+    if (present == 0) continue;
+    for (int i = 0; i < Dim; ++i)
+      if (present != Dim)
+        need(t, derivative_prefix(k) + coordinate_names[i], "derivative " + std::to_string(k) + " of coordinate " +
+                                                                coordinate_names[i]);
+    orders.push_back(k);
+    cd.push_back(cols);
+  }
+  only(t, allowed, "check --values");
+  const std::size_t cs = t.column("s");
+  const interval<double> d = ref.domain();
+  for (std::size_t r = 0; r < t.rows.size(); ++r) check_domain(t, r, cu, d);
+
+  // Sizes: the largest exact coordinate magnitude at the rows' parameters and a grid.
+  std::vector<double> us;
+  for (std::size_t j = 0; j < size_grid; ++j)
+    us.push_back(j + 1 == size_grid ? d.hi : d.lo + (d.hi - d.lo) * static_cast<double>(j) / (size_grid - 1));
+  for (const auto& row : t.rows) us.push_back(row[cu]);
+  const auto size_of = [&](int order) {
+    double m = 0;
+    for (double u : us) {
+      const point<double, Dim> p = ref.exact(u, order);
+      for (int i = 0; i < Dim; ++i) m = std::max(m, std::abs(p[i]));
+    }
+    return m > 0 ? m : 1.0;
+  };
+  res.size = size_of(0);
+  const int K = orders.empty() ? 0 : orders.back();
+  res.derivative_sizes.assign(static_cast<std::size_t>(K), std::numeric_limits<double>::quiet_NaN());
+  for (int k : orders) res.derivative_sizes[static_cast<std::size_t>(k - 1)] = size_of(k);
+
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  double worst_point = 0, worst_s = 0;
+  std::vector<double> worst_derivative(static_cast<std::size_t>(K), 0.0);
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const auto& row = t.rows[r];
+    check_row cr;
+    cr.line = t.lines[r];
+    cr.u = row[cu];
+    point<double, Dim> p;
+    for (int i = 0; i < Dim; ++i) p[i] = row[cp[static_cast<std::size_t>(i)]];
+    cr.point_ulps = ref.difference(cr.u, 0, p) / (eps * res.size);
+    cr.error = cr.point_ulps;
+    worst_point = std::max(worst_point, cr.point_ulps);
+    if (K > 0) cr.derivative_ulps.assign(static_cast<std::size_t>(K), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t oi = 0; oi < orders.size(); ++oi) {
+      const int k = orders[oi];
+      for (int i = 0; i < Dim; ++i) p[i] = row[cd[oi][static_cast<std::size_t>(i)]];
+      const auto ki = static_cast<std::size_t>(k - 1);
+      const double e = ref.difference(cr.u, k, p) / (eps * res.derivative_sizes[ki]);
+      cr.derivative_ulps[ki] = e;
+      worst_derivative[ki] = std::max(worst_derivative[ki], e);
+      cr.error = std::max(cr.error, e);
+    }
+    cr.relative = cr.error * eps;
+    if (cs != csv_table::npos) {
+      cr.s = row[cs];
+      cr.s_error = ref.ds(cr.u, cr.s);
+      worst_s = std::max(worst_s, cr.s_error);
+    }
+    res.rows.push_back(std::move(cr));
+  }
+  const auto n = static_cast<double>(t.rows.size());
+  res.records.push_back(subject_record(o.case_name, o.group, "eval", o.name, "", worst_point, n));
+  for (int k : orders)
+    res.records.push_back(subject_record(o.case_name, o.group, "eval", o.name, "derivative=" + std::to_string(k),
+                                         worst_derivative[static_cast<std::size_t>(k - 1)], n));
+  if (cs != csv_table::npos) res.records.push_back(subject_record(o.case_name, o.group, "s_of_u", o.name, "", worst_s, n));
+  return res;
+}
+
+template <int Dim>
+check_result check_lengths(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
+  check_result res;
+  res.kind = check_kind::lengths;
+  res.file = t.file;
+  res.length = ref.length();
+  const std::size_t c0 = need(t, "u0", "the segment's start parameter");
+  const std::size_t c1 = need(t, "u1", "the segment's end parameter");
+  const std::size_t cl = need(t, "length", "your arc length from u0 to u1");
+  only(t, {"u0", "u1", "length"}, "check --lengths");
+  const interval<double> d = ref.domain();
+  double worst = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    check_domain(t, r, c0, d);
+    check_domain(t, r, c1, d);
+    const auto& row = t.rows[r];
+    check_row cr;
+    cr.line = t.lines[r];
+    cr.u = row[c0];
+    cr.u1 = row[c1];
+    const double diff = ref.length_between_error(cr.u, cr.u1, row[cl]);
+    const double segment = std::abs(ref.length_between(cr.u, cr.u1));
+    cr.error = diff / res.length;
+    cr.relative = segment > 0 ? diff / segment : (diff > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+    worst = std::max(worst, cr.error);
+    res.rows.push_back(std::move(cr));
+  }
+  res.records.push_back(
+      subject_record(o.case_name, o.group, "length", o.name, "", worst, static_cast<double>(t.rows.size())));
+  return res;
+}
+
+template <int Dim>
+check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
+  check_result res;
+  res.kind = check_kind::inverse;
+  res.file = t.file;
+  res.length = ref.length();
+  const std::size_t cs = need(t, "s", "the arc length from the domain's start");
+  const std::size_t cu = parameter_column(t);
+  only(t, {"s", "u"}, "check --inverse");
+  const interval<double> d = ref.domain();
+  // s may exceed the rounded L by a few ulps of rounding in the user's program.
+  const double s_max = res.length * (1 + 64 * std::numeric_limits<double>::epsilon());
+  double worst = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    check_domain(t, r, cu, d);
+    const auto& row = t.rows[r];
+    if (!(row[cs] >= 0 && row[cs] <= s_max))
+      throw invalid_input(t.where(r, cs) + ": " + num(row[cs]) + " is outside [0, L] = [0, " + num(res.length) +
+                          "], the curve's arc-length range");
+    check_row cr;
+    cr.line = t.lines[r];
+    cr.s = row[cs];
+    cr.u = row[cu];
+    cr.error = ref.ds(cr.u, cr.s);
+    cr.relative = cr.error;
+    worst = std::max(worst, cr.error);
+    res.rows.push_back(std::move(cr));
+  }
+  res.records.push_back(
+      subject_record(o.case_name, o.group, "u_of_s", o.name, "", worst, static_cast<double>(t.rows.size())));
+  return res;
+}
+
+template <int Dim>
+std::vector<check_result> run_dim(const io::field& spec, const std::vector<check_input>& inputs,
+                                  const check_options& o) {
+  case_reference<Dim> ref(spec);
+  std::vector<check_result> out;
+  for (const check_input& in : inputs) {
+    check_result r = in.kind == check_kind::values    ? check_values(ref, in.table, o)
+                     : in.kind == check_kind::lengths ? check_lengths(ref, in.table, o)
+                                                      : check_inverse(ref, in.table, o);
+    summarize(r, o.worst);
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+
+nlohmann::json row_json(const check_result& res, const check_row& r) {
+  nlohmann::json j{{"line", r.line}};
+  switch (res.kind) {
+    case check_kind::values:
+      j["u"] = r.u;
+      j["point_ulps"] = r.point_ulps;
+      if (!r.derivative_ulps.empty()) {
+        nlohmann::json d = nlohmann::json::array();
+        for (double e : r.derivative_ulps) d.push_back(finite_or_null(e));
+        j["derivative_ulps"] = d;
+      }
+      if (r.s_error >= 0) {
+        j["s"] = r.s;
+        j["s_error"] = r.s_error;
+      }
+      break;
+    case check_kind::lengths:
+      j["u0"] = r.u;
+      j["u1"] = r.u1;
+      break;
+    case check_kind::inverse:
+      j["s"] = r.s;
+      j["u"] = r.u;
+      break;
+  }
+  j["error"] = finite_or_null(r.error);
+  j["relative"] = finite_or_null(r.relative);
+  return j;
+}
+
+}  // namespace
+
+std::string_view to_string(check_kind k) {
+  switch (k) {
+    case check_kind::values: return "values";
+    case check_kind::lengths: return "lengths";
+    case check_kind::inverse: return "inverse";
+  }
+  return "?";
+}
+
+nlohmann::json subject_record(const std::string& case_name, const std::string& group, std::string_view quantity,
+                              const std::string& method, const std::string& setting, double error,
+                              double evaluations) {
+  return {{"case", case_name},
+          {"group", group},
+          {"quantity", std::string(quantity)},
+          {"method", method},
+          {"setting", setting},
+          {"error", finite_or_null(error)},
+          {"estimate", nullptr},
+          {"bounded", nullptr},
+          {"evaluations", evaluations},
+          {"status", std::string(arclength::to_string(arclength::result_status::not_guaranteed))},
+          {"subject", true}};
+}
+
+std::vector<check_result> run_checks(const io::field& spec, const std::vector<check_input>& inputs,
+                                     const check_options& options) {
+  switch (io::spec_dimension(spec)) {
+    case 1: return run_dim<1>(spec, inputs, options);
+    case 2: return run_dim<2>(spec, inputs, options);
+    case 3: return run_dim<3>(spec, inputs, options);
+    default:
+      spec.fail("describes a " + std::to_string(io::spec_dimension(spec)) +
+                "D curve: check measures 1D to 3D curves (the 50-digit reference is built for those)");
+  }
+  return {};
+}
+
+check_result run_check(const io::field& spec, check_kind kind, const csv_table& table, const check_options& options) {
+  return std::move(run_checks(spec, {check_input{kind, table}}, options).front());
+}
+
+nlohmann::json to_json(const check_result& r) {
+  nlohmann::json rows = nlohmann::json::array(), worst = nlohmann::json::array();
+  for (const check_row& row : r.rows) rows.push_back(row_json(r, row));
+  for (std::size_t i : r.worst) worst.push_back(rows[i]);
+  nlohmann::json j{{"kind", std::string(to_string(r.kind))},
+                   {"file", r.file},
+                   {"length", r.length},
+                   {"unit", r.kind == check_kind::values ? "ulps of size" : "relative to L"},
+                   {"summary",
+                    {{"rows", r.summary.rows},
+                     {"max", finite_or_null(r.summary.max)},
+                     {"rms", finite_or_null(r.summary.rms)},
+                     {"max_relative", finite_or_null(r.summary.max_relative)},
+                     {"rms_relative", finite_or_null(r.summary.rms_relative)}}},
+                   {"worst", worst},
+                   {"rows", rows},
+                   {"records", r.records}};
+  if (r.kind == check_kind::values) {
+    j["size"] = r.size;
+    nlohmann::json d = nlohmann::json::array();
+    for (double s : r.derivative_sizes) d.push_back(finite_or_null(s));
+    j["derivative_sizes"] = d;
+  }
+  return j;
+}
+
+std::vector<std::string> rows_over(const check_result& r, double max_error) {
+  std::vector<std::string> out;
+  for (const check_row& row : r.rows) {
+    if (row.error <= max_error) continue;  // NaN is over too
+    std::string at;
+    switch (r.kind) {
+      case check_kind::values: at = "u = " + num(row.u); break;
+      case check_kind::lengths: at = "u0 = " + num(row.u) + ", u1 = " + num(row.u1); break;
+      case check_kind::inverse: at = "s = " + num(row.s) + ", u = " + num(row.u); break;
+    }
+    out.push_back(r.file + ": row " + std::to_string(row.line) + " (" + at + "): error " + num(row.error, 3) +
+                  " > allowed " + num(max_error, 3) +
+                  (r.kind == check_kind::values ? " ulps of size" : " relative to L"));
+  }
+  return out;
+}
+
+}  // namespace curvebench::harness

@@ -1,0 +1,124 @@
+#include "harness/csv.hpp"
+
+#include "curvebench/core/error.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace curvebench::harness {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t\r");
+  return s.substr(first, last - first + 1);
+}
+
+std::vector<std::string_view> split(std::string_view line) {
+  std::vector<std::string_view> cells;
+  std::size_t start = 0;
+  while (true) {
+    const auto comma = line.find(',', start);
+    cells.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return cells;
+}
+
+}  // namespace
+
+std::string quote_cell(std::string_view text) {
+  constexpr std::size_t max = 40;
+  if (text.size() <= max) return "\"" + std::string(text) + "\"";
+  return "\"" + std::string(text.substr(0, max)) + "...\"";
+}
+
+bool parse_finite(std::string_view text, double& out) {
+  text = trim(text);
+  if (text.empty()) return false;
+  if (text.front() == '+') {  // from_chars takes no '+'; "+-1" and "++1" are junk
+    text.remove_prefix(1);
+    if (text.empty() || text.front() == '-' || text.front() == '+') return false;
+  }
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, out);
+  return ec == std::errc() && ptr == end && std::isfinite(out);
+}
+
+std::size_t csv_table::column(std::string_view name) const {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) return i;
+  return npos;
+}
+
+std::string csv_table::where(std::size_t r, std::size_t c) const {
+  std::string w = file + ": row " + std::to_string(lines.at(r));
+  if (c != npos) w += ", column " + columns.at(c);
+  return w;
+}
+
+csv_table parse_csv(std::string_view text, const std::string& file) {
+  csv_table t;
+  t.file = file;
+  std::size_t line_no = 0, pos = 0;
+  bool header = false;
+  while (pos < text.size()) {
+    const auto nl = text.find('\n', pos);
+    const std::string_view line = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
+    pos = nl == std::string_view::npos ? text.size() : nl + 1;
+    ++line_no;
+    if (trim(line).empty()) continue;
+    const std::vector<std::string_view> cells = split(line);
+    const std::string row_name = file + ": row " + std::to_string(line_no);
+    if (!header) {
+      for (std::size_t c = 0; c < cells.size(); ++c) {
+        if (cells[c].empty())
+          throw invalid_input(row_name + " (the header), column " + std::to_string(c + 1) + ": empty column name");
+        double ignored = 0;
+        if (parse_finite(cells[c], ignored))
+          throw invalid_input(row_name + " (the header), column " + std::to_string(c + 1) + ": " +
+                              quote_cell(cells[c]) + " is a number, not a column name: the first row names the columns");
+        for (std::size_t p = 0; p < c; ++p)
+          if (cells[p] == cells[c])
+            throw invalid_input(row_name + " (the header), column " + std::to_string(c + 1) + ": column " +
+                                quote_cell(cells[c]) + " appears twice");
+        t.columns.emplace_back(cells[c]);
+      }
+      header = true;
+      continue;
+    }
+    if (cells.size() < t.columns.size())
+      throw invalid_input(row_name + ", column " + t.columns[cells.size()] + ": missing value (" +
+                          std::to_string(cells.size()) + " values, but the header names " +
+                          std::to_string(t.columns.size()) + " columns: " + quote_cell(trim(line)) + ")");
+    if (cells.size() > t.columns.size())
+      throw invalid_input(row_name + ", column " + std::to_string(t.columns.size() + 1) + ": " +
+                          quote_cell(cells[t.columns.size()]) + " has no column (" + std::to_string(cells.size()) +
+                          " values, but the header names " + std::to_string(t.columns.size()) + " columns)");
+    std::vector<double> row(cells.size());
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      if (!parse_finite(cells[c], row[c]))
+        throw invalid_input(row_name + ", column " + t.columns[c] + ": " + quote_cell(cells[c]) +
+                            " is not a finite number");
+    t.rows.push_back(std::move(row));
+    t.lines.push_back(line_no);
+  }
+  if (!header) throw invalid_input(file + ": empty file (expected a header row, then one row per value)");
+  if (t.rows.empty()) throw invalid_input(file + ": the header row has no rows after it");
+  return t;
+}
+
+csv_table read_csv(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw invalid_input(path + ": cannot be read");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse_csv(ss.str(), path);
+}
+
+}  // namespace curvebench::harness

@@ -1,0 +1,161 @@
+// curvebench check: a user's own values (points and derivatives, lengths, inverse parameters) against
+// the 50-digit reference of a spec (harness/check.hpp), as a table or JSON, gated by --max-error or
+// by thresholds in the gate's rule format.
+#include "tool/tool.hpp"
+
+#include "harness/check.hpp"
+#include "harness/gate.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace curvebench::tool {
+
+namespace {
+
+using harness::check_kind;
+using harness::check_result;
+
+std::string g(double x, int digits = 3) {
+  std::ostringstream os;
+  os << std::setprecision(digits) << x;
+  return os.str();
+}
+
+void print_table(const check_result& r, const std::string& spec) {
+  const bool values = r.kind == check_kind::values;
+  const char* unit = values ? "ulps of size" : "relative to L";
+  std::cout << "check " << r.file << " (" << harness::to_string(r.kind) << ", " << r.summary.rows
+            << " rows) against " << spec << ": L = " << g(r.length, 17);
+  if (values) {
+    std::cout << ", size " << g(r.size, 6);
+    for (std::size_t k = 0; k < r.derivative_sizes.size(); ++k)
+      if (std::isfinite(r.derivative_sizes[k])) std::cout << ", derivative " << k + 1 << " size " << g(r.derivative_sizes[k], 6);
+  }
+  std::cout << "\n  error (" << unit << "): max " << g(r.summary.max) << ", rms " << g(r.summary.rms);
+  if (r.kind != check_kind::inverse)
+    std::cout << "; relative" << (values ? " to size" : " to the segment") << ": max " << g(r.summary.max_relative)
+              << ", rms " << g(r.summary.rms_relative);
+  std::cout << "\n  worst rows:\n    " << std::left << std::setw(7) << "row";
+  switch (r.kind) {
+    case check_kind::values: std::cout << std::setw(24) << "u"; break;
+    case check_kind::lengths: std::cout << std::setw(24) << "u0" << std::setw(24) << "u1"; break;
+    case check_kind::inverse: std::cout << std::setw(24) << "s" << std::setw(24) << "u"; break;
+  }
+  std::cout << std::setw(11) << "error";
+  if (values) {
+    std::cout << std::setw(11) << "point";
+    for (std::size_t k = 0; k < r.derivative_sizes.size(); ++k)
+      if (std::isfinite(r.derivative_sizes[k])) std::cout << std::setw(11) << ("d" + std::to_string(k + 1));
+    if (!r.rows.empty() && r.rows.front().s_error >= 0) std::cout << std::setw(11) << "s_error/L";
+  } else if (r.kind == check_kind::lengths) {
+    std::cout << std::setw(11) << "/segment";
+  }
+  std::cout << "\n";
+  for (std::size_t i : r.worst) {
+    const harness::check_row& row = r.rows[i];
+    std::cout << "    " << std::setw(7) << row.line;
+    switch (r.kind) {
+      case check_kind::values: std::cout << std::setw(24) << g(row.u, 17); break;
+      case check_kind::lengths: std::cout << std::setw(24) << g(row.u, 17) << std::setw(24) << g(row.u1, 17); break;
+      case check_kind::inverse: std::cout << std::setw(24) << g(row.s, 17) << std::setw(24) << g(row.u, 17); break;
+    }
+    std::cout << std::setw(11) << g(row.error);
+    if (values) {
+      std::cout << std::setw(11) << g(row.point_ulps);
+      for (std::size_t k = 0; k < row.derivative_ulps.size(); ++k)
+        if (std::isfinite(r.derivative_sizes[k])) std::cout << std::setw(11) << g(row.derivative_ulps[k]);
+      if (row.s_error >= 0) std::cout << std::setw(11) << g(row.s_error);
+    } else if (r.kind == check_kind::lengths) {
+      std::cout << std::setw(11) << g(row.relative);
+    }
+    std::cout << "\n";
+  }
+  std::cout << std::right;
+}
+
+}  // namespace
+
+CLI::App* add_check(CLI::App& app, check_args& a) {
+  auto* chk = app.add_subcommand(
+      "check",
+      "check your own implementation's values against the 50-digit reference of a spec; exit 1 naming every row "
+      "over --max-error (or every breached rule of --thresholds)");
+  chk->add_option("spec", a.spec, "JSON curve spec (1D to 3D)")->required()->check(CLI::ExistingFile);
+  chk->add_option("--values", a.values,
+                                 "CSV of points: u, then x[,y[,z]]; optional s (arc length from the domain's start, "
+                                 "reported, not part of --max-error) and derivatives dx,dy,.. d2x,.. d3x,.. "
+                                 "(the columns `curvebench sample` writes)")
+                     ->check(CLI::ExistingFile);
+  chk->add_option("--lengths", a.lengths, "CSV of arc lengths: u0,u1,length")->check(CLI::ExistingFile);
+  chk->add_option("--inverse", a.inverse, "CSV of inverse parameters: s,u (your u at arc length s)")
+      ->check(CLI::ExistingFile);
+  chk->add_option("--name", a.name, "your implementation's name: the method of the records (default values)");
+  chk->add_flag("--json", a.json, "JSON on stdout: per check the summary, the worst rows, every row, the records");
+  chk->add_option("--max-error", a.max_error,
+                  "largest allowed row error: ulps of the curve's size for --values (points and derivatives, each "
+                  "in ulps of its own size), relative to the total length L for --lengths and --inverse")
+      ->check(CLI::NonNegativeNumber);
+  chk->add_option("--thresholds", a.thresholds,
+                  "gate rules (the format of `curvebench gate`) applied to the check's records, e.g. "
+                  "{\"rules\": [{\"quantity\": \"eval\", \"method\": \"values\", \"max_error\": 4}]}")
+      ->check(CLI::ExistingFile);
+  chk->add_option("--worst", a.worst, "how many worst rows to show (default 5)")->check(CLI::Range(0, 1000000));
+  chk->footer(
+      "\nCSV files: a header row naming the columns (those above, any order), then one row of finite numbers per "
+      "line; blank lines are skipped. `t` instead of `u` is for time-based specs (none exist yet). Unknown or "
+      "missing columns, non-numeric cells (1.5x, nan, inf, empty), rows with too few or too many values, "
+      "parameters outside the domain, empty or header-only files are errors naming the file, the row (its line), "
+      "the column and the cell.\n" +
+      example("curvebench check arch.json --values values.csv --max-error 4"));
+  return chk;
+}
+
+int run_check(const check_args& a) {
+  std::vector<harness::check_input> inputs;
+  if (!a.values.empty()) inputs.push_back({check_kind::values, harness::read_csv(a.values)});
+  if (!a.lengths.empty()) inputs.push_back({check_kind::lengths, harness::read_csv(a.lengths)});
+  if (!a.inverse.empty()) inputs.push_back({check_kind::inverse, harness::read_csv(a.inverse)});
+  if (inputs.empty()) throw invalid_input("check: nothing to check: give --values, --lengths or --inverse FILE");
+  const nlohmann::json j = read_spec(a.spec);
+  const io::field spec = io::root(j, a.spec);
+  harness::check_options o;
+  o.name = a.name;
+  o.case_name = std::filesystem::path(a.spec).stem().string();
+  o.group = spec.has("group") && spec.member("group").value.is_string() ? spec.member("group").string() : "subject";
+  o.worst = a.worst;
+  const std::vector<check_result> results = harness::run_checks(spec, inputs, o);
+
+  std::vector<std::string> failures;
+  nlohmann::json records = nlohmann::json::array();
+  for (const check_result& r : results) {
+    for (const auto& rec : r.records) records.push_back(rec);
+    if (a.max_error >= 0)
+      for (std::string& m : harness::rows_over(r, a.max_error)) failures.push_back("check: OVER " + m);
+  }
+  if (!a.thresholds.empty()) {
+    const nlohmann::json t = nlohmann::json::parse(read_file(a.thresholds));
+    for (const auto& b : harness::check_gate({{"records", records}}, t))
+      failures.push_back("check: BREACH " + b.rule + " " + b.where + ": " + b.message);
+  }
+  if (a.json) {
+    nlohmann::json out{{"spec", a.spec}, {"name", a.name}, {"checks", nlohmann::json::array()}, {"records", records}};
+    for (const check_result& r : results) out["checks"].push_back(harness::to_json(r));
+    if (a.max_error >= 0) out["max_error"] = a.max_error;
+    out["failures"] = failures;
+    out["passed"] = failures.empty();
+    std::cout << std::setw(1) << out << "\n";
+    for (const auto& f : failures) std::cerr << f << "\n";
+  } else {
+    for (const check_result& r : results) print_table(r, a.spec);
+    for (const auto& f : failures) std::cout << f << "\n";
+    if (a.max_error >= 0 || !a.thresholds.empty())
+      std::cout << "check: " << (failures.empty() ? "passed" : std::to_string(failures.size()) + " failures") << "\n";
+  }
+  return failures.empty() ? 0 : 1;
+}
+
+}  // namespace curvebench::tool

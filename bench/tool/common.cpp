@@ -1,0 +1,54 @@
+// The tool's shared helpers (tool/tool.hpp): files, the default directories, the version line.
+#include "tool/tool.hpp"
+
+#include "curvebench_version.hpp"  // generated at build time by cmake/version_header.cmake
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace curvebench::tool {
+
+namespace fs = std::filesystem;
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw invalid_input(path + ": cannot be read");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+nlohmann::json read_spec(const std::string& path) { return io::parse(read_file(path), path); }
+
+std::string installed_data_dir() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);  // Linux: the running binary
+  if (ec) return {};
+  const fs::path dir = (exe.parent_path() / ".." / "share" / "curvebench").lexically_normal();
+  return fs::is_directory(dir, ec) ? dir.string() : std::string();
+}
+
+std::string default_cases_dir() {
+  const std::string data = installed_data_dir();
+  std::error_code ec;
+  if (!data.empty() && fs::is_directory(fs::path(data) / "cases", ec)) return (fs::path(data) / "cases").string();
+  return CURVEBENCH_CASES_DIR;
+}
+
+std::string default_thresholds() {
+  const std::string local = "reports/thresholds.json";
+  std::error_code ec;
+  if (fs::is_regular_file(local, ec)) return local;
+  const std::string data = installed_data_dir();
+  if (!data.empty() && fs::is_regular_file(fs::path(data) / "thresholds.json", ec))
+    return (fs::path(data) / "thresholds.json").string();
+  return local;
+}
+
+std::string version_line() { return std::string("curvebench ") + CURVEBENCH_VERSION + " (" + CURVEBENCH_REVISION + ")"; }
+
+std::string example(const std::string& command) { return "\nExample:\n  " + command + "\n"; }
+
+}  // namespace curvebench::tool

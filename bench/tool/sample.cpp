@@ -1,0 +1,273 @@
+// curvebench sample: a spec's points (and derivatives) at equally spaced u, at equal arc-length
+// steps through a distance-time function, or at the parameters a user gives (--at, --at-file,
+// --range), as CSV on stdout with the column names `curvebench check --values` reads back.
+#include "tool/tool.hpp"
+
+#include "harness/csv.hpp"
+#include "harness/vocabulary.hpp"
+
+#include "curvebench/arclength/parameterization.hpp"
+#include "curvebench/motion/distance_time.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <variant>
+
+namespace curvebench::tool {
+
+namespace {
+
+namespace al = curvebench::arclength;
+namespace vocab = curvebench::harness::vocab;
+using harness::parse_finite;
+using harness::quote_cell;
+
+using ease_fn = std::variant<motion::linear_ease<double>, motion::sine_ease<double>, motion::smoothstep_ease<double>,
+                             motion::smootherstep_ease<double>, motion::sine_plateau_ease<double>,
+                             motion::parabolic_ease<double>>;
+
+/// "linear", "sine", "smoothstep", "smootherstep", "sine_plateau:T1,T2", "parabolic:T1,T2".
+ease_fn parse_ease(const std::string& text) {
+  const auto colon = text.find(':');
+  const std::string name = text.substr(0, colon);
+  double t1 = 0, t2 = 1;
+  if (name == "sine_plateau" || name == "parabolic") {
+    if (colon == std::string::npos || std::sscanf(text.c_str() + colon + 1, "%lf,%lf", &t1, &t2) != 2)
+      throw invalid_input("--ease " + text + ": " + name + " needs its phases, e.g. " + name + ":0.25,0.75");
+    if (name == "sine_plateau") return motion::sine_plateau_ease<double>(t1, t2);
+    return motion::parabolic_ease<double>(t1, t2);
+  }
+  if (colon != std::string::npos) throw invalid_input("--ease " + text + ": " + name + " takes no parameters");
+  if (name == "linear") return motion::linear_ease<double>();
+  if (name == "sine") return motion::sine_ease<double>();
+  if (name == "smoothstep") return motion::smoothstep_ease<double>();
+  if (name == "smootherstep") return motion::smootherstep_ease<double>();
+  throw invalid_input("--ease " + text +
+                      ": not one of linear, sine, smoothstep, smootherstep, sine_plateau:T1,T2, parabolic:T1,T2");
+}
+
+/// The u(s) methods `sample --method` takes (the hermite_table_polished of the records is
+/// hermite_table with --polish).
+constexpr const vocab::method* sample_methods[] = {&vocab::methods::linear_table, &vocab::methods::hermite_table,
+                                                   &vocab::methods::newton};
+
+al::inversion_method parse_inversion(const std::string& m) {
+  if (m == vocab::methods::linear_table.id) return al::inversion_method::linear_table;
+  if (m == vocab::methods::hermite_table.id) return al::inversion_method::hermite_table;
+  if (m == vocab::methods::newton.id) return al::inversion_method::newton;
+  throw invalid_input("--method " + m + ": not a u(s) method of sample");
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const auto p = text.find(sep, start);
+    out.push_back(text.substr(start, p == std::string::npos ? std::string::npos : p - start));
+    if (p == std::string::npos) return out;
+    start = p + 1;
+  }
+}
+
+/// One parameter with the words an error about it needs ("--at: item 3").
+struct parameter {
+  double u;
+  std::string where;
+};
+
+void check_count(std::size_t n, const std::string& option) {
+  if (n > max_sample_values)
+    throw invalid_input(option + ": " + std::to_string(n) + " values, more than the maximum " +
+                        std::to_string(max_sample_values));
+}
+
+std::vector<parameter> parse_at(const std::string& text) {
+  const std::vector<std::string> items = split(text, ',');
+  check_count(items.size(), "--at");
+  std::vector<parameter> out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string where = "--at: item " + std::to_string(i + 1);
+    double u = 0;
+    if (items[i].find_first_not_of(" \t") == std::string::npos) throw invalid_input(where + " is empty");
+    if (!parse_finite(items[i], u)) throw invalid_input(where + " " + quote_cell(items[i]) + " is not a finite number");
+    out.push_back({u, where});
+  }
+  return out;
+}
+
+/// One value per line, or a CSV whose header names a u column (its other columns are ignored).
+std::vector<parameter> parse_at_file(const std::string& path) {
+  const std::string text = read_file(path);
+  std::vector<parameter> out;
+  std::size_t line_no = 0, u_column = std::string::npos, columns = 1;
+  bool first = true;
+  for (const std::string& raw : split(text, '\n')) {
+    ++line_no;
+    std::string line = raw;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    const std::string row = "--at-file " + path + ": row " + std::to_string(line_no);
+    const std::vector<std::string> cells = split(line, ',');
+    double u = 0;
+    if (first) {
+      first = false;
+      if (!parse_finite(cells[0], u)) {  // a header
+        columns = cells.size();
+        for (std::size_t c = 0; c < cells.size(); ++c) {
+          const auto b = cells[c].find_first_not_of(" \t"), e = cells[c].find_last_not_of(" \t");
+          const std::string name = b == std::string::npos ? "" : cells[c].substr(b, e - b + 1);
+          if (name == "u") u_column = c;
+        }
+        if (u_column == std::string::npos)
+          throw invalid_input(row + ": " + quote_cell(line) +
+                              " is neither a finite number nor a CSV header naming a u column");
+        continue;
+      }
+      u_column = 0;
+    }
+    if (cells.size() != columns)
+      throw invalid_input(row + ": " + std::to_string(cells.size()) + " values, expected " + std::to_string(columns) +
+                          (columns == 1 ? " (one value per line)" : " (as many as the header names)"));
+    const std::string where = row + (columns > 1 ? ", column u" : "");
+    if (!parse_finite(cells[u_column], u))
+      throw invalid_input(where + ": " + quote_cell(cells[u_column]) + " is not a finite number");
+    out.push_back({u, where});
+    check_count(out.size(), "--at-file " + path);
+  }
+  if (out.empty()) throw invalid_input("--at-file " + path + ": no values (the file is empty or a header only)");
+  return out;
+}
+
+/// A:B:STEP, A and B inclusive (B when it lies on the grid within 1e-9 steps of rounding).
+std::vector<parameter> parse_range(const std::string& text) {
+  const std::vector<std::string> items = split(text, ':');
+  if (items.size() != 3)
+    throw invalid_input("--range " + quote_cell(text) + ": expected A:B:STEP (three numbers), got " +
+                        std::to_string(items.size()) + " items");
+  const char* names[] = {"A", "B", "STEP"};
+  double v[3];
+  for (std::size_t i = 0; i < 3; ++i)
+    if (!parse_finite(items[i], v[i]))
+      throw invalid_input("--range: item " + std::to_string(i + 1) + " (" + names[i] + ") " + quote_cell(items[i]) +
+                          " is not a finite number");
+  const double a = v[0], b = v[1], step = v[2];
+  if (!(step > 0)) throw invalid_input("--range: item 3 (STEP) " + quote_cell(items[2]) + " is not positive");
+  if (b < a) throw invalid_input("--range: B = " + items[1] + " is below A = " + items[0]);
+  const double steps = (b - a) / step;
+  if (steps + 1 > static_cast<double>(max_sample_values))
+    throw invalid_input("--range " + text + ": more than the maximum " + std::to_string(max_sample_values) + " values");
+  const auto n = static_cast<std::size_t>(std::floor(steps + 1e-9));
+  std::vector<parameter> out;
+  for (std::size_t i = 0; i <= n; ++i) {
+    double u = a + static_cast<double>(i) * step;
+    if (i == n && std::abs(u - b) <= 1e-9 * step) u = b;
+    out.push_back({u, "--range: value " + std::to_string(i + 1)});
+  }
+  return out;
+}
+
+template <int Dim>
+void sample(const io::field& spec, const sample_args& a) {
+  std::vector<parameter> given;
+  if (!a.at.empty()) given = parse_at(a.at);
+  if (!a.at_file.empty()) given = parse_at_file(a.at_file);
+  if (!a.range.empty()) given = parse_range(a.range);
+  const any_curve<double, Dim> c = io::curve_from_spec<double, Dim>(spec);
+  al::parameterization_options<double> opt;
+  // Given parameters need s(u) only: Newton's method builds no u(s) table (minutes on degree-20
+  // Runge), and s(u) is then the segment lengths plus one adaptive integral.
+  opt.method = given.empty() ? parse_inversion(a.method) : al::inversion_method::newton;
+  opt.newton_polish = a.polish;
+  const al::parameterization<any_curve<double, Dim>> param(c, opt);
+  const auto dom = c.domain();
+  for (const parameter& p : given)
+    if (!(dom.lo <= p.u && p.u <= dom.hi)) {
+      std::ostringstream os;
+      os << std::setprecision(17) << p.where << ": u = " << p.u << " is outside the curve's domain [" << dom.lo
+         << ", " << dom.hi << "]";
+      throw invalid_input(os.str());
+    }
+  const ease_fn ease = parse_ease(a.ease);
+  std::cout << "u,s";
+  const char* names[] = {"x", "y", "z", "w"};
+  for (int d = 0; d < Dim; ++d) std::cout << "," << names[d];
+  for (int k = 1; k <= a.derivatives; ++k)
+    for (int d = 0; d < Dim; ++d) std::cout << ",d" << (k == 1 ? "" : std::to_string(k)) << names[d];
+  std::cout << "\n" << std::setprecision(17);
+  const double L = param.length();
+  const std::size_t count = given.empty() ? a.count : given.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
+    double u = 0, s = 0;
+    if (!given.empty()) {
+      u = given[i].u;
+      s = param.s(u);
+    } else if (a.by == "u") {
+      u = i + 1 == count ? dom.hi : dom.lo + f * (dom.hi - dom.lo);
+      s = param.s(u);
+    } else {
+      s = std::visit([&](const auto& e) { return e(f); }, ease) * L;
+      if (s > L) s = L;  // S(1) = 1 exactly, but S(f) * L may round past L by one ulp
+      u = param.u(s);
+    }
+    const point<double, Dim> p = c(u);
+    std::cout << u << "," << s;
+    for (int d = 0; d < Dim; ++d) std::cout << "," << p[d];
+    for (int k = 1; k <= a.derivatives; ++k) {
+      const point<double, Dim> dp = c.derivative(u, k);
+      for (int d = 0; d < Dim; ++d) std::cout << "," << dp[d];
+    }
+    std::cout << "\n";
+  }
+}
+
+}  // namespace
+
+CLI::App* add_sample(CLI::App& app, sample_args& a) {
+  a.method = std::string(vocab::methods::hermite_table.id);
+  auto* samp = app.add_subcommand(
+      "sample", "sample a curve spec: CSV of u, s (arc length from the domain's start), the point and derivatives");
+  samp->add_option("spec", a.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
+  auto* count = samp->add_option("--count", a.count, "number of equally spaced samples (default 11)")
+                    ->check(CLI::Range(1, 100000000));
+  samp->add_option("--by", a.by, "spacing: equal steps in u, or in arc length (with --ease)")
+      ->check(CLI::IsMember({"u", "arclength"}));
+  std::vector<std::string> sample_ids;
+  for (const vocab::method* m : sample_methods) sample_ids.emplace_back(m->id);
+  samp->add_option("--method", a.method, "u(s) method for --by arclength")->check(CLI::IsMember(sample_ids));
+  samp->add_flag("--polish", a.polish, "one Newton step after a table lookup");
+  samp->add_option("--ease", a.ease,
+                   "distance-time function for --by arclength: linear, sine, smoothstep, smootherstep, "
+                   "sine_plateau:T1,T2, parabolic:T1,T2");
+  const std::string max = std::to_string(max_sample_values);
+  auto* at = samp->add_option("--at", a.at, "evaluate at these parameters: V1,V2,... (at most " + max + ")");
+  auto* at_file = samp->add_option("--at-file", a.at_file,
+                                   "evaluate at the parameters of FILE: one value per line, or a CSV whose header "
+                                   "names a u column (other columns ignored)")
+                      ->check(CLI::ExistingFile);
+  auto* range = samp->add_option("--range", a.range,
+                                 "evaluate at A, A+STEP, ... up to B (inclusive when B lies on the grid): A:B:STEP");
+  for (CLI::Option* o : {at, at_file, range}) {
+    o->excludes(count);
+    for (CLI::Option* other : {at, at_file, range})
+      if (other != o) o->excludes(other);
+  }
+  samp->add_option("--derivatives", a.derivatives,
+                   "derivative columns of orders 1..K (0-3; default 1): dx,dy for the first, d2x,d2y, d3x,d3y")
+      ->check(CLI::Range(0, 3));
+  samp->footer(example("curvebench sample arch.json --at 0,0.25,0.5 --derivatives 2 > values.csv"));
+  return samp;
+}
+
+void run_sample(const sample_args& a) {
+  if (a.by == "arclength" && (!a.at.empty() || !a.at_file.empty() || !a.range.empty()))
+    throw invalid_input("sample: --by arclength spaces the samples itself; it does not go with --at, --at-file or "
+                        "--range (which give the parameters)");
+  const nlohmann::json j = read_spec(a.spec);
+  const io::field spec = io::root(j, a.spec);
+  with_dimension(spec, [&](auto dim) { sample<decltype(dim)::value>(spec, a); });
+}
+
+}  // namespace curvebench::tool

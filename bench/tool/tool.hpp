@@ -1,0 +1,81 @@
+// The pieces of the curvebench tool (bench/tool/): main.cpp wires the subcommands; sample.cpp and
+// check.cpp hold the two that take a user's parameters and values; this header the shared helpers.
+#pragma once
+
+#include "curvebench/io/spec.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace curvebench::tool {
+
+/// The whole file at `path` (invalid_input naming it when it cannot be read).
+std::string read_file(const std::string& path);
+
+/// The spec file at `path`, parsed (errors name the file).
+nlohmann::json read_spec(const std::string& path);
+
+/// Calls f(std::integral_constant<int, Dim>) for the spec's dimension (1..4).
+template <class F>
+void with_dimension(const io::field& spec, F&& f) {
+  switch (io::spec_dimension(spec)) {
+    case 1: f(std::integral_constant<int, 1>{}); break;
+    case 2: f(std::integral_constant<int, 2>{}); break;
+    case 3: f(std::integral_constant<int, 3>{}); break;
+    default: f(std::integral_constant<int, 4>{}); break;
+  }
+}
+
+/// The installed data directory next to the running executable, <exe dir>/../share/curvebench (the
+/// layout `cmake --install` makes), or "" when the executable has none (a build tree).
+std::string installed_data_dir();
+/// The default case directory: the installed one, else the source tree's bench/cases.
+std::string default_cases_dir();
+/// The default thresholds of `gate`: reports/thresholds.json when the working directory has one
+/// (a checkout), else the installed one, else reports/thresholds.json (the error then names it).
+std::string default_thresholds();
+
+/// "curvebench 0.1.0 (abc1234)": the project version and the git revision the binary was built from.
+std::string version_line();
+
+/// The footer of a subcommand's --help: one example.
+std::string example(const std::string& command);
+
+// ---- sample (sample.cpp) ------------------------------------------------------------------------
+
+struct sample_args {
+  std::string spec;
+  std::size_t count = 11;
+  std::string by = "u";
+  std::string method;    ///< u(s) method for --by arclength (add_sample sets hermite_table)
+  bool polish = false;
+  std::string ease = "linear";
+  std::string at;        ///< --at V1,V2,...
+  std::string at_file;   ///< --at-file FILE
+  std::string range;     ///< --range A:B:STEP
+  int derivatives = 1;   ///< derivative columns: orders 1..K
+};
+/// The most parameters --at, --at-file and --range may give.
+inline constexpr std::size_t max_sample_values = 1000000;
+CLI::App* add_sample(CLI::App& app, sample_args& a);
+void run_sample(const sample_args& a);
+
+// ---- check (check.cpp) --------------------------------------------------------------------------
+
+struct check_args {
+  std::string spec;
+  std::string values, lengths, inverse;
+  std::string name = "values";
+  bool json = false;
+  double max_error = -1;  ///< < 0: none
+  std::string thresholds;
+  std::size_t worst = 5;
+};
+CLI::App* add_check(CLI::App& app, check_args& a);
+/// 0 when every row is within the limits (or none is given), 1 otherwise.
+int run_check(const check_args& a);
+
+}  // namespace curvebench::tool
