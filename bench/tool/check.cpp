@@ -104,7 +104,13 @@ CLI::App* add_check(CLI::App& app, check_args& a) {
                   "{\"rules\": [{\"quantity\": \"eval\", \"method\": \"values\", \"max_error\": 4}]}")
       ->check(CLI::ExistingFile);
   chk->add_option("--worst", a.worst, "how many worst rows to show (default 5)")->check(CLI::Range(0, 1000000));
-  chk->footer(example("curvebench check arch.json --values values.csv --max-error 4"));
+  chk->footer(
+      "\nCSV files: a header row naming the columns (those above, any order), then one row of finite numbers per "
+      "line; blank lines are skipped. `t` instead of `u` is for time-based specs (none exist yet). Unknown or "
+      "missing columns, non-numeric cells (1.5x, nan, inf, empty), rows with too few or too many values, "
+      "parameters outside the domain, empty or header-only files are errors naming the file, the row (its line), "
+      "the column and the cell.\n" +
+      example("curvebench check arch.json --values values.csv --max-error 4"));
   return chk;
 }
 

@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   bool version = false;
   app.add_flag("--version", version, "print the version and the git revision the tool was built from");
-  app.footer(tool::example("curvebench sample SPEC.json --help"));
+  app.footer(tool::example("curvebench sample bench/cases/arch_cubic_bezier.json --at 0,0.5,1 --derivatives 2"));
 
   std::string list_what = "all";
   bool list_json = false;

@@ -170,16 +170,18 @@ std::vector<parameter> parse_range(const std::string& text) {
 
 template <int Dim>
 void sample(const io::field& spec, const sample_args& a) {
-  const any_curve<double, Dim> c = io::curve_from_spec<double, Dim>(spec);
-  al::parameterization_options<double> opt;
-  opt.method = parse_inversion(a.method);
-  opt.newton_polish = a.polish;
-  const al::parameterization<any_curve<double, Dim>> param(c, opt);
-  const auto dom = c.domain();
   std::vector<parameter> given;
   if (!a.at.empty()) given = parse_at(a.at);
   if (!a.at_file.empty()) given = parse_at_file(a.at_file);
   if (!a.range.empty()) given = parse_range(a.range);
+  const any_curve<double, Dim> c = io::curve_from_spec<double, Dim>(spec);
+  al::parameterization_options<double> opt;
+  // Given parameters need s(u) only: Newton's method builds no u(s) table (minutes on degree-20
+  // Runge), and s(u) is then the segment lengths plus one adaptive integral.
+  opt.method = given.empty() ? parse_inversion(a.method) : al::inversion_method::newton;
+  opt.newton_polish = a.polish;
+  const al::parameterization<any_curve<double, Dim>> param(c, opt);
+  const auto dom = c.domain();
   for (const parameter& p : given)
     if (!(dom.lo <= p.u && p.u <= dom.hi)) {
       std::ostringstream os;

@@ -1,0 +1,217 @@
+"""The curvebench tool's command line for users checking their own implementation: `sample --at`
+round trips through `check --values`, a perturbed cell fails naming its row, every class of bad
+input fails with the row, column and value in its message, `--version` names the revision built
+from, every subcommand's --help ends with an example, and an installed layout finds its cases.
+
+Needs the tool: CURVEBENCH_TOOL=path/to/curvebench (the `tool_cli` ctest sets it); skipped without,
+as under `report_py`'s unittest discover."""
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+TOOL = os.environ.get("CURVEBENCH_TOOL", "")
+CASES = os.path.join(ROOT, "bench", "cases")
+ARCH = os.path.join(CASES, "arch_cubic_bezier.json")  # cubic Bezier (0,0) (1,2) (3,2) (4,0), u in [0, 1]
+BENT = '{"type": "polyline", "points": [[0,0],[3,4],[3,10]]}'  # s(u) = 5u, then 5 + 6 (u - 1); L = 11
+
+
+def run(*args, cwd=None):
+    return subprocess.run([TOOL, *args], capture_output=True, text=True, timeout=300, cwd=cwd)
+
+
+@unittest.skipUnless(TOOL and os.path.isfile(TOOL), "CURVEBENCH_TOOL is not set (the tool_cli ctest sets it)")
+class ToolCli(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix="curvebench_cli_")
+
+    def tearDown(self):
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def write(self, name, text):
+        path = os.path.join(self.dir, name)
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+        return path
+
+    def sample(self, *args, spec=ARCH):
+        p = run("sample", spec, *args)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        return p.stdout
+
+    def assert_error(self, p, *words):
+        self.assertEqual(p.returncode, 1, p.stdout + p.stderr)
+        self.assertTrue(p.stderr.startswith("curvebench: error: "), p.stderr)
+        for w in words:
+            self.assertIn(w, p.stderr)
+
+    # ---- sample at chosen parameters ---------------------------------------------------------
+
+    def test_sample_at_range_and_file_give_the_same_rows(self):
+        at = self.sample("--at", "0,0.25,0.5,0.75,1", "--derivatives", "2")
+        self.assertEqual(at.splitlines()[0], "u,s,x,y,dx,dy,d2x,d2y")
+        self.assertEqual(len(at.splitlines()), 6)
+        self.assertEqual(self.sample("--range", "0:1:0.25", "--derivatives", "2"), at)
+        values = self.write("u.txt", "0\n0.25\n\n0.5\n0.75\n1\n")
+        self.assertEqual(self.sample("--at-file", values, "--derivatives", "2"), at)
+        csv = self.write("u.csv", at)  # a CSV with a u column: its other columns are ignored
+        self.assertEqual(self.sample("--at-file", csv, "--derivatives", "2"), at)
+        # The default output is unchanged: u, s, the point, the first derivative.
+        self.assertEqual(self.sample("--count", "3").splitlines()[0], "u,s,x,y,dx,dy")
+        header, row = self.sample("--at", "0.5", "--derivatives", "0").splitlines()
+        self.assertEqual(header, "u,s,x,y")
+        u, s, x, y = row.split(",")
+        self.assertEqual((u, x, y), ("0.5", "2", "1.5"))  # the arch's closed form at 1/2: exact
+        self.assertAlmostEqual(float(s), 2.6341827715092569, delta=1e-14)  # s(1/2) = L/2 by symmetry
+        # B is kept when it lies on the grid up to rounding (0.1 steps do not add up to 1 exactly).
+        self.assertEqual(self.sample("--range", "0:1:0.1").splitlines()[-1].split(",")[0], "1")
+
+    def test_sample_at_works_for_every_family_of_the_suite(self):
+        for name in sorted(os.listdir(CASES)):
+            spec = os.path.join(CASES, name)
+            # The domain, from the error of a parameter outside it (sample --count builds a u(s)
+            # table: minutes on degree-20 Runge).
+            p = run("sample", spec, "--at", "1e300")
+            self.assertEqual(p.returncode, 1, p.stderr)
+            lo, hi = (float(v) for v in p.stderr.split("domain [")[1].split("]")[0].split(", "))
+            out = self.sample("--at", f"{lo!r},{(lo + hi) / 2!r},{hi!r}", "--derivatives", "3", spec=spec)
+            header = out.splitlines()[0].split(",")
+            dim = sum(1 for c in header if c in ("x", "y", "z", "w"))
+            self.assertEqual(len(header), 2 + 4 * dim, name)
+            self.assertEqual(len(out.splitlines()), 4, name)
+
+    def test_sample_rejects_bad_parameters_naming_option_item_and_text(self):
+        self.assert_error(run("sample", ARCH, "--at", "0,,1"), "--at", "item 2", "empty")
+        self.assert_error(run("sample", ARCH, "--at", "0,1.5x"), "--at", "item 2", '"1.5x"')
+        self.assert_error(run("sample", ARCH, "--at", "nan"), "item 1", '"nan"')
+        self.assert_error(run("sample", ARCH, "--at", "0.5,2"), "item 2", "u = 2", "domain [0, 1]")
+        self.assert_error(run("sample", ARCH, "--range", "0:1:0"), "--range", "STEP", '"0"', "not positive")
+        self.assert_error(run("sample", ARCH, "--range", "0:1"), "--range", "A:B:STEP")
+        self.assert_error(run("sample", ARCH, "--range", "0:1:1e-9"), "--range", "maximum 1000000")
+        self.assert_error(run("sample", ARCH, "--range", "0:x:0.1"), "item 2", "(B)", '"x"')
+        bad = self.write("bad.txt", "0.5\n0.7q\n")
+        self.assert_error(run("sample", ARCH, "--at-file", bad), "bad.txt", "row 2", '"0.7q"')
+        self.assert_error(run("sample", ARCH, "--at-file", self.write("e.txt", "")), "e.txt", "no values")
+        self.assert_error(run("sample", ARCH, "--at", "0.5", "--by", "arclength"), "--by arclength", "--at")
+        p = run("sample", ARCH, "--at", "0.5", "--count", "3")  # a usage error: CLI11's message and code
+        self.assertNotEqual(p.returncode, 0)
+        self.assertIn("--count excludes --at", p.stderr)
+
+    # ---- check ---------------------------------------------------------------------------------
+
+    def test_round_trip_passes_and_a_perturbed_cell_fails_naming_its_row(self):
+        text = self.sample("--at", "0,0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9,1", "--derivatives", "2")
+        f = self.write("f.csv", text)
+        p = run("check", ARCH, "--values", f, "--max-error", "4")
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        self.assertIn("check: passed", p.stdout)
+        self.assertIn("worst rows", p.stdout)
+        lines = text.splitlines()
+        cells = lines[4].split(",")  # row 5 of the file: u = 0.3
+        cells[2] = repr(float(cells[2]) * (1 + 1e-9))
+        lines[4] = ",".join(cells)
+        g = self.write("g.csv", "\n".join(lines) + "\n")
+        p = run("check", ARCH, "--values", g, "--max-error", "4")
+        self.assertEqual(p.returncode, 1, p.stdout + p.stderr)
+        self.assertIn("check: OVER", p.stdout)
+        self.assertIn("g.csv: row 5 (u = 0.29999999999999999)", p.stdout)
+        self.assertEqual(p.stdout.count("check: OVER"), 1)
+
+    def test_json_holds_summary_worst_rows_and_records(self):
+        f = self.write("f.csv", self.sample("--at", "0,0.5,1", "--derivatives", "1"))
+        p = run("check", ARCH, "--values", f, "--json", "--name", "my_engine", "--max-error", "4")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        out = json.loads(p.stdout)
+        self.assertTrue(out["passed"])
+        check = out["checks"][0]
+        self.assertEqual(check["summary"]["rows"], 3)
+        self.assertEqual(len(check["rows"]), 3)
+        self.assertLessEqual(len(check["worst"]), 5)
+        self.assertEqual({(r["quantity"], r["setting"]) for r in out["records"]},
+                         {("eval", ""), ("eval", "derivative=1"), ("s_of_u", "")})
+        for r in out["records"]:
+            self.assertEqual(r["method"], "my_engine")
+            self.assertTrue(r["subject"])
+            self.assertEqual(r["case"], "arch_cubic_bezier")
+
+    def test_lengths_inverse_and_thresholds(self):
+        spec = self.write("bent.json", BENT)
+        lengths = self.write("len.csv", "u0,u1,length\n0,2,11\n0.5,1.5,5.5\n")
+        inverse = self.write("inv.csv", "s,u\n0,0\n8,1.5\n11,2\n")
+        p = run("check", spec, "--lengths", lengths, "--inverse", inverse, "--max-error", "1e-15")
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        rules = self.write("rules.json", json.dumps({"rules": [
+            {"quantity": "length", "method": "my_table", "max_error": 1e-15, "why": "test"},
+            {"quantity": "u_of_s", "method": "my_table", "max_error": 1e-15, "why": "test"}]}))
+        p = run("check", spec, "--lengths", lengths, "--inverse", inverse, "--name", "my_table", "--thresholds", rules)
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        worse = self.write("inv2.csv", "s,u\n0,0\n8,1.5001\n")
+        p = run("check", spec, "--lengths", lengths, "--inverse", worse, "--name", "my_table", "--thresholds", rules)
+        self.assertEqual(p.returncode, 1, p.stdout + p.stderr)
+        self.assertIn("check: BREACH u_of_s/my_table/*", p.stdout)
+        p = run("check", spec, "--inverse", worse, "--max-error", "1e-6")
+        self.assertEqual(p.returncode, 1)
+        self.assertIn("inv2.csv: row 3 (s = 8, u = 1.5001)", p.stdout)
+
+    def test_bad_input_names_file_row_column_and_value(self):
+        cases = [
+            ("", ["empty file"]),
+            ("u,x,y\n", ["header row has no rows"]),
+            ("u,x,y\n0.5,1.5x,2\n", ["row 2", "column x", '"1.5x"']),
+            ("u,x,y\n0.5,inf,2\n", ["row 2", "column x", '"inf"']),
+            ("u,x,y\n0.5,1\n", ["row 2", "column y", "missing value"]),
+            ("u,x,y\n0.5,1,2,3\n", ["row 2", "column 4", '"3"']),
+            ("u,x\n0.5,1\n", ["row 1", "no column y"]),
+            ("u,x,y,q\n0.5,1,2,3\n", ["row 1", "column q", "unknown column"]),
+            ("u,x,y\n0,0,0\n1.5,1,2\n", ["row 3", "column u", "1.5", "domain [0, 1]"]),
+            ("t,x,y\n0.5,1,2\n", ["column t", "parameter is u"]),
+        ]
+        for i, (text, words) in enumerate(cases):
+            name = f"bad{i}.csv"
+            with self.subTest(text=text):
+                self.assert_error(run("check", ARCH, "--values", self.write(name, text)), name, *words)
+        self.assert_error(run("check", ARCH), "--values")
+
+    # ---- version, help, installed layout -------------------------------------------------------
+
+    def test_version_names_the_revision_built_from(self):
+        p = run("--version")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertRegex(p.stdout, r"^curvebench \d+\.\d+\.\d+ \((unknown|[0-9a-f]{4,}(\+dirty)?)\)\n$")
+        git = shutil.which("git")
+        if not git or not os.path.isdir(os.path.join(ROOT, ".git")) and not os.path.isfile(os.path.join(ROOT, ".git")):
+            self.skipTest("no git checkout")
+        head = subprocess.run([git, "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True)
+        self.assertEqual(p.stdout.split("(")[1].split(")")[0].split("+")[0], head.stdout.strip())
+
+    def test_every_subcommand_help_ends_with_an_example(self):
+        for sub in ["list", "sample", "check", "length", "accuracy", "gate"]:
+            with self.subTest(sub=sub):
+                p = run(sub, "--help")
+                self.assertEqual(p.returncode, 0, p.stderr)
+                tail = [line for line in p.stdout.splitlines() if line.strip()][-2:]
+                self.assertEqual(tail[0], "Example:")
+                self.assertTrue(tail[1].startswith(f"  curvebench {sub} "), tail[1])
+
+    def test_an_installed_tool_finds_its_cases_beside_it(self):
+        prefix = os.path.join(self.dir, "prefix")
+        os.makedirs(os.path.join(prefix, "bin"))
+        cases = os.path.join(prefix, "share", "curvebench", "cases")
+        os.makedirs(cases)
+        shutil.copy(ARCH, cases)
+        shutil.copy(TOOL, os.path.join(prefix, "bin", "curvebench"))
+        p = subprocess.run([os.path.join(prefix, "bin", "curvebench"), "list", "cases"], capture_output=True,
+                           text=True, timeout=60, cwd=self.dir)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertIn(f"cases ({cases})", p.stdout)
+        self.assertEqual(p.stdout.count("\n  "), 1, p.stdout)  # the one case copied there, not the source tree's
+        # Without the installed layout, the source tree's cases.
+        p = run("list", "cases")
+        self.assertIn(f"cases ({CASES})", p.stdout)
+
+
+if __name__ == "__main__":
+    unittest.main()
