@@ -19,7 +19,9 @@
 // std::function, where the 50-digit work is compiled once (link curvebench::harness).
 //
 //   namespace h = curvebench::harness;
-//   h::subject<2> s{"my_catmull_rom", [&](double u) { return my_curve(u); }};
+//   h::subject<2> s;
+//   s.name = "my_catmull_rom";
+//   s.eval = [&](double u) { return my_curve(u); };   // a curvebench::point<double, 2>
 //   s.length = [&](double u0, double u1) { return my_table.length(u0, u1); };
 //   const auto results = h::measure_case(CURVEBENCH_CASES_DIR, "catmull_rom_uniform_2d", s);
 //   h::write_results(results, "subject.json");            // harness/writers.hpp
