@@ -6,7 +6,9 @@ Inputs (all in the reports directory, all produced by scripts):
                    counters (bench/harness/vocabulary.hpp); every benchmark must use only these
   bench_*.json     Google Benchmark output (names family/algorithm/key:value; each benchmark labels
                    the operation it times and sets items processed: times are shown per operation)
-  accuracy.json    the accuracy runner's output: context, records, orders, properties
+  accuracy.json    the accuracy runner's output: context, records, orders, properties; records
+                   marked "subject": true (a user's implementation: `curvebench check`, the subject
+                   API) are shown in their own section beside curvebench's methods
 Exits 1, naming the benchmark, on a benchmark the vocabulary does not describe. Every file is
 written under a temporary name and renamed, so an interrupted run never leaves a half-written
 report. Uses Debian's python3-matplotlib (run with /usr/bin/python3); the pure helpers are in
@@ -320,6 +322,8 @@ def main():
         with open(acc_path, encoding="utf-8") as f:
             acc = json.load(f)
     records, orders = acc.get("records", []), acc.get("orders", [])
+    # A user's own implementations (subject records) get their own section, beside ours.
+    records, subjects = lib.split_subjects(records)
     ctx = acc.get("context", {})
 
     md = ["# curvebench report", "",
@@ -384,6 +388,16 @@ def main():
     else:
         md.append("No results.")
 
+    if subjects:
+        md += ["", "## Your implementations (subjects) beside curvebench's methods", ""]
+        md.append("Records of a user's own implementation (`curvebench check`, or the subject API "
+                  "harness/subject.hpp) against the same 50-digit reference, beside curvebench's own records of "
+                  "the same case and quantity (eval in eps x size, the others relative to L):")
+        md.append("")
+        md.append(table(["case", "quantity", "subject", "error", "curvebench's most accurate", "its error",
+                         "curvebench's cheapest at least as accurate"],
+                        lib.subject_rows(records, subjects)))
+
     md += ["", "## Convergence orders", ""]
     if orders:
         md.append(table(["case", "quantity", "method", "observed", "theory"],
@@ -418,8 +432,9 @@ def main():
                   "split at breakpoints and speed minima) and its own error estimate, relative:")
         md.append("")
         md.append(table(["case", "group", "family", "segments", "length", "reference error", "speed minima", "seconds"],
-                        [[c["name"], c["group"], c["family"], c["segments"], c["reference_length"][:22],
-                          c["reference_error"], c["speed_minima"], c["seconds"]] for c in cases]))
+                        [[c["name"], c["group"], c["family"], c["segments"], str(c.get("reference_length", "-"))[:22],
+                          c.get("reference_error", "-"), c.get("speed_minima", "-"), c.get("seconds", "-")]
+                         for c in cases]))
     else:
         md.append("No results.")
 

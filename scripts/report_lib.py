@@ -302,3 +302,38 @@ def validate_files(vocabulary_path, bench_paths):
     if not rows:
         raise ReportError(f"no benchmarks in {', '.join(bench_paths)}")
     return len(rows)
+
+
+def split_subjects(records):
+    """(curvebench's own records, subject records): a subject is a user's implementation measured
+    by `curvebench check` or the subject API (harness/subject.hpp), its records marked "subject": true."""
+    own = [r for r in records if not r.get("subject")]
+    return own, [r for r in records if r.get("subject")]
+
+
+def subject_rows(own, subjects):
+    """One row per subject record, beside curvebench's own records of the same case and quantity:
+    [case, quantity, subject (method and setting), its error, curvebench's most accurate record
+    (method setting), its error, curvebench's cheapest record at least as accurate as the subject
+    (method setting, evaluations) or "none"]. Without own records of that case and quantity
+    (a subject measured alone) the last three cells are "-"."""
+    def label(r):
+        return f"{r['method']} {r.get('setting') or ''}".strip()
+
+    by_key = defaultdict(list)
+    for r in own:
+        if r.get("error") is not None:
+            by_key[(r["case"], r["quantity"])].append(r)
+    rows = []
+    for s in sorted(subjects, key=lambda r: (r["case"], r["quantity"], r["method"], r.get("setting") or "")):
+        err = s.get("error")
+        mine = by_key.get((s["case"], s["quantity"]), [])
+        if not mine:
+            rows.append([s["case"], s["quantity"], label(s), err if err is not None else "-", "-", "-", "-"])
+            continue
+        best = min(mine, key=lambda r: r["error"])
+        as_good = [r for r in mine if err is not None and r["error"] <= err]
+        cheapest = min(as_good, key=lambda r: (r["evaluations"], r["error"])) if as_good else None
+        rows.append([s["case"], s["quantity"], label(s), err if err is not None else "-", label(best), best["error"],
+                     f"{label(cheapest)} ({cheapest['evaluations']:g} evals)" if cheapest else "none"])
+    return rows

@@ -1,0 +1,101 @@
+# curvebench_add_check: a CTest that runs your program and checks the CSV it writes against
+# curvebench's 50-digit reference with `curvebench check` (included by curvebenchConfig.cmake when
+# the package was installed with its tool).
+#
+#   curvebench_add_check(NAME <test name> SPEC <spec.json> COMMAND <program> [args...]
+#                        [VALUES <csv>] [LENGTHS <csv>] [INVERSE <csv>]
+#                        [MAX_ERROR <x>] [THRESHOLDS <thresholds.json>]
+#                        [SUBJECT <name>] [WORKING_DIRECTORY <dir>])
+#
+# The test runs COMMAND in WORKING_DIRECTORY (default: the current binary directory; a first word
+# naming an executable target of this project runs that target's file), fails when it exits
+# non-zero, then runs
+#   curvebench check SPEC --values VALUES [--lengths LENGTHS] [--inverse INVERSE]
+#                    [--max-error X] [--thresholds FILE] --name SUBJECT
+# and fails when the check does (a row over MAX_ERROR, a breached rule, or bad input: a missing
+# column, a parameter outside the domain, a non-numeric cell). Relative CSV paths are relative to
+# WORKING_DIRECTORY. VALUES defaults to <NAME>.csv when neither LENGTHS nor INVERSE is given;
+# SUBJECT (the records' method, which THRESHOLDS' rules name) defaults to NAME.
+#
+# Example:
+#   find_package(curvebench REQUIRED)
+#   add_executable(my_spline_csv my_spline_csv.cpp)     # writes my_spline.csv: u,x,y
+#   curvebench_add_check(NAME my_spline SPEC ${CMAKE_CURRENT_SOURCE_DIR}/spec.json
+#                        COMMAND my_spline_csv my_spline.csv VALUES my_spline.csv MAX_ERROR 64)
+include_guard(GLOBAL)
+
+function(curvebench_add_check)
+  cmake_parse_arguments(PARSE_ARGV 0 arg "" "NAME;SPEC;VALUES;LENGTHS;INVERSE;MAX_ERROR;THRESHOLDS;SUBJECT;WORKING_DIRECTORY"
+                        "COMMAND")
+  if(arg_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "curvebench_add_check: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
+  endif()
+  foreach(required NAME SPEC COMMAND)
+    if(NOT arg_${required})
+      message(FATAL_ERROR "curvebench_add_check: ${required} is required")
+    endif()
+  endforeach()
+  if(NOT arg_VALUES AND NOT arg_LENGTHS AND NOT arg_INVERSE)
+    set(arg_VALUES ${arg_NAME}.csv)
+  endif()
+  if(NOT arg_SUBJECT)
+    set(arg_SUBJECT ${arg_NAME})
+  endif()
+  if(NOT arg_WORKING_DIRECTORY)
+    set(arg_WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  endif()
+  if(NOT IS_ABSOLUTE "${arg_SPEC}")
+    set(arg_SPEC ${CMAKE_CURRENT_SOURCE_DIR}/${arg_SPEC})
+  endif()
+  if(arg_THRESHOLDS AND NOT IS_ABSOLUTE "${arg_THRESHOLDS}")
+    set(arg_THRESHOLDS ${CMAKE_CURRENT_SOURCE_DIR}/${arg_THRESHOLDS})
+  endif()
+  if(TARGET curvebench::tool)
+    set(tool "$<TARGET_FILE:curvebench::tool>")
+  elseif(TARGET curvebench_tool)
+    set(tool "$<TARGET_FILE:curvebench_tool>")
+  elseif(CURVEBENCH_EXECUTABLE)
+    set(tool "${CURVEBENCH_EXECUTABLE}")
+  else()
+    message(FATAL_ERROR "curvebench_add_check: no curvebench tool (install curvebench with CURVEBENCH_BUILD_BENCH=ON)")
+  endif()
+
+  # The user's command; a first word naming an executable target runs that target's file.
+  set(command ${arg_COMMAND})
+  list(GET command 0 program)
+  if(TARGET ${program})
+    get_target_property(type ${program} TYPE)
+    if(type STREQUAL "EXECUTABLE")
+      list(POP_FRONT command)
+      list(PREPEND command "$<TARGET_FILE:${program}>")
+    endif()
+  endif()
+  set(check ${tool} check ${arg_SPEC} --name ${arg_SUBJECT})
+  foreach(pair VALUES:--values LENGTHS:--lengths INVERSE:--inverse MAX_ERROR:--max-error THRESHOLDS:--thresholds)
+    string(REPLACE ":" ";" pair ${pair})
+    list(GET pair 0 key)
+    list(GET pair 1 option)
+    if(DEFINED arg_${key} AND NOT arg_${key} STREQUAL "")
+      list(APPEND check ${option} ${arg_${key}})
+    endif()
+  endforeach()
+
+  # One script per test: every word in a bracket argument, so spaces and semicolons inside a word
+  # survive; generator expressions ($<TARGET_FILE:...>) are expanded by file(GENERATE).
+  set(script "# curvebench_add_check(NAME ${arg_NAME}): generated, do not edit\n")
+  foreach(step command check)
+    set(words "")
+    foreach(word IN LISTS ${step})
+      string(APPEND words " [==[${word}]==]")
+    endforeach()
+    string(APPEND script "execute_process(COMMAND${words}\n"
+                         "  WORKING_DIRECTORY [==[${arg_WORKING_DIRECTORY}]==] RESULT_VARIABLE rc)\n"
+                         "if(NOT rc EQUAL 0)\n"
+                         "  message(FATAL_ERROR \"curvebench_add_check ${arg_NAME}: the ${step} failed (exit \${rc})\")\n"
+                         "endif()\n")
+  endforeach()
+  set(script_file ${CMAKE_CURRENT_BINARY_DIR}/curvebench_check/${arg_NAME}-$<CONFIG>.cmake)
+  file(GENERATE OUTPUT ${script_file} CONTENT "${script}")
+  file(MAKE_DIRECTORY ${arg_WORKING_DIRECTORY})
+  add_test(NAME ${arg_NAME} COMMAND ${CMAKE_COMMAND} -P ${script_file})
+endfunction()
