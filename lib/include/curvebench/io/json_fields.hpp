@@ -289,7 +289,7 @@ class strict_builder {
       return &top.value->back();
     }
     auto& members = top.value->get_ref<json::object_t&>();
-    return &members.insert_or_assign(std::move(top.key), std::move(v)).first->second;
+    return &members.insert_or_assign(top.key, std::move(v)).first->second;  // the key stays for path()
   }
 
   bool open(json container) {
