@@ -110,7 +110,85 @@ TEST(gate, the_checked_in_thresholds_name_vocabulary_ids_only) {
   ASSERT_TRUE(in) << "reports/thresholds.json not found";
   const json t = json::parse(in);
   ASSERT_GT(t["rules"].size(), 10u);
-  EXPECT_NO_THROW((void)check_gate(json::object(), t));
+  EXPECT_NO_THROW((void)check_gate(json{{"records", json::array()}}, t, "results", "reports/thresholds.json"));
+}
+
+// ---- malformed files (issue 16): a typo must not switch the gate off -------------------------
+
+namespace {
+/// The message of the invalid_input check_gate throws for these files, or "accepted".
+std::string gate_error(const json& results, const char* thresholds_text) {
+  try {
+    (void)check_gate(results, json::parse(thresholds_text), "res.json", "thr.json");
+  } catch (const curvebench::invalid_input& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+}  // namespace
+
+// These three passed with exit 0: the misspelt rule checked nothing, the others had no rule at all.
+TEST(gate, a_misspelt_key_in_a_rule_is_an_error_naming_the_file_rule_and_key) {
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"quantity": "length", "max_error": 1},
+                                                      {"quantity": "length", "max_eror": 1e-13}]})"),
+            "thr.json rule 1: unknown key \"max_eror\" (known keys: quantity, method, group, setting, max_error, "
+            "min_order, honest, why)");
+}
+
+TEST(gate, rules_must_be_a_non_empty_array_of_objects) {
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": []})"),
+            "thr.json: \"rules\" is empty: a gate without rules checks nothing");
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": {"quantity": "length", "max_error": 1}})"),
+            "thr.json: \"rules\" must be an array, got {\"max_error\":1,\"quantity\":\"length\"}");
+  EXPECT_EQ(gate_error(clean_results(), R"({"rule": [{"max_error": 1}]})"),
+            "thr.json: expected an object holding a \"rules\" array, got {\"rule\":[{\"max_error\":1}]}");
+  EXPECT_EQ(gate_error(clean_results(), R"([{"max_error": 1}])"),
+            "thr.json: expected an object holding a \"rules\" array, got [{\"max_error\":1}]");
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"max_error": 1}, "length"]})"),
+            "thr.json rule 1: expected an object, got \"length\"");
+}
+
+TEST(gate, each_rule_needs_a_check_and_values_of_the_right_type) {
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"quantity": "length", "why": "no number"}]})"),
+            "thr.json rule 0: no check (give max_error, min_order or \"honest\": true)");
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"quantity": "length", "honest": false}]})"),
+            "thr.json rule 0: no check (give max_error, min_order or \"honest\": true)");
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"max_error": "1e-13"}]})"),
+            "thr.json rule 0: max_error \"1e-13\" is not a number");
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"honest": "yes"}]})"),
+            "thr.json rule 0: honest \"yes\" is not true or false");
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"method": 3, "max_error": 1}]})"),
+            "thr.json rule 0: method 3 is not a string");
+  // The vocabulary checks name the file too.
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"quantity": "lenght", "max_error": 1}]})"),
+            "thr.json rule 0: quantity \"lenght\" is not a quantity of the vocabulary");
+}
+
+TEST(gate, results_must_hold_a_records_array_of_objects) {
+  const char* rules = R"({"rules": [{"quantity": "length", "max_error": 1}]})";
+  EXPECT_EQ(gate_error(json::object(), rules), "res.json: expected an object holding a \"records\" array, got {}");
+  EXPECT_EQ(gate_error(json{{"records", json::object()}}, rules), "res.json: \"records\" must be an array, got {}");
+  json r = clean_results();
+  r["records"][1] = 7;
+  EXPECT_EQ(gate_error(r, rules), "res.json: records[1]: expected an object, got 7");
+  r = clean_results();
+  r["records"][2]["error"] = "small";
+  EXPECT_EQ(gate_error(r, rules), "res.json: records[2].error: expected a number or null, got \"small\"");
+  r = clean_results();
+  r["records"][0]["case"] = 12;
+  EXPECT_EQ(gate_error(r, rules), "res.json: records[0].case: expected a string, got 12");
+  r = clean_results();
+  r["orders"] = json::object();
+  EXPECT_EQ(gate_error(r, rules), "res.json: \"orders\" must be an array, got {}");
+  r = clean_results();
+  r["orders"][0]["observed"] = true;
+  EXPECT_EQ(gate_error(r, rules), "res.json: orders[0].observed: expected a number or null, got true");
+  // Null where the runner writes null is fine: a null order is a breach, not an exception.
+  r = clean_results();
+  r["orders"][0]["observed"] = nullptr;
+  const auto breaches = check_gate(r, thresholds());
+  ASSERT_EQ(breaches.size(), 1u);
+  EXPECT_EQ(breaches[0].message, "observed order nan < allowed 1.8");
 }
 
 // A user's implementation (curvebench check, harness/check.hpp) writes records with "subject": true

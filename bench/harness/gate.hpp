@@ -21,18 +21,29 @@
 // Records of a user's own implementation (a "subject": `curvebench check`, harness/check.hpp) carry
 // "subject": true and the subject's name as "method"; a rule may name such a method when the
 // results hold a subject record of that name (the quantity must still be in the vocabulary).
+// Both files' structure is checked first, so that no typo switches the gate off: the thresholds
+// must hold "rules", a non-empty array of objects with no key but those above, each with at least
+// one check (max_error, min_order or honest: true) and values of the right type; the results must
+// hold a "records" array (and "orders", when present, an array) of objects whose fields read here
+// have the types written by the accuracy runner. Anything else is invalid_input naming the file
+// (the names given to check_gate), the rule or record and the key.
 #pragma once
 
 #include "harness/vocabulary.hpp"
 
 #include "curvebench/core/error.hpp"
+#include "curvebench/io/json_fields.hpp"
 #include "curvebench/io/registry.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace curvebench::harness {
@@ -65,13 +76,75 @@ inline std::set<std::string> subject_methods(const nlohmann::json& records) {
       out.insert(r["method"].get<std::string>());
   return out;
 }
+inline constexpr std::array<std::string_view, 8> rule_keys{"quantity", "method",    "group",  "setting",
+                                                         "max_error", "min_order", "honest", "why"};
+
+/// Fails unless `j` is an object holding `key` as an array; returns that array.
+inline const nlohmann::json& array_member(const nlohmann::json& j, const char* key, const std::string& file) {
+  if (!j.is_object() || !j.contains(key))
+    throw invalid_input(file + ": expected an object holding a \"" + key + "\" array, got " +
+                        io::field::shown_value(j));
+  if (!j[key].is_array())
+    throw invalid_input(file + ": \"" + key + "\" must be an array, got " + io::field::shown_value(j[key]));
+  return j[key];
+}
+
+/// Throws invalid_input naming `file` unless `thresholds` holds a non-empty "rules" array of rule
+/// objects with known keys of the right types, each with at least one check.
+inline void check_thresholds_structure(const nlohmann::json& thresholds, const std::string& file) {
+  const nlohmann::json& rules = array_member(thresholds, "rules", file);
+  if (rules.empty()) throw invalid_input(file + ": \"rules\" is empty: a gate without rules checks nothing");
+  for (std::size_t i = 0; i < rules.size(); ++i) {
+    const std::string where = file + " rule " + std::to_string(i) + ": ";
+    const nlohmann::json& rule = rules[i];
+    if (!rule.is_object()) throw invalid_input(where + "expected an object, got " + io::field::shown_value(rule));
+    for (const auto& [key, value] : rule.items()) {
+      if (std::find(rule_keys.begin(), rule_keys.end(), key) == rule_keys.end()) {
+        std::string known;
+        for (std::string_view k : rule_keys) known += (known.empty() ? "" : ", ") + std::string(k);
+        throw invalid_input(where + "unknown key " + io::field::shown_string(key) + " (known keys: " + known + ")");
+      }
+      const bool number = key == "max_error" || key == "min_order";
+      const bool ok = number ? value.is_number() : key == "honest" ? value.is_boolean() : value.is_string();
+      if (!ok)
+        throw invalid_input(where + key + " " + io::field::shown_value(value) + " is not " +
+                            (number ? "a number" : key == "honest" ? "true or false" : "a string"));
+    }
+    if (!rule.contains("max_error") && !rule.contains("min_order") && !rule.value("honest", false))
+      throw invalid_input(where + "no check (give max_error, min_order or \"honest\": true)");
+  }
+}
+
+/// Throws invalid_input naming `file` unless `results` holds a "records" array (and "orders", when
+/// present, an array) of objects whose fields read by the gate have the types the runner writes.
+inline void check_results_structure(const nlohmann::json& results, const std::string& file) {
+  for (const char* list : {"records", "orders"}) {
+    if (std::string_view(list) == "orders" && !results.contains(list)) continue;
+    const nlohmann::json& rows = array_member(results, list, file);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const std::string where = file + ": " + list + "[" + std::to_string(i) + "]";
+      const nlohmann::json& row = rows[i];
+      if (!row.is_object()) throw invalid_input(where + ": expected an object, got " + io::field::shown_value(row));
+      const auto expect = [&](const char* key, bool ok, const char* what) {
+        if (row.contains(key) && !ok)
+          throw invalid_input(where + "." + key + ": expected " + what + ", got " + io::field::shown_value(row[key]));
+      };
+      for (const char* key : {"case", "group", "quantity", "method", "setting"})
+        expect(key, row.contains(key) && row[key].is_string(), "a string");
+      for (const char* key : {"error", "estimate", "observed"})
+        expect(key, row.contains(key) && (row[key].is_number() || row[key].is_null()), "a number or null");
+      expect("bounded", row.contains("bounded") && (row["bounded"].is_boolean() || row["bounded"].is_null()),
+             "true, false or null");
+      expect("subject", row.contains("subject") && row["subject"].is_boolean(), "true or false");
+    }
+  }
+}
+
 /// Throws invalid_input when rule `index` names a quantity outside the vocabulary, or a method that
 /// is neither in the vocabulary nor one of `subjects` (the results' subject methods).
-inline void check_rule_ids(const nlohmann::json& rule, std::size_t index, const std::set<std::string>& subjects = {}) {
-  const std::string where = "thresholds rule " + std::to_string(index) + ": ";
-  for (const char* key : {"quantity", "method", "group", "setting"})
-    if (rule.contains(key) && !rule[key].is_string())
-      throw invalid_input(where + key + " " + rule[key].dump() + " is not a string");
+inline void check_rule_ids(const nlohmann::json& rule, std::size_t index, const std::set<std::string>& subjects = {},
+                           const std::string& file = "thresholds") {
+  const std::string where = file + " rule " + std::to_string(index) + ": ";
   const std::string quantity = rule.value("quantity", std::string("*"));
   const std::string method = rule.value("method", std::string("*"));
   if (quantity != "*" && !vocab::find_quantity(quantity))
@@ -96,6 +169,10 @@ inline void check_rule_ids(const nlohmann::json& rule, std::size_t index, const 
     throw invalid_input(where + "method \"" + method + "\" has no " + quantity + " records (its quantities: " +
                         std::string(m->quantities) + ")");
 }
+/// The number `key` of a record, NaN when it is null or missing (the structure is checked first).
+inline double number_or_nan(const nlohmann::json& row, const char* key) {
+  return row.contains(key) && row[key].is_number() ? row[key].get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
 inline std::string number(double x) {
   std::ostringstream os;
   os.precision(3);
@@ -104,15 +181,20 @@ inline std::string number(double x) {
 }
 }  // namespace detail
 
-/// Every breach of `thresholds` by `results`; empty when the gate passes. Throws invalid_input for
-/// a rule naming a quantity or method outside the vocabulary and the results' subjects (see above).
-inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohmann::json& thresholds) {
+/// Every breach of `thresholds` by `results`; empty when the gate passes. Throws invalid_input,
+/// naming the file (`results_file`, `thresholds_file`), for a malformed file and for a rule naming
+/// a quantity or method outside the vocabulary and the results' subjects (see above).
+inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohmann::json& thresholds,
+                                      const std::string& results_file = "results",
+                                      const std::string& thresholds_file = "thresholds") {
+  detail::check_thresholds_structure(thresholds, thresholds_file);
+  detail::check_results_structure(results, results_file);
   std::vector<breach> out;
   const nlohmann::json empty = nlohmann::json::array();
-  const nlohmann::json& records = results.contains("records") ? results["records"] : empty;
+  const nlohmann::json& records = results["records"];
   const std::set<std::string> subjects = detail::subject_methods(records);
   std::size_t index = 0;
-  for (const auto& rule : thresholds.at("rules")) detail::check_rule_ids(rule, index++, subjects);
+  for (const auto& rule : thresholds.at("rules")) detail::check_rule_ids(rule, index++, subjects, thresholds_file);
   const nlohmann::json& orders = results.contains("orders") ? results["orders"] : empty;
   for (const auto& rule : thresholds.at("rules")) {
     const std::string name = detail::rule_name(rule);
@@ -137,8 +219,8 @@ inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohm
         if (rule.value("honest", false) && r.contains("bounded") && r["bounded"].is_boolean() &&
             !r["bounded"].get<bool>())
           out.push_back({name, where,
-                         "estimate " + detail::number(r.value("estimate", 0.0)) + " < true error " +
-                             detail::number(r.value("error", 0.0)) + " (estimate not honest)"});
+                         "estimate " + detail::number(detail::number_or_nan(r, "estimate")) + " < true error " +
+                             detail::number(detail::number_or_nan(r, "error")) + " (estimate not honest)"});
       }
       if (matched_records == 0)
         out.push_back({name, "-", "rule matched no result record (method or case group missing)"});
@@ -148,7 +230,7 @@ inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohm
       for (const auto& o : orders) {
         if (!detail::matches(rule, o)) continue;
         ++matched_orders;
-        const double observed = o.value("observed", 0.0);
+        const double observed = detail::number_or_nan(o, "observed");
         if (!(observed >= allowed))
           out.push_back({name, "case " + o.value("case", std::string("?")),
                          "observed order " + detail::number(observed) + " < allowed " + detail::number(allowed)});

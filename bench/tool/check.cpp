@@ -137,8 +137,8 @@ int run_check(const check_args& a) {
       for (std::string& m : harness::rows_over(r, a.max_error)) failures.push_back("check: OVER " + m);
   }
   if (!a.thresholds.empty()) {
-    const nlohmann::json t = nlohmann::json::parse(read_file(a.thresholds));
-    for (const auto& b : harness::check_gate({{"records", records}}, t))
+    const nlohmann::json t = io::parse(read_file(a.thresholds), a.thresholds);
+    for (const auto& b : harness::check_gate({{"records", records}}, t, "check records", a.thresholds))
       failures.push_back("check: BREACH " + b.rule + " " + b.where + ": " + b.message);
   }
   if (a.json) {

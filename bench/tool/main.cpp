@@ -217,9 +217,11 @@ int main(int argc, char** argv) {
     }
     if (*acc) return cb::harness::run_accuracy(ao);
     if (*gate) {
-      const auto r = nlohmann::json::parse(tool::read_file(results));
-      const auto t = nlohmann::json::parse(tool::read_file(thresholds));
-      const auto breaches = cb::harness::check_gate(r, t);
+      // io::parse names the file in a syntax error and refuses deep nesting and repeated keys;
+      // check_gate names it for a malformed structure.
+      const auto r = cb::io::parse(tool::read_file(results), results);
+      const auto t = cb::io::parse(tool::read_file(thresholds), thresholds);
+      const auto breaches = cb::harness::check_gate(r, t, results, thresholds);
       for (const auto& b : breaches) std::cout << "gate: BREACH " << b.rule << " " << b.where << ": " << b.message << "\n";
       std::cout << "gate: " << t.at("rules").size() << " rules, " << breaches.size() << " breaches\n";
       return breaches.empty() ? 0 : 1;

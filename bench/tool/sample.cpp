@@ -10,7 +10,6 @@
 #include "curvebench/motion/distance_time.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <variant>
@@ -28,23 +27,35 @@ using ease_fn = std::variant<motion::linear_ease<double>, motion::sine_ease<doub
                              motion::smootherstep_ease<double>, motion::sine_plateau_ease<double>,
                              motion::parabolic_ease<double>>;
 
-/// "linear", "sine", "smoothstep", "smootherstep", "sine_plateau:T1,T2", "parabolic:T1,T2".
+std::vector<std::string> split(const std::string& text, char sep);
+
+/// "linear", "sine", "smoothstep", "smootherstep", "sine_plateau:T1,T2", "parabolic:T1,T2". The
+/// phases are exactly two finite numbers: trailing text or a third value is an error, not ignored.
 ease_fn parse_ease(const std::string& text) {
   const auto colon = text.find(':');
   const std::string name = text.substr(0, colon);
-  double t1 = 0, t2 = 1;
   if (name == "sine_plateau" || name == "parabolic") {
-    if (colon == std::string::npos || std::sscanf(text.c_str() + colon + 1, "%lf,%lf", &t1, &t2) != 2)
-      throw invalid_input("--ease " + text + ": " + name + " needs its phases, e.g. " + name + ":0.25,0.75");
-    if (name == "sine_plateau") return motion::sine_plateau_ease<double>(t1, t2);
-    return motion::parabolic_ease<double>(t1, t2);
+    const std::string where = "--ease " + quote_cell(text) + ": ";
+    const std::string expected = "expected " + name + ":T1,T2 with two finite numbers, e.g. " + name + ":0.25,0.75";
+    if (colon == std::string::npos) throw invalid_input(where + name + " needs its phases: " + expected);
+    const std::vector<std::string> phases = split(text.substr(colon + 1), ',');
+    if (phases.size() != 2)
+      throw invalid_input(where + std::to_string(phases.size()) + (phases.size() == 1 ? " phase" : " phases") +
+                          " given, " + expected);
+    double t[2] = {0, 0};
+    for (std::size_t i = 0; i < 2; ++i)
+      if (!parse_finite(phases[i], t[i]))
+        throw invalid_input(where + "phase T" + std::to_string(i + 1) + " " + quote_cell(phases[i]) +
+                            " is not a finite number, " + expected);
+    if (name == "sine_plateau") return motion::sine_plateau_ease<double>(t[0], t[1]);
+    return motion::parabolic_ease<double>(t[0], t[1]);
   }
-  if (colon != std::string::npos) throw invalid_input("--ease " + text + ": " + name + " takes no parameters");
+  if (colon != std::string::npos) throw invalid_input("--ease " + quote_cell(text) + ": " + name + " takes no parameters");
   if (name == "linear") return motion::linear_ease<double>();
   if (name == "sine") return motion::sine_ease<double>();
   if (name == "smoothstep") return motion::smoothstep_ease<double>();
   if (name == "smootherstep") return motion::smootherstep_ease<double>();
-  throw invalid_input("--ease " + text +
+  throw invalid_input("--ease " + quote_cell(text) +
                       ": not one of linear, sine, smoothstep, smootherstep, sine_plateau:T1,T2, parabolic:T1,T2");
 }
 

@@ -175,6 +175,52 @@ class ToolCli(unittest.TestCase):
                 self.assert_error(run("check", ARCH, "--values", self.write(name, text)), name, *words)
         self.assert_error(run("check", ARCH), "--values")
 
+    # ---- hostile input (issue 16) ---------------------------------------------------------------
+
+    def test_sample_ease_phases_are_exactly_two_finite_numbers(self):
+        # Both were accepted, the trailing text ignored.
+        self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "sine_plateau:0.2,0.8junk"),
+                          '--ease "sine_plateau:0.2,0.8junk"', 'phase T2 "0.8junk" is not a finite number',
+                          "expected sine_plateau:T1,T2")
+        self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "parabolic:0.3,0.7,0.9"),
+                          '--ease "parabolic:0.3,0.7,0.9"', "3 phases given", "expected parabolic:T1,T2")
+        self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "parabolic:0.3"), "1 phase given")
+        self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "parabolic"), "needs its phases")
+        self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "parabolic:,0.7"), 'phase T1 ""')
+        rows = self.sample("--by", "arclength", "--count", "5", "--ease", "parabolic: 0.3 , 0.7").splitlines()
+        self.assertEqual(len(rows), 6)  # spaces around a number are fine, as in every numeric cell
+
+    def test_specs_nested_too_deep_or_with_a_repeated_key_fail_naming_the_file(self):
+        deep = self.write("deep.json", '{"type": "bezier", "reason": ' + "[" * 1000000 + "]" * 1000000 + "}")
+        p = run("length", deep)  # a SIGSEGV before
+        self.assert_error(p, "deep.json.reason[0][0]", "nested more than 64 levels deep")
+        self.assertLess(len(p.stderr), 600)
+        twice = self.write("twice.json", '{"type": "bezier", "points": [[0,0],[1,1]], "type": "polyline"}')
+        self.assert_error(run("length", twice), "twice.json", 'key "type" appears twice')
+        huge = self.write("huge.json", '{"type": "bspline", "degree": 18446744073709551615, "points": [[0,0],[1,1]]}')
+        self.assert_error(run("length", huge), "huge.json.degree", "18446744073709551615")
+
+    def test_gate_checks_both_files_structure_naming_the_file(self):
+        results = self.write("results.json", json.dumps({"records": [
+            {"case": "c", "group": "g", "quantity": "length", "method": "adaptive_gk", "setting": "tol=1e-12",
+             "error": 1e-16, "estimate": 1e-15, "bounded": True, "evaluations": 30, "status": "converged"}]}))
+        good = self.write("good.json", json.dumps({"rules": [{"quantity": "length", "max_error": 1e-15}]}))
+        p = run("gate", "--results", results, "--thresholds", good)
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+        self.assertIn("gate: 1 rules, 0 breaches", p.stdout)
+        # Each of these passed with exit 0.
+        typo = self.write("typo.json", json.dumps({"rules": [{"quantity": "length", "max_eror": 1e-15}]}))
+        self.assert_error(run("gate", "--results", results, "--thresholds", typo),
+                          "typo.json rule 0", 'unknown key "max_eror"')
+        empty = self.write("empty.json", json.dumps({"rules": []}))
+        self.assert_error(run("gate", "--results", results, "--thresholds", empty), "empty.json", '"rules" is empty')
+        obj = self.write("object.json", json.dumps({"rules": {"quantity": "length", "max_error": 1e-15}}))
+        self.assert_error(run("gate", "--results", results, "--thresholds", obj), "object.json", "must be an array")
+        no_records = self.write("norec.json", json.dumps({"orders": []}))
+        self.assert_error(run("gate", "--results", no_records, "--thresholds", good), "norec.json", '"records" array')
+        broken = self.write("broken.json", '{"rules": [')  # the parser's text named no file
+        self.assert_error(run("gate", "--results", results, "--thresholds", broken), "broken.json: not valid JSON")
+
     # ---- version, help, installed layout -------------------------------------------------------
 
     def test_version_names_the_revision_built_from(self):
