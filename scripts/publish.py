@@ -37,30 +37,7 @@ class PublishError(Exception):
     pass
 
 
-def fmt(x):
-    """Three significant digits, exponent form outside [1e-3, 1e4): the one number format of the
-    published text."""
-    if x is None:
-        return "-"
-    if isinstance(x, bool):
-        return "yes" if x else "no"
-    if isinstance(x, int):
-        return str(x)
-    if isinstance(x, float):
-        if math.isnan(x):
-            return "nan"
-        if x == 0:
-            return "0"
-        if abs(x) >= 1e4 or abs(x) < 1e-3:
-            return f"{x:.2e}"
-        return f"{x:.3g}"
-    return str(x)
-
-
-def table(headers, rows):
-    out = ["| " + " | ".join(headers) + " |", "|" + "|".join("---" for _ in headers) + "|"]
-    out += ["| " + " | ".join(fmt(c) for c in r) + " |" for r in rows]
-    return "\n".join(out)
+fmt, table = lib.fmt, lib.table
 
 
 # ---------------------------------------------------------------------------------------------

@@ -53,29 +53,7 @@ def atomic_savefig(fig, path):
     os.replace(tmp, path)
 
 
-def fmt(x, digits=3):
-    if x is None:
-        return "-"
-    if isinstance(x, bool):
-        return "yes" if x else "no"
-    if isinstance(x, (int,)) and not isinstance(x, bool):
-        return str(x)
-    if isinstance(x, float):
-        if x != x:
-            return "nan"
-        if x == 0:
-            return "0"
-        if abs(x) >= 1e4 or abs(x) < 1e-3:
-            return f"{x:.{digits - 1}e}"
-        return f"{x:.{digits}g}"
-    return str(x)
-
-
-def table(headers, rows):
-    out = ["| " + " | ".join(headers) + " |", "|" + "|".join("---" for _ in headers) + "|"]
-    for r in rows:
-        out.append("| " + " | ".join(fmt(c) for c in r) + " |")
-    return "\n".join(out)
+fmt, table = lib.fmt, lib.table
 
 
 def natural_key(s):

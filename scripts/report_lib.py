@@ -27,6 +27,34 @@ BENCHMARK_FIELDS = frozenset((
     "error_message", "big_o", "rms"))
 
 
+def fmt(x, digits=3):
+    """The one number format of the generated pages: `digits` significant digits, exponent form
+    outside [1e-3, 1e4)."""
+    if x is None:
+        return "-"
+    if isinstance(x, bool):
+        return "yes" if x else "no"
+    if isinstance(x, (int,)) and not isinstance(x, bool):
+        return str(x)
+    if isinstance(x, float):
+        if x != x:
+            return "nan"
+        if x == 0:
+            return "0"
+        if abs(x) >= 1e4 or abs(x) < 1e-3:
+            return f"{x:.{digits - 1}e}"
+        return f"{x:.{digits}g}"
+    return str(x)
+
+
+def table(headers, rows):
+    """A Markdown table; cells through fmt."""
+    out = ["| " + " | ".join(headers) + " |", "|" + "|".join("---" for _ in headers) + "|"]
+    for r in rows:
+        out.append("| " + " | ".join(fmt(c) for c in r) + " |")
+    return "\n".join(out)
+
+
 class ReportError(Exception):
     """A benchmark or record the vocabulary does not describe; the message names it."""
 
