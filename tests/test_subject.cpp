@@ -185,6 +185,20 @@ TEST(Subject, BadSubjectsAreNamed) {
     EXPECT_THAT(e.what(), HasSubstr("subject throws: eval(u = "));
     EXPECT_THAT(e.what(), HasSubstr("past my table"));
   }
+  // A NaN answer must not drop out of the max and pass the gate: it is an error naming it.
+  subject<2> nan_eval = exact_subject();
+  nan_eval.name = "nan_eval";
+  nan_eval.eval = [](double u) -> point<double, 2> {
+    return u > 1.5 ? point<double, 2>(std::numeric_limits<double>::quiet_NaN(), 0.0) : bent_at(u);
+  };
+  try {
+    (void)measure_spec(bent, nan_eval);
+    FAIL();
+  } catch (const invalid_input& e) {
+    EXPECT_THAT(e.what(), HasSubstr("subject nan_eval eval"));
+    EXPECT_THAT(e.what(), HasSubstr("column x"));
+    EXPECT_THAT(e.what(), HasSubstr("is not finite"));
+  }
   subject<2> outside = exact_subject();
   outside.name = "outside";
   outside.inverse = [](double) { return 2.5; };
