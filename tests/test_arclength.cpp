@@ -331,3 +331,54 @@ TEST(arclength, bad_input_is_rejected_with_clear_messages) {
   EXPECT_THROW((void)t.s(1.5), std::domain_error);
   EXPECT_THROW((void)al::composite_gauss_length(c, 0, al::gauss_legendre<double>(3)), cb::invalid_input);
 }
+
+namespace {
+
+// The curve c with every coordinate multiplied by 2^k: exact in binary arithmetic, so a method
+// whose arithmetic neither overflows nor underflows returns 2^k times its unscaled result, bit for bit.
+template <class C>
+struct scaled_by_power_of_two {
+  using real_type = typename C::real_type;
+  using point_type = typename C::point_type;
+  static constexpr int dimension = C::dimension;
+  C c;
+  int k;
+  [[nodiscard]] cb::interval<real_type> domain() const { return c.domain(); }
+  [[nodiscard]] point_type operator()(const real_type& u) const { return derivative(u, 0); }
+  [[nodiscard]] point_type derivative(const real_type& u, int order) const {
+    point_type p = c.derivative(u, order);
+    for (int d = 0; d < dimension; ++d) p[d] = std::ldexp(p[d], k);
+    return p;
+  }
+  [[nodiscard]] std::span<const real_type> breakpoints() const { return c.breakpoints(); }
+};
+
+}  // namespace
+
+// Issue 16: with coordinates near 1e200 the squared speed overflowed (length null, status
+// rounding_limited), near 1e-170 it underflowed (length 0, converged). Every length method must
+// scale exactly: 2^664 ~ 1e200 and 2^-565 ~ 1e-170 make the squares of speeds and chords leave
+// double's range, while the lengths themselves are far inside it.
+template <class C, class C50>
+void check_exact_scaling(const char* name, const C& plain, const C50& c50) {
+  const R length = reference_length(c50);
+  const std::vector<method_outcome> base = run_methods(plain, length);
+  for (const int k : {664, -565}) {
+    SCOPED_TRACE(std::string(name) + " scaled by 2^" + std::to_string(k));
+    const scaled_by_power_of_two<C> big{plain, k};
+    const std::vector<method_outcome> scaled = run_methods(big, R(ldexp(length, k)));
+    ASSERT_EQ(scaled.size(), base.size());
+    for (std::size_t i = 0; i < base.size(); ++i) {
+      SCOPED_TRACE(base[i].name);
+      EXPECT_EQ(scaled[i].r.value, std::ldexp(base[i].r.value, k));
+      EXPECT_EQ(scaled[i].r.status, base[i].r.status);
+      EXPECT_EQ(scaled[i].r.evaluations, base[i].r.evaluations);
+    }
+  }
+}
+
+TEST(arclength, lengths_scale_exactly_from_1e_minus_170_to_1e200) {
+  check_exact_scaling("smooth cubic", smooth_cubic<double>(), smooth_cubic<R>());
+  check_exact_scaling("near cusp", cusp_cubic<double>(1.0 / 1024), cusp_cubic<R>(1.0 / 1024));
+  check_exact_scaling("loop", looping_bezier<double>(), looping_bezier<R>());
+}

@@ -39,11 +39,7 @@ struct subdivider {
   const subdivision_options<Real>& opt;
   quadrature_result<Real> out{};
 
-  static Real dist(const P& a, const P& b) {
-    using std::sqrt;
-    const P d = b - a;
-    return sqrt(d.squaredNorm());
-  }
+  static Real dist(const P& a, const P& b) { return safe_norm(P(b - a)); }
 
   // Length of [a, b] with end points pa, pb; tol is this interval's share.
   void run(const Real& a, const Real& b, const P& pa, const P& pb, const Real& tol, int depth) {

@@ -32,7 +32,6 @@ class forward_difference_table {
   template <curve C>
     requires std::same_as<typename C::real_type, Real>
   forward_difference_table(const C& c, std::size_t steps_per_segment) : steps_(steps_per_segment) {
-    using std::sqrt;
     if (steps_per_segment < 1)
       validate::fail("steps_per_segment = " + std::to_string(steps_per_segment) + ": must be >= 1");
     const std::span<const Real> bp = c.breakpoints();
@@ -53,15 +52,15 @@ class forward_difference_table {
         ++evaluations_;
         const typename C::point_type d = p - prev;
         u_.push_back(u);
-        s_.push_back(s_.back() + Real(sqrt(d.squaredNorm())));
+        s_.push_back(s_.back() + safe_norm(d));
         if (k % 2 == 0) {
           const typename C::point_type e = p - even;
-          coarse += sqrt(e.squaredNorm());
+          coarse += safe_norm(e);
           even = p;
         }
         if (k % 4 == 0) {
           const typename C::point_type e = p - fourth;
-          coarser += sqrt(e.squaredNorm());
+          coarser += safe_norm(e);
           fourth = p;
         }
         prev = p;

@@ -29,12 +29,11 @@
 
 namespace curvebench::arclength {
 
-/// |P'(u)|, the speed of the curve at u (one derivative evaluation).
+/// |P'(u)|, the speed of the curve at u (one derivative evaluation), without overflow or underflow
+/// of the squares (safe_norm): finite for every finite P'(u).
 template <curve C>
 [[nodiscard]] typename C::real_type speed(const C& c, const typename C::real_type& u) {
-  using std::sqrt;
-  const typename C::point_type d = c.derivative(u, 1);
-  return sqrt(d.squaredNorm());
+  return safe_norm(typename C::point_type(c.derivative(u, 1)));
 }
 
 /// How a fixed Gauss-Legendre length estimates its error.

@@ -64,6 +64,9 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(const C& c, con
                                                                  std::size_t& evaluations) {
   using Real = typename C::real_type;
   using std::abs;
+  using std::frexp;
+  using std::ldexp;
+  using std::max;
   using std::sqrt;
   std::vector<speed_minimum<Real>> out{{a, Real(0)}};
   speed_minimum<Real> end_b{b, Real(0)};
@@ -72,13 +75,29 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(const C& c, con
     return out;
   }
   std::vector<Real> us(samples + 1), g(samples + 1);
-  Real gmax(0);
+  std::vector<typename C::point_type> d1s(samples + 1);
+  // |P'|^2 and its derivatives are compared only with each other, so every derivative is scaled by
+  // one power of two near 1 / max|P'|: exact, and the squares neither overflow (|P'| > 1e154 in
+  // double) nor underflow (|P'| < 1e-154).
+  Real dmax(0);
   for (std::size_t k = 0; k <= samples; ++k) {
     us[k] = k == samples ? b : a + (b - a) * Real(static_cast<long long>(k)) / Real(static_cast<long long>(samples));
-    g[k] = c.derivative(us[k], 1).squaredNorm();
-    gmax = g[k] > gmax ? g[k] : gmax;
+    d1s[k] = c.derivative(us[k], 1);
+    dmax = max(dmax, Real(d1s[k].cwiseAbs().maxCoeff()));
   }
   evaluations += samples + 1;
+  int scale_exp = 0;
+  if (dmax > Real(0) && is_finite(dmax)) (void)frexp(dmax, &scale_exp);
+  auto scaled = [&](const typename C::point_type& d) -> typename C::point_type {
+    typename C::point_type s;
+    for (int i = 0; i < s.size(); ++i) s[i] = ldexp(d[i], -scale_exp);
+    return s;
+  };
+  Real gmax(0);
+  for (std::size_t k = 0; k <= samples; ++k) {
+    g[k] = scaled(d1s[k]).squaredNorm();
+    gmax = g[k] > gmax ? g[k] : gmax;
+  }
   if (!(gmax > Real(0))) {
     out.push_back(end_b);
     return out;
@@ -91,9 +110,9 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(const C& c, con
   auto refine = [&](Real x, const Real& lo, const Real& hi) {
     speed_model<Real> m{x, Real(0), Real(0), Real(-1)};
     for (int it = 0; it < 30; ++it) {
-      const typename C::point_type d1 = c.derivative(x, 1);
-      const typename C::point_type d2 = c.derivative(x, 2);
-      const typename C::point_type d3 = c.derivative(x, 3);
+      const typename C::point_type d1 = scaled(c.derivative(x, 1));
+      const typename C::point_type d2 = scaled(c.derivative(x, 2));
+      const typename C::point_type d3 = scaled(c.derivative(x, 3));
       evaluations += 3;
       m = {x, d1.squaredNorm(), d1.dot(d2), d2.squaredNorm() + d1.dot(d3)};
       if (!(m.dh > Real(0))) break;
