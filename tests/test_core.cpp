@@ -8,6 +8,8 @@
 #include <gmock/gmock.h>
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace cb = curvebench;
@@ -148,4 +150,71 @@ TEST(core, any_curve_wraps_and_satisfies_the_concept) {
   EXPECT_EQ(named.family(), "unit circle");
   EXPECT_EQ(a.family(), "circle");
   EXPECT_EQ(named(0.3), a(0.3));
+}
+
+// safe_norm (core/point.hpp): |v| for coordinates whose squares overflow or underflow, against the
+// closed form sqrt(61) 2^e in real50 (correctly rounded to within half an ulp of real50 itself).
+// Each coordinate is a power of two times a small integer, exact in every Real, so only safe_norm's
+// own rounding is measured: the sum of Dim scaled squares and one root, within (Dim / 2 + 1) eps
+// relative; 3 ulps covers Dim = 3 with room for the reference's own rounding when Real is real50.
+template <class Real>
+class safe_norm_test : public ::testing::Test {};
+TYPED_TEST_SUITE(safe_norm_test, cb::testing::all_reals);
+
+TYPED_TEST(safe_norm_test, matches_real50_from_underflow_to_overflow) {
+  using Real = TypeParam;
+  using std::ldexp;
+  const int emax = std::numeric_limits<Real>::max_exponent, emin = std::numeric_limits<Real>::min_exponent;
+  // Exponents from just above the smallest normal to just below the largest finite value: the
+  // plain sqrt(v . v) is 0, subnormal or inf at both ends for the IEEE types.
+  for (const int e : {emin + 2, emin / 2 - 3, emin / 2, -20, 0, 20, emax / 2, emax / 2 + 3, emax - 3}) {
+    // (3, -4, 6) 2^e, exact in every Real: |v| = sqrt(61) 2^e.
+    cb::point<Real, 3> v(ldexp(Real(3), e), ldexp(Real(-4), e), ldexp(Real(12), e - 1));
+    using std::sqrt;
+    // Compared as got / 2^e (exact) with sqrt(61): the distance in ulps of a value near real50's own
+    // range limits would itself underflow.
+    const cb::real50 ref = sqrt(cb::real50(61));
+    const Real got = cb::safe_norm(v);
+    EXPECT_TRUE(cb::is_finite(got)) << "exponent " << e;
+    EXPECT_TRUE(cb::testing::within_ulps(Real(ldexp(got, -e)), ref, 3.0)) << "exponent " << e;
+  }
+  EXPECT_EQ(cb::safe_norm(cb::point<Real, 2>(Real(0), Real(0))), Real(0));
+  const Real inf = std::numeric_limits<Real>::infinity();
+  EXPECT_FALSE(cb::is_finite(cb::safe_norm(cb::point<Real, 2>(inf, Real(1)))));
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  EXPECT_FALSE(cb::is_finite(cb::safe_norm(cb::point<Real, 2>(Real(1), nan))));
+}
+
+TEST(core, plain_norm_fails_where_safe_norm_does_not) {
+  // The reason safe_norm exists: in double the squares of 1e200 overflow and those of 1e-170 vanish.
+  const cb::point<double, 2> big(3e200, 4e200), tiny(3e-170, 4e-170);
+  EXPECT_FALSE(std::isfinite(big.norm()));
+  EXPECT_EQ(tiny.norm(), 0.0);
+  EXPECT_TRUE(cb::testing::within_ulps(cb::safe_norm(big), cb::real50("5e200"), 2.0));
+  EXPECT_TRUE(cb::testing::within_ulps(cb::safe_norm(tiny), cb::real50("5e-170"), 2.0));
+}
+
+// validate::resolvable: a span must hold 2^16 representable parameters around its ends.
+TEST(core, unresolvable_spans_are_refused_with_their_values) {
+  const double one_ulp = std::nextafter(1.0, 2.0);
+  try {
+    cb::validate::increasing<double>("knots", std::vector<double>{0.0, 1.0, one_ulp});
+    FAIL() << "a span of one ulp was accepted";
+  } catch (const cb::invalid_input& e) {
+    EXPECT_THAT(e.what(), HasSubstr("knots[2] - knots[1] = 2.2204460492503131e-16"));
+    EXPECT_THAT(e.what(), HasSubstr("too narrow"));
+  }
+  // 2^16 ulps of 1 is the smallest span accepted there; one ulp less is refused.
+  const double need = std::ldexp(std::numeric_limits<double>::epsilon(), 16);
+  EXPECT_NO_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1.0 - need, 1.0}));
+  EXPECT_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1.0, 1.0 + need / 2}), cb::invalid_input);
+  // Far from 0 the same width is narrower in ulps: [1e9, 1e9 + 1] holds 2^23 doubles, [1e15, 1e15 + 1] only 8.
+  EXPECT_NO_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1e9, 1e9 + 1}));
+  EXPECT_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1e15, 1e15 + 1}), cb::invalid_input);
+  // Tiny spans near 0 are resolvable (1e-300 holds many doubles); multiplicity (zero spans) is allowed.
+  EXPECT_NO_THROW(cb::validate::increasing<double>("knots", std::vector<double>{0.0, 1e-300, 1.0}));
+  EXPECT_NO_THROW(cb::validate::non_decreasing<double>("knots", std::vector<double>{0.0, 0.0, 1.0, 1.0}));
+  EXPECT_THROW(cb::validate::non_decreasing<double>("knots", std::vector<double>{0.0, 1.0, one_ulp}), cb::invalid_input);
+  // real50 resolves the double data that double cannot: the check is per precision.
+  EXPECT_NO_THROW(cb::validate::increasing<cb::real50>("knots", std::vector<cb::real50>{1, cb::real50(one_ulp)}));
 }

@@ -95,6 +95,26 @@ void in_range(std::string_view name, const Real& value, const Real& lo, const Re
   fail(indexed(name, index) + " = " + to_text(value) + ": must be in [" + to_text(lo) + ", " + to_text(hi) + "]");
 }
 
+/// The fewest representable parameters a parameter span [lo, hi] must hold (2^16): then the local
+/// parameter t = (u - lo) / (hi - lo) has at least 16 bits, and every method can place distinct
+/// nodes in it. A narrower span (a domain one ulp wide, [1e15, 1e15 + 1] in double) cannot be
+/// sampled: its nodes collapse onto its ends and any length or inverse computed there is garbage.
+inline constexpr int min_span_bits = 16;
+
+/// hi - lo >= 2^min_span_bits ulps of max(|lo|, |hi|) (lo < hi finite assumed): "knots[1] - knots[0]
+/// = 2.2e-16 is too narrow to be resolved in double around 1: at least 1.5e-11 (2^16 ulps) is needed".
+template <class Real>
+void resolvable(const std::string& span, const Real& lo, const Real& hi) {
+  using std::abs;
+  using std::ldexp;
+  const Real big = abs(lo) > abs(hi) ? abs(lo) : abs(hi);
+  const Real need = ldexp(big * epsilon<Real>(), min_span_bits);
+  if (hi - lo >= need) return;
+  fail(span + " = " + to_text(Real(hi - lo)) + " is too narrow to be resolved around " + to_text(big) +
+       ": at least " + to_text(need) + " (2^" + std::to_string(min_span_bits) +
+       " units in the last place) is needed, so that the parameter can be sampled inside it");
+}
+
 /// Finite and strictly increasing: "knots must be increasing: knots[3] = 0.5 <= knots[2] = 0.7".
 template <class Real>
 void increasing(std::string_view name, std::span<const Real> values) {
@@ -103,6 +123,7 @@ void increasing(std::string_view name, std::span<const Real> values) {
     if (i > 0 && !(values[i] > values[i - 1]))
       fail(std::string(name) + " must be increasing: " + indexed(name, i) + " = " + to_text(values[i]) +
            " <= " + indexed(name, i - 1) + " = " + to_text(values[i - 1]));
+    if (i > 0) resolvable(indexed(name, i) + " - " + indexed(name, i - 1), values[i - 1], values[i]);
   }
 }
 
@@ -114,6 +135,8 @@ void non_decreasing(std::string_view name, std::span<const Real> values) {
     if (i > 0 && values[i] < values[i - 1])
       fail(std::string(name) + " must be non-decreasing: " + indexed(name, i) + " = " + to_text(values[i]) +
            " < " + indexed(name, i - 1) + " = " + to_text(values[i - 1]));
+    if (i > 0 && values[i] > values[i - 1])
+      resolvable(indexed(name, i) + " - " + indexed(name, i - 1), values[i - 1], values[i]);
   }
 }
 

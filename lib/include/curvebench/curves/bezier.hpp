@@ -44,13 +44,14 @@ enum class bezier_algorithm { de_casteljau, bernstein_sum, horner };
 
 namespace detail {
 
-/// Validates a curve domain: finite ends with lo < hi.
+/// Validates a curve domain: finite ends with lo < hi, wide enough to be resolved (validate::resolvable).
 template <class Real>
 void check_bezier_domain(std::string_view name, const interval<Real>& d) {
   validate::finite(std::string(name) + ".lo", d.lo);
   validate::finite(std::string(name) + ".hi", d.hi);
   if (!(d.lo < d.hi))
     validate::fail(std::string(name) + " = [" + to_text(d.lo) + ", " + to_text(d.hi) + "]: must have lo < hi");
+  validate::resolvable(std::string(name) + " width", d.lo, d.hi);
 }
 
 }  // namespace detail
