@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <initializer_list>
 #include <limits>
@@ -265,7 +266,12 @@ class strict_builder {
     return true;
   }
 
-  bool parse_error(std::size_t /*position*/, const std::string& /*last_token*/, const json::exception& e) {
+  bool parse_error(std::size_t /*position*/, const std::string& last_token, const json::exception& e) {
+    // 406: a number beyond double's range (1e400); named by its path and as written, not as a
+    // syntax error of the whole file.
+    if (e.id == 406)
+      throw spec_error(value_path() + ": the number " + cut(last_token, 40) +
+                       " is beyond double's range (magnitudes up to about 1.8e308)");
     // e.what() holds the line, column and the last token read, which can be a whole 10 MB string.
     throw spec_error(std::string(source_) + ": not valid JSON: " + cut(e.what(), 300));
   }
@@ -298,6 +304,15 @@ class strict_builder {
       throw spec_error(path() + ": JSON nested more than " + std::to_string(max_nesting_depth) +
                        " levels deep (the limit; no spec needs more than a few)");
     return true;
+  }
+
+  /// The path of the value about to be stored: the innermost open container's path and the value's
+  /// index or key in it.
+  [[nodiscard]] std::string value_path() const {
+    if (open_.empty()) return std::string(source_);
+    const frame& top = open_.back();
+    if (top.value->is_array()) return path() + "[" + std::to_string(top.value->size()) + "]";
+    return path() + "." + cut(top.key, 40);
   }
 
   /// The path of the innermost open container.

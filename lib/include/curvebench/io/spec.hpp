@@ -17,10 +17,12 @@
 #include "curvebench/io/json_fields.hpp"
 #include "curvebench/io/registry.hpp"
 
+#include <cmath>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace curvebench::io {
@@ -91,6 +93,25 @@ json resolve(const field& spec) {
 }  // namespace detail
 
 /// The curve a spec describes, in Real and Dim (Dim must equal spec_dimension(spec)).
+namespace detail {
+
+/// The path and |value| of the number of largest magnitude in a JSON value (0 and the path when it
+/// holds none). JSON values here are at most max_nesting_depth deep, so the recursion is bounded.
+inline std::pair<std::string, double> largest_number(const json& v, const std::string& path) {
+  std::pair<std::string, double> best{path, 0.0};
+  auto consider = [&](const std::pair<std::string, double>& p) {
+    if (p.second > best.second) best = p;
+  };
+  if (v.is_number()) return {path, std::abs(v.get<double>())};
+  if (v.is_array())
+    for (std::size_t i = 0; i < v.size(); ++i) consider(largest_number(v[i], path + "[" + std::to_string(i) + "]"));
+  if (v.is_object())
+    for (const auto& [k, m] : v.items()) consider(largest_number(m, path + "." + cut(k, 40)));
+  return best;
+}
+
+}  // namespace detail
+
 template <class Real, int Dim>
 [[nodiscard]] any_curve<Real, Dim> curve_from_spec(const field& spec) {
   const std::string type = spec.member("type").string();
@@ -108,7 +129,16 @@ template <class Real, int Dim>
   } catch (const spec_error&) {
     throw;
   } catch (const invalid_input& e) {  // a family's own validation: say which spec it came from
-    throw spec_error(spec.path + " (type \"" + type + "\"): " + e.what());
+    std::string what = e.what();
+    // The spec's numbers are all finite (io::parse refuses others), so a non-finite value in the
+    // message is one the family computed (a tangent, a slope, a weight): name the data it came from.
+    if (what.find("= inf") != std::string::npos || what.find("= -inf") != std::string::npos ||
+        what.find("= nan") != std::string::npos || what.find("= -nan") != std::string::npos) {
+      const auto [where, value] = detail::largest_number(spec.value, spec.path);
+      what += " (a value computed from the spec's data overflowed double; its largest number is " +
+              to_text(value) + " at " + where + ")";
+    }
+    throw spec_error(spec.path + " (type \"" + type + "\"): " + what);
   }
 }
 
