@@ -80,6 +80,7 @@ json run_case(const case_info& c, bool quick) {
 
 int run_accuracy(const accuracy_options& opt) {
   const auto t0 = std::chrono::steady_clock::now();
+  check_results_path(opt.out);  // before minutes of work, not after
   std::vector<case_info> all = load_cases(opt.cases_dir);
   std::vector<case_info> cases;
   for (auto& c : all)

@@ -9,14 +9,47 @@
 
 namespace curvebench::harness {
 
+namespace fs = std::filesystem;
+
 void write_atomic(const std::string& path, const std::string& text) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw invalid_input("--out " + path + ": is a directory, not a file");
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp);
-    if (!out) throw invalid_input("--out " + path + ": cannot be written");
+    if (!out) throw invalid_input("--out " + path + ": cannot be written (" + tmp + " cannot be created)");
     out << text;
+    out.flush();
+    if (!out) {
+      out.close();
+      fs::remove(tmp, ec);
+      throw invalid_input("--out " + path + ": writing failed (disk full?)");
+    }
   }
-  std::filesystem::rename(tmp, path);
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw invalid_input("--out " + path + ": cannot be written (" + ec.message() + ")");
+  }
+}
+
+void check_results_path(const std::string& path) {
+  if (path.empty()) throw invalid_input("--out: an empty path");
+  const fs::path parent = fs::path(path).parent_path();
+  std::error_code ec;
+  fs::create_directories(parent.empty() ? fs::path(".") : parent, ec);
+  if (ec) throw invalid_input("--out " + path + ": its directory cannot be created (" + ec.message() + ")");
+  for (const std::string& p : {path, csv_path(path)}) {
+    if (fs::is_directory(p, ec)) throw invalid_input("--out " + path + ": " + p + " is a directory, not a file");
+    const std::string probe = p + ".tmp";
+    const bool existed = fs::exists(probe, ec);
+    {
+      std::ofstream out(probe, std::ios::app);
+      if (!out) throw invalid_input("--out " + path + ": " + p + " cannot be written");
+    }
+    if (!existed) fs::remove(probe, ec);
+  }
 }
 
 std::string records_csv(const nlohmann::json& records) {

@@ -1,6 +1,8 @@
 // The tool's shared helpers (tool/tool.hpp): files, the default directories, the version line.
 #include "tool/tool.hpp"
 
+#include "harness/csv.hpp"
+
 #include "curvebench_version.hpp"  // generated at build time by cmake/version_header.cmake
 
 #include <filesystem>
@@ -48,6 +50,30 @@ std::string default_thresholds() {
 }
 
 std::string version_line() { return std::string("curvebench ") + CURVEBENCH_VERSION + " (" + CURVEBENCH_REVISION + ")"; }
+
+CLI::Validator positive_finite() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0;
+        if (harness::parse_finite(text, v) && v > 0) return {};
+        return harness::quote_cell(text) + " is not a finite number > 0";
+      },
+      "POSITIVE");
+}
+
+std::string non_finite_cause(std::span<const double> breakpoints, double largest_coordinate) {
+  std::string why = "domain [" + to_text(breakpoints.front()) + ", " + to_text(breakpoints.back()) + "]";
+  std::size_t narrow = 0;
+  for (std::size_t i = 1; i + 1 < breakpoints.size(); ++i)
+    if (breakpoints[i + 1] - breakpoints[i] < breakpoints[narrow + 1] - breakpoints[narrow]) narrow = i;
+  if (breakpoints.size() > 2)
+    why += ", narrowest segment [" + to_text(breakpoints[narrow]) + ", " + to_text(breakpoints[narrow + 1]) +
+           "] (breakpoints " + std::to_string(narrow) + " and " + std::to_string(narrow + 1) + ")";
+  why += ", largest |coordinate| at the breakpoints " + to_text(largest_coordinate);
+  why += ": coordinates, their differences or the derivatives (which grow like 1/h^k on a span of width h) "
+         "exceed double's range of about 1.8e308";
+  return why;
+}
 
 std::string example(const std::string& command) { return "\nExample:\n  " + command + "\n"; }
 

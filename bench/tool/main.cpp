@@ -84,6 +84,7 @@ void length(const cb::io::field& spec, const length_args& a) {
   } else {
     throw cb::invalid_input("--method " + a.method + ": not a length method");
   }
+  tool::require_finite(r.value, spec.path + ": length (" + a.method + ")", c);
   nlohmann::json j{{"method", a.method},
                    {"value", r.value},
                    {"error_estimate", std::isfinite(r.error_estimate) ? nlohmann::json(r.error_estimate) : nlohmann::json()},
@@ -96,6 +97,10 @@ void length(const cb::io::field& spec, const length_args& a) {
 
 int main(int argc, char** argv) {
   CLI::App app{"curvebench: accuracy and speed of keyframe-animation curves"};
+  // Usage errors keep CLI11's exit codes but carry the same prefix as every other error.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("curvebench: error: ") + e.what() + "\nRun with --help for more information.\n";
+  });
   app.require_subcommand(0, 1);
   bool version = false;
   app.add_flag("--version", version, "print the version and the git revision the tool was built from");
@@ -124,7 +129,7 @@ int main(int argc, char** argv) {
   std::string length_help;
   for (const auto& id : length_ids) length_help += (length_help.empty() ? "" : ", ") + id;
   len->add_option("--method", la.method, length_help)->check(CLI::IsMember(length_ids));
-  len->add_option("--tol", la.tol, "tolerance (adaptive: relative; subdivision: absolute)")->check(CLI::PositiveNumber);
+  len->add_option("--tol", la.tol, "tolerance (adaptive: relative; subdivision: absolute)")->check(tool::positive_finite());
   len->add_option("--n", la.n, "Gauss points per panel")->check(CLI::Range(1, 200));
   len->add_option("--panels", la.panels, "panels per segment (composite_gauss)")->check(CLI::Range(1, 1000000));
   len->add_option("--steps", la.steps, "table steps per segment (forward_difference)")->check(CLI::Range(1, 10000000));

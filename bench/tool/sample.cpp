@@ -191,7 +191,14 @@ void sample(const io::field& spec, const sample_args& a) {
   // Runge), and s(u) is then the segment lengths plus one adaptive integral.
   opt.method = given.empty() ? parse_inversion(a.method) : al::inversion_method::newton;
   opt.newton_polish = a.polish;
-  const al::parameterization<any_curve<double, Dim>> param(c, opt);
+  // The parameterization's errors (a curve of length 0, or one not representable) name the spec.
+  const al::parameterization<any_curve<double, Dim>> param = [&] {
+    try {
+      return al::parameterization<any_curve<double, Dim>>(c, opt);
+    } catch (const invalid_input& e) {
+      throw invalid_input(spec.path + ": " + e.what());
+    }
+  }();
   const auto dom = c.domain();
   for (const parameter& p : given)
     if (!(dom.lo <= p.u && p.u <= dom.hi)) {
@@ -224,11 +231,17 @@ void sample(const io::field& spec, const sample_args& a) {
       u = param.u(s);
     }
     const point<double, Dim> p = c(u);
+    const std::string row = spec.path + ": row " + std::to_string(i + 1) + " (u = " + to_text(u) + ")";
+    require_finite(s, row + ": s", c);
+    for (int d = 0; d < Dim; ++d) require_finite(p[d], row + ": " + names[d], c);
     std::cout << u << "," << s;
     for (int d = 0; d < Dim; ++d) std::cout << "," << p[d];
     for (int k = 1; k <= a.derivatives; ++k) {
       const point<double, Dim> dp = c.derivative(u, k);
-      for (int d = 0; d < Dim; ++d) std::cout << "," << dp[d];
+      for (int d = 0; d < Dim; ++d) {
+        require_finite(dp[d], row + ": derivative " + std::to_string(k) + " " + names[d], c);
+        std::cout << "," << dp[d];
+      }
     }
     std::cout << "\n";
   }

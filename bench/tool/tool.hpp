@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -41,8 +43,33 @@ std::string default_thresholds();
 /// "curvebench 0.1.0 (abc1234)": the project version and the git revision the binary was built from.
 std::string version_line();
 
+/// A CLI11 check: a finite number > 0, subnormals included (CLI::PositiveNumber starts at the
+/// smallest normal double, 2.2e-308, and prints that bound with all its digits).
+CLI::Validator positive_finite();
+
 /// The footer of a subcommand's --help: one example.
 std::string example(const std::string& command);
+
+/// Why a result of `curve` in double is not finite, in the user's terms: the curve's domain, its
+/// narrowest breakpoint span and its largest |coordinate| on the breakpoints, which say whether the
+/// data exceed double's range (coordinates or derivatives past ~1e308; knot spans so narrow that
+/// 1/h^k overflows).
+std::string non_finite_cause(std::span<const double> breakpoints, double largest_coordinate);
+
+/// Throws invalid_input "WHAT = nan: not representable in double (CAUSE)" unless `value` is finite:
+/// the tool never prints a non-finite number as a result with exit code 0.
+template <class Curve>
+void require_finite(double value, const std::string& what, const Curve& c) {
+  if (std::isfinite(value)) return;
+  double largest = 0;
+  for (const double u : c.breakpoints()) {
+    const auto p = c(u);
+    for (int d = 0; d < p.size(); ++d)
+      if (!(std::abs(p[d]) <= largest)) largest = std::abs(p[d]);  // NaN is kept
+  }
+  throw invalid_input(what + " = " + to_text(value) + ": the result is not representable in double (" +
+                      non_finite_cause(c.breakpoints(), largest) + ")");
+}
 
 // ---- sample (sample.cpp) ------------------------------------------------------------------------
 
