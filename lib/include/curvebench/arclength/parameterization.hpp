@@ -71,6 +71,9 @@ class parameterization {
     adaptive_options<Real> seg_opt = segment_lengths<Real>::default_options();
     seg_opt.gauss_points = opt_.newton.gauss_points;
     segments_ = segment_lengths<Real>(curve_, seg_opt);
+    if (!is_finite(segments_.length()))
+      validate::fail("curve length = " + to_text(segments_.length()) +
+                     ": not representable in this precision (the curve's coordinates or derivatives overflow)");
     if (!(segments_.length() > Real(0)))
       validate::fail("curve length = " + to_text(segments_.length()) +
                      ": an arc-length parameterization needs a curve of positive length");
