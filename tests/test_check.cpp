@@ -237,6 +237,30 @@ TEST(check, bad_columns_and_parameters_name_file_row_column_and_value) {
   EXPECT_THAT(msg("x,y\n0,0\n"), HasSubstr("no column u"));
 }
 
+// A fuzz finding of issue 16: the check core echoed every column name of a header in full (a 100 kB
+// name, or 20000 names, became a message of that size). Names are cut at 40 characters, lists at 12.
+TEST(check, column_errors_are_bounded_however_long_the_header) {
+  const spec_doc s(arch);
+  const auto msg = [&](const std::string& text) {
+    return error_of([&] { (void)run_check(s.f, check_kind::values, parse_csv(text, "v.csv")); });
+  };
+  const std::string long_name(100000, 'q');
+  const std::string unknown = msg("u,x,y," + long_name + "\n0.5,1,1,1\n");
+  EXPECT_THAT(unknown, HasSubstr("column qqqq"));
+  EXPECT_THAT(unknown, HasSubstr("unknown column"));
+  EXPECT_LT(unknown.size(), 400u);
+  std::string many = "u,x";
+  std::string row = "0.5,1";
+  for (int i = 0; i < 20000; ++i) {
+    many += ",c" + std::to_string(i);
+    row += ",0";
+  }
+  const std::string missing = msg(many + "\n" + row + "\n");
+  EXPECT_THAT(missing, HasSubstr("no column y"));
+  EXPECT_THAT(missing, HasSubstr("(20002 columns)"));
+  EXPECT_LT(missing.size(), 400u);
+}
+
 // ---- lengths and inverse -------------------------------------------------------------------------
 
 TEST(check, lengths_against_the_polylines_exact_segments) {

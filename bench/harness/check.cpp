@@ -32,9 +32,16 @@ std::string num(double x, int digits = 17) {
 /// "d" for order 1, "d2", "d3" for higher: the prefix of `sample --derivatives`'s columns.
 std::string derivative_prefix(int order) { return order == 1 ? "d" : "d" + std::to_string(order); }
 
+/// A column name for a message, cut at 40 characters (a 100 kB name is not echoed whole).
+std::string column_name(const std::string& name) { return name.size() <= 40 ? name : name.substr(0, 37) + "..."; }
+
+/// The names joined by commas, each cut by column_name, at most 12 of them: a header of 20000
+/// columns must not become a message of that size.
 std::string column_list(const std::vector<std::string>& names) {
+  constexpr std::size_t shown = 12;
   std::string s;
-  for (const auto& n : names) s += (s.empty() ? "" : ",") + n;
+  for (std::size_t i = 0; i < names.size() && i < shown; ++i) s += (i == 0 ? "" : ",") + column_name(names[i]);
+  if (names.size() > shown) s += ", ... (" + std::to_string(names.size()) + " columns)";
   return s;
 }
 
@@ -51,7 +58,7 @@ std::size_t need(const csv_table& t, const std::string& name, const std::string&
 void only(const csv_table& t, const std::vector<std::string>& allowed, const std::string& kind) {
   for (const auto& c : t.columns)
     if (std::find(allowed.begin(), allowed.end(), c) == allowed.end())
-      throw invalid_input(t.file + ": row 1 (the header), column " + c + ": unknown column; " + kind +
+      throw invalid_input(t.file + ": row 1 (the header), column " + column_name(c) + ": unknown column; " + kind +
                           " takes the columns " + column_list(allowed));
 }
 
