@@ -15,6 +15,8 @@
 //   finite length                each length method's value is finite and >= 0
 //   estimate is a number         no error estimate is NaN or negative
 //   converged means bounded      a converged result has a finite error estimate
+//   length at least the chord    a length plus its (finite) estimate is at least the polygon
+//                                through P at the 9 parameters (64 ulps of rounding allowed)
 //   converged estimates agree    two converged lengths differ by at most the sum of their
 //                                estimates plus 64 ulps of the length (else one estimate lies)
 //   s(u) finite and in [0, L]    at 9 parameters (a relative 1e-9 of L outside is allowed: s(u)
@@ -144,10 +146,12 @@ void check_curve(const any_curve<double, Dim>& built) {
   const bool measure = segments <= max_segments;
 
   m->begin("evaluation");
+  std::vector<point<double, Dim>> ps;  // P at us, for the chord property
   run_step(name, "evaluation", domain_errors::violation, [&] {
     for (double u : us)
       for (int order = 0; order <= 2; ++order) {
         const point<double, Dim> p = order == 0 ? c(u) : c.derivative(u, order);
+        if (order == 0) ps.push_back(p);
         for (int i = 0; i < Dim; ++i)
           if (!std::isfinite(p[i]))
             violation(name, "finite evaluation",
@@ -178,6 +182,18 @@ void check_curve(const any_curve<double, Dim>& built) {
   length_step("forward_difference", [&] { return al::forward_difference_table<double>(c, 64).length(); });
   length_step("richardson", [&] { return al::forward_difference_table<double>(c, 64).richardson_length(); });
   length_step("subdivision", [&] { return al::subdivision_length(c, al::subdivision_options<double>{}); });
+  // The polygon through P(us) is never longer than the curve: a length (with its estimate) below
+  // it is wrong, whatever its status says. stableNorm: the chords of 1e-170 coordinates must not
+  // underflow to 0 as the lengths do.
+  double chord = 0;
+  for (std::size_t k = 0; k + 1 < ps.size(); ++k) chord += (ps[k + 1] - ps[k]).stableNorm();
+  if (std::isfinite(chord))
+    for (const auto& [method, r] : lengths)
+      if (std::isfinite(r.error_estimate) &&
+          r.value + r.error_estimate < chord * (1 - 64 * std::numeric_limits<double>::epsilon()))
+        violation(name, "length at least the chord",
+                  method + ": value " + num(r.value) + " + estimate " + num(r.error_estimate) + " < chord " +
+                      num(chord) + " through 9 points (status " + std::string(al::to_string(r.status)) + ")");
   for (std::size_t i = 0; i < lengths.size(); ++i)
     for (std::size_t j = i + 1; j < lengths.size(); ++j) {
       const auto& [ni, a] = lengths[i];
