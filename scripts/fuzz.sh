@@ -23,7 +23,7 @@ seconds=600
 targets=()
 for arg in "$@"; do
   case "$arg" in
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
     spec|gate|csv) targets+=("$arg") ;;
     *)
       if [[ "$arg" =~ ^[0-9]+$ && "$arg" -gt 0 ]]; then seconds=$arg
