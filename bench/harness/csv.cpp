@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <unordered_map>
 
 namespace curvebench::harness {
 
@@ -28,6 +29,14 @@ std::vector<std::string_view> split(std::string_view line) {
     start = comma + 1;
   }
   return cells;
+}
+
+/// A column name as messages show it: as written, cut to 40 characters ("..." appended), so that a
+/// megabyte-long name does not become a megabyte-long message.
+std::string shown_column(std::string_view name) {
+  constexpr std::size_t max = 40;
+  if (name.size() <= max) return std::string(name);
+  return std::string(name.substr(0, max)) + "...";
 }
 
 }  // namespace
@@ -58,7 +67,7 @@ std::size_t csv_table::column(std::string_view name) const {
 
 std::string csv_table::where(std::size_t r, std::size_t c) const {
   std::string w = file + ": row " + std::to_string(lines.at(r));
-  if (c != npos) w += ", column " + columns.at(c);
+  if (c != npos) w += ", column " + shown_column(columns.at(c));
   return w;
 }
 
@@ -67,6 +76,7 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
   t.file = file;
   std::size_t line_no = 0, pos = 0;
   bool header = false;
+  std::unordered_map<std::string_view, std::size_t> seen;  // header name -> column index (the text outlives it)
   while (pos < text.size()) {
     const auto nl = text.find('\n', pos);
     const std::string_view line = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
@@ -83,17 +93,18 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
         if (parse_finite(cells[c], ignored))
           throw invalid_input(row_name + " (the header), column " + std::to_string(c + 1) + ": " +
                               quote_cell(cells[c]) + " is a number, not a column name: the first row names the columns");
-        for (std::size_t p = 0; p < c; ++p)
-          if (cells[p] == cells[c])
-            throw invalid_input(row_name + " (the header), column " + std::to_string(c + 1) + ": column " +
-                                quote_cell(cells[c]) + " appears twice");
+        // A hash of the names seen, not a scan of the earlier ones: a header of 1e5 columns took
+        // minutes when each name was compared with every one before it.
+        if (!seen.emplace(cells[c], c).second)
+          throw invalid_input(row_name + " (the header), column " + std::to_string(c + 1) + ": column " +
+                              quote_cell(cells[c]) + " appears twice");
         t.columns.emplace_back(cells[c]);
       }
       header = true;
       continue;
     }
     if (cells.size() < t.columns.size())
-      throw invalid_input(row_name + ", column " + t.columns[cells.size()] + ": missing value (" +
+      throw invalid_input(row_name + ", column " + shown_column(t.columns[cells.size()]) + ": missing value (" +
                           std::to_string(cells.size()) + " values, but the header names " +
                           std::to_string(t.columns.size()) + " columns: " + quote_cell(trim(line)) + ")");
     if (cells.size() > t.columns.size())
@@ -103,7 +114,7 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
     std::vector<double> row(cells.size());
     for (std::size_t c = 0; c < cells.size(); ++c)
       if (!parse_finite(cells[c], row[c]))
-        throw invalid_input(row_name + ", column " + t.columns[c] + ": " + quote_cell(cells[c]) +
+        throw invalid_input(row_name + ", column " + shown_column(t.columns[c]) + ": " + quote_cell(cells[c]) +
                             " is not a finite number");
     t.rows.push_back(std::move(row));
     t.lines.push_back(line_no);

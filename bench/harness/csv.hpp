@@ -3,6 +3,8 @@
 // throws invalid_input naming the file, the row (its 1-based line number, as an editor shows it),
 // the column and the cell's text: a non-numeric cell ("1.5x", "", nan, inf), a row with too few or
 // too many values, a repeated or empty column name, an empty file, a file with a header only.
+// Messages show column names and cells cut to 40 characters, so their size does not grow with the
+// input's. Cost: linear in the text (repeated names are found by hashing).
 // Blank lines are skipped. Which columns a check needs is the check's business (harness/check.hpp).
 #pragma once
 
