@@ -188,6 +188,7 @@ void chord_sums(benchmark::State& state, std::size_t steps, bool richardson) {
 void subdivision(benchmark::State& state, double tol) {
   al::subdivision_options<double> opt;
   opt.tolerance = tol;
+  opt.relative_tolerance = 0;  // absolute, as the benchmark names it
   al::quadrature_result<double> r;
   for (auto _ : state) {
     r = al::subdivision_length(curve(), opt);

@@ -131,6 +131,7 @@ std::vector<method_outcome> run_methods(const C& c, const R& length) {
   add("forward_difference_63", al::forward_difference_table<double>(c, 63).length());
   al::subdivision_options<double> so;
   so.tolerance = 1e-6 * static_cast<double>(length);
+  so.relative_tolerance = 0;
   add("subdivision_1e-6", al::subdivision_length(c, so));
   return out;
 }
@@ -285,6 +286,7 @@ TEST(arclength, parent_false_positive_and_its_guards) {
   const R length = reference_length(s50);
   al::subdivision_options<double> naive;
   naive.tolerance = 1e-6;
+  naive.relative_tolerance = 0;
   naive.min_depth = 0;
   naive.look_ahead = false;
   const auto fooled = al::subdivision_length(s_curve, naive);
@@ -301,15 +303,65 @@ TEST(arclength, parent_false_positive_and_its_guards) {
   EXPECT_LE(abs(R(looked.value) - length), R(looked.error_estimate));
 }
 
+// Issue 16, bounded work: subdivision's default tolerance is relative to the curve's size (it was
+// 1e-6 absolute: a curve of size 1e10 asked for 1e-16 relative and ran to depth 40, 2^40 leaves).
+// Scaling a curve by 2^33 (exact in binary) leaves the work unchanged; the result scales.
+TEST(arclength, subdivision_default_tolerance_is_relative_to_the_size) {
+  const auto c = smooth_cubic<double>();
+  const double k = std::ldexp(1.0, 33);
+  auto scaled = [](double f) {
+    return poly2<double>(0.0, 1.0, {pt2<double>(0, 0) * f, pt2<double>(1, 2) * f, pt2<double>(3, -1) * f,
+                                    pt2<double>(-2, 0.5) * f});
+  };
+  const R length = reference_length(smooth_cubic<R>());
+  const auto one = al::subdivision_length(c, {});
+  const auto big = al::subdivision_length(scaled(k), {});
+  const auto small = al::subdivision_length(scaled(1 / k), {});
+  EXPECT_TRUE(one.converged()) << al::to_string(one.status);
+  EXPECT_EQ(big.evaluations, one.evaluations);
+  EXPECT_EQ(small.evaluations, one.evaluations);
+  EXPECT_EQ(big.value, one.value * k);
+  EXPECT_LE(abs(R(one.value) - length), R(one.error_estimate));
+  EXPECT_LE(abs(R(one.value) - length), R(1e-6) * length);  // the default 1e-6 of the size (<= L)
+}
+
+// The evaluation budget: a tolerance of 1e-13 relative needs ~10^6 leaves; 2000 evaluations stop it
+// with cap_hit, the estimate finite and still bounding the true error (the forced leaves report
+// their last chord difference, 3x the order-2 error). A tolerance below the chords' rounding
+// (1e-18) ends rounding_limited within the default budget instead of running to depth 40.
+TEST(arclength, subdivision_budget_ends_in_cap_hit_with_an_honest_estimate) {
+  const auto c = smooth_cubic<double>();
+  const R length = reference_length(smooth_cubic<R>());
+  al::subdivision_options<double> o;
+  o.relative_tolerance = 1e-13;
+  o.max_evaluations = 2000;
+  const auto capped = al::subdivision_length(c, o);
+  EXPECT_EQ(capped.status, al::result_status::cap_hit);
+  // The documented overshoot: 5 per segment (ends, midpoint, look-ahead) and 3 per pending half on
+  // the recursion stack (its midpoint and look-ahead before it can stop).
+  const std::size_t overshoot = 5 + 3 * static_cast<std::size_t>(o.max_depth + 1);
+  EXPECT_LE(capped.evaluations, o.max_evaluations + overshoot);
+  ASSERT_TRUE(std::isfinite(capped.error_estimate));
+  EXPECT_LE(abs(R(capped.value) - length), R(capped.error_estimate));
+  o.relative_tolerance = 1e-18;
+  o.max_evaluations = al::subdivision_options<double>{}.max_evaluations;
+  const auto below = al::subdivision_length(c, o);
+  EXPECT_TRUE(below.status == al::result_status::rounding_limited || below.status == al::result_status::cap_hit)
+      << al::to_string(below.status);
+  EXPECT_LE(below.evaluations, o.max_evaluations + overshoot);
+  EXPECT_LE(abs(R(below.value) - length), R(below.error_estimate));
+}
+
 TEST(arclength, bad_input_is_rejected_with_clear_messages) {
   const auto c = smooth_cubic<double>();
   al::subdivision_options<double> so;
   so.tolerance = 0;
+  so.relative_tolerance = 0;
   try {
     (void)al::subdivision_length(c, so);
     FAIL();
   } catch (const cb::invalid_input& e) {
-    EXPECT_STREQ(e.what(), "tolerance = 0: must be > 0");
+    EXPECT_STREQ(e.what(), "tolerance = 0 and relative_tolerance = 0: at least one must be > 0");
   }
   al::adaptive_options<double> ao;
   ao.relative_tolerance = std::nan("");

@@ -9,6 +9,7 @@
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/curves/bezier.hpp"
 #include "curvebench/curves/piecewise_cubic.hpp"
+#include "curvebench/curves/rational_bezier.hpp"
 #include "curvebench/reference/analytic_curves.hpp"
 #include "curvebench/reference/arc_length.hpp"
 
@@ -295,6 +296,110 @@ TEST(inversion, table_methods_need_a_table_and_report_status) {
   EXPECT_EQ(small.table_status(), al::result_status::cap_hit);
   EXPECT_LE(small.table_intervals(), 32u);
   EXPECT_THROW((void)h.constant_speed_parameters(1), cb::invalid_input);
+}
+
+// Issue 16, bounded work: the table's construction budget. At 4000 evaluations the smooth cubic
+// (16 nodes ~ 700 evaluations, 32 nodes ~ 1300) affords one doubling but not the next: the table
+// stops measured, cap_hit, its error bound finite, and every u(s) is within that bound plus the
+// Newton tolerance of its nodes (the bound the round-trip suite uses), checked against 50 digits.
+// At 300 evaluations no finer table measures the first: not_guaranteed, no bound.
+TEST(inversion, table_construction_budget_ends_in_cap_hit_with_an_honest_bound) {
+  const auto c = smooth_cubic<double>();
+  const ref::reference_arc_length<poly2<R>> r(smooth_cubic<R>());
+  const al::parameterization<poly2<double>> full(c);
+  al::parameterization_options<double> o;
+  o.max_evaluations = 4000;
+  const al::parameterization<poly2<double>> capped(c, o);
+  EXPECT_EQ(capped.table_status(), al::result_status::cap_hit);
+  EXPECT_LT(capped.table_intervals(), full.table_intervals());
+  // Each node gets at least min_node_evaluations, so the budget is passed by at most that per node.
+  EXPECT_LE(capped.construction_evaluations(), o.max_evaluations + al::min_node_evaluations * capped.table_intervals());
+  ASSERT_TRUE(std::isfinite(capped.table_error()));
+  const R bound = R(capped.table_error()) + R(newton_tolerance_eps * std::numeric_limits<double>::epsilon()) * r.length();
+  R worst(0);
+  for (int k = 0; k <= 200; ++k) {
+    const double s = capped.length() * k / 200;
+    worst = std::max(worst, R(abs(r.s(R(capped.u(s))) - R(s))));
+  }
+  EXPECT_LE(worst, bound) << "the table's bound does not cover its error";
+  EXPECT_GT(worst, R(full.table_error()));  // the capped table is coarser than the full one
+  o.max_evaluations = 300;
+  const al::parameterization<poly2<double>> starved(c, o);
+  EXPECT_EQ(starved.table_status(), al::result_status::not_guaranteed);
+  EXPECT_FALSE(std::isfinite(starved.table_error()));
+}
+
+// Newton's budget: 40 evaluations allow one long step (31 + 1 speed) and one panel more; the solve
+// ends in cap_hit with the best iterate, and its bound still covers the true |s(u) - s|.
+TEST(inversion, newton_budget_ends_in_cap_hit_with_an_honest_bound) {
+  const auto c = looping_bezier<double>();
+  const al::segment_lengths<double> seg(c);
+  const ref::reference_arc_length<cb::bezier<R, 2>> r(looping_bezier<R>());
+  al::newton_options<double> opt;
+  opt.max_evaluations = 40;
+  for (int k = 1; k < 8; ++k) {
+    const double s = seg.length() * k / 8;
+    const auto inv = al::newton_invert(c, seg, s, opt);
+    EXPECT_EQ(inv.status, al::result_status::cap_hit) << "s = " << s;
+    EXPECT_LE(inv.evaluations, opt.max_evaluations + 31u);  // the first panel of a call is always computed
+    ASSERT_TRUE(std::isfinite(inv.s_error_estimate));
+    EXPECT_LE(abs(r.s(R(inv.u)) - R(s)), R(inv.s_error_estimate)) << "s = " << s;
+  }
+  const auto free = al::newton_invert(c, seg, seg.length() / 3, {});
+  EXPECT_TRUE(free.converged());
+  EXPECT_GT(free.evaluations, 40u);  // the default solve needs more than the capped one got
+}
+
+// A curve whose length is rounding noise (a rational quadratic with three equal points: the speed
+// is the rounding of N'w - N w') hung the table build (minutes: Newton on noise at a tolerance of
+// 400 eps times the noise). Now: s(u) by Newton's method within its noise, cheaply; u(s) and the
+// tables refuse it with a message that says why.
+TEST(inversion, a_rounding_noise_length_has_s_of_u_but_no_u_of_s) {
+  const std::vector<pt2<double>> same(3, pt2<double>(1.1, -2.3));
+  const std::vector<double> w{1, 0.3, 2};
+  const cb::rational_bezier<double, 2> c{std::span<const pt2<double>>(same), std::span<const double>(w)};
+  al::parameterization_options<double> o;
+  o.method = al::inversion_method::newton;
+  const al::parameterization<cb::rational_bezier<double, 2>> p(c, o);
+  EXPECT_TRUE(p.degenerate());
+  EXPECT_LE(p.length(), al::degenerate_length_eps * std::numeric_limits<double>::epsilon() * p.size());
+  const auto q = p.s_result(0.5);
+  EXPECT_TRUE(std::isfinite(q.value));
+  EXPECT_LE(q.evaluations, 31u * 3);  // one panel meets the noise-level tolerance
+  try {
+    (void)p.u(0.0);
+    FAIL();
+  } catch (const cb::invalid_input& e) {
+    EXPECT_THAT(e.what(), HasSubstr("is rounding noise (at most 64 eps of the curve's size 2.2999999999999998)"));
+    EXPECT_THAT(e.what(), HasSubstr("needs a curve of positive length"));
+  }
+  EXPECT_THROW((al::parameterization<cb::rational_bezier<double, 2>>(c)), cb::invalid_input);
+  const al::parameterization<poly2<double>> fine(smooth_cubic<double>(), o);
+  EXPECT_FALSE(fine.degenerate());
+}
+
+// A domain far from 0: [1e8, 1e8 + 1] took 13 s (the table doubled to its cap chasing 32 eps L
+// while u itself resolves only 1.5e-8). Now the table stops at the resolution of u
+// (rounding_limited) within a small budget, and its u(s) are within that resolution plus the
+// Newton tolerance, against 50 digits.
+TEST(inversion, a_domain_far_from_zero_stops_at_the_resolution_of_u) {
+  const std::vector<pt2<double>> cps{pt2<double>(0, 0), pt2<double>(1, 2), pt2<double>(3, 2), pt2<double>(4, 0)};
+  const std::vector<pt2<R>> cps50{pt2<R>(0, 0), pt2<R>(1, 2), pt2<R>(3, 2), pt2<R>(4, 0)};
+  const cb::bezier<double, 2> c(std::span<const pt2<double>>(cps), {1e8, 1e8 + 1});
+  const cb::bezier<R, 2> c50(std::span<const pt2<R>>(cps50), {R(1e8), R(1e8 + 1)});
+  const ref::reference_arc_length<cb::bezier<R, 2>> r(c50);
+  const al::parameterization<cb::bezier<double, 2>> p(c);
+  EXPECT_EQ(p.table_status(), al::result_status::rounding_limited);
+  EXPECT_LT(p.construction_evaluations(), 200000u);
+  ASSERT_TRUE(std::isfinite(p.table_error()));
+  R worst(0);
+  for (int k = 0; k <= 100; ++k) {
+    const double s = p.length() * k / 100;
+    worst = std::max(worst, R(abs(r.s(R(p.u(s))) - R(s))));
+  }
+  // u rounds to ulp(1e8) = 1.5e-8: s(u) can be off by |P'| ulp(u) / 2 ~ 4e-8 whatever the method
+  // (|P'| <= 3 |P1 - P0| = 6.7); 4e-7 allows ten such roundings in the table's interpolation.
+  EXPECT_LE(worst, R(p.table_error()) + R(4e-7));
 }
 
 TEST(inversion, polish_improves_a_coarse_hermite_table) {

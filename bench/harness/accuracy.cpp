@@ -105,8 +105,11 @@ int run_accuracy(const accuracy_options& opt) {
         }
       },
       [&](std::size_t i, std::size_t finished) {
-        std::cerr << "accuracy: [" << finished << "/" << cases.size() << "] " << cases[i].name
-                  << (failures[i].empty() ? "" : " FAILED: " + failures[i]) << " (" << std::setprecision(3)
+        if (opt.quiet) return;
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::cerr << "accuracy: case " << finished << " of " << cases.size() << " ("
+                  << 100 * finished / cases.size() << "%, " << std::setprecision(3) << elapsed << " s elapsed) "
+                  << cases[i].name << (failures[i].empty() ? "" : " FAILED: " + failures[i]) << " ("
                   << (results[i].is_null() ? 0.0 : results[i]["case"]["seconds"].get<double>()) << " s)\n";
       });
 

@@ -40,6 +40,7 @@ struct accuracy_options {
   std::string out = "reports/accuracy.json";
   unsigned threads = 0;           ///< 0: all cores
   std::string only;               ///< run only cases whose name contains this text
+  bool quiet = false;             ///< no progress lines on stderr (failures and the summary still)
 };
 
 /// Runs every selected case (on opt.threads threads) and writes `out` (JSON) and the same path

@@ -89,6 +89,7 @@ void for_each_length_method(const C& c, const sweep& w, double length, F&& f) {
     f(m::subdivision, setting(m::subdivision, {{"tol", tol}}), [&c, tol, length] {
       al::subdivision_options<double> o;
       o.tolerance = tol * length;
+      o.relative_tolerance = 0;  // tol is relative to the reference length, given absolute here
       return al::subdivision_length(c, o);
     });
 }

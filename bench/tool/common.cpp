@@ -7,7 +7,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <iostream>
 #include <sstream>
+#include <utility>
 #include <system_error>
 
 namespace curvebench::tool {
@@ -76,5 +79,22 @@ std::string non_finite_cause(std::span<const double> breakpoints, double largest
 }
 
 std::string example(const std::string& command) { return "\nExample:\n  " + command + "\n"; }
+
+progress::progress(std::string what, std::size_t total, bool quiet)
+    : what_(std::move(what)), total_(total), quiet_(quiet), start_(std::chrono::steady_clock::now()),
+      next_(start_ + std::chrono::seconds(1)) {}
+
+void progress::update(std::size_t done) {
+  if (quiet_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (now < next_) return;
+  next_ = now + std::chrono::seconds(1);
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  const double percent = total_ == 0 ? 100.0 : 100.0 * static_cast<double>(done) / static_cast<double>(total_);
+  std::ostringstream line;
+  line << what_ << ": " << done << " of " << total_ << " (" << std::fixed << std::setprecision(1) << percent
+       << "%), " << elapsed << " s elapsed\n";
+  std::cerr << line.str() << std::flush;
+}
 
 }  // namespace curvebench::tool

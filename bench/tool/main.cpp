@@ -25,12 +25,16 @@
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
 #include "curvebench/arclength/length.hpp"
+#include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/io/spec.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -65,26 +69,52 @@ template <int Dim>
 void length(const cb::io::field& spec, const length_args& a) {
   const cb::any_curve<double, Dim> c = cb::io::curve_from_spec<double, Dim>(spec);
   namespace m = vocab::methods;
+  // A fixed rule's cost is known before the work: refuse it above the limit, naming the options.
+  const std::size_t segments = c.breakpoints().size() - 1;
+  auto check_cost = [&](const std::string& options, double evaluations) {
+    if (evaluations > static_cast<double>(tool::max_length_evaluations))
+      throw cb::invalid_input(options + ": " + std::to_string(segments) + (segments == 1 ? " segment" : " segments") +
+                              " need " + cb::to_text(evaluations) + " evaluations, more than the limit of " +
+                              std::to_string(tool::max_length_evaluations));
+  };
   al::quadrature_result<double> r;
   if (a.method == m::gauss.id) {
+    check_cost("--n " + std::to_string(a.n), 7.0 * a.n * static_cast<double>(segments));
     r = al::gauss_length(c, a.n, al::fixed_estimate::nested);
   } else if (a.method == m::composite_gauss.id) {
+    check_cost("--n " + std::to_string(a.n) + " --panels " + std::to_string(a.panels),
+               static_cast<double>(a.n) * a.panels * static_cast<double>(segments));
     r = al::composite_gauss_length(c, a.panels, al::gauss_legendre<double>(a.n));
   } else if (a.method == m::adaptive_gk.id) {
     al::adaptive_options<double> o;
     o.relative_tolerance = a.tol;
     r = al::adaptive_length(c, o);
   } else if (a.method == m::forward_difference.id || a.method == m::richardson.id) {
+    if (a.steps > (al::max_forward_difference_evaluations - 1) / segments)
+      throw cb::invalid_input("--steps " + std::to_string(a.steps) + ": " + std::to_string(segments) +
+                              (segments == 1 ? " segment" : " segments") + " x " + std::to_string(a.steps) +
+                              " steps is more than the limit of " +
+                              std::to_string(al::max_forward_difference_evaluations) + " table nodes");
     const al::forward_difference_table<double> t(c, a.steps);
     r = a.method == m::richardson.id ? t.richardson_length() : t.length();
   } else if (a.method == m::subdivision.id) {
     al::subdivision_options<double> o;
-    o.tolerance = a.tol;
+    o.tolerance = 0;
+    o.relative_tolerance = a.tol;  // relative to the curve's size (adaptive_subdivision.hpp)
     r = al::subdivision_length(c, o);
   } else {
     throw cb::invalid_input("--method " + a.method + ": not a length method");
   }
   tool::require_finite(r.value, spec.path + ": length (" + a.method + ")", c);
+  // A length at most degenerate_length_eps eps of the curve's size (the largest |P| at its
+  // breakpoints) is rounding noise: the true length may be 0, so the estimate covers that level.
+  double size = 0;
+  for (const double b : c.breakpoints()) size = std::max(size, c(b).cwiseAbs().maxCoeff());
+  const double noise = al::degenerate_length_eps * std::numeric_limits<double>::epsilon() * size;
+  if (std::isfinite(r.value) && std::abs(r.value) <= noise) {
+    r.error_estimate = std::max(r.error_estimate, noise);
+    r.status = r.value == 0 && r.status == al::result_status::converged ? r.status : al::result_status::rounding_limited;
+  }
   nlohmann::json j{{"method", a.method},
                    {"value", r.value},
                    {"error_estimate", std::isfinite(r.error_estimate) ? nlohmann::json(r.error_estimate) : nlohmann::json()},
@@ -129,10 +159,20 @@ int main(int argc, char** argv) {
   std::string length_help;
   for (const auto& id : length_ids) length_help += (length_help.empty() ? "" : ", ") + id;
   len->add_option("--method", la.method, length_help)->check(CLI::IsMember(length_ids));
-  len->add_option("--tol", la.tol, "tolerance (adaptive: relative; subdivision: absolute)")->check(tool::positive_finite());
-  len->add_option("--n", la.n, "Gauss points per panel")->check(CLI::Range(1, 200));
-  len->add_option("--panels", la.panels, "panels per segment (composite_gauss)")->check(CLI::Range(1, 1000000));
-  len->add_option("--steps", la.steps, "table steps per segment (forward_difference)")->check(CLI::Range(1, 10000000));
+  const std::string limit = std::to_string(tool::max_length_evaluations);
+  len->add_option("--tol", la.tol,
+                  "relative tolerance (adaptive_gk: of the length; subdivision: of the curve's size, the polygon "
+                  "through breakpoints and midpoints); adaptive_gk stops at 2^24 evaluations, subdivision at 2^22, with status cap_hit")
+      ->check(tool::positive_finite());
+  len->add_option("--n", la.n, "Gauss points per panel (gauss: n x 7 x segments evaluations, at most " + limit + ")")
+      ->check(CLI::Range(1, 200));
+  len->add_option("--panels", la.panels,
+                  "panels per segment (composite_gauss: n x panels x segments evaluations, at most " + limit + ")")
+      ->check(CLI::Range(1, 1000000));
+  len->add_option("--steps", la.steps,
+                  "table steps per segment (forward_difference, richardson: steps x segments, at most " +
+                      std::to_string(al::max_forward_difference_evaluations) + ")")
+      ->check(CLI::Range(1, 10000000));
   len->footer(tool::example("curvebench length arch.json --method gauss --n 8"));
 
   cb::harness::accuracy_options ao;
@@ -143,6 +183,7 @@ int main(int argc, char** argv) {
   acc->add_option("--out", ao.out, "results JSON (a CSV is written beside it)");
   acc->add_option("--threads", ao.threads, "worker threads (0: all cores)");
   acc->add_option("--only", ao.only, "run only cases whose name contains this text");
+  acc->add_flag("--quiet", ao.quiet, "no progress lines on stderr (case k of n, percent, elapsed)");
   acc->footer(tool::example("curvebench accuracy --quick --only helix --out reports/accuracy.json"));
 
   std::string results = "reports/accuracy.json", thresholds = tool::default_thresholds();

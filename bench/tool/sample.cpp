@@ -187,18 +187,26 @@ void sample(const io::field& spec, const sample_args& a) {
   if (!a.range.empty()) given = parse_range(a.range);
   const any_curve<double, Dim> c = io::curve_from_spec<double, Dim>(spec);
   al::parameterization_options<double> opt;
-  // Given parameters need s(u) only: Newton's method builds no u(s) table (minutes on degree-20
-  // Runge), and s(u) is then the segment lengths plus one adaptive integral.
-  opt.method = given.empty() ? parse_inversion(a.method) : al::inversion_method::newton;
+  // Samples at given or equally spaced u need s(u) only: Newton's method builds no u(s) table
+  // (minutes on degree-20 Runge), and s(u) is then the segment lengths plus one adaptive integral.
+  // That also leaves a degenerate curve (length 0 or rounding noise) its points and s(u).
+  const bool by_arclength = given.empty() && a.by == "arclength";
+  opt.method = by_arclength ? parse_inversion(a.method) : al::inversion_method::newton;
   opt.newton_polish = a.polish;
-  // The parameterization's errors (a curve of length 0, or one not representable) name the spec.
-  const al::parameterization<any_curve<double, Dim>> param = [&] {
+  // A degenerate curve (length 0 or rounding noise) has no u(s), a non-finite length no s(u): the
+  // library's error, naming the spec.
+  auto build = [&] {
     try {
-      return al::parameterization<any_curve<double, Dim>>(c, opt);
+      al::parameterization<any_curve<double, Dim>> p(c, opt);
+      if (by_arclength && p.degenerate()) (void)p.u(0.0);  // newton builds no table: ask it
+      return p;
     } catch (const invalid_input& e) {
-      throw invalid_input(spec.path + ": " + e.what());
+      if (!by_arclength) throw invalid_input(a.spec + ": " + e.what());
+      throw invalid_input(a.spec + ": sample --by arclength: " + e.what() +
+                          " (sample --by u gives the points of a curve of any length)");
     }
-  }();
+  };
+  const al::parameterization<any_curve<double, Dim>> param = build();
   const auto dom = c.domain();
   for (const parameter& p : given)
     if (!(dom.lo <= p.u && p.u <= dom.hi)) {
@@ -216,7 +224,9 @@ void sample(const io::field& spec, const sample_args& a) {
   std::cout << "\n" << std::setprecision(17);
   const double L = param.length();
   const std::size_t count = given.empty() ? a.count : given.size();
+  progress shown("sample", count, a.quiet);
   for (std::size_t i = 0; i < count; ++i) {
+    shown.update(i);
     const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
     double u = 0, s = 0;
     if (!given.empty()) {
@@ -254,8 +264,9 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
   auto* samp = app.add_subcommand(
       "sample", "sample a curve spec: CSV of u, s (arc length from the domain's start), the point and derivatives");
   samp->add_option("spec", a.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
-  auto* count = samp->add_option("--count", a.count, "number of equally spaced samples (default 11)")
-                    ->check(CLI::Range(1, 100000000));
+  const std::string max = std::to_string(max_sample_values);
+  auto* count = samp->add_option("--count", a.count, "number of equally spaced samples (default 11, at most " + max + ")")
+                    ->check(CLI::Range(std::size_t(1), max_sample_values));
   samp->add_option("--by", a.by, "spacing: equal steps in u, or in arc length (with --ease)")
       ->check(CLI::IsMember({"u", "arclength"}));
   std::vector<std::string> sample_ids;
@@ -265,7 +276,6 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
   samp->add_option("--ease", a.ease,
                    "distance-time function for --by arclength: linear, sine, smoothstep, smootherstep, "
                    "sine_plateau:T1,T2, parabolic:T1,T2");
-  const std::string max = std::to_string(max_sample_values);
   auto* at = samp->add_option("--at", a.at, "evaluate at these parameters: V1,V2,... (at most " + max + ")");
   auto* at_file = samp->add_option("--at-file", a.at_file,
                                    "evaluate at the parameters of FILE: one value per line, or a CSV whose header "
@@ -281,6 +291,7 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
   samp->add_option("--derivatives", a.derivatives,
                    "derivative columns of orders 1..K (0-3; default 1): dx,dy for the first, d2x,d2y, d3x,d3y")
       ->check(CLI::Range(0, 3));
+  samp->add_flag("--quiet", a.quiet, "no progress lines on stderr (printed once a run takes over a second)");
   samp->footer(example("curvebench sample arch.json --at 0,0.25,0.5 --derivatives 2 > values.csv"));
   return samp;
 }

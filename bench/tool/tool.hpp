@@ -6,7 +6,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -46,6 +48,24 @@ std::string version_line();
 /// A CLI11 check: a finite number > 0, subnormals included (CLI::PositiveNumber starts at the
 /// smallest normal double, 2.2e-308, and prints that bound with all its digits).
 CLI::Validator positive_finite();
+/// Progress of a long loop on stderr (never stdout): once the run has taken a second, at most one
+/// line a second, "sample: 1200 of 100000 (1.2%), 2.0 s elapsed"; nothing when quiet.
+class progress {
+ public:
+  progress(std::string what, std::size_t total, bool quiet);
+  /// `done` items of the total are finished.
+  void update(std::size_t done);
+
+ private:
+  std::string what_;
+  std::size_t total_;
+  bool quiet_;
+  std::chrono::steady_clock::time_point start_, next_;
+};
+
+/// The most evaluations `length` spends on a fixed rule (gauss, composite_gauss), checked before
+/// the work: --n x --panels x segments (x 7 for gauss's nested estimate).
+inline constexpr std::size_t max_length_evaluations = std::size_t(1) << 26;
 
 /// The footer of a subcommand's --help: one example.
 std::string example(const std::string& command);
@@ -84,8 +104,9 @@ struct sample_args {
   std::string at_file;   ///< --at-file FILE
   std::string range;     ///< --range A:B:STEP
   int derivatives = 1;   ///< derivative columns: orders 1..K
+  bool quiet = false;    ///< no progress on stderr
 };
-/// The most parameters --at, --at-file and --range may give.
+/// The most samples --count asks for and parameters --at, --at-file and --range may give.
 inline constexpr std::size_t max_sample_values = 1000000;
 CLI::App* add_sample(CLI::App& app, sample_args& a);
 void run_sample(const sample_args& a);

@@ -177,6 +177,26 @@ class ToolCli(unittest.TestCase):
 
     # ---- hostile input (issue 16) ---------------------------------------------------------------
 
+    def test_long_sample_prints_progress_on_stderr_only_and_quiet_silences_it(self):
+        # Issue 16: runs over a second report "case k of n, percent, elapsed" on stderr; stdout stays
+        # the CSV. 400000 samples of the 1e5-segment Lissajous take several seconds here.
+        spec = os.path.join(CASES, "lissajous_many_segments_1e5.json")
+        p = run("sample", spec, "--count", "400000")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertRegex(p.stderr, r"sample: \d+ of 400000 \(\d+\.\d%\), \d+\.\d s elapsed")
+        self.assertNotIn("elapsed", p.stdout)
+        self.assertEqual(len(p.stdout.splitlines()), 400001)
+        q = run("sample", spec, "--count", "400000", "--quiet")
+        self.assertEqual(q.returncode, 0, q.stderr)
+        self.assertEqual(q.stderr, "")
+        self.assertEqual(q.stdout, p.stdout)
+
+    def test_sample_count_has_a_documented_limit(self):
+        p = run("sample", ARCH, "--count", "1000001")
+        self.assertNotEqual(p.returncode, 0)
+        self.assertIn("--count", p.stderr)
+        self.assertIn("1000000", run("sample", "--help").stdout)
+
     def test_sample_ease_phases_are_exactly_two_finite_numbers(self):
         # Both were accepted, the trailing text ignored.
         self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "sine_plateau:0.2,0.8junk"),

@@ -4,17 +4,26 @@
 // (u, u^3 - u) on [-1, 1]), so two guards are on by default: min_depth levels before trusting the
 // test, and look_ahead (the quarter chords must agree too, at an observed order >= log2 3). No
 // sampling method is proof against a curve designed to pass at every level.
+// The target is max(tolerance, relative_tolerance * size), size the length of the polygon through
+// the breakpoints and the segments' midpoints (a lower bound of L): by default 1e-6 relative, so
+// the same work measures a curve of size 1e10 or 1e-10.
 // Estimate: the accepted differences (order >= 1 assumed without look-ahead, checked with it) plus
-// rounding. Status: converged when every leaf passed, cap_hit when max_depth forced one.
+// rounding. Status: converged when every leaf passed; rounding_limited when a leaf's share of the
+// target was below its chords' rounding (16 eps of their length) and it was accepted at that
+// level; cap_hit when max_depth or the evaluation budget forced a leaf (its last difference is
+// then its estimate, as for a passed leaf without look-ahead).
 // Sources: Parent (2012), 3.2.2; seed 002 ("adaptive forward differencing").
-// Cost: ~2 position evaluations per accepted leaf (+2 with look-ahead), ~L / tolerance^(1/3)
-// leaves. Accuracy: order 2 in the leaf size on smooth pieces.
+// Cost: ~2 position evaluations per accepted leaf (+2 with look-ahead), ~(L / target)^(1/2)
+// leaves; at most max_evaluations (2^22), plus 5 per segment and 3 per level of the recursion (a
+// half pending when the budget ran out evaluates its midpoint before it stops). Accuracy: order 2 in the leaf size
+// on smooth pieces.
 #pragma once
 
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/core/curve.hpp"
 #include "curvebench/core/error.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -23,10 +32,16 @@ namespace curvebench::arclength {
 
 template <class Real>
 struct subdivision_options {
-  Real tolerance{Real(1) / Real(1000000)};  ///< absolute, in length units, over the whole curve
+  Real tolerance{0};  ///< absolute, in length units, over the whole curve (0: relative only)
+  /// Relative to the curve's size (see the header); the target is the larger of the two.
+  Real relative_tolerance{Real(1) / Real(1000000)};
   int min_depth{2};
   int max_depth{40};
   bool look_ahead{true};
+  /// Position evaluations allowed: no leaf is refined once they are spent (cap_hit); each segment
+  /// still costs its ends and midpoint (and look-ahead), 5 at most, and each half pending on the
+  /// recursion stack 3.
+  std::size_t max_evaluations{std::size_t(1) << 22};
 };
 
 namespace detail {
@@ -58,6 +73,13 @@ struct subdivider {
       const Real quarters = dist(pa, q1) + dist(q1, pm) + dist(pm, q3) + dist(q3, pb);
       const Real d2 = abs(quarters - halves);
       const Real noise = Real(16) * epsilon<Real>() * quarters;
+      // A share below the chords' rounding is met at the rounding level (rounding_limited).
+      if (!(d2 <= tol) && d2 <= noise && diff <= noise) {
+        out.value += quarters;
+        out.error_estimate += d2 + noise;
+        out.status = worst(out.status, result_status::rounding_limited);
+        return;
+      }
       // Accept the quarters when the chord sums converge at an observed order >= log2(3) (diff >=
       // 3 d2; smooth pieces tend to order 2): then |L - quarters| <= d2 / (2^p - 1) <= d2 / 2, a 2x
       // margin for the order still drifting. Both differences at rounding level also accept.
@@ -74,7 +96,7 @@ struct subdivider {
       out.error_estimate += diff;
       return;
     }
-    if (depth >= opt.max_depth || !(m > a && m < b)) {
+    if (depth >= opt.max_depth || !(m > a && m < b) || out.evaluations + 6 > opt.max_evaluations) {
       out.value += halves;
       out.error_estimate += diff;
       out.status = worst(out.status, result_status::cap_hit);
@@ -87,14 +109,22 @@ struct subdivider {
 
 }  // namespace detail
 
-/// Length by adaptive subdivision with Parent's chord test, segment by segment (the tolerance is
-/// shared in proportion to the segments' parameter lengths). Throws invalid_input for a tolerance
-/// <= 0 or negative depths.
+/// Length by adaptive subdivision with Parent's chord test, segment by segment (the target is
+/// shared in proportion to the segments' parameter lengths). Throws invalid_input for a negative
+/// or non-finite tolerance, both tolerances 0, or negative depths.
 template <curve C>
 [[nodiscard]] quadrature_result<typename C::real_type> subdivision_length(
     const C& c, const subdivision_options<typename C::real_type>& opt = {}) {
   using Real = typename C::real_type;
-  validate::positive("tolerance", opt.tolerance);
+  using std::max;
+  validate::finite("tolerance", opt.tolerance);
+  validate::finite("relative_tolerance", opt.relative_tolerance);
+  if (opt.tolerance < Real(0)) validate::fail("tolerance = " + to_text(opt.tolerance) + ": must be >= 0");
+  if (opt.relative_tolerance < Real(0))
+    validate::fail("relative_tolerance = " + to_text(opt.relative_tolerance) + ": must be >= 0");
+  if (!(opt.tolerance > Real(0)) && !(opt.relative_tolerance > Real(0)))
+    validate::fail("tolerance = " + to_text(opt.tolerance) + " and relative_tolerance = " +
+                   to_text(opt.relative_tolerance) + ": at least one must be > 0");
   if (opt.min_depth < 0) validate::fail("min_depth = " + std::to_string(opt.min_depth) + ": must be >= 0");
   if (opt.max_depth < opt.min_depth)
     validate::fail("max_depth = " + std::to_string(opt.max_depth) + ": must be >= min_depth = " +
@@ -102,12 +132,21 @@ template <curve C>
   const std::span<const Real> bp = c.breakpoints();
   detail::subdivider<C> sub{c, opt};
   const Real total = bp.back() - bp.front();
+  // The size: the polygon through the breakpoints and the segments' midpoints (evaluations counted).
+  Real size(0);
+  for (std::size_t i = 0; i + 1 < bp.size() && opt.relative_tolerance > Real(0); ++i) {
+    if (!(bp[i + 1] > bp[i])) continue;
+    const typename C::point_type pa = c(bp[i]), pm = c((bp[i] + bp[i + 1]) / Real(2)), pb = c(bp[i + 1]);
+    sub.out.evaluations += 3;
+    size += sub.dist(pa, pm) + sub.dist(pm, pb);
+  }
+  const Real target = max(opt.tolerance, Real(opt.relative_tolerance * size));
   for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
     if (!(bp[i + 1] > bp[i])) continue;
     const typename C::point_type pa = c(bp[i]);
     const typename C::point_type pb = c(bp[i + 1]);
     sub.out.evaluations += 2;
-    sub.run(bp[i], bp[i + 1], pa, pb, opt.tolerance * (bp[i + 1] - bp[i]) / total, 0);
+    sub.run(bp[i], bp[i + 1], pa, pb, target * (bp[i + 1] - bp[i]) / total, 0);
   }
   using std::abs;
   sub.out.error_estimate += Real(static_cast<long long>(sub.out.evaluations + 8)) * epsilon<Real>() * abs(sub.out.value);

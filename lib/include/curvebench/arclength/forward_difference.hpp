@@ -8,7 +8,8 @@
 // make chord sums creep, stall and jump. Richardson R = L_h + d2 / 3, estimate d2 / 3 under the same
 // check.
 // Sources: seed 002 ("Forward Differencing", table lookup); Parent, Computer Animation (2012), 3.2.
-// Cost: N + 1 position evaluations per segment to build; s(u), u(s) O(log N), no evaluation.
+// Cost: N + 1 position evaluations per segment to build, at most 2^24 in all unless the caller
+// allows more (checked before the work); s(u), u(s) O(log N), no evaluation.
 // Accuracy: O(h^2) (the table and its interpolation), Richardson O(h^4) on smooth segments.
 #pragma once
 
@@ -25,17 +26,32 @@
 
 namespace curvebench::arclength {
 
+/// The default limit of a table's evaluations (and nodes: two Reals each), checked before it is built.
+inline constexpr std::size_t max_forward_difference_evaluations = std::size_t(1) << 24;
+
 template <class Real>
 class forward_difference_table {
  public:
-  /// N = steps_per_segment >= 1 equal parameter steps in every segment.
+  /// N = steps_per_segment >= 1 equal parameter steps in every segment. The cost, N x segments + 1
+  /// position evaluations and as many nodes, is checked before the work: above max_evaluations it
+  /// throws invalid_input naming steps_per_segment, the segments and the limit.
   template <curve C>
     requires std::same_as<typename C::real_type, Real>
-  forward_difference_table(const C& c, std::size_t steps_per_segment) : steps_(steps_per_segment) {
+  forward_difference_table(const C& c, std::size_t steps_per_segment,
+                           std::size_t max_evaluations = max_forward_difference_evaluations)
+      : steps_(steps_per_segment) {
     if (steps_per_segment < 1)
       validate::fail("steps_per_segment = " + std::to_string(steps_per_segment) + ": must be >= 1");
     const std::span<const Real> bp = c.breakpoints();
     validate::count_at_least("breakpoints", bp.size(), 2, "a curve has at least one segment");
+    const std::size_t segments = bp.size() - 1;
+    if (steps_per_segment > (max_evaluations - 1) / segments)
+      validate::fail("steps_per_segment = " + std::to_string(steps_per_segment) + ": " +
+                     std::to_string(segments) + (segments == 1 ? " segment" : " segments") + " x " +
+                     std::to_string(steps_per_segment) + " steps is more than the limit of " +
+                     std::to_string(max_evaluations) + " evaluations (table nodes)");
+    u_.reserve(segments * steps_ + 1);
+    s_.reserve(segments * steps_ + 1);
     typename C::point_type prev = c(bp[0]);
     u_.push_back(bp[0]);
     s_.push_back(Real(0));

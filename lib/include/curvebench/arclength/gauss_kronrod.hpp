@@ -4,10 +4,12 @@
 // make_gauss_kronrod); a single-panel rule with error estimate |G - K| (the Gauss rule's error, a
 // conservative bound for smooth f) or QUADPACK's heuristic, both plus a rounding floor
 // (detail/roundoff.hpp); a globally adaptive integrator (bisect the panel of largest error) with an
-// interval cap and a status; and an allocation-free recursive variant for hot paths.
+// interval cap, an evaluation budget and a status; and an allocation-free recursive variant for hot
+// paths (depth cap and evaluation budget). Cap or budget reached: cap_hit.
 // Sources: Kronrod (1965); Monegato (1982); Piessens et al. (1983, QUADPACK) for the adaptive
 // strategy and the heuristic resasc * min(1, (200 |K - G| / resasc)^1.5) (which allocates).
-// Cost: rule O(n^3) once (cached); a panel 2n + 1 evaluations.
+// Cost: rule O(n^3) once (cached); a panel 2n + 1 evaluations; an adaptive call at most its
+// max_evaluations (default 2^24 global, 2^22 recursive) plus one panel per split interval.
 // Accuracy: K_{2n+1} exact for degree <= 3n + 1 (3n + 2 for odd n), G_n for degree <= 2n - 1.
 #pragma once
 
@@ -41,6 +43,11 @@ struct kronrod_panel {
   Real error_estimate{0};  ///< per the error model, including the rounding floor
   Real magnitude{0};       ///< integral of |f| by the Kronrod rule
   Real rounding_floor{0};  ///< 50 eps * magnitude
+  /// What the panel's own node positions resolve: 2 eps (|mid| + |half width|) (max f - min f).
+  /// Each node mid + half x_i is placed within eps (|mid| + |half|); far from 0 (a domain [1e8,
+  /// 1e8 + 1]) that moves the integral by about this much, |G - K| becomes that noise, and the
+  /// adaptive integrators stop refining a panel whose estimate is below twice both floors.
+  Real resolution_floor{0};
   std::size_t evaluations{0};
 };
 
@@ -60,18 +67,21 @@ struct gauss_kronrod_rule {
     using std::abs;
     const Real half = (b - a) / Real(2);
     const Real mid = (a + b) / Real(2);
-    Real k(0), g(0), kabs(0);
+    Real k(0), g(0), kabs(0), fmin(0), fmax(0);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const Real fi = f(mid + half * nodes[i]);
       k += kronrod_weights[i] * fi;
       g += gauss_weights[i] * fi;
       kabs += kronrod_weights[i] * abs(fi);
+      if (i == 0 || fi < fmin) fmin = fi;
+      if (i == 0 || fi > fmax) fmax = fi;
     }
     kronrod_panel<Real> p;
     p.kronrod = k * half;
     p.gauss = g * half;
     p.magnitude = kabs * abs(half);
     p.rounding_floor = detail::rounding_floor(p.magnitude);
+    p.resolution_floor = Real(2) * epsilon<Real>() * (abs(mid) + abs(half)) * (fmax - fmin);
     p.evaluations = nodes.size();
     p.error_estimate = abs(p.kronrod - p.gauss) + p.rounding_floor;
     return p;
@@ -101,6 +111,8 @@ struct gauss_kronrod_rule {
     p.gauss = g * half;
     p.magnitude = kabs * abs(half);
     p.rounding_floor = detail::rounding_floor(p.magnitude);
+    const auto [lo_it, hi_it] = std::minmax_element(fv.begin(), fv.end());
+    p.resolution_floor = Real(2) * epsilon<Real>() * (abs(mid) + abs(half)) * (*hi_it - *lo_it);
     p.evaluations = nodes.size();
     asc *= abs(half);
     Real diff = abs(p.kronrod - p.gauss);
@@ -250,6 +262,11 @@ struct adaptive_options {
   Real absolute_tolerance{0};
   Real relative_tolerance{Real(128) * epsilon<Real>()};  ///< above the panels' rounding floor (detail/roundoff.hpp)
   std::size_t max_intervals{4000};  ///< cap on the number of panels (global) / 2^max_depth (recursive)
+  /// Total evaluations of f allowed for one call: integrate_adaptive refines no panel once the next
+  /// bisection would pass it (the first panel of each split interval is always computed);
+  /// segment_lengths and the length functions share it over the whole curve. Reaching it ends in
+  /// cap_hit with the estimate of the panels so far (each still |G - K| + floor).
+  std::size_t max_evaluations{std::size_t(1) << 24};
   int gauss_points{7};              ///< n of the G_n - K_{2n+1} pair
   error_model model{error_model::gauss_difference};
   /// Curve lengths only (length.hpp, segment_lengths): samples of |P'|^2 per segment used to find
@@ -282,18 +299,20 @@ struct heap_panel {
 template <class Real, class F>
 [[nodiscard]] quadrature_result<Real> bisect(F& f, const Real& a, const Real& b, const kronrod_panel<Real>& p,
                                              const Real& tolerance, const gauss_kronrod_rule<Real>& rule,
-                                             int max_depth, bool suspect) {
+                                             int max_depth, bool suspect, std::size_t& budget) {
   quadrature_result<Real> out{p.kronrod, p.error_estimate, 0, result_status::converged};
   if (p.error_estimate <= tolerance) return out;
   const Real mid = (a + b) / Real(2);
-  if (!(p.error_estimate > Real(2) * p.rounding_floor) || !(mid > (a < b ? a : b)) || !(mid < (a < b ? b : a))) {
+  if (!(p.error_estimate > Real(2) * (p.rounding_floor + p.resolution_floor)) || !(mid > (a < b ? a : b)) ||
+      !(mid < (a < b ? b : a))) {
     out.status = result_status::rounding_limited;
     return out;
   }
-  if (max_depth <= 0) {
+  if (max_depth <= 0 || budget < 2 * rule.nodes.size()) {
     out.status = result_status::cap_hit;
     return out;
   }
+  budget -= 2 * rule.nodes.size();
   const kronrod_panel<Real> l = rule.apply(f, a, mid);
   const kronrod_panel<Real> r = rule.apply(f, mid, b);
   const bool stagnated = bisection_stagnated(p.error_estimate, l.error_estimate + r.error_estimate, p.magnitude);
@@ -302,8 +321,8 @@ template <class Real, class F>
     return {l.kronrod + r.kronrod, l.error_estimate + r.error_estimate, l.evaluations + r.evaluations,
             pass ? result_status::converged : result_status::rounding_limited};
   }
-  quadrature_result<Real> left = bisect(f, a, mid, l, tolerance / Real(2), rule, max_depth - 1, stagnated);
-  left += bisect(f, mid, b, r, tolerance / Real(2), rule, max_depth - 1, stagnated);
+  quadrature_result<Real> left = bisect(f, a, mid, l, tolerance / Real(2), rule, max_depth - 1, stagnated, budget);
+  left += bisect(f, mid, b, r, tolerance / Real(2), rule, max_depth - 1, stagnated, budget);
   left.evaluations += l.evaluations + r.evaluations;
   return left;
 }
@@ -313,7 +332,8 @@ template <class Real, class F>
 /// Globally adaptive Gauss-Kronrod over [splits.front(), splits.back()], never integrating across
 /// an interior split point (pass a curve's breakpoints): start with one panel per split interval,
 /// then repeatedly bisect the panel with the largest error estimate until the summed estimate
-/// meets the target (converged), the panel count reaches max_intervals (cap_hit), or no panel can
+/// meets the target (converged), the panel count reaches max_intervals or the next bisection would
+/// pass max_evaluations (cap_hit), or no panel can
 /// usefully be refined because its estimate is its rounding floor, its halves do not improve on
 /// it (detail/roundoff.hpp: f's own rounding), or it is too narrow to bisect
 /// (rounding_limited). Allocates its panel list (not for per-query hot paths: see
@@ -369,7 +389,8 @@ template <class Real, class F>
       out.status = result_status::rounding_limited;
       break;
     }
-    if (heap.size() + frozen.size() >= opt.max_intervals) {
+    if (heap.size() + frozen.size() >= opt.max_intervals ||
+        out.evaluations + 2 * rule.nodes.size() > opt.max_evaluations) {
       out.status = result_status::cap_hit;
       break;
     }
@@ -377,7 +398,8 @@ template <class Real, class F>
     detail::heap_panel<Real> worst_panel = heap.back();
     heap.pop_back();
     const Real mid = (worst_panel.a + worst_panel.b) / Real(2);
-    if (!(worst_panel.r.error_estimate > Real(2) * worst_panel.r.rounding_floor) || !(mid > worst_panel.a) ||
+    if (!(worst_panel.r.error_estimate > Real(2) * (worst_panel.r.rounding_floor + worst_panel.r.resolution_floor)) ||
+        !(mid > worst_panel.a) ||
         !(mid < worst_panel.b)) {
       frozen.push_back(worst_panel);  // cannot be improved in Real
       continue;
@@ -407,15 +429,19 @@ template <class Real, class F>
 }
 
 /// Adaptive Gauss-Kronrod on [a, b] by recursive bisection with the tolerance halved per level,
-/// depth <= max_depth: no allocation (for per-query paths such as Newton inversion). The status
-/// is converged when every accepted panel met its share, cap_hit when the depth cap stopped a
-/// panel, rounding_limited when a panel's estimate was its rounding floor or its halves did not
+/// depth <= max_depth and at most max_evaluations evaluations of f (the first panel always; then
+/// depth first, so a panel reached after the budget ran out keeps its one-panel value and
+/// estimate): no allocation (for per-query paths such as Newton inversion). The status
+/// is converged when every accepted panel met its share, cap_hit when the depth cap or the budget
+/// stopped a panel, rounding_limited when a panel's estimate was its rounding floor or its halves did not
 /// improve on it (twice in a row, see detail/roundoff.hpp; the halves' sum is then accepted).
 template <class Real, class F>
 [[nodiscard]] quadrature_result<Real> integrate_recursive(F&& f, const Real& a, const Real& b, const Real& tolerance,
-                                                          const gauss_kronrod_rule<Real>& rule, int max_depth = 20) {
+                                                          const gauss_kronrod_rule<Real>& rule, int max_depth = 20,
+                                                          std::size_t max_evaluations = std::size_t(1) << 22) {
   const kronrod_panel<Real> p = rule.apply(f, a, b);
-  quadrature_result<Real> out = detail::bisect(f, a, b, p, tolerance, rule, max_depth, false);
+  std::size_t budget = max_evaluations > p.evaluations ? max_evaluations - p.evaluations : 0;
+  quadrature_result<Real> out = detail::bisect(f, a, b, p, tolerance, rule, max_depth, false, budget);
   out.evaluations += p.evaluations;
   return out;
 }

@@ -7,10 +7,13 @@
 // Gauss-Kronrod (G15-K31, or the G7-K15 short-step rule for steps under 1/32 of the bracket),
 // shrinks the bracket and steps u <- u - (s(u) - s*) / |P'(u)|, bisecting when the step leaves
 // the bracket or |P'| = 0. Stops when |s(u) - s*| + its error bound <= tolerance (converged), at
-// the iteration cap (cap_hit) or when the bracket cannot shrink in Real (rounding_limited).
+// the iteration cap or the evaluation budget (cap_hit: the best iterate, its bound still reported)
+// or when the bracket cannot shrink in Real (rounding_limited).
 // Sources: seed 002 (find u2 with arclength(u1, u2) = s); Guenter & Parent (1990); Eberly (2008).
 // Cost: O(log segments) + 32 evaluations per long and 16 per short iteration, typically one long
-// and two or three short; no allocation per query.
+// and two or three short, at most max_evaluations (2^16) per query; no allocation per query.
+// segment_lengths: at most adaptive_options::max_evaluations (2^24) over the whole curve, plus a
+// few per segment.
 // Accuracy: quadratic convergence in u where |P'| > 0; linear (bisection) where it vanishes.
 #pragma once
 
@@ -45,7 +48,8 @@ class segment_lengths {
   segment_lengths() = default;
 
   /// Integrates every segment (split at its speed minima) to relative_tolerance (relative to that
-  /// segment's length) with options `opt` otherwise. Throws invalid_input for bad tolerances.
+  /// segment's length) with options `opt` otherwise; opt.max_evaluations is the budget of the whole
+  /// curve (cap_hit in total() when a segment ran out). Throws invalid_input for bad tolerances.
   template <curve C>
     requires std::same_as<typename C::real_type, Real>
   explicit segment_lengths(const C& c, const adaptive_options<Real>& opt = default_options()) {
@@ -60,13 +64,21 @@ class segment_lengths {
     // ~2 eps of the exact sum of the segment values, whatever the number of segments.
     Real sum(0), comp(0), err_sum(0);
     using std::abs;
+    // The budget opt.max_evaluations is shared: segment i may spend what is left after keeping, for
+    // each later segment, the least it costs (its speed samples, one panel, its two end speeds), so
+    // a hard segment early cannot starve the rest; a segment that runs out ends in cap_hit.
+    const std::size_t least = opt.speed_minimum_samples + 1 + gauss_kronrod<Real>(opt.gauss_points).nodes.size() + 2;
+    const std::size_t segments = bp.size() - 1;
     for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
       quadrature_result<Real> r;
       if (bp[i + 1] > bp[i]) {
         std::size_t extra = 0;
         const std::vector<Real> ends =
             detail::with_speed_minima(c, std::vector<Real>{bp[i], bp[i + 1]}, opt.speed_minimum_samples, extra);
-        r = integrate_adaptive(f, std::span<const Real>(ends), opt);
+        adaptive_options<Real> seg_opt = opt;
+        const std::size_t reserve = (segments - 1 - i) * least, spent = total_.evaluations + extra;
+        seg_opt.max_evaluations = opt.max_evaluations > spent + reserve ? opt.max_evaluations - spent - reserve : 0;
+        r = integrate_adaptive(f, std::span<const Real>(ends), seg_opt);
         r.evaluations += extra;
       }
       total_ += r;
@@ -170,6 +182,9 @@ struct newton_options {
   /// quadratic convergence takes the residual from the tolerance down to rounding level. Used for
   /// table nodes, which every later query interpolates.
   bool final_step{false};
+  /// Total curve-derivative evaluations of one inversion (its inner integrals and speeds): the
+  /// iteration stops with cap_hit, keeping the best iterate and its bound, once they are spent.
+  std::size_t max_evaluations{std::size_t(1) << 16};
 };
 
 /// A bracket with known arc lengths at its ends (and their error bounds), and a first guess.
@@ -197,6 +212,7 @@ void check_newton_options(const newton_options<Real>& opt) {
   if (opt.max_iterations < 1)
     validate::fail("max_iterations = " + std::to_string(opt.max_iterations) + ": must be >= 1");
   if (opt.max_depth < 0) validate::fail("max_depth = " + std::to_string(opt.max_depth) + ": must be >= 0");
+  if (opt.max_evaluations < 1) validate::fail("max_evaluations = 0: must be >= 1");
 }
 
 }  // namespace detail
@@ -243,16 +259,18 @@ template <curve C>
   const Real inner_tol = tolerance / Real(8);
   Real best_f = no_bound<Real>();
   out.status = result_status::cap_hit;
+  auto left = [&] { return opt.max_evaluations > out.evaluations ? opt.max_evaluations - out.evaluations : 0; };
   for (int it = 1; it <= opt.max_iterations; ++it) {
+    if (it > 1 && left() == 0) break;  // the budget is spent: cap_hit with the best iterate so far
     out.iterations = it;
     Real su, eu;
     if (u - lo <= hi - u) {
-      const quadrature_result<Real> q = integrate_recursive(f, lo, u, inner_tol, pick(u - lo), opt.max_depth);
+      const quadrature_result<Real> q = integrate_recursive(f, lo, u, inner_tol, pick(u - lo), opt.max_depth, left());
       su = slo + q.value;
       eu = elo + q.error_estimate;
       out.evaluations += q.evaluations;
     } else {
-      const quadrature_result<Real> q = integrate_recursive(f, u, hi, inner_tol, pick(hi - u), opt.max_depth);
+      const quadrature_result<Real> q = integrate_recursive(f, u, hi, inner_tol, pick(hi - u), opt.max_depth, left());
       su = shi - q.value;
       eu = ehi + q.error_estimate;
       out.evaluations += q.evaluations;
@@ -266,12 +284,13 @@ template <curve C>
     }
     if (abs(fu) + eu <= tolerance) {
       out.status = result_status::converged;
-      if (opt.final_step && fu != Real(0)) {
+      if (opt.final_step && fu != Real(0) && left() > 0) {
         const Real sp = f(u);
         ++out.evaluations;
         const Real next = sp > Real(0) ? u - fu / sp : u;
         if (next > lo && next < hi && next != u) {
-          const quadrature_result<Real> q = integrate_recursive(f, u, next, inner_tol, pick(abs(next - u)), opt.max_depth);
+          const quadrature_result<Real> q =
+              integrate_recursive(f, u, next, inner_tol, pick(abs(next - u)), opt.max_depth, left());
           out.evaluations += q.evaluations;
           const Real fn = su + q.value - s_target;
           if (abs(fn) < abs(fu)) {

@@ -8,9 +8,11 @@
 // slopes, cells split at the arc-length positions of knots (where u'' or u' jumps), error O(ds^4);
 // (c) newton (newton_inversion.hpp). (a) and (b) may add one safeguarded Newton polish over one
 // panel of the short-step rule. M is given, or doubled from 16 per segment until the Hermite
-// table's measured midpoint error is below table_tolerance * L.
+// table's measured midpoint error is below table_tolerance * L (or the resolution of u in Real, far
+// from 0: rounding_limited), or the construction's evaluation budget (2^25) would be passed (cap_hit).
+// Degenerate curves (length 0 or rounding noise of their size) have s(u) but no u(s).
 // Sources: seed 002 (arc-length table, u = U(s) by lookup); Eberly (2008); Fritsch & Carlson (1980).
-// Cost: construction O(M) Newton solves; u(s) O(1) (+15 or 31 evaluations with the polish);
+// Cost: construction O(M) Newton solves, at most max_evaluations; u(s) O(1) (+15 or 31 with the polish);
 // s(u) O(log M) + one integral. Holds a copy of the curve; const members are thread-safe.
 #pragma once
 
@@ -52,7 +54,21 @@ struct parameterization_options {
   Real table_tolerance{std::max(Real(32) * epsilon<Real>(), Real(1) / Real(1000000000000000LL))};
   /// Newton inversion (method c, table nodes, polish) and segment lengths; see newton_options.
   newton_options<Real> newton{};
+  /// Total curve-derivative evaluations of the construction (segment lengths, knots, table). The
+  /// segment lengths get at most half; each table node gets its share of what is left (never below
+  /// min_node_evaluations); a doubling whose projected cost (twice the last table's) would pass the
+  /// budget is not started. The table stops there: table_status() cap_hit (not_guaranteed when no
+  /// finer table measured the first one).
+  std::size_t max_evaluations{std::size_t(1) << 25};
 };
+
+/// The fewest evaluations a table node's Newton solve is given however the budget is shared: one
+/// short-step integral and its speed.
+inline constexpr std::size_t min_node_evaluations = 64;
+
+/// A curve whose length is at most this many eps of its size (the largest |P| at its breakpoints)
+/// has a length made of rounding noise: nothing of it can be told apart in arc length.
+inline constexpr int degenerate_length_eps = 64;
 
 template <curve C>
 class parameterization {
@@ -63,25 +79,33 @@ class parameterization {
   using Real = real_type;
 
   /// Precomputes the segment lengths and, for methods a and b, the s-grid table. Throws
-  /// invalid_input for a curve of zero length or bad options.
+  /// invalid_input for bad options, a length that is not finite, and for a degenerate curve (length 0, or at most
+  /// degenerate_length_eps eps of its size: rounding noise) unless the method is newton: such a
+  /// curve has s(u) (within its noise) but no u(s), which then throws invalid_input.
   explicit parameterization(C c, const parameterization_options<Real>& opt = {})
       : curve_(std::move(c)), opt_(opt) {
     detail::check_newton_options(opt_.newton);
     validate::positive("table_tolerance", opt_.table_tolerance);
     adaptive_options<Real> seg_opt = segment_lengths<Real>::default_options();
     seg_opt.gauss_points = opt_.newton.gauss_points;
+    seg_opt.max_evaluations = std::min(seg_opt.max_evaluations, opt_.max_evaluations / 2);
     segments_ = segment_lengths<Real>(curve_, seg_opt);
     if (!is_finite(segments_.length()))
       validate::fail("curve length = " + to_text(segments_.length()) +
-                     ": not representable in this precision (the curve's coordinates or derivatives overflow)");
-    if (!(segments_.length() > Real(0)))
-      validate::fail("curve length = " + to_text(segments_.length()) +
-                     ": an arc-length parameterization needs a curve of positive length");
+                     ": not finite (the speed |P'| overflowed or is not a number somewhere on the curve); an "
+                     "arc-length parameterization needs a finite length");
+    measure_degeneracy();
     if (opt_.method != inversion_method::newton) {
+      require_length();
       collect_knots();
       build_table();
     }
   }
+
+  /// Whether the length is 0 or rounding noise (see degenerate_length_eps): no u(s).
+  [[nodiscard]] bool degenerate() const { return !(length() > noise_length_); }
+  /// The curve's size: the largest |P|_inf at its breakpoints.
+  [[nodiscard]] Real size() const { return size_; }
 
   [[nodiscard]] const C& curve() const { return curve_; }
   [[nodiscard]] const parameterization_options<Real>& options() const { return opt_; }
@@ -97,14 +121,18 @@ class parameterization {
 
   /// s(u) with its error estimate, evaluations and status.
   [[nodiscard]] quadrature_result<Real> s_result(const Real& u) const {
+    using std::max;
     check_parameter(u, domain());
     Real u_known, s_known, e_known;
     nearest_known(u, u_known, s_known, e_known);
     quadrature_result<Real> q;
+    // A degenerate curve's s(u) is wanted to its noise level only (its length is noise).
     if (u > u_known)
       q = integrate_recursive([this](const Real& x) { return speed(curve_, x); }, u_known, u,
-                              opt_.newton.relative_tolerance * length() / Real(8),
-                              gauss_kronrod<Real>(opt_.newton.gauss_points), opt_.newton.max_depth);
+                              max(Real(opt_.newton.relative_tolerance * length() / Real(8)),
+                                  degenerate() ? noise_length_ : Real(0)),
+                              gauss_kronrod<Real>(opt_.newton.gauss_points), opt_.newton.max_depth,
+                              opt_.newton.max_evaluations);
     q.value += s_known;
     q.error_estimate += e_known;
     return q;
@@ -116,6 +144,7 @@ class parameterization {
   /// u(s) by the given method (a table method needs the object built with a table method,
   /// otherwise std::logic_error).
   [[nodiscard]] Real u(const Real& s, inversion_method m) const {
+    require_length();
     check_arc_length(s, length());
     if (m == inversion_method::newton) return newton_invert(curve_, segments_, s, opt_.newton).u;
     require_table();
@@ -127,6 +156,7 @@ class parameterization {
   /// estimate, evaluations and status. For the table methods the status is converged when the
   /// estimate meets newton.relative_tolerance * L, otherwise not_guaranteed.
   [[nodiscard]] inversion_result<Real> invert(const Real& s, inversion_method m) const {
+    require_length();
     check_arc_length(s, length());
     if (m == inversion_method::newton) return newton_invert(curve_, segments_, s, opt_.newton);
     using std::abs;
@@ -164,8 +194,11 @@ class parameterization {
   /// Measured bound of the Hermite table's |ds| error (the coarser table's midpoint error when the
   /// size was found by doubling; +inf when the size was given and not measured).
   [[nodiscard]] Real table_error() const { return table_error_; }
-  /// converged (table_error <= table_tolerance * L), cap_hit (max_table_intervals reached first),
-  /// not_guaranteed (size given by the caller: not measured).
+  /// converged (table_error <= table_tolerance * L), rounding_limited (table_error is at the
+  /// resolution of u in Real, 8 eps max|u| max|P'|, above that target: a domain far from 0),
+  /// cap_hit (max_table_intervals or max_evaluations reached first, or a node's Newton solve ran
+  /// out of its share; table_error then includes the worst node's bound), not_guaranteed (size
+  /// given by the caller, or the budget allowed no finer table to measure it: no bound).
   [[nodiscard]] result_status table_status() const { return table_status_; }
   /// The s-grid nodes u_j (size M + 1).
   [[nodiscard]] std::span<const Real> table_parameters() const { return nodes_u_; }
@@ -209,6 +242,29 @@ class parameterization {
   static std::size_t to_index(const Real& x) {
     using std::floor;
     return static_cast<std::size_t>(static_cast<long long>(floor(x)));
+  }
+
+  // The noise level and the size (positions at the breakpoints: their evaluations are counted).
+  void measure_degeneracy() {
+    using std::abs;
+    using std::max;
+    Real size(0);
+    for (const Real& b : segments_.parameters()) {
+      const point_type p = curve_(b);
+      for (int d = 0; d < p.size(); ++d) size = max(size, Real(abs(p[d])));
+      ++build_evaluations_;
+    }
+    size_ = size;
+    noise_length_ = Real(degenerate_length_eps) * epsilon<Real>() * size;
+  }
+
+  void require_length() const {
+    if (degenerate())
+      validate::fail("curve length = " + to_text(length()) +
+                     (length() == Real(0) ? std::string()
+                                          : " is rounding noise (at most " + std::to_string(degenerate_length_eps) +
+                                                " eps of the curve's size " + to_text(size_) + ")") +
+                     ": an arc-length parameterization needs a curve of positive length");
   }
 
   void require_table() const {
@@ -300,8 +356,10 @@ class parameterization {
   // absolute s each node inherited the previous one's rounding of eps s, a random walk that grew
   // like sqrt(M) eps L (1.2e-14 L at M = 32768 on a 4-segment Catmull-Rom) and kept the automatic
   // sizing from ever meeting 32 eps L.
-  void compute_nodes(std::size_t m, std::vector<Real>& us, std::vector<Real>& ss, std::vector<Real>& es,
-                     std::vector<Real>& sp) {
+  // Each node's Newton solve gets its share of the budget left (never below min_node_evaluations);
+  // the status returned is the worst of the nodes' (cap_hit when a share ran out).
+  result_status compute_nodes(std::size_t m, std::vector<Real>& us, std::vector<Real>& ss, std::vector<Real>& es,
+                              std::vector<Real>& sp) {
     const Real len = length();
     const Real tol = opt_.newton.relative_tolerance * len;
     us.assign(m + 1, Real(0));
@@ -316,6 +374,7 @@ class parameterization {
     ss[m] = len;
     es[m] = err.back();
     Real carried(0);  // s(u_{j-1}) - s_{j-1} as computed along the chain
+    result_status status = result_status::converged;
     for (std::size_t j = 1; j < m; ++j) {
       const Real sj = len * Real(static_cast<long long>(j)) / Real(static_cast<long long>(m));
       ss[j] = sj;
@@ -337,14 +396,42 @@ class parameterization {
       }
       newton_options<Real> node_opt = opt_.newton;
       node_opt.final_step = true;  // nodes are interpolated by every query: polish them to rounding level
+      const std::size_t share = budget_left() > m + 1 ? (budget_left() - (m + 1)) / (m - j) : 0;
+      node_opt.max_evaluations = std::min(node_opt.max_evaluations, std::max(min_node_evaluations, share));
       const inversion_result<Real> r = newton_invert(curve_, target, br, tol, node_opt);
       build_evaluations_ += r.evaluations;
+      if (r.status == result_status::cap_hit) status = result_status::cap_hit;
       us[j] = r.u;
       es[j] = r.s_error_estimate + inherited;
       carried = r.residual;
     }
     for (std::size_t j = 0; j <= m; ++j) sp[j] = speed(curve_, us[j]);
     build_evaluations_ += m + 1;
+    return status;
+  }
+
+  [[nodiscard]] std::size_t budget_left() const {
+    const std::size_t spent = construction_evaluations();
+    return opt_.max_evaluations > spent ? opt_.max_evaluations - spent : 0;
+  }
+
+  // What the table can resolve in arc length: 8 eps max|u| max|P'| (u is a Real: one ulp of u
+  // moves s by |P'| ulp(u); the Hermite evaluation adds a few ulps). Far from 0 (a domain [1e8,
+  // 1e8 + 1]) this is far above table_tolerance * L.
+  [[nodiscard]] Real resolution(const std::vector<Real>& sp) const {
+    using std::abs;
+    using std::max;
+    Real top(0);
+    for (const Real& v : sp) top = max(top, v);
+    const Real umax = max(Real(abs(domain().lo)), Real(abs(domain().hi)));
+    return Real(8) * epsilon<Real>() * umax * top;
+  }
+
+  // The worst node bound of a table, added to its measured error when a node's solve was capped.
+  [[nodiscard]] static Real worst_node_error(const std::vector<Real>& es) {
+    Real w(0);
+    for (const Real& e : es) w = e > w ? e : w;
+    return w;
   }
 
   // The Hermite cubic on a piece of arc-length width w from (u0, |P'| = sp0) to (u1, sp1): slopes
@@ -436,13 +523,21 @@ class parameterization {
       // stopped at 40960 with 65536 allowed).
       std::size_t m = std::bit_ceil(std::max<std::size_t>(16, 16 * segments_.segment_count()));
       m = std::min(m, std::max<std::size_t>(1, opt_.max_table_intervals / 2));
-      compute_nodes(m, us, ss, es, sp);
-      table_status_ = result_status::cap_hit;
+      std::size_t before = construction_evaluations();
+      result_status nodes = compute_nodes(m, us, ss, es, sp);
+      std::size_t last_cost = construction_evaluations() - before;
+      table_status_ = result_status::not_guaranteed;  // until a finer table measures this one
       table_error_ = no_bound<Real>();
       while (true) {
+        if (nodes == result_status::cap_hit || 2 * last_cost > budget_left()) {
+          if (is_finite(table_error_)) table_status_ = result_status::cap_hit;
+          break;
+        }
         const hermite_table h = make_hermite(us, ss, sp);
         std::vector<Real> us2, ss2, es2, sp2;
-        compute_nodes(2 * m, us2, ss2, es2, sp2);
+        before = construction_evaluations();
+        nodes = compute_nodes(2 * m, us2, ss2, es2, sp2);
+        last_cost = construction_evaluations() - before;
         Real worst_err(0);
         for (std::size_t j = 0; j < m; ++j) {
           const Real du = abs(h.eval(ss2[2 * j + 1], j) - us2[2 * j + 1]);
@@ -451,10 +546,20 @@ class parameterization {
         us.swap(us2), ss.swap(ss2), es.swap(es2), sp.swap(sp2);
         m *= 2;
         table_error_ = worst_err;
+        if (nodes == result_status::cap_hit) {  // the finer nodes are only as good as their bounds
+          table_error_ = worst_err + worst_node_error(es);
+          table_status_ = result_status::cap_hit;
+          break;
+        }
         if (worst_err <= opt_.table_tolerance * len) {
           table_status_ = result_status::converged;
           break;
         }
+        if (worst_err <= resolution(sp)) {
+          table_status_ = result_status::rounding_limited;
+          break;
+        }
+        table_status_ = result_status::cap_hit;
         if (2 * m > opt_.max_table_intervals) break;
       }
     }
@@ -474,6 +579,7 @@ class parameterization {
   hermite_table hermite_;
   Real inv_ds_{0};
   Real table_error_{0};
+  Real size_{0}, noise_length_{0};
   result_status table_status_{result_status::not_guaranteed};
   std::size_t build_evaluations_{0};
 };

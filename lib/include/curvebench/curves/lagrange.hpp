@@ -10,6 +10,8 @@
 // equispaced_parameters and chebyshev_parameters (second kind, ends included) give the u_j. The
 // domain is [u_0, u_n]; breakpoints {u_0, u_n}. Bad data (fewer than 2 points, non-finite values,
 // non-increasing parameters, overflowing weights) throw invalid_input; u outside std::domain_error.
+// Limits, checked before any work: at most max_barycentric_points (10^4: O(n^2) weights, O(n) per
+// value) and max_monomial_points (10^3: an n x n matrix, O(n^3) LU) points.
 // Sources: Berrut & Trefethen (2004); Higham (2004); Schneider & Werner (1986).
 // Accuracy: barycentric O(Lebesgue constant * eps); monomial O(cond(V) * eps).
 #pragma once
@@ -35,6 +37,10 @@ namespace curvebench {
 
 /// How a Lagrange curve is represented and evaluated (see lagrange.hpp).
 enum class lagrange_algorithm { barycentric, monomial };
+
+/// The most points a Lagrange curve takes, per algorithm (see the header).
+inline constexpr std::size_t max_barycentric_points = 10000;
+inline constexpr std::size_t max_monomial_points = 1000;
 
 /// Name of an algorithm, as used in benchmark names and reports.
 [[nodiscard]] inline const char* to_string(lagrange_algorithm a) {
@@ -102,6 +108,13 @@ class lagrange {
            lagrange_algorithm algorithm = lagrange_algorithm::barycentric)
       : algorithm_(algorithm), points_(points.begin(), points.end()), params_(parameters.begin(), parameters.end()) {
     validate::count_at_least("points", points_.size(), 2, "a Lagrange curve of degree n >= 1 has n + 1 points");
+    const std::size_t limit =
+        algorithm_ == lagrange_algorithm::monomial ? max_monomial_points : max_barycentric_points;
+    if (points_.size() > limit)
+      validate::fail("points: " + std::to_string(points_.size()) + " points, more than the " +
+                     std::string(to_string(algorithm_)) + " algorithm's limit of " + std::to_string(limit) +
+                     (algorithm_ == lagrange_algorithm::monomial ? " (an n x n Vandermonde matrix, O(n^3) to solve)"
+                                                                 : " (O(n^2) weights, O(n) per value)"));
     validate::finite_points<Real, Dim>("points", points_);
     validate::same_count("parameters", params_.size(), "points", points_.size());
     validate::increasing<Real>("parameters", params_);

@@ -63,6 +63,9 @@ inline constexpr std::size_t audit_max_points = 40;
 template <int Dim>
 using evaluator_fn = std::function<point<double, Dim>(double)>;
 
+/// The most points a generator makes (its "count"): checked before any point is made.
+inline constexpr std::size_t max_generated_points = 1000000;
+
 namespace detail {
 
 inline constexpr std::string_view generators[] = {"helix", "lissajous", "spiral", "runge"};
@@ -78,8 +81,9 @@ inline std::vector<std::vector<double>> generate_points(const field& g) {
   g.only_members({"generate", "count", "radius", "pitch", "turns", "a", "b", "nodes"});
   const std::string kind = g.member("generate").one_of({"helix", "lissajous", "spiral", "runge"});
   const long long count = g.member("count").integer();
-  if (count < 2 || count > 10000000)
-    g.member("count").fail(std::to_string(count) + " is not allowed (2 to 10000000 points)");
+  if (count < 2 || count > static_cast<long long>(max_generated_points))
+    g.member("count").fail(std::to_string(count) + " is not allowed (2 to " + std::to_string(max_generated_points) +
+                           " points: the generated set is built in memory, about 1 KB a point, before the curve)");
   const auto n = static_cast<std::size_t>(count);
   const double two_pi = 2 * boost::math::constants::pi<double>();
   const auto num = [&](std::string_view key, double fallback) { return g.has(key) ? g.member(key).number() : fallback; };
