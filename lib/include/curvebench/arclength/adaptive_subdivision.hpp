@@ -5,7 +5,8 @@
 // test, and look_ahead (the quarter chords must agree too, at an observed order >= log2 3). No
 // sampling method is proof against a curve designed to pass at every level.
 // Estimate: the accepted differences (order >= 1 assumed without look-ahead, checked with it) plus
-// rounding. Status: converged when every leaf passed, cap_hit when max_depth forced one.
+// rounding, the curve's own included: 2 rounding_bound(c, 0) per position evaluated (core/curve.hpp;
+// not_guaranteed, +inf, for a curve without a bound). Status: converged when every leaf passed, cap_hit when max_depth forced one.
 // Sources: Parent (2012), 3.2.2; seed 002 ("adaptive forward differencing").
 // Cost: ~2 position evaluations per accepted leaf (+2 with look-ahead), ~L / tolerance^(1/3)
 // leaves. Accuracy: order 2 in the leaf size on smooth pieces.
@@ -115,6 +116,15 @@ template <curve C>
   }
   using std::abs;
   sub.out.error_estimate += Real(static_cast<long long>(sub.out.evaluations + 8)) * epsilon<Real>() * abs(sub.out.value);
+  // The curve's own rounding (core/curve.hpp): every chord end is off by at most rounding_bound(c,
+  // 0), and the chords summed are fewer than the positions evaluated.
+  const Real b0 = rounding_bound(c, 0);
+  if (!is_finite(b0)) {
+    sub.out.error_estimate = no_bound<Real>();
+    sub.out.status = result_status::not_guaranteed;
+  } else if (b0 > Real(0)) {
+    sub.out.error_estimate += Real(2) * Real(static_cast<long long>(sub.out.evaluations)) * b0;
+  }
   return sub.out;
 }
 

@@ -8,7 +8,9 @@
 // slopes, cells split at the arc-length positions of knots (where u'' or u' jumps), error O(ds^4);
 // (c) newton (newton_inversion.hpp). (a) and (b) may add one safeguarded Newton polish over one
 // panel of the short-step rule. M is given, or doubled from 16 per segment until the Hermite
-// table's measured midpoint error is below table_tolerance * L.
+// table's measured midpoint error is below table_tolerance * L. s(u)'s estimate, and with it
+// invert()'s, includes the curve's own rounding (length.hpp, evaluation_error); table_error() is the
+// Hermite interpolation's measured error only.
 // Sources: seed 002 (arc-length table, u = U(s) by lookup); Eberly (2008); Fritsch & Carlson (1980).
 // Cost: construction O(M) Newton solves; u(s) O(1) (+15 or 31 evaluations with the polish);
 // s(u) O(log M) + one integral. Holds a copy of the curve; const members are thread-safe.
@@ -102,8 +104,13 @@ class parameterization {
       q = integrate_recursive([this](const Real& x) { return speed(curve_, x); }, u_known, u,
                               opt_.newton.relative_tolerance * length() / Real(8),
                               gauss_kronrod<Real>(opt_.newton.gauss_points), opt_.newton.max_depth);
+    add_evaluation_error(q, evaluation_error(curve_, u_known, u), opt_.newton.relative_tolerance * length());
     q.value += s_known;
     q.error_estimate += e_known;
+    if (!is_finite(q.error_estimate) || !is_finite(rounding_bound(curve_, 1))) {  // no bound known (core/curve.hpp)
+      q.error_estimate = no_bound<Real>();
+      q.status = result_status::not_guaranteed;
+    }
     return q;
   }
 
