@@ -11,11 +11,12 @@
 // reason for the cap): no allocation, no mutable state, thread-safe. Bad data throw invalid_input;
 // u outside the domain std::domain_error.
 // rounding_bound(order), order 0 or 1 (core/curve.hpp), of the default de Casteljau evaluation:
-// (10 L + 8) eps max_i |D_i| over the level's control points D_i: de Casteljau's L levels of
-// s b_i + t b_{i+1} with s = fl(1 - t) err by at most gamma_{4L} sum_i B_i(t) |D_i| (the convex
+// (3L + 4 + 2L c) eps max_i |D_i| (+1%) over the level's control points D_i: de Casteljau's L levels
+// of s b_i + t b_{i+1} with s = fl(1 - t) err by at most gamma_{3L} sum_i B_i(t) |D_i| (the convex
 // combination argument of Farouki & Rajan 1987), the hodograph level by gamma_4 (a difference, a
-// product, a division by fl(b - a)), and t = fl((u - a) / (b - a)) by gamma_3, which moves the value
-// by at most gamma_3 2L max |D_i|. Cost: O(L) once at construction.
+// product, a division by fl(b - a)), and t = fl((u - a) / (b - a)) by gamma_c, c = 3 (0 on a domain
+// [0, 2^k], where t is exact), which moves the value by at most gamma_c 2L max |D_i|.
+// Cost: O(L) once at construction.
 // Sources: seed 000 (de Casteljau, Bernstein polynomials, derivatives), seed 002; Farin (2002),
 // ch. 4-6; Farouki & Rajan (1987). Accuracy: O(L eps) for de Casteljau and Bernstein, O(3^L eps) for Horner.
 #pragma once
@@ -28,6 +29,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -247,7 +249,13 @@ class bezier {
     for (int k = 0; k <= 1; ++k) {
       Real biggest(0);
       for (const point_type& d : level(std::min(k, n))) biggest = std::max(biggest, Real(sqrt(d.squaredNorm())));
-      rounding_bound_[static_cast<std::size_t>(k)] = from_int<Real>(10LL * n + 8) * epsilon<Real>() * biggest;
+      // c of the header: u - 0 and a division by a power of two are exact.
+      using std::frexp;
+      int exponent = 0;
+      const bool exact_t = domain_.lo == Real(0) && frexp(domain_.hi, &exponent) == Real(0.5);
+      const long long c = exact_t ? 0 : 3;
+      rounding_bound_[static_cast<std::size_t>(k)] =
+          from_int<Real>(3LL * n + 4 + 2LL * n * c) * epsilon<Real>() * biggest * (Real(101) / Real(100));
     }
   }
 
