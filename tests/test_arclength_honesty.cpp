@@ -7,6 +7,7 @@
 #include "support/accuracy.hpp"
 #include "support/fixtures.hpp"
 
+#include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/arclength/newton_inversion.hpp"
@@ -448,6 +449,97 @@ TEST(arclength_honesty, table_polish_on_the_runge_wiggles) {
       const double s = plain.length() * std::fmod(51 * inv_phi, 1.0);
       const double e_plain = error(plain.u(s), s), e_pol = error(polished.u(s), s);
       EXPECT_LT(e_pol, e_plain / 10) << "plain " << e_plain << " polished " << e_pol;
+    }
+  }
+}
+
+namespace {
+
+// The graph of 1/(1 + a x^2) through 21 Chebyshev points (bench/cases/runge_lagrange_chebyshev.json
+// at a = 25: its generator's x = -cos(pi j / 20) in double, parameters chebyshev_parameters in
+// double, as the registry resolves them), and the exact 50-digit twin's reference.
+cb::lagrange<double, 2> runge_chebyshev(double a) {
+  cb::point_list<double, 2> p;
+  for (int j = 0; j <= 20; ++j) {
+    const double x = -std::cos(3.141592653589793 * (j / 20.0));
+    p.emplace_back(x, 1 / (1 + a * x * x));
+  }
+  const std::vector<double> u = cb::chebyshev_parameters<double>(21);
+  return cb::lagrange<double, 2>(std::span<const pt2<double>>(p), std::span<const double>(u));
+}
+ref::reference_arc_length<cb::lagrange<R, 2>> reference_of(const cb::lagrange<double, 2>& c) {
+  return ref::reference_arc_length<cb::lagrange<R, 2>>(ref::convert_curve<R>(c, [](const auto& d, auto to) {
+    using To = typename decltype(to)::type;
+    return cb::lagrange<To, 2>(ref::exact_points<To>(d.points()), ref::exact_values<To>(d.parameters()));
+  }));
+}
+
+}  // namespace
+
+// Defect 3 (issue 16, the full sweep): the nested 8-point rule on runge_lagrange_chebyshev said
+// converged with |Q2 - Q4| = 2.8e-4 L against a true error of 1.2e-3 L. The speed sqrt(1 + y'^2)
+// has a shallow minimum at x = 0 (speed 1 against 3.4 at most: not deep enough to split at) whose
+// branch points are at +-i/50, far closer to the real axis than the quarter panels are wide; the
+// whole, halves and quarters converge erratically there and |Q1 - Q2| >= 16 |Q2 - Q4| held by
+// coincidence. A rule, not a patch: every steepness a and every n must be honest, and where the
+// branch points are far (a = 1: at about +-0.5 i on [-1, 1]) the rule must keep its bound from
+// n = 8 on (measured: converged from n = 3).
+TEST(arclength_honesty, fixed_gauss_nested_on_a_shallow_minimum_near_a_branch_point) {
+  for (double a : {1.0, 4.0, 25.0, 100.0}) {
+    SCOPED_TRACE("a = " + std::to_string(a));
+    const auto c = runge_chebyshev(a);
+    const auto r50 = reference_of(c);
+    for (int n = 1; n <= 20; ++n) {
+      SCOPED_TRACE("n = " + std::to_string(n));
+      const auto r = al::gauss_length(c, n, al::fixed_estimate::nested);
+      EXPECT_TRUE(honest(r, r50.length()));
+      EXPECT_TRUE(honest(al::gauss_length(c, -1.0, 0.25, al::gauss_legendre<double>(n), al::fixed_estimate::nested),
+                         r50.s(R(0.25))));
+      if (a == 1.0 && n >= 8) {
+        EXPECT_EQ(r.status, al::result_status::converged);
+      }
+    }
+  }
+}
+
+// Defect 4 (issue 16, the full sweep): on runge_lagrange_equispaced the double evaluation of P'
+// rounds by up to 3e7 eps (the wiggles' Lebesgue constant), a bias no quadrature or chord estimate
+// sees: adaptive G7-K15 at 1e-14 (cap_hit, estimate 7.8e-14 L, error 2.4e-13 L), subdivision at 1e-7
+// to 1e-9 L (cap_hit, estimates 0.6x to 0.8x of the errors), s(u) from segment lengths and Newton
+// u(s) (rounding_limited, 0.15x and 0.35x) and a polished table's u(s). Every estimate now adds the
+// curve's rounding bound (lagrange::rounding_bound): every status but not_guaranteed must bound.
+TEST(arclength_honesty, runge_equispaced_estimates_include_the_curves_rounding) {
+  const cb::lagrange<double, 2> c = runge_equispaced();
+  const auto& r = runge_reference();
+  const double L = static_cast<double>(r.length());
+  for (double tol : {1e-10, 1e-12, 1e-14}) {
+    al::adaptive_options<double> o;
+    o.relative_tolerance = tol;
+    EXPECT_TRUE(honest(al::adaptive_length(c, o), r.length())) << "adaptive tol " << tol;
+  }
+  for (double tol : {1e-7, 1e-8, 1e-9}) {
+    al::subdivision_options<double> o;
+    o.tolerance = tol * L;
+    EXPECT_TRUE(honest(al::subdivision_length(c, o), r.length())) << "subdivision tol " << tol;
+  }
+  al::parameterization_options<double> po;
+  po.method = al::inversion_method::newton;
+  po.newton.relative_tolerance = 1e-14;
+  const al::parameterization<cb::lagrange<double, 2>> newton(c, po);
+  po.method = al::inversion_method::hermite_table;
+  po.table_intervals = 16;
+  po.newton_polish = true;
+  const al::parameterization<cb::lagrange<double, 2>> table(c, po);
+  for (int k = 0; k <= 32; ++k) {
+    const double fraction = k == 0 ? 0.0 : k == 32 ? 1.0 : std::fmod(k * 0.6180339887498949, 1.0);
+    SCOPED_TRACE("k = " + std::to_string(k));
+    const al::quadrature_result<double> su = newton.s_result(fraction);
+    EXPECT_TRUE(honest(su, r.s(R(fraction))));
+    for (const auto* p : {&newton, &table}) {
+      const double s = std::min(L * fraction, p->length());
+      const auto q = p->invert(s, p == &newton ? al::inversion_method::newton : al::inversion_method::hermite_table);
+      if (q.status == al::result_status::not_guaranteed) continue;
+      EXPECT_LE(abs(r.s(R(q.u)) - R(s)), R(q.s_error_estimate)) << al::to_string(q.status) << " u=" << q.u;
     }
   }
 }

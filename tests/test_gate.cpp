@@ -113,6 +113,30 @@ TEST(gate, the_checked_in_thresholds_name_vocabulary_ids_only) {
   EXPECT_NO_THROW((void)check_gate(json{{"records", json::array()}}, t, "results", "reports/thresholds.json"));
 }
 
+// reports/thresholds_full.json, which scripts/bench.sh gates every run on (quick and full) without
+// `|| true`: an honesty rule over every quantity, method and group, and nothing a full sweep's
+// errors could breach otherwise. One dishonest record anywhere must fail it; clean results pass.
+TEST(gate, the_full_sweep_gate_is_honesty_on_every_record) {
+  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/reports/thresholds_full.json");
+  ASSERT_TRUE(in) << "reports/thresholds_full.json not found";
+  const json t = json::parse(in);
+  ASSERT_FALSE(t["rules"].empty());
+  for (const json& rule : t["rules"]) {
+    EXPECT_TRUE(rule.value("honest", false));
+    EXPECT_FALSE(rule.contains("max_error") || rule.contains("min_order")) << rule.dump();
+  }
+  EXPECT_TRUE(check_gate(clean_results(), t, "results", "reports/thresholds_full.json").empty());
+  for (std::size_t i : {0u, 1u}) {
+    json r = clean_results();
+    r["records"][i]["error"] = 1e-3;  // errors alone are not this gate's business
+    EXPECT_TRUE(check_gate(r, t, "results", "reports/thresholds_full.json").empty());
+    r["records"][i]["bounded"] = false;
+    const auto breaches = check_gate(r, t, "results", "reports/thresholds_full.json");
+    ASSERT_EQ(breaches.size(), 1u);
+    EXPECT_THAT(breaches[0].message, HasSubstr("not honest"));
+  }
+}
+
 // ---- malformed files (issue 16): a typo must not switch the gate off -------------------------
 
 namespace {

@@ -8,10 +8,11 @@
 // the breakpoints and the segments' midpoints (a lower bound of L): by default 1e-6 relative, so
 // the same work measures a curve of size 1e10 or 1e-10.
 // Estimate: the accepted differences (order >= 1 assumed without look-ahead, checked with it) plus
-// rounding. Status: converged when every leaf passed; rounding_limited when a leaf's share of the
-// target was below its chords' rounding (16 eps of their length) and it was accepted at that
-// level; cap_hit when max_depth or the evaluation budget forced a leaf (its last difference is
-// then its estimate, as for a passed leaf without look-ahead).
+// rounding, the curve's own included: 2 rounding_bound(c, 0) per position evaluated (core/curve.hpp;
+// not_guaranteed, +inf, for a curve without a bound). Status: converged when every leaf passed;
+// rounding_limited when a leaf's share of the target was below its chords' rounding (16 eps of their
+// length) and it was accepted at that level; cap_hit when max_depth or the evaluation budget forced
+// a leaf (its last difference is then its estimate, as for a passed leaf without look-ahead).
 // Sources: Parent (2012), 3.2.2; seed 002 ("adaptive forward differencing").
 // Cost: ~2 position evaluations per accepted leaf (+2 with look-ahead), ~(L / target)^(1/2)
 // leaves; at most max_evaluations (2^22), plus 5 per segment and 3 per level of the recursion (a
@@ -150,6 +151,15 @@ template <curve C>
   }
   using std::abs;
   sub.out.error_estimate += Real(static_cast<long long>(sub.out.evaluations + 8)) * epsilon<Real>() * abs(sub.out.value);
+  // The curve's own rounding (core/curve.hpp): every chord end is off by at most rounding_bound(c,
+  // 0), and the chords summed are fewer than the positions evaluated.
+  const Real b0 = rounding_bound(c, 0);
+  if (!is_finite(b0)) {
+    sub.out.error_estimate = no_bound<Real>();
+    sub.out.status = result_status::not_guaranteed;
+  } else if (b0 > Real(0)) {
+    sub.out.error_estimate += Real(2) * Real(static_cast<long long>(sub.out.evaluations)) * b0;
+  }
   return sub.out;
 }
 

@@ -6,7 +6,8 @@
 // bounds L - L_h when the ratio r = (L_2h - L_4h) / d2 lies in [3, 6] (observed order about 2) and
 // N >= 16, N divisible by 4; otherwise not_guaranteed, since features the table does not resolve
 // make chord sums creep, stall and jump. Richardson R = L_h + d2 / 3, estimate d2 / 3 under the same
-// check.
+// check. Both estimates add the curve's own rounding, 3 rounding_bound(c, 0) per chord
+// (core/curve.hpp; no bound, not_guaranteed, for a curve without one).
 // Sources: seed 002 ("Forward Differencing", table lookup); Parent, Computer Animation (2012), 3.2.
 // Cost: N + 1 position evaluations per segment to build, at most 2^24 in all unless the caller
 // allows more (checked before the work); s(u), u(s) O(log N), no evaluation.
@@ -57,6 +58,7 @@ class forward_difference_table {
     s_.push_back(Real(0));
     evaluations_ = 1;
     Real coarse(0), coarser(0);
+    position_bound_ = rounding_bound(c, 0);
     for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
       if (!(bp[i + 1] > bp[i])) continue;
       const Real h = (bp[i + 1] - bp[i]) / Real(static_cast<long long>(steps_));
@@ -99,7 +101,7 @@ class forward_difference_table {
     quadrature_result<Real> r;
     r.value = s_.back();
     r.evaluations = evaluations_;
-    if (!estimate_trusted()) {
+    if (!estimate_trusted() || !is_finite(position_bound_)) {
       r.error_estimate = no_bound<Real>();
       r.status = result_status::not_guaranteed;
       return r;
@@ -124,7 +126,7 @@ class forward_difference_table {
     const Real fine = s_.back();
     r.value = fine + (fine - coarse_length()) / Real(3);
     r.evaluations = evaluations_;
-    if (!estimate_trusted()) {
+    if (!estimate_trusted() || !is_finite(position_bound_)) {
       r.error_estimate = no_bound<Real>();
       r.status = result_status::not_guaranteed;
       return r;
@@ -157,9 +159,12 @@ class forward_difference_table {
   }
 
  private:
-  // Each chord is a few roundings, summed sequentially over the table.
+  // Each chord is a few roundings, summed sequentially over the table; and each chord's ends are
+  // off by the curve's own rounding (rounding_bound(c, 0) each, core/curve.hpp), so N chords by at
+  // most 2 N times it, and Richardson's (4 L_h - L_2h) / 3 by (4/3) 2N + (1/3) N = 3N times it.
   [[nodiscard]] Real rounding(const Real& value) const {
-    return Real(static_cast<long long>(s_.size() + 8)) * epsilon<Real>() * value;
+    const Real n = Real(static_cast<long long>(s_.size() + 8));
+    return n * epsilon<Real>() * value + (position_bound_ > Real(0) ? Real(3) * n * position_bound_ : Real(0));
   }
 
   // 3 d2 <= d1 <= 6 d2 (d1 = L_2h - L_4h, d2 = L_h - L_2h): the chord sums converge at an
@@ -176,6 +181,7 @@ class forward_difference_table {
   std::size_t steps_;
   std::vector<Real> u_, s_;
   Real coarse_{0}, coarser_{0};
+  Real position_bound_{0};
   std::size_t evaluations_{0};
 };
 

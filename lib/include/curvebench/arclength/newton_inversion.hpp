@@ -8,7 +8,10 @@
 // shrinks the bracket and steps u <- u - (s(u) - s*) / |P'(u)|, bisecting when the step leaves
 // the bracket or |P'| = 0. Stops when |s(u) - s*| + its error bound <= tolerance (converged), at
 // the iteration cap or the evaluation budget (cap_hit: the best iterate, its bound still reported)
-// or when the bracket cannot shrink in Real (rounding_limited).
+// or when the bracket cannot shrink in Real (rounding_limited). Every error bound (segment lengths,
+// |s(u) - s*|) includes the curve's own rounding over the stretch integrated, rounding_bound(c, 1)
+// |u - u_known| (length.hpp); a curve without a bound is solved all the same and its answers say
+// not_guaranteed (+inf).
 // Sources: seed 002 (find u2 with arclength(u1, u2) = s); Guenter & Parent (1990); Eberly (2008).
 // Cost: O(log segments) + 32 evaluations per long and 16 per short iteration, typically one long
 // and two or three short, at most max_evaluations (2^16) per query; no allocation per query.
@@ -80,6 +83,11 @@ class segment_lengths {
         seg_opt.max_evaluations = opt.max_evaluations > spent + reserve ? opt.max_evaluations - spent - reserve : 0;
         r = integrate_adaptive(f, std::span<const Real>(ends), seg_opt);
         r.evaluations += extra;
+        // The curve's own rounding; a curve without a bound leaves the total without one, but the
+        // cumulative bounds stay finite for the brackets of inversions (which then report none).
+        using std::max;
+        const Real ev = evaluation_error(c, bp[i], bp[i + 1]);
+        if (is_finite(ev)) add_evaluation_error(r, ev, max(opt.absolute_tolerance, opt.relative_tolerance * abs(r.value)));
       }
       total_ += r;
       const Real t = sum + r.value;
@@ -98,6 +106,10 @@ class segment_lengths {
     }
     total_.value = cumulative_.back();
     total_.error_estimate = cumulative_error_.back();
+    if (!is_finite(rounding_bound(c, 1))) {
+      total_.error_estimate = no_bound<Real>();
+      total_.status = result_status::not_guaranteed;
+    }
   }
 
   /// G7-K15 to 128 eps relative per segment (above the panels' rounding floor), at most 4000
@@ -235,6 +247,15 @@ template <curve C>
     return opt.short_fraction > 0 && len * Real(opt.short_fraction) < width ? short_rule : rule;
   };
   inversion_result<Real> out;
+  // The curve's own rounding over the integrated stretch (length.hpp). A curve without a bound is
+  // solved as if it had none to add, and the answer then carries no bound (not_guaranteed, +inf).
+  const bool bounded = is_finite(rounding_bound(c, 1));
+  auto ev = [&](const Real& x, const Real& y) { return bounded ? evaluation_error(c, x, y) : Real(0); };
+  auto finish = [&](inversion_result<Real>& o) {
+    if (bounded) return;
+    o.s_error_estimate = no_bound<Real>();
+    o.status = result_status::not_guaranteed;
+  };
   Real lo = br.u_lo, slo = br.s_lo, elo = br.s_lo_error;
   Real hi = br.u_hi, shi = br.s_hi, ehi = br.s_hi_error;
   if (s_target == slo || !(hi > lo)) {
@@ -242,6 +263,7 @@ template <curve C>
     out.residual = slo - s_target;
     out.s_error_estimate = abs(out.residual) + elo;
     out.status = out.s_error_estimate <= tolerance ? result_status::converged : result_status::rounding_limited;
+    finish(out);
     return out;
   }
   if (s_target == shi) {
@@ -249,6 +271,7 @@ template <curve C>
     out.residual = Real(0);
     out.s_error_estimate = ehi;
     out.status = ehi <= tolerance ? result_status::converged : result_status::rounding_limited;
+    finish(out);
     return out;
   }
   Real u = br.guess;
@@ -267,12 +290,12 @@ template <curve C>
     if (u - lo <= hi - u) {
       const quadrature_result<Real> q = integrate_recursive(f, lo, u, inner_tol, pick(u - lo), opt.max_depth, left());
       su = slo + q.value;
-      eu = elo + q.error_estimate;
+      eu = elo + q.error_estimate + ev(lo, u);
       out.evaluations += q.evaluations;
     } else {
       const quadrature_result<Real> q = integrate_recursive(f, u, hi, inner_tol, pick(hi - u), opt.max_depth, left());
       su = shi - q.value;
-      eu = ehi + q.error_estimate;
+      eu = ehi + q.error_estimate + ev(u, hi);
       out.evaluations += q.evaluations;
     }
     const Real fu = su - s_target;
@@ -296,7 +319,7 @@ template <curve C>
           if (abs(fn) < abs(fu)) {
             out.u = next;
             out.residual = fn;
-            out.s_error_estimate = abs(fn) + eu + q.error_estimate;
+            out.s_error_estimate = abs(fn) + eu + q.error_estimate + ev(u, next);
           }
         }
       }
@@ -317,6 +340,7 @@ template <curve C>
     }
     u = next;
   }
+  finish(out);
   return out;
 }
 

@@ -11,6 +11,8 @@
 // table's measured midpoint error is below table_tolerance * L (or the resolution of u in Real, far
 // from 0: rounding_limited), or the construction's evaluation budget (2^25) would be passed (cap_hit).
 // Degenerate curves (length 0 or rounding noise of their size) have s(u) but no u(s).
+// s(u)'s estimate, and with it invert()'s, includes the curve's own rounding (length.hpp,
+// evaluation_error); table_error() is the Hermite interpolation's measured error only.
 // Sources: seed 002 (arc-length table, u = U(s) by lookup); Eberly (2008); Fritsch & Carlson (1980).
 // Cost: construction O(M) Newton solves, at most max_evaluations; u(s) O(1) (+15 or 31 with the polish);
 // s(u) O(log M) + one integral. Holds a copy of the curve; const members are thread-safe.
@@ -133,8 +135,13 @@ class parameterization {
                                   degenerate() ? noise_length_ : Real(0)),
                               gauss_kronrod<Real>(opt_.newton.gauss_points), opt_.newton.max_depth,
                               opt_.newton.max_evaluations);
+    add_evaluation_error(q, evaluation_error(curve_, u_known, u), opt_.newton.relative_tolerance * length());
     q.value += s_known;
     q.error_estimate += e_known;
+    if (!is_finite(q.error_estimate) || !is_finite(rounding_bound(curve_, 1))) {  // no bound known (core/curve.hpp)
+      q.error_estimate = no_bound<Real>();
+      q.status = result_status::not_guaranteed;
+    }
     return q;
   }
 

@@ -9,6 +9,11 @@
 //                                    (segment boundaries); integrators split there
 // and exposes `real_type`, `point_type` and `static constexpr int dimension`.
 // Evaluating outside [u0, u1] throws std::domain_error (see `check_parameter`).
+// Optionally, `c.rounding_bound(order)` (order 0 or 1) -> Real: an upper bound, over the whole
+// domain, on |fl(P^(order)(u)) - P^(order)(u)| (Euclidean norm) for the curve's own evaluation in
+// Real, a constant computed once at construction (+infinity: no bound known). `rounding_bound(c,
+// order)` returns it, or 0 for a curve that declares none: its evaluation is then taken to be as
+// well conditioned as the rounding floors of the arc-length methods assume (a few eps of |P'|).
 // Arc length, inversion and motion (arclength/, motion/) are written against this concept only.
 #pragma once
 
@@ -44,6 +49,21 @@ concept curve = requires(const C& c, const typename C::real_type& u, int order) 
   { c.derivative(u, order) } -> std::convertible_to<typename C::point_type>;
   { c.breakpoints() } -> std::convertible_to<std::span<const typename C::real_type>>;
 };
+
+/// A curve that declares the rounding of its own evaluation (see the header).
+template <class C>
+concept declares_rounding_bound = curve<C> && requires(const C& c, int order) {
+  { c.rounding_bound(order) } -> std::convertible_to<typename C::real_type>;
+};
+
+/// c.rounding_bound(order) when c declares one, else 0 (see the header). order is 0 or 1.
+template <curve C>
+[[nodiscard]] typename C::real_type rounding_bound(const C& c, int order) {
+  if constexpr (declares_rounding_bound<C>)
+    return c.rounding_bound(order);
+  else
+    return typename C::real_type(0);
+}
 
 /// Throws std::domain_error unless u lies in the closed domain (NaN fails too):
 /// "u = 1.5 is outside the domain [0, 1]"; batch evaluators pass the span's name and the index:

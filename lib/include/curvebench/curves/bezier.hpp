@@ -10,8 +10,15 @@
 // elevate (O(L)), hodograph, power_coefficients. Evaluation uses a stack buffer of 61 points (the
 // reason for the cap): no allocation, no mutable state, thread-safe. Bad data throw invalid_input;
 // u outside the domain std::domain_error.
+// rounding_bound(order), order 0 or 1 (core/curve.hpp), of the default de Casteljau evaluation:
+// (3L + 4 + 2L c) eps max_i |D_i| (+1%) over the level's control points D_i: de Casteljau's L levels
+// of s b_i + t b_{i+1} with s = fl(1 - t) err by at most gamma_{3L} sum_i B_i(t) |D_i| (the convex
+// combination argument of Farouki & Rajan 1987), the hodograph level by gamma_4 (a difference, a
+// product, a division by fl(b - a)), and t = fl((u - a) / (b - a)) by gamma_c, c = 3 (0 on a domain
+// [0, 2^k], where t is exact), which moves the value by at most gamma_c 2L max |D_i|.
+// Cost: O(L) once at construction.
 // Sources: seed 000 (de Casteljau, Bernstein polynomials, derivatives), seed 002; Farin (2002),
-// ch. 4-6. Accuracy: O(L eps) for de Casteljau and Bernstein, O(3^L eps) for Horner.
+// ch. 4-6; Farouki & Rajan (1987). Accuracy: O(L eps) for de Casteljau and Bernstein, O(3^L eps) for Horner.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -20,8 +27,11 @@
 #include "curvebench/core/real.hpp"
 #include "curvebench/curves/detail/bezier_eval.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <utility>
@@ -89,6 +99,13 @@ class bezier {
     if (k < 0 || k > degree_)
       validate::fail("k = " + std::to_string(k) + ": must be in [0, " + std::to_string(degree_) + "]");
     return level(k);
+  }
+
+  /// Upper bound on the rounding of this curve's de Casteljau evaluation of P (order 0) or P'
+  /// (order 1) over the domain (see the header); +inf for other orders.
+  [[nodiscard]] Real rounding_bound(int order) const {
+    if (order < 0 || order > 1) return std::numeric_limits<Real>::infinity();
+    return rounding_bound_[static_cast<std::size_t>(order)];
   }
 
   /// Power-basis coefficients a_j in t = (u - a) / (b - a): P = sum a_j t^j (used by horner).
@@ -229,6 +246,18 @@ class bezier {
     for (int k = 0; k <= n; ++k)
       for (int i = 0; i <= n - k; ++i) binomials_.push_back(binomial<Real>(n - k, i));
     power_ = detail::bezier_kernels::to_power_basis<point_type, Real>(cps);
+    using std::sqrt;
+    for (int k = 0; k <= 1; ++k) {
+      Real biggest(0);
+      for (const point_type& d : level(std::min(k, n))) biggest = std::max(biggest, Real(sqrt(d.squaredNorm())));
+      // c of the header: u - 0 and a division by a power of two are exact.
+      using std::frexp;
+      int exponent = 0;
+      const bool exact_t = domain_.lo == Real(0) && frexp(domain_.hi, &exponent) == Real(0.5);
+      const long long c = exact_t ? 0 : 3;
+      rounding_bound_[static_cast<std::size_t>(k)] =
+          from_int<Real>(3LL * n + 4 + 2LL * n * c) * epsilon<Real>() * biggest * (Real(101) / Real(100));
+    }
   }
 
   interval<Real> domain_;
@@ -237,6 +266,7 @@ class bezier {
   point_list<Real, Dim> levels_;  // control points, then the hodograph levels 1..L
   std::vector<Real> binomials_;   // C(L - k, i) per level, same layout as levels_
   point_list<Real, Dim> power_;   // power-basis coefficients in t
+  std::array<Real, 2> rounding_bound_{};
 };
 
 }  // namespace curvebench

@@ -10,9 +10,19 @@
 // equispaced_parameters and chebyshev_parameters (second kind, ends included) give the u_j. The
 // domain is [u_0, u_n]; breakpoints {u_0, u_n}. Bad data (fewer than 2 points, non-finite values,
 // non-increasing parameters, overflowing weights) throw invalid_input; u outside std::domain_error.
+// rounding_bound(order), order 0 or 1 (core/curve.hpp): for the barycentric algorithm the a-priori
+// bound (3n + 4) eps (K + Lambda |P|) of Higham (2004) for the second barycentric formula, with
+// K = sum_j |P_j| max|l_j|, Lambda = sum_j max|l_j| and |P| = max|P(u)| (l_j the Lagrange basis);
+// for the first derivative the same form with the derivative's condition numbers,
+// (3n + 4) eps (sum_j |P_j| max|l_j'| + sum_j max|l_j'| |P| + Lambda max|P'|) (by analogy: the
+// divided-difference recurrence has no published bound; tests/test_rounding_bound.cpp checks it
+// against 50-digit evaluation and its looseness). The maxima are taken at the 4n + 1 Chebyshev
+// extreme points of the domain and multiplied by sec(pi/8) < 1.0824, which bounds a degree-n
+// polynomial by its values there (Ehlich & Zeller 1964). The monomial algorithm has no bound (+inf: cond(V) is
+// not computed). Cost: O(n^2) once at construction (about four times the weights' cost).
 // Limits, checked before any work: at most max_barycentric_points (10^4: O(n^2) weights, O(n) per
 // value) and max_monomial_points (10^3: an n x n matrix, O(n^3) LU) points.
-// Sources: Berrut & Trefethen (2004); Higham (2004); Schneider & Werner (1986).
+// Sources: Berrut & Trefethen (2004); Higham (2004); Schneider & Werner (1986); Ehlich & Zeller (1964).
 // Accuracy: barycentric O(Lebesgue constant * eps); monomial O(cond(V) * eps).
 #pragma once
 
@@ -29,6 +39,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -119,10 +130,12 @@ class lagrange {
     validate::same_count("parameters", params_.size(), "points", points_.size());
     validate::increasing<Real>("parameters", params_);
     breaks_ = {params_.front(), params_.back()};
-    if (algorithm_ == lagrange_algorithm::barycentric)
+    if (algorithm_ == lagrange_algorithm::barycentric) {
       build_weights();
-    else
+      build_rounding_bounds();
+    } else {
       build_monomial();
+    }
   }
 
   [[nodiscard]] int degree() const { return static_cast<int>(points_.size()) - 1; }
@@ -133,6 +146,12 @@ class lagrange {
   [[nodiscard]] std::span<const Real> parameters() const { return params_; }
   /// Barycentric weights, scaled so that max |w_j| = 1 (empty for the monomial algorithm).
   [[nodiscard]] std::span<const Real> weights() const { return weights_; }
+  /// Upper bound on the rounding of this curve's own evaluation of P (order 0) or P' (order 1) over
+  /// the domain (see the header); +inf for the monomial algorithm and for other orders.
+  [[nodiscard]] Real rounding_bound(int order) const {
+    if (algorithm_ != lagrange_algorithm::barycentric || order < 0 || order > 1) return std::numeric_limits<Real>::infinity();
+    return rounding_bound_[static_cast<std::size_t>(order)];
+  }
   /// Power coefficients a_k, P(u) = sum a_k u^k (empty for the barycentric algorithm).
   [[nodiscard]] std::span<const point_type> monomial_coefficients() const { return coeffs_; }
 
@@ -184,6 +203,66 @@ class lagrange {
       biggest = std::max(biggest, Real(abs(weights_[j])));
     }
     for (Real& w : weights_) w /= biggest;
+  }
+
+  // The bounds of the header. At each sample x (not a node) l_j(x) = c_j / sum_k c_k with
+  // c_j = w_j / (x - u_j) and l_j'(x) = l_j(x) (sum_{k != j} 1 / (x - u_k)); at a node u_i, l_j(u_i) =
+  // delta_ij, l_j'(u_i) = (w_j / w_i) / (u_i - u_j) for j != i and l_i'(u_i) = sum_{k != i} 1 / (u_i - u_k)
+  // (Berrut & Trefethen, sec. 9). O(n) per sample, 4n + 1 samples.
+  void build_rounding_bounds() {
+    using std::abs;
+    using std::cos;
+    using std::sqrt;
+    const std::size_t m1 = params_.size();
+    const long long n = static_cast<long long>(m1) - 1;
+    const long long samples = 4 * n;
+    const Real pi = boost::math::constants::pi<Real>();
+    const Real mid = (params_.front() + params_.back()) / Real(2), half = (params_.back() - params_.front()) / Real(2);
+    std::vector<Real> max_l(m1, Real(0)), max_dl(m1, Real(0)), c(m1);
+    Real max_p(0), max_dp(0);
+    for (long long k = 0; k <= samples; ++k) {
+      Real x = k == 0 ? params_.front() : k == samples ? params_.back() : Real(mid - half * cos(pi * from_int<Real>(k) / from_int<Real>(samples)));
+      x = std::clamp(x, params_.front(), params_.back());
+      max_p = std::max(max_p, Real(sqrt(barycentric_value(x).squaredNorm())));
+      max_dp = std::max(max_dp, Real(sqrt(derivative(x, 1).squaredNorm())));
+      const auto at = std::find(params_.begin(), params_.end(), x);
+      if (at != params_.end()) {
+        const auto i = static_cast<std::size_t>(at - params_.begin());
+        Real di(0);
+        for (std::size_t j = 0; j < m1; ++j) {
+          if (j == i) continue;
+          di += Real(1) / (params_[i] - params_[j]);
+          max_dl[j] = std::max(max_dl[j], Real(abs(weights_[j] / weights_[i] / (params_[i] - params_[j]))));
+        }
+        max_l[i] = std::max(max_l[i], Real(1));
+        max_dl[i] = std::max(max_dl[i], Real(abs(di)));
+        continue;
+      }
+      Real den(0), s(0);
+      for (std::size_t j = 0; j < m1; ++j) {
+        c[j] = weights_[j] / (x - params_[j]);
+        den += c[j];
+        s += Real(1) / (x - params_[j]);
+      }
+      for (std::size_t j = 0; j < m1; ++j) {
+        const Real l = c[j] / den;
+        max_l[j] = std::max(max_l[j], Real(abs(l)));
+        max_dl[j] = std::max(max_dl[j], Real(abs(l * (s - Real(1) / (x - params_[j])))));
+      }
+    }
+    // sec(n pi / (2 * 4n)) = sec(pi / 8) for degree n; the derivatives have degree n - 1, a smaller secant.
+    const Real sec = Real(1) / cos(pi / Real(8));
+    Real k0(0), k1(0), lambda0(0), lambda1(0);
+    for (std::size_t j = 0; j < m1; ++j) {
+      const Real pj = sqrt(points_[j].squaredNorm());
+      k0 += pj * max_l[j];
+      k1 += pj * max_dl[j];
+      lambda0 += max_l[j];
+      lambda1 += max_dl[j];
+    }
+    const Real gamma = from_int<Real>(3 * n + 4) * epsilon<Real>();
+    rounding_bound_[0] = gamma * sec * (k0 + sec * lambda0 * max_p);
+    rounding_bound_[1] = gamma * sec * (k1 + sec * (lambda1 * max_p + lambda0 * max_dp));
   }
 
   void build_monomial() {
@@ -294,6 +373,7 @@ class lagrange {
   std::vector<Real> params_;
   std::array<Real, 2> breaks_{};
   std::vector<Real> weights_;
+  std::array<Real, 2> rounding_bound_{};
   point_list<Real, Dim> coeffs_;
 };
 

@@ -57,11 +57,14 @@ struct speed_model {
 /// outside the piece, with branch points at distance sqrt(e^2 + delta_min^2) from the end (a
 /// partial length that stops just short of a near-cusp sees it about as close as an interior
 /// one). A minimum inside the sampling interval next to an end (invisible to the interior test)
-/// is found by Newton from that end.
+/// is found by Newton from that end. With `shallow`, the interior sample minima above the depth
+/// threshold are appended there too, each with the delta of the quadratic model at the sample
+/// (3 more evaluations each; not refined, not split at): a shallow dip can still have its branch
+/// points close to the real axis (the graph of a steep bump, |P'| = sqrt(1 + y'^2)).
 template <curve C>
-std::vector<speed_minimum<typename C::real_type>> speed_features(const C& c, const typename C::real_type& a,
-                                                                 const typename C::real_type& b, std::size_t samples,
-                                                                 std::size_t& evaluations) {
+std::vector<speed_minimum<typename C::real_type>> speed_features(
+    const C& c, const typename C::real_type& a, const typename C::real_type& b, std::size_t samples,
+    std::size_t& evaluations, std::vector<speed_minimum<typename C::real_type>>* shallow = nullptr) {
   using Real = typename C::real_type;
   using std::abs;
   using std::frexp;
@@ -143,6 +146,12 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(const C& c, con
   };
   end_feature(0, 1, out.front().delta);
   for (std::size_t k = 1; k < samples; ++k) {
+    if (shallow && g[k] <= g[k - 1] && g[k] <= g[k + 1] && g[k] > threshold) {
+      const typename C::point_type d1 = c.derivative(us[k], 1), d2 = c.derivative(us[k], 2), d3 = c.derivative(us[k], 3);
+      evaluations += 3;
+      const speed_model<Real> m{us[k], d1.squaredNorm(), d1.dot(d2), d2.squaredNorm() + d1.dot(d3)};
+      if (m.dh > Real(0)) shallow->push_back({us[k], m.delta()});
+    }
     if (!(g[k] <= g[k - 1] && g[k] <= g[k + 1]) || g[k] > threshold) continue;
     if (g[k] == Real(0) && g[k - 1] == Real(0)) continue;  // inside a zero-speed stretch
     add_interior(refine(us[k], us[k - 1], us[k + 1]));
