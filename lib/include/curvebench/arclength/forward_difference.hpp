@@ -118,8 +118,11 @@ class forward_difference_table {
     return coarse_;
   }
 
-  /// Richardson: L_h + (L_h - L_2h) / 3 with estimate |R - L_h| (+ rounding) under the same
-  /// check as length(), otherwise no bound (not_guaranteed); needs even N.
+  /// Richardson: R = L_h + (L_h - L_2h) / 3, under the same check as length(), otherwise no bound
+  /// (not_guaranteed); needs even N. Estimate 2 |R - L_h| (+ rounding): a chord sum never exceeds
+  /// the length, so 0 <= L - L_h <= L_h - L_2h (the bound length() trusts) and R - L lies in
+  /// [-2/3, 1/3] (L_h - L_2h). |R - L_h| alone assumes the asymptotic ratio 4 exactly; a Runge
+  /// polynomial through 9 Chebyshev nodes passes the ratio check at N = 64 with an error 1.2 times it.
   [[nodiscard]] quadrature_result<Real> richardson_length() const {
     using std::abs;
     quadrature_result<Real> r;
@@ -131,7 +134,7 @@ class forward_difference_table {
       r.status = result_status::not_guaranteed;
       return r;
     }
-    r.error_estimate = abs(r.value - fine) + rounding(fine);
+    r.error_estimate = Real(2) * abs(r.value - fine) + rounding(fine);
     r.status = result_status::converged;
     return r;
   }
