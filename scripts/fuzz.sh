@@ -33,21 +33,7 @@ for arg in "$@"; do
 done
 [[ ${#targets[@]} -eq 0 ]] && targets=(spec gate csv)
 
-bash "$root/scripts/setup.sh"
-fuzz_packages=(clang libfuzzer-14-dev)
-missing=()
-for p in "${fuzz_packages[@]}"; do
-  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
-  [[ "$status" == "install ok installed" ]] || missing+=("$p")
-done
-if [[ ${#missing[@]} -gt 0 ]]; then
-  echo "fuzz.sh: installing ${missing[*]}"
-  sudo=""
-  [[ $(id -u) -eq 0 ]] || sudo="sudo"
-  export DEBIAN_FRONTEND=noninteractive
-  $sudo apt-get update -qq
-  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+bash "$root/scripts/setup.sh" clang libfuzzer-14-dev
 
 export CCACHE_BASEDIR="$root"
 build="$root/build-fuzz"

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian packages curvebench needs, only those that are missing; non-interactive,
 # idempotent, and quiet when everything is already present.
+#   scripts/setup.sh [PACKAGE...]   the packages given are needed too (fuzz.sh: clang, libFuzzer)
 set -euo pipefail
 
 packages=(g++ cmake make ccache libeigen3-dev libboost-dev libboost-math-dev libbenchmark-dev libgtest-dev libgmock-dev
-          nlohmann-json3-dev libcli11-dev python3-matplotlib python3-numpy)
+          nlohmann-json3-dev libcli11-dev python3-matplotlib python3-numpy "$@")
 
 missing=()
 for p in "${packages[@]}"; do

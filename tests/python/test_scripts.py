@@ -7,16 +7,22 @@ import unittest
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 
 
+def usage_comment(path):
+    """The comment block under a script's shebang, without its "# ": what --help must print."""
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().splitlines()
+    comment = []
+    for line in lines[1:]:
+        if not line.startswith("#"):
+            break
+        comment.append(line[2:] if line.startswith("# ") else line[1:])
+    return comment
+
+
 class BenchHelp(unittest.TestCase):
     def test_help_is_the_usage_comment(self):
         path = os.path.join(ROOT, "scripts", "bench.sh")
-        with open(path, encoding="utf-8") as f:
-            lines = f.read().splitlines()
-        comment = []
-        for line in lines[1:]:
-            if not line.startswith("#"):
-                break
-            comment.append(line[2:] if line.startswith("# ") else line[1:])
+        comment = usage_comment(path)
         p = subprocess.run(["bash", path, "--help"], capture_output=True, text=True, timeout=60)
         self.assertEqual(p.returncode, 0, p.stderr)
         self.assertEqual(p.stdout.splitlines(), comment)
@@ -30,13 +36,7 @@ class FuzzHelp(unittest.TestCase):
 
     def test_help_is_the_usage_comment(self):
         path = os.path.join(ROOT, "scripts", "fuzz.sh")
-        with open(path, encoding="utf-8") as f:
-            lines = f.read().splitlines()
-        comment = []
-        for line in lines[1:]:
-            if not line.startswith("#"):
-                break
-            comment.append(line[2:] if line.startswith("# ") else line[1:])
+        comment = usage_comment(path)
         p = subprocess.run(["bash", path, "--help"], capture_output=True, text=True, timeout=60)
         self.assertEqual(p.returncode, 0, p.stderr)
         self.assertEqual(p.stdout.splitlines(), comment)
