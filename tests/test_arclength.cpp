@@ -326,9 +326,10 @@ TEST(arclength, subdivision_default_tolerance_is_relative_to_the_size) {
 }
 
 // The evaluation budget: a tolerance of 1e-13 relative needs ~10^6 leaves; 2000 evaluations stop it
-// with cap_hit, the estimate finite and still bounding the true error (the forced leaves report
-// their last chord difference, 3x the order-2 error). A tolerance below the chords' rounding
-// (1e-18) ends rounding_limited within the default budget instead of running to depth 40.
+// with cap_hit and no bound (+inf): the recursion is depth first, so the leaves the budget stopped
+// may be coarse anywhere, and a chord difference there bounds nothing (test_arclength_honesty's
+// Runge case). A tolerance below the chords' rounding (1e-18) ends rounding_limited within the
+// default budget instead of running to depth 40.
 TEST(arclength, subdivision_budget_ends_in_cap_hit_with_an_honest_estimate) {
   const auto c = smooth_cubic<double>();
   const R length = reference_length(smooth_cubic<R>());
@@ -341,8 +342,7 @@ TEST(arclength, subdivision_budget_ends_in_cap_hit_with_an_honest_estimate) {
   // the recursion stack (its midpoint and look-ahead before it can stop).
   const std::size_t overshoot = 5 + 3 * static_cast<std::size_t>(o.max_depth + 1);
   EXPECT_LE(capped.evaluations, o.max_evaluations + overshoot);
-  ASSERT_TRUE(std::isfinite(capped.error_estimate));
-  EXPECT_LE(abs(R(capped.value) - length), R(capped.error_estimate));
+  EXPECT_TRUE(std::isinf(capped.error_estimate));
   o.relative_tolerance = 1e-18;
   o.max_evaluations = al::subdivision_options<double>{}.max_evaluations;
   const auto below = al::subdivision_length(c, o);

@@ -8,6 +8,7 @@
 #include <gmock/gmock.h>
 
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -194,8 +195,9 @@ TEST(core, plain_norm_fails_where_safe_norm_does_not) {
   EXPECT_TRUE(cb::testing::within_ulps(cb::safe_norm(tiny), cb::real50("5e-170"), 2.0));
 }
 
-// validate::resolvable: a span must hold 2^16 representable parameters around its ends.
+// validate::resolvable: a span must hold 2^(digits / 3) representable values around its ends.
 TEST(core, unresolvable_spans_are_refused_with_their_values) {
+  static_assert(cb::validate::min_span_bits<double>() == 17 && cb::validate::min_span_bits<float>() == 8);
   const double one_ulp = std::nextafter(1.0, 2.0);
   try {
     cb::validate::increasing<double>("knots", std::vector<double>{0.0, 1.0, one_ulp});
@@ -204,10 +206,13 @@ TEST(core, unresolvable_spans_are_refused_with_their_values) {
     EXPECT_THAT(e.what(), HasSubstr("knots[2] - knots[1] = 2.2204460492503131e-16"));
     EXPECT_THAT(e.what(), HasSubstr("too narrow"));
   }
-  // 2^16 ulps of 1 is the smallest span accepted there; one ulp less is refused.
-  const double need = std::ldexp(std::numeric_limits<double>::epsilon(), 16);
+  // 2^17 ulps of 1 is the smallest span accepted there; half of it is refused.
+  const double need = std::ldexp(std::numeric_limits<double>::epsilon(), 17);
   EXPECT_NO_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1.0 - need, 1.0}));
   EXPECT_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1.0, 1.0 + need / 2}), cb::invalid_input);
+  // float asks for 2^8 ulps: 400 equispaced nodes on [0, 1] (spacing 0.0025) are fine there.
+  EXPECT_NO_THROW(cb::validate::increasing<float>("knots", std::vector<float>{0.3175f, 0.32f}));
+  EXPECT_THROW(cb::validate::increasing<float>("knots", std::vector<float>{1.0f, 1.0f + 64 * FLT_EPSILON}), cb::invalid_input);
   // Far from 0 the same width is narrower in ulps: [1e9, 1e9 + 1] holds 2^23 doubles, [1e15, 1e15 + 1] only 8.
   EXPECT_NO_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1e9, 1e9 + 1}));
   EXPECT_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1e15, 1e15 + 1}), cb::invalid_input);

@@ -54,8 +54,10 @@ TEST(io_json, errors_name_the_field_and_what_is_expected) {
   EXPECT_EQ(error_of([&] { (void)io::root(short_point).member("points").points<double, 2>(); }),
             "spec.points[1]: expected an array of 2 numbers, got [3]");
   EXPECT_THAT(error_of([] { (void)io::parse("{\"points\": [1, 2", "case.json"); }), HasSubstr("case.json: not valid JSON"));
-  // A number beyond double's range is a JSON error too, reported the same way.
-  EXPECT_THAT(error_of([] { (void)io::parse("{\"x\": 1e999}", "case.json"); }), HasSubstr("case.json: not valid JSON"));
+  // A number beyond double's range is named by its path, as written (issue 16: it was a syntax
+  // error of the whole file, or an inf later echoed as null).
+  EXPECT_EQ(error_of([] { (void)io::parse("{\"x\": [0, 1e999]}", "case.json"); }),
+            "case.json.x[1]: the number 1e999 is beyond double's range (magnitudes up to about 1.8e308)");
 }
 
 TEST(io_json, spec_error_is_an_invalid_input) {

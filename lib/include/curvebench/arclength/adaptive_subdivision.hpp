@@ -12,7 +12,8 @@
 // not_guaranteed, +inf, for a curve without a bound). Status: converged when every leaf passed;
 // rounding_limited when a leaf's share of the target was below its chords' rounding (16 eps of their
 // length) and it was accepted at that level; cap_hit when max_depth or the evaluation budget forced
-// a leaf (its last difference is then its estimate, as for a passed leaf without look-ahead).
+// a leaf (at max_depth its last difference is its estimate, as for a passed leaf without look-ahead;
+// a leaf the budget stopped has no bound, and the estimate is then +inf).
 // Sources: Parent (2012), 3.2.2; seed 002 ("adaptive forward differencing").
 // Cost: ~2 position evaluations per accepted leaf (+2 with look-ahead), ~(L / target)^(1/2)
 // leaves; at most max_evaluations (2^22), plus 5 per segment and 3 per level of the recursion (a
@@ -99,7 +100,12 @@ struct subdivider {
     }
     if (depth >= opt.max_depth || !(m > a && m < b) || out.evaluations + 6 > opt.max_evaluations) {
       out.value += halves;
-      out.error_estimate += diff;
+      // At the depth cap (or where the midpoint no longer splits) the leaf is 2^-depth of its segment
+      // and its last difference measures it. A leaf the budget stopped can be any size: the recursion
+      // is depth first, so the budget may run out with most of the curve still coarse, where a chord
+      // difference bounds nothing (a degree-20 Runge polynomial at 1e-8: estimate 1.3e-3 L, error
+      // 0.5 L). No bound, then: the estimate is +inf, the status cap_hit.
+      out.error_estimate += depth >= opt.max_depth || !(m > a && m < b) ? diff : no_bound<Real>();
       out.status = worst(out.status, result_status::cap_hit);
       return;
     }

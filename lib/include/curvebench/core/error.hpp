@@ -12,6 +12,7 @@
 #include "curvebench/core/real.hpp"
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -95,23 +96,27 @@ void in_range(std::string_view name, const Real& value, const Real& lo, const Re
   fail(indexed(name, index) + " = " + to_text(value) + ": must be in [" + to_text(lo) + ", " + to_text(hi) + "]");
 }
 
-/// The fewest representable parameters a parameter span [lo, hi] must hold (2^16): then the local
-/// parameter t = (u - lo) / (hi - lo) has at least 16 bits, and every method can place distinct
-/// nodes in it. A narrower span (a domain one ulp wide, [1e15, 1e15 + 1] in double) cannot be
-/// sampled: its nodes collapse onto its ends and any length or inverse computed there is garbage.
-inline constexpr int min_span_bits = 16;
+/// The fewest representable parameters a parameter span [lo, hi] must hold: 2^(digits / 3), a
+/// third of the precision's bits (2^17 in double, 2^8 in float): then the local parameter
+/// t = (u - lo) / (hi - lo) keeps that many bits and every method can place distinct nodes in it.
+/// A narrower span (a domain one ulp wide, [1e15, 1e15 + 1] in double) cannot be sampled: its nodes
+/// collapse onto its ends and any length or inverse computed there is garbage.
+template <class Real>
+[[nodiscard]] constexpr int min_span_bits() {
+  return std::numeric_limits<Real>::digits / 3;
+}
 
 /// hi - lo >= 2^min_span_bits ulps of max(|lo|, |hi|) (lo < hi finite assumed): "knots[1] - knots[0]
-/// = 2.2e-16 is too narrow to be resolved in double around 1: at least 1.5e-11 (2^16 ulps) is needed".
+/// = 2.2e-16 is too narrow to be resolved around 1: at least 2.9e-11 (2^17 ulps) is needed".
 template <class Real>
 void resolvable(const std::string& span, const Real& lo, const Real& hi) {
   using std::abs;
   using std::ldexp;
   const Real big = abs(lo) > abs(hi) ? abs(lo) : abs(hi);
-  const Real need = ldexp(big * epsilon<Real>(), min_span_bits);
+  const Real need = ldexp(big * epsilon<Real>(), min_span_bits<Real>());
   if (hi - lo >= need) return;
   fail(span + " = " + to_text(Real(hi - lo)) + " is too narrow to be resolved around " + to_text(big) +
-       ": at least " + to_text(need) + " (2^" + std::to_string(min_span_bits) +
+       ": at least " + to_text(need) + " (2^" + std::to_string(min_span_bits<Real>()) +
        " units in the last place) is needed, so that the parameter can be sampled inside it");
 }
 
