@@ -158,7 +158,12 @@ void check_suite_curve(const char* name, const C& c, const C50& c50) {
                   m.r.status == al::result_status::rounding_limited);
     }
     if (m.name == "adaptive_gk15") {
-      EXPECT_TRUE(m.r.converged()) << al::to_string(m.r.status);
+      // The 200-segment spline's power-form evaluation may round by ~100 eps of L (its rounding_bound,
+      // the coefficients' sizes times the Horner and t roundings), which with the panels' own floor
+      // passes the default 128 eps: its status is then rounding_limited, and its value still as close.
+      EXPECT_TRUE(m.r.converged() || (std::string(name) == "200-segment spline" &&
+                                      m.r.status == al::result_status::rounding_limited))
+          << al::to_string(m.r.status);
       EXPECT_TRUE(cbt::within_ulps(m.r.value, length, adaptive_eps));
     }
     if (m.name == "gauss8_none") {

@@ -21,8 +21,10 @@
 #include "curvebench/curves/detail/bspline_core.hpp"
 #include "curvebench/curves/piecewise_cubic.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <utility>
@@ -167,6 +169,19 @@ class bspline {
 
   [[nodiscard]] int order() const { return core_.order(); }
   [[nodiscard]] int degree() const { return core_.order() - 1; }
+
+  /// Upper bound on the rounding of the default de Boor evaluation of P (order 0) or P' (order 1)
+  /// over the domain: the largest over the spans of (9p + 4) eps max |P_i| and (9(p - 1) + 6) eps
+  /// max |Q^1_i| over the control data active there (detail/bspline_core.hpp,
+  /// de_boor_rounding_factor), 1% more; +inf for other orders. O(n m) per call.
+  [[nodiscard]] Real rounding_bound(int order) const {
+    if (order < 0 || order > 1) return std::numeric_limits<Real>::infinity();
+    if (order >= core_.order()) return Real(0);
+    Real biggest(0);
+    for (std::size_t k : core_.spans())
+      for (const point_type& q : core_.active_control(order, k)) biggest = std::max(biggest, safe_norm(q));
+    return core_.de_boor_rounding_factor(order) * biggest * (Real(101) / Real(100));
+  }
   [[nodiscard]] std::span<const Real> knots() const { return core_.knots(); }
   [[nodiscard]] std::span<const point_type> control_points() const { return core_.control(0); }
   /// Control points of the r-th derivative curve (order m - r, on knots t_r .. t_{n+m-1-r}), r < m.

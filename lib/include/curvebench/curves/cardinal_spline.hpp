@@ -180,16 +180,24 @@ class cardinal_spline : public detail::cubic_family<Real, Dim> {
     const std::size_t n = v.size() - 1;  // segments
     auto h = [&](std::size_t i) { return knots[i + 1] - knots[i]; };
     point_list<Real, Dim> slopes(n + 1, point_type::Zero());
-    for (std::size_t i = 1; i < n; ++i)
+    std::vector<Real> err(n + 1, Real(0));  // bounds on the slopes' rounding (detail/cubic_family.hpp)
+    for (std::size_t i = 1; i < n; ++i) {
       slopes[i] = two_s * detail::parabola_slope_mid<Real, Dim>(h(i - 1), h(i), v[i - 1], v[i], v[i + 1]);
+      err[i] = detail::parabola_slope_mid_error<Real, Dim>(h(i - 1), h(i), v[i - 1], v[i], v[i + 1], two_s);
+    }
     switch (opt.end) {
       case cardinal_end::phantom:
         slopes[0] = two_s * point_type((v[1] - v[0]) / h(0));
         slopes[n] = two_s * point_type((v[n] - v[n - 1]) / h(n - 1));
+        // A difference of data, h, a division and the scale: 4 u of the slope, 3 eps with margin.
+        err[0] = Real(3) * epsilon<Real>() * safe_norm(slopes[0]);
+        err[n] = Real(3) * epsilon<Real>() * safe_norm(slopes[n]);
         break;
       case cardinal_end::one_sided:
         slopes[0] = two_s * detail::parabola_slope_start<Real, Dim>(h(0), h(1), v[0], v[1], v[2]);
         slopes[n] = two_s * detail::parabola_slope_end<Real, Dim>(h(n - 2), h(n - 1), v[n - 2], v[n - 1], v[n]);
+        err[0] = detail::parabola_slope_end_error<Real, Dim>(h(0), h(1), v[0], v[1], v[2], two_s);
+        err[n] = detail::parabola_slope_end_error<Real, Dim>(h(n - 1), h(n - 2), v[n], v[n - 1], v[n - 2], two_s);
         break;
       case cardinal_end::given_tangents:
         slopes[0] = opt.start_tangent;
@@ -198,18 +206,21 @@ class cardinal_spline : public detail::cubic_family<Real, Dim> {
       case cardinal_end::closed:
         slopes[0] = two_s * detail::parabola_slope_mid<Real, Dim>(h(n - 1), h(0), v[n - 1], v[0], v[1]);
         slopes[n] = slopes[0];
+        err[0] = detail::parabola_slope_mid_error<Real, Dim>(h(n - 1), h(0), v[n - 1], v[0], v[1], two_s);
+        err[n] = err[0];
         break;
       case cardinal_end::control_points: {
         // P_0 and P_n only entered the slopes at P_1 and P_{n-1}: the curve is the interior part.
         std::vector<Real> inner_knots(knots.begin() + 1, knots.end() - 1);
         point_list<Real, Dim> inner_values(v.begin() + 1, v.end() - 1);
         point_list<Real, Dim> inner_slopes(slopes.begin() + 1, slopes.end() - 1);
-        auto engine =
-            base::engine_type::from_hermite(std::move(inner_knots), inner_values, inner_slopes, inner_slopes);
+        const std::vector<Real> inner_err(err.begin() + 1, err.end() - 1);
+        auto engine = base::engine_type::from_hermite(std::move(inner_knots), inner_values, inner_slopes,
+                                                      inner_slopes, inner_err, inner_err);
         return built{std::move(engine), std::move(inner_slopes)};
       }
     }
-    auto engine = base::engine_type::from_hermite(knots, v, slopes, slopes);
+    auto engine = base::engine_type::from_hermite(knots, v, slopes, slopes, err, err);
     return built{std::move(engine), std::move(slopes)};
   }
 

@@ -8,7 +8,7 @@
 // point counts, non-finite values, bad knots) throw invalid_input; u outside std::domain_error.
 // Sources: seeds 000, 002 (piecewise curves, continuity at joins); Farin (2002), ch. 7.
 // Cost: O(log n) + O(L^2) per value. Accuracy: as bezier.hpp, ~L ulps of the segment's
-// control-point scale.
+// control-point scale; rounding_bound(order) (core/curve.hpp) is the largest of the segments'.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -90,6 +90,14 @@ class composite_bezier {
   }
 
   [[nodiscard]] point_type operator()(const Real& u) const { return segments_[segment_index(u)](u); }
+
+  /// Upper bound on the rounding of P (order 0) or P' (order 1) over the domain: the largest of the
+  /// segments' de Casteljau bounds (bezier.hpp); +inf for other orders.
+  [[nodiscard]] Real rounding_bound(int order) const {
+    Real b(0);
+    for (const segment_type& s : segments_) b = std::max(b, s.rounding_bound(order));
+    return b;
+  }
 
   /// d^order P / du^order: the segment's derivative (chain rule 1 / h_i^order included).
   [[nodiscard]] point_type derivative(const Real& u, int order) const {

@@ -7,6 +7,14 @@
 // Cost: O(n) construction, O(1) evaluation. Accuracy: interpolates to rounding; reproduces cubics
 // (not-a-knot, clamped with exact slopes) and, with natural ends, linear functions; O(h^4) away
 // from natural ends for smooth data.
+// The slopes' error, which the engine's rounding_bound adds, is bounded a posteriori: the residual
+// of the solved slopes in the exact system, |A m - r| <= |fl(A m - r)| + 8 eps (|A||m| + |r| + the
+// right side on the divided differences' norms) (the entries and the right side are within 8
+// roundings of exact, the residual's own evaluation within 4), and the rows are strictly
+// diagonally dominant by delta_i = |b_i| - |a_i| - |c_i| > 0 (h_{i-1} + h_i inside, 1 at natural and
+// clamped ends), so |m - m*|_inf <= max_i |residual_i| / delta_i per coordinate (Varah 1975).
+// Not-a-knot end rows are not dominant: subtracting them from their neighbours' rows gives
+// dominant rows (delta = h_1, h_{n-2}), and the end slopes follow from the end rows.
 #pragma once
 
 #include "curvebench/core/error.hpp"
@@ -15,6 +23,7 @@
 #include "curvebench/curves/detail/tridiagonal.hpp"
 #include "curvebench/curves/piecewise_cubic.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -115,6 +124,11 @@ class natural_cubic_spline : public detail::cubic_family<Real, Dim> {
     }
     const Real two(2), three(3);
     point_list<Real, Dim> m(n + 1, point_type::Zero());
+    // The right side's size per row (the divided differences' norms: a difference of data rounds
+    // relative to itself), for the slope bound.
+    std::vector<Real> dd_size(n);
+    for (std::size_t i = 0; i < n; ++i) dd_size[i] = safe_norm(dd[i]);
+    std::vector<Real> err(n + 1, Real(0));
     if (end == spline_end::periodic) {
       // Unknowns m_0..m_{n-1}; row i couples m_{i-1}, m_i, m_{i+1} cyclically.
       std::vector<Real> a(n), b(n), c(n);
@@ -126,9 +140,17 @@ class natural_cubic_spline : public detail::cubic_family<Real, Dim> {
         c[i] = h[p];
         r[i] = three * (h[i] * dd[p] + h[p] * dd[i]);
       }
+      const point_list<Real, Dim> rhs = r;
       detail::solve_cyclic_tridiagonal<Real, point_type>(a, b, c, std::span<point_type>(r));
       for (std::size_t i = 0; i < n; ++i) m[i] = r[i];
       m[n] = m[0];
+      Real worst(0);
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t p = (i + n - 1) % n, q = (i + 1) % n;
+        const Real size = three * (h[i] * dd_size[p] + h[p] * dd_size[i]);
+        worst = std::max(worst, residual_bound(a[i], b[i], c[i], m[p], m[i], m[q], rhs[i], size) / (h[p] + h[i]));
+      }
+      std::fill(err.begin(), err.end(), slope_bound(worst));
     } else {
       std::vector<Real> a(n + 1, Real(0)), b(n + 1), c(n + 1, Real(0));
       for (std::size_t i = 1; i < n; ++i) {
@@ -166,10 +188,75 @@ class natural_cubic_spline : public detail::cubic_family<Real, Dim> {
         case spline_end::periodic:
           break;
       }
+      const point_list<Real, Dim> rhs = m;
       detail::solve_tridiagonal<Real, point_type>(a, b, c, std::span<point_type>(m));
+      // Residual bounds per row; the end rows' right sides are data (clamped), one divided
+      // difference (natural) or two (not-a-knot).
+      std::vector<Real> res(n + 1);
+      const point_type zero = point_type::Zero();
+      for (std::size_t i = 1; i < n; ++i)
+        res[i] = residual_bound(a[i], b[i], c[i], m[i - 1], m[i], m[i + 1], rhs[i],
+                                three * (h[i] * dd_size[i - 1] + h[i - 1] * dd_size[i]));
+      Real size0(0), size_n(0);
+      if (end == spline_end::natural) {
+        size0 = three * dd_size[0];
+        size_n = three * dd_size[n - 1];
+      } else if (end == spline_end::not_a_knot) {
+        size0 = (h[1] * (three * h[0] + two * h[1]) * dd_size[0] + h[0] * h[0] * dd_size[1]) / (h[0] + h[1]);
+        size_n = (h[n - 1] * h[n - 1] * dd_size[n - 2] + h[n - 2] * (three * h[n - 1] + two * h[n - 2]) * dd_size[n - 1]) /
+                 (h[n - 2] + h[n - 1]);
+      }
+      res[0] = residual_bound(Real(0), b[0], c[0], zero, m[0], m[1], rhs[0], size0);
+      res[n] = residual_bound(a[n], b[n], Real(0), m[n - 1], m[n], zero, rhs[n], size_n);
+      if (end == spline_end::not_a_knot) {
+        // Rows 1 - row 0 and (n-1) - row n: dominant by h_1 and h_{n-2}; then the end rows.
+        Real worst(0);
+        for (std::size_t i = 1; i < n; ++i) {
+          Real r = res[i], delta = h[i - 1] + h[i];
+          if (i == 1) {
+            r += res[0];
+            delta = h[1];
+          }
+          if (i == n - 1) {  // n >= 3, so this is not row 1
+            r += res[n];
+            delta = h[n - 2];
+          }
+          worst = std::max(worst, r / delta);
+        }
+        const Real inner = slope_bound(worst);
+        for (std::size_t i = 1; i < n; ++i) err[i] = inner;
+        err[0] = slope_bound((res[0] + (h[0] + h[1]) * worst) / h[1]);
+        err[n] = slope_bound((res[n] + (h[n - 2] + h[n - 1]) * worst) / h[n - 2]);
+      } else {
+        Real worst(0);
+        for (std::size_t i = 0; i <= n; ++i) {
+          // End rows: natural 2 m_0 + m_1 (delta 1), clamped m_0 alone (delta 1).
+          const Real delta = i == 0 || i == n ? Real(1) : h[i - 1] + h[i];
+          worst = std::max(worst, res[i] / delta);
+        }
+        std::fill(err.begin(), err.end(), slope_bound(worst));
+      }
     }
-    auto engine = base::engine_type::from_hermite(knots, v, m, m);
+    auto engine = base::engine_type::from_hermite(knots, v, m, m, err, err);
     return built{std::move(engine), std::move(m)};
+  }
+
+  // A bound on |A* m - r*| for one row (the header): the computed residual plus 8 eps of the row's
+  // size, |a||m_prev| + |b||m| + |c||m_next| + |r| + the right side's size on norms.
+  static Real residual_bound(const Real& a, const Real& b, const Real& c, const point_type& prev, const point_type& mid,
+                             const point_type& next, const point_type& rhs, const Real& rhs_size) {
+    using std::abs;
+    const point_type res = a * prev + b * mid + c * next - rhs;
+    const Real size = abs(a) * safe_norm(prev) + abs(b) * safe_norm(mid) + abs(c) * safe_norm(next) + safe_norm(rhs);
+    return safe_norm(res) + Real(8) * epsilon<Real>() * (size + rhs_size);
+  }
+
+  // From max_i |residual_i| / delta_i (a bound per coordinate, each coordinate's residual being at
+  // most the norm) to a bound on the slope vector's norm: sqrt(Dim) times, plus 1% for the rounding
+  // of the margins delta_i themselves.
+  static Real slope_bound(const Real& per_coordinate) {
+    using std::sqrt;
+    return sqrt(Real(Dim)) * per_coordinate * (Real(101) / Real(100));
   }
 
   point_list<Real, Dim> values_;

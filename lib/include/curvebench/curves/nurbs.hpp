@@ -9,7 +9,11 @@
 // Piegl & Tiller (1997), ch. 4 (eq. 4.8) and ch. 7 (circles).
 // Cost: one homogeneous de Boor, O(m^2 (Dim + 1)), plus a division; O(k m^2 + k^2) for derivative
 // k; no allocation for k < 32. Accuracy: value ~m ulps of the control scale times max w / min w;
-// derivatives lose ~(m / h)^k like any B-spline's.
+// derivatives lose ~(m / h)^k like any B-spline's. rounding_bound(order), order 0 or 1
+// (core/curve.hpp): de Boor's bound on each part of the homogeneous curve (A, W) and of its
+// derivative (detail/bspline_core.hpp), plus the rounding of w_i P_i (u max |w_i P_i| in A, and
+// (m - 1) 2u max |w_i P_i| / min knot span in A'), through the quotient
+// (detail/quotient_rounding.hpp) with W >= min w_i and |C| <= max |P_i|.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -17,13 +21,16 @@
 #include "curvebench/core/point.hpp"
 #include "curvebench/core/real.hpp"
 #include "curvebench/curves/detail/bspline_core.hpp"
+#include "curvebench/curves/detail/quotient_rounding.hpp"
 
 #include <boost/math/constants/constants.hpp>
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <utility>
@@ -52,6 +59,14 @@ class nurbs {
       h[i][Dim] = weights_[i];
     }
     core_ = detail::bspline_core<Real, homogeneous_type>(order, std::move(knots), std::move(h));
+    build_rounding_bounds();
+  }
+
+  /// Upper bound on the rounding of the default evaluation of C (order 0) or C' (order 1) over the
+  /// domain (see the header); +inf for other orders.
+  [[nodiscard]] Real rounding_bound(int order) const {
+    if (order < 0 || order > 1) return std::numeric_limits<Real>::infinity();
+    return rounding_bound_[static_cast<std::size_t>(order)];
   }
 
   [[nodiscard]] int order() const { return core_.order(); }
@@ -122,9 +137,40 @@ class nurbs {
     return c[k];
   }
 
+  // The quotient bound per span, from the control data active there (W >= their smallest weight,
+  // |C| <= their largest point); the largest over the spans.
+  void build_rounding_bounds() {
+    using std::abs;
+    const Real f0 = core_.de_boor_rounding_factor(0), f1 = core_.de_boor_rounding_factor(1);
+    const auto m = static_cast<std::size_t>(order());
+    rounding_bound_ = {Real(0), Real(0)};
+    for (std::size_t k : core_.spans()) {
+      Real max_wp(0), max_p(0), max_w(0), min_w = std::numeric_limits<Real>::infinity(), max_a1(0), max_w1(0);
+      for (std::size_t i = k + 1 - m; i <= k; ++i) {
+        max_wp = std::max(max_wp, safe_norm(point_type(core_.control(0)[i].template head<Dim>())));
+        max_p = std::max(max_p, safe_norm(points_[i]));
+        max_w = std::max(max_w, weights_[i]);
+        min_w = std::min(min_w, weights_[i]);
+      }
+      if (m > 1)
+        for (const homogeneous_type& q : core_.active_control(1, k)) {
+          max_a1 = std::max(max_a1, safe_norm(point_type(q.template head<Dim>())));
+          max_w1 = std::max(max_w1, Real(abs(q[Dim])));
+        }
+      const Real data = epsilon<Real>() / Real(2) * max_wp;  // fl(w_i P_i)
+      const Real data1 = m > 1 ? from_int<Real>(2 * (static_cast<long long>(m) - 1)) * data / core_.level1_min_span(k)
+                               : Real(0);
+      const detail::quotient_rounding<Real> q{f0 * max_wp + data, f0 * max_w, f1 * max_a1 + data1, f1 * max_w1,
+                                              max_a1,             max_w1,     max_p,               min_w};
+      const std::array<Real, 2> b = detail::quotient_rounding_bound(q);
+      rounding_bound_ = {std::max(rounding_bound_[0], b[0]), std::max(rounding_bound_[1], b[1])};
+    }
+  }
+
   point_list<Real, Dim> points_;
   std::vector<Real> weights_;
   detail::bspline_core<Real, homogeneous_type> core_;
+  std::array<Real, 2> rounding_bound_{};
 };
 
 /// The full circle of center c and radius r as a quadratic NURBS on [0, 1]: 9 control points on

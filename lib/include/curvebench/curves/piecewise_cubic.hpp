@@ -11,6 +11,19 @@
 // Sources: seeds 000, 001, 002 (basis matrices, T · M · G); Farin (2002) for de Casteljau.
 // Cost: O(1) per value after lookup. Accuracy: O(eps · scale), scale the coefficients' size (power)
 // or the control items' (matrix, bezier); de Casteljau the most stable.
+// rounding_bound(order), order 0 or 1 (core/curve.hpp), of the default power evaluation, the largest
+// over the segments of: the power coefficients' error (|M| dG for the geometry's own error dG, which
+// from_hermite takes from the family (its slopes') and adds the rounding of h · slope to, plus the
+// rounding of the product M G: for float, double and long double measured against the compensated
+// dot product Dot2 of Ogita, Rump & Oishi (2005), itself within u |a| + gamma_4^2 |M||G| of the
+// exact coefficient, so the bound holds the rounding that happened (a few ulps of |a|) rather than
+// the worst case 4 eps |M| |G|, which far from the origin is 1e3 times larger; other Reals take the
+// worst case), Horner's gamma_6 sum |a_j| (order 1: gamma_5 over 1, 2, 3 times |a_1..3|, the
+// factor 3 rounding once) (Higham 2002, 5.1), and t = fl((u - u_i) / h_i)'s 3 u (the difference,
+// the division, h_i's own rounding) times max |P_i'(t)| (order 1: |P_i''|); order 1 multiplies by
+// fl(1 / h_i) with 3 u more (h rounded, 1 / h, the product). u = eps / 2 is the unit roundoff;
+// norms are Euclidean over the coordinates (the componentwise bounds summed as vectors), and 1%
+// covers gamma_k = k u / (1 - k u) and the second-order terms.
 #pragma once
 
 #include "curvebench/basis/cubic_matrices.hpp"
@@ -23,7 +36,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -97,9 +112,13 @@ class piecewise_cubic {
   /// dP/du = incoming[i+1] at u_{i+1}. Its Hermite geometry is [P_i, P_{i+1}, h_i out_i, h_i in_{i+1}]
   /// (local tangents dP/dt = h dP/du). All three lists have n + 1 entries; incoming[0] and
   /// outgoing[n] do not enter any segment (they are still validated). Equal lists give a C1 curve.
+  /// incoming_error / outgoing_error (n + 1 entries each, or empty for slopes that are exact data):
+  /// bounds on |slope - exact slope| of the family's computed slopes, which rounding_bound adds.
   [[nodiscard]] static piecewise_cubic from_hermite(std::vector<Real> knots, std::span<const point_type> values,
                                                     std::span<const point_type> incoming,
-                                                    std::span<const point_type> outgoing) {
+                                                    std::span<const point_type> outgoing,
+                                                    std::span<const Real> incoming_error = {},
+                                                    std::span<const Real> outgoing_error = {}) {
     validate::count_at_least("knots", knots.size(), 2, "one segment needs two knots");
     validate::same_count("values", values.size(), "knots", knots.size());
     validate::same_count("incoming slopes", incoming.size(), "knots", knots.size());
@@ -108,16 +127,34 @@ class piecewise_cubic {
     validate::finite_points<Real, Dim>("values", values);
     validate::finite_points<Real, Dim>("incoming slopes", incoming);
     validate::finite_points<Real, Dim>("outgoing slopes", outgoing);
+    if (!incoming_error.empty()) validate::same_count("incoming slope errors", incoming_error.size(), "knots", knots.size());
+    if (!outgoing_error.empty()) validate::same_count("outgoing slope errors", outgoing_error.size(), "knots", knots.size());
     const std::size_t n = knots.size() - 1;
     std::vector<geometry_type> g(n);
+    std::vector<std::array<Real, 4>> dg(n);
+    const Real two_eps = Real(2) * epsilon<Real>();
     for (std::size_t i = 0; i < n; ++i) {
       const Real h = knots[i + 1] - knots[i];
       g[i].row(0) = values[i].transpose();
       g[i].row(1) = values[i + 1].transpose();
       g[i].row(2) = (h * outgoing[i]).transpose();
       g[i].row(3) = (h * incoming[i + 1]).transpose();
+      // h = fl(u_{i+1} - u_i) and the product round once each; the slopes bring their own error.
+      const Real out_err = outgoing_error.empty() ? Real(0) : outgoing_error[i];
+      const Real in_err = incoming_error.empty() ? Real(0) : incoming_error[i + 1];
+      dg[i] = {Real(0), Real(0), h * (out_err + two_eps * safe_norm(outgoing[i])),
+               h * (in_err + two_eps * safe_norm(incoming[i + 1]))};
     }
-    return piecewise_cubic(std::move(knots), std::move(g), basis::hermite_matrix<Real>());
+    piecewise_cubic c(std::move(knots), std::move(g), basis::hermite_matrix<Real>());
+    c.build_rounding_bounds(dg);
+    return c;
+  }
+
+  /// Upper bound on the rounding of this curve's power evaluation of P (order 0) or P' (order 1)
+  /// over the domain (see the header); +inf for other orders.
+  [[nodiscard]] Real rounding_bound(int order) const {
+    if (order < 0 || order > 1) return std::numeric_limits<Real>::infinity();
+    return rounding_bound_[static_cast<std::size_t>(order)];
   }
 
   // ---- the curve concept ----
@@ -257,6 +294,80 @@ class piecewise_cubic {
     for (std::size_t i = 0; i <= n && uniform_; ++i)
       if (abs(knots_[i] - (knots_.front() + Real(static_cast<long long>(i)) * hbar)) > tol) uniform_ = false;
     inv_hbar_ = Real(1) / hbar;
+    build_rounding_bounds(std::vector<std::array<Real, 4>>(n, std::array<Real, 4>{}));
+  }
+
+  // The bounds of the header; dg[i][r]: a bound on the error of geometry row r of segment i.
+  void build_rounding_bounds(const std::vector<std::array<Real, 4>>& dg) {
+    using std::abs;
+    using std::max;
+    const Real eps = epsilon<Real>();
+    Real b0(0), b1(0);
+    for (std::size_t i = 0; i < h_.size(); ++i) {
+      std::array<Real, 4> g{}, a{}, da{};
+      for (int r = 0; r < 4; ++r) {
+        g[static_cast<std::size_t>(r)] = safe_norm(point_type(geometry_[i].row(r).transpose()));
+        a[static_cast<std::size_t>(r)] = safe_norm(power_[i][static_cast<std::size_t>(r)]);
+      }
+      for (int r = 0; r < 4; ++r) {
+        Real e(0);
+        for (int k = 0; k < 4; ++k) e += abs(basis_[i](r, k)) * dg[i][static_cast<std::size_t>(k)];
+        da[static_cast<std::size_t>(r)] = e + product_rounding(i, r, g);
+      }
+      const Real sum_a = a[0] + a[1] + a[2] + a[3];
+      const Real slope = a[1] + Real(2) * a[2] + Real(3) * a[3];  // max |P_i'(t)| on [0, 1], and sum |b_j|
+      const Real curvature = Real(2) * a[2] + Real(6) * a[3];      // max |P_i''(t)|
+      const Real u = eps / Real(2);
+      const Real e0 = da[0] + da[1] + da[2] + da[3] + Real(6) * u * sum_a + Real(3) * u * slope;
+      const Real e1 =
+          (da[1] + Real(2) * da[2] + Real(3) * da[3] + Real(5) * u * slope + Real(3) * u * curvature + Real(3) * u * slope) /
+          h_[i];
+      b0 = max(b0, e0);
+      b1 = max(b1, e1);
+    }
+    const Real margin = Real(101) / Real(100);
+    rounding_bound_ = {b0 * margin, b1 * margin};
+  }
+
+  // A bound on |fl(M G)_r - (M G)_r| (Euclidean over the coordinates) for segment i's power row r;
+  // g holds the geometry rows' norms (the worst case's sizes).
+  [[nodiscard]] Real product_rounding(std::size_t i, int r, const std::array<Real, 4>& g) const {
+    using std::abs;
+    const Real eps = epsilon<Real>();
+    Real worst_case(0);
+    for (int k = 0; k < 4; ++k) worst_case += abs(basis_[i](r, k)) * g[static_cast<std::size_t>(k)];
+    worst_case *= Real(4) * eps;
+    if constexpr (std::is_floating_point_v<Real>) {
+      // Dot2 per coordinate: (p, s) accumulates the products' exact high parts and their errors
+      // (TwoProduct by fma, TwoSum by Knuth: both exact in round-to-nearest, whatever the contraction
+      // of the surrounding code); res is within u |res| + gamma_4^2 sum |M||G| of the exact value.
+      const Real u = eps / Real(2);
+      point_type e;
+      for (int d = 0; d < Dim; ++d) {
+        Real p(0), sum(0), size(0);
+        for (int k = 0; k < 4; ++k) {
+          const Real m = basis_[i](r, k), x = geometry_[i](k, d);
+          const Real h = m * x;
+          const Real lo = std::fma(m, x, -h);
+          const Real t = p + h;
+          const Real z = t - p;
+          const Real q = (p - (t - z)) + (h - z);
+          p = t;
+          sum += q + lo;
+          size += abs(h);
+        }
+        const Real res = p + sum;
+        const Real gamma4 = Real(4) * u / (Real(1) - Real(4) * u);
+        // Products below the normal range are not error-free: 4 units of the smallest subnormal each.
+        e[d] = abs(power_[i][static_cast<std::size_t>(r)][d] - res) * (Real(1) + eps) + u * abs(res) +
+               gamma4 * gamma4 * size + Real(8) * std::numeric_limits<Real>::denorm_min();
+        if (!is_finite(e[d])) return worst_case;
+      }
+      const Real measured = safe_norm(e) * (Real(1) + eps);
+      return measured < worst_case ? measured : worst_case;
+    } else {
+      return worst_case;
+    }
   }
 
   // u must lie in the domain.
@@ -362,6 +473,7 @@ class piecewise_cubic {
   std::vector<std::array<point_type, 4>> bezier_;
   bool uniform_ = false;
   Real inv_hbar_ = Real(1);
+  std::array<Real, 2> rounding_bound_{};
 };
 
 }  // namespace curvebench

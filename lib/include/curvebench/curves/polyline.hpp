@@ -7,7 +7,10 @@
 // parameters) throw invalid_input; u outside the domain std::domain_error.
 // Sources: seed 000 (piecewise linear spline), seed 001 (polyline).
 // Cost: O(log n) lookup, O(Dim) evaluation, no allocation. Accuracy: a few ulps of the vertex
-// scale (each weight has <= 2 roundings).
+// scale (each weight has <= 2 roundings). rounding_bound(order) (core/curve.hpp), the largest over
+// the segments: order 0, each weight within 3 roundings (two differences, a division) and the
+// combination 2 more, 5 u < 3 eps of |P_i| + |P_{i+1}|; order 1, a difference and a division by a
+// rounded h, 3 u < 2 eps of |P_{i+1} - P_i| / h.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -17,6 +20,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -79,6 +83,21 @@ class polyline {
   }
 
   [[nodiscard]] point_type operator()(const Real& u) const { return derivative(u, 0); }
+
+  /// Upper bound on the rounding of P (order 0) or P' (order 1) over the domain (see the header);
+  /// 0 for higher orders (exact zeros). O(n).
+  [[nodiscard]] Real rounding_bound(int order) const {
+    if (order < 0) return std::numeric_limits<Real>::infinity();
+    Real b(0);
+    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
+      if (order == 0)
+        b = std::max(b, Real(3) * epsilon<Real>() * (safe_norm(vertices_[i]) + safe_norm(vertices_[i + 1])));
+      else if (order == 1)
+        b = std::max(b, Real(2) * epsilon<Real>() * safe_norm(point_type(vertices_[i + 1] - vertices_[i])) /
+                            (params_[i + 1] - params_[i]));
+    }
+    return b * (Real(101) / Real(100));
+  }
 
   /// d^order P / du^order: the value (order 0), the segment slope (order 1), zero (order >= 2).
   [[nodiscard]] point_type derivative(const Real& u, int order) const {

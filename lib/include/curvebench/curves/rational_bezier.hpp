@@ -8,6 +8,10 @@
 // Sources: seed 000 ("Rational Parametric"); Farin (2002), ch. 13; Piegl & Tiller (1997), 2.5, 7.5.
 // Cost: O(L^2) per value, O(k L (L + Dim)) for derivative k, no allocation.
 // Accuracy: ~L ulps of the scale (w(t) >= min w_k > 0, so the division loses nothing).
+// rounding_bound(order), order 0 or 1 (core/curve.hpp): the numerator's and the denominator's
+// de Casteljau bounds (bezier.hpp), plus the rounding of w_k P_k (u max |w_k P_k|, and 2L/(b - a)
+// times that in A'), through the quotient (detail/quotient_rounding.hpp) with W >= min w_k and
+// |C| <= max |P_k|.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -15,12 +19,14 @@
 #include "curvebench/core/point.hpp"
 #include "curvebench/core/real.hpp"
 #include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/detail/quotient_rounding.hpp"
 
 #include <boost/math/constants/constants.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -76,7 +82,16 @@ class rational_bezier {
       : points_(validated(control_points, weights, domain)),
         weights_(weights.begin(), weights.end()),
         numerator_(homogeneous(points_, weights_), domain),
-        denominator_(weight_points(weights_), domain) {}
+        denominator_(weight_points(weights_), domain) {
+    build_rounding_bounds();
+  }
+
+  /// Upper bound on the rounding of this curve's evaluation of C (order 0) or C' (order 1) over the
+  /// domain (see the header); +inf for other orders.
+  [[nodiscard]] Real rounding_bound(int order) const {
+    if (order < 0 || order > 1) return std::numeric_limits<Real>::infinity();
+    return rounding_bound_[static_cast<std::size_t>(order)];
+  }
 
   [[nodiscard]] int degree() const { return numerator_.degree(); }
   [[nodiscard]] interval<Real> domain() const { return numerator_.domain(); }
@@ -153,10 +168,34 @@ class rational_bezier {
     return h;
   }
 
+  void build_rounding_bounds() {
+    using std::abs;
+    Real max_wp(0), max_p(0), min_w = weights_.front(), max_a1(0), max_w1(0);
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      max_wp = std::max(max_wp, safe_norm(numerator_.control_points()[k]));
+      max_p = std::max(max_p, safe_norm(points_[k]));
+      min_w = std::min(min_w, weights_[k]);
+    }
+    for (const point_type& d : numerator_.derivative_control_points(1)) max_a1 = std::max(max_a1, safe_norm(d));
+    for (const point<Real, 1>& d : denominator_.derivative_control_points(1)) max_w1 = std::max(max_w1, Real(abs(d[0])));
+    const Real data = epsilon<Real>() / Real(2) * max_wp;  // fl(w_k P_k)
+    const Real width = domain().hi - domain().lo;
+    detail::quotient_rounding<Real> q{numerator_.rounding_bound(0) + data,
+                                      denominator_.rounding_bound(0),
+                                      numerator_.rounding_bound(1) + Real(2 * degree()) * data / width,
+                                      denominator_.rounding_bound(1),
+                                      max_a1,
+                                      max_w1,
+                                      max_p,
+                                      min_w};
+    rounding_bound_ = detail::quotient_rounding_bound(q);
+  }
+
   std::vector<point_type> points_;
   std::vector<Real> weights_;
   bezier<Real, Dim> numerator_;
   bezier<Real, 1> denominator_;
+  std::array<Real, 2> rounding_bound_{};
 };
 
 /// The rational quadratic of seed 000 with end weights 1 and middle weight w > 0:

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -112,6 +113,48 @@ class bspline_core {
   [[nodiscard]] std::span<const V> control(std::size_t level = 0) const {
     return std::span<const V>(levels_).subspan(offsets_[level], n_ - level);
   }
+  /// The factor c_r of de Boor's rounding on level r (0 or 1): its result is within c_r max_i |Q^r_i|
+  /// of the exact level-r curve of the stored control data, per coordinate and in the Euclidean norm.
+  /// Each of the p = m - 1 - r levels forms alpha = (u - s_a) / (s_b - s_a) with 3 roundings, which
+  /// moves the combination by 3 u |d_j - d_{j-1}| <= 3 eps max |Q|, and the convex combination
+  /// (1 - alpha) d_{j-1} + alpha d_j rounds 3 times (the argument of Farouki & Rajan 1987 for de
+  /// Casteljau, bezier.hpp): (9p + 4) eps covers both with the factor of two of eps = 2u; level 1
+  /// adds the 4 roundings of its control points (a difference, the knot difference, a quotient, a
+  /// product), each relative to Q^1_i itself: 2 eps more.
+  [[nodiscard]] Real de_boor_rounding_factor(int level) const {
+    const long long p = order_ - 1 - level;
+    if (p < 0) return Real(0);
+    return from_int<Real>(9 * p + 4 + (level > 0 ? 2 : 0)) * epsilon<Real>();
+  }
+
+  /// The non-empty spans k (t_k < t_{k+1}, m - 1 <= k <= n - 1): each holds a polynomial piece.
+  [[nodiscard]] std::vector<std::size_t> spans() const {
+    std::vector<std::size_t> out;
+    for (std::size_t k = static_cast<std::size_t>(order_) - 1; k < n_; ++k)
+      if (knots_[k] < knots_[k + 1]) out.push_back(k);
+    return out;
+  }
+
+  /// The control data of level r (0 or more, < m) that de Boor combines on span k.
+  [[nodiscard]] std::span<const V> active_control(int level, std::size_t k) const {
+    const auto r = static_cast<std::size_t>(level);
+    const std::size_t p = static_cast<std::size_t>(order_) - 1 - r;
+    return std::span<const V>(levels_).subspan(offsets_[r] + (k - r) - p, p + 1);
+  }
+
+  /// The smallest knot difference t_{i+m} - t_{i+1} dividing a level-1 control point active on span
+  /// k (how much an error in the control points is amplified on level 1); +inf for m = 1.
+  [[nodiscard]] Real level1_min_span(std::size_t k) const {
+    const auto m = static_cast<std::size_t>(order_);
+    Real best = std::numeric_limits<Real>::infinity();
+    if (m < 2) return best;
+    for (std::size_t i = k + 1 - m; i + 1 <= k; ++i) {  // level-1 indices (k - 1) - (m - 2) .. k - 1
+      const Real den = knots_[i + m] - knots_[i + 1];
+      if (den > Real(0) && den < best) best = den;
+    }
+    return best;
+  }
+
   [[nodiscard]] Real lo() const { return knots_[static_cast<std::size_t>(order_) - 1]; }
   [[nodiscard]] Real hi() const { return knots_[n_]; }
 

@@ -25,6 +25,8 @@ class cubic_family {
   [[nodiscard]] std::span<const Real> breakpoints() const { return engine_.breakpoints(); }
   [[nodiscard]] point_type operator()(const Real& u) const { return engine_(u); }
   [[nodiscard]] point_type derivative(const Real& u, int order) const { return engine_.derivative(u, order); }
+  /// The engine's bound on its own rounding, the family's slope errors included (core/curve.hpp).
+  [[nodiscard]] Real rounding_bound(int order) const { return engine_.rounding_bound(order); }
   /// The evaluation engine (algorithms, batched and sorted evaluation, per-segment data).
   [[nodiscard]] const engine_type& engine() const { return engine_; }
 
@@ -62,6 +64,33 @@ template <class Real, int Dim>
   const point<Real, Dim> d0 = (p1 - p0) / h0;
   const point<Real, Dim> d1 = (p2 - p1) / h1;
   return ((Real(2) * h1 + h0) * d1 - h1 * d0) / (h0 + h1);
+}
+
+/// Bounds on the rounding of the three parabola slopes above, for the families' slope errors
+/// (piecewise_cubic::from_hermite). The points are data, so each divided difference D = fl(p_b -
+/// p_a) / fl(h) is within 3 u of itself; the rest (products with rounded intervals, the sum, the
+/// division by fl(h0 + h1), the family's scale factor) adds at most 7 roundings relative to the
+/// terms: within 10 u = 5 eps of the same formula on |D0|, |D1| with the difference made a sum
+/// (Higham 2002, 3.1); 8 eps keeps the 1.5x for the norms taken of computed differences.
+/// `scale` is the factor the family multiplies the slope by.
+template <class Real, int Dim>
+[[nodiscard]] Real parabola_slope_mid_error(const Real& h0, const Real& h1, const point<Real, Dim>& pm,
+                                            const point<Real, Dim>& p0, const point<Real, Dim>& pp,
+                                            const Real& scale) {
+  using std::abs;
+  const Real d0 = safe_norm(point<Real, Dim>(p0 - pm)) / h0, d1 = safe_norm(point<Real, Dim>(pp - p0)) / h1;
+  return Real(8) * epsilon<Real>() * abs(scale) * ((h1 * d0 + h0 * d1) / (h0 + h1));
+}
+
+/// For parabola_slope_start (p0 the end point) and, with the points and intervals mirrored,
+/// parabola_slope_end.
+template <class Real, int Dim>
+[[nodiscard]] Real parabola_slope_end_error(const Real& h0, const Real& h1, const point<Real, Dim>& p0,
+                                            const point<Real, Dim>& p1, const point<Real, Dim>& p2,
+                                            const Real& scale) {
+  using std::abs;
+  const Real d0 = safe_norm(point<Real, Dim>(p1 - p0)) / h0, d1 = safe_norm(point<Real, Dim>(p2 - p1)) / h1;
+  return Real(8) * epsilon<Real>() * abs(scale) * (((Real(2) * h0 + h1) * d0 + h0 * d1) / (h0 + h1));
 }
 
 }  // namespace curvebench::detail
