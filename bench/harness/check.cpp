@@ -185,6 +185,7 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
       worst_s = std::max(worst_s, cr.s_error);
     }
     res.rows.push_back(std::move(cr));
+    if (o.on_row) o.on_row(res.rows.size(), t.rows.size(), t.file);
   }
   const auto n = static_cast<double>(t.rows.size());
   res.records.push_back(subject_record(o.case_name, o.group, "eval", o.name, "", worst_point, n));
@@ -221,6 +222,7 @@ check_result check_lengths(case_reference<Dim>& ref, const csv_table& t, const c
     cr.relative = segment > 0 ? diff / segment : (diff > 0 ? std::numeric_limits<double>::infinity() : 0.0);
     worst = std::max(worst, cr.error);
     res.rows.push_back(std::move(cr));
+    if (o.on_row) o.on_row(res.rows.size(), t.rows.size(), t.file);
   }
   res.records.push_back(
       subject_record(o.case_name, o.group, "length", o.name, "", worst, static_cast<double>(t.rows.size())));
@@ -254,6 +256,7 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
     cr.relative = cr.error;
     worst = std::max(worst, cr.error);
     res.rows.push_back(std::move(cr));
+    if (o.on_row) o.on_row(res.rows.size(), t.rows.size(), t.file);
   }
   res.records.push_back(
       subject_record(o.case_name, o.group, "u_of_s", o.name, "", worst, static_cast<double>(t.rows.size())));

@@ -39,6 +39,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,6 +56,8 @@ struct check_options {
   std::string case_name = "check";  ///< the records' "case" (the tool uses the spec file's stem)
   std::string group = "subject";  ///< the records' "group"
   std::size_t worst = 5;          ///< how many worst rows check_result::worst lists
+  /// Called after each row with (rows done, rows in the file, the file): the tool's progress line.
+  std::function<void(std::size_t, std::size_t, const std::string&)> on_row;
 };
 
 /// The errors of one row (see the top of this file for the units).

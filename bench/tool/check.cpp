@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace curvebench::tool {
@@ -104,6 +105,7 @@ CLI::App* add_check(CLI::App& app, check_args& a) {
                   "{\"rules\": [{\"quantity\": \"eval\", \"method\": \"values\", \"max_error\": 4}]}")
       ->check(CLI::ExistingFile);
   chk->add_option("--worst", a.worst, "how many worst rows to show (default 5)")->check(CLI::Range(0, 1000000));
+  chk->add_flag("--quiet", a.quiet, "no progress lines on stderr (printed once a run takes over a second)");
   chk->footer(
       "\nCSV files: a header row naming the columns (those above, any order), then one row of finite numbers per "
       "line; blank lines are skipped. `t` instead of `u` is for time-based specs (none exist yet). Unknown or "
@@ -127,6 +129,16 @@ int run_check(const check_args& a) {
   o.case_name = std::filesystem::path(a.spec).stem().string();
   o.group = spec.has("group") && spec.member("group").value.is_string() ? spec.member("group").string() : "subject";
   o.worst = a.worst;
+  // One progress line a second once a file's rows take over a second (the 50-digit reference per row).
+  std::unique_ptr<progress> shown;
+  std::string shown_file;
+  o.on_row = [&](std::size_t done, std::size_t total, const std::string& file) {
+    if (!shown || file != shown_file) {
+      shown = std::make_unique<progress>("check " + file + ": rows", total, a.quiet);
+      shown_file = file;
+    }
+    shown->update(done);
+  };
   const std::vector<check_result> results = harness::run_checks(spec, inputs, o);
 
   std::vector<std::string> failures;

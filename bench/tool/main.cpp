@@ -35,6 +35,8 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <memory>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -63,14 +65,57 @@ struct length_args {
   int n = 5;
   int panels = 4;
   std::size_t steps = 256;
+  bool quiet = false;
+};
+
+/// A curve that counts its evaluations and reports them as progress (`length` on a costly curve).
+template <int Dim>
+struct counted_curve {
+  using real_type = double;
+  using point_type = cb::point<double, Dim>;
+  static constexpr int dimension = Dim;
+  cb::any_curve<double, Dim> inner;
+  std::shared_ptr<tool::progress> shown;
+  std::shared_ptr<std::size_t> count = std::make_shared<std::size_t>(0);
+
+  void tick() const {
+    // The clock is read every 4096 evaluations, not on each.
+    if ((++*count & 4095) == 0) shown->update(*count);
+  }
+  [[nodiscard]] cb::interval<double> domain() const { return inner.domain(); }
+  [[nodiscard]] point_type operator()(double u) const {
+    tick();
+    return inner(u);
+  }
+  [[nodiscard]] point_type derivative(double u, int order) const {
+    tick();
+    return inner.derivative(u, order);
+  }
+  [[nodiscard]] std::span<const double> breakpoints() const { return inner.breakpoints(); }
+  [[nodiscard]] double rounding_bound(int order) const { return inner.rounding_bound(order); }
 };
 
 template <int Dim>
 void length(const cb::io::field& spec, const length_args& a) {
-  const cb::any_curve<double, Dim> c = cb::io::curve_from_spec<double, Dim>(spec);
+  const cb::any_curve<double, Dim> plain = cb::io::curve_from_spec<double, Dim>(spec);
   namespace m = vocab::methods;
+  // Progress: evaluations against the method's budget (fixed rules: their exact count).
+  const std::size_t segments = plain.breakpoints().size() - 1;
+  std::size_t budget = 0;
+  if (a.method == m::gauss.id)
+    budget = 7 * static_cast<std::size_t>(a.n) * segments;
+  else if (a.method == m::composite_gauss.id)
+    budget = static_cast<std::size_t>(a.n) * static_cast<std::size_t>(a.panels) * segments;
+  else if (a.method == m::adaptive_gk.id)
+    budget = al::adaptive_options<double>{}.max_evaluations;
+  else if (a.method == m::subdivision.id)
+    budget = al::subdivision_options<double>{}.max_evaluations;
+  else
+    budget = a.steps * segments + 1;
+  const cb::any_curve<double, Dim> c(
+      counted_curve<Dim>{plain, std::make_shared<tool::progress>("length: evaluations (at most)", budget, a.quiet)},
+      plain.family());
   // A fixed rule's cost is known before the work: refuse it above the limit, naming the options.
-  const std::size_t segments = c.breakpoints().size() - 1;
   auto check_cost = [&](const std::string& options, double evaluations) {
     if (evaluations > static_cast<double>(tool::max_length_evaluations))
       throw cb::invalid_input(options + ": " + std::to_string(segments) + (segments == 1 ? " segment" : " segments") +
@@ -173,6 +218,8 @@ int main(int argc, char** argv) {
                   "table steps per segment (forward_difference, richardson: steps x segments, at most " +
                       std::to_string(al::max_forward_difference_evaluations) + ")")
       ->check(CLI::Range(1, 10000000));
+  len->add_flag("--quiet", la.quiet,
+                "no progress lines on stderr (evaluations against the method's budget, once a run takes over a second)");
   len->footer(tool::example("curvebench length arch.json --method gauss --n 8"));
 
   cb::harness::accuracy_options ao;

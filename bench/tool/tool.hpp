@@ -121,6 +121,7 @@ struct check_args {
   double max_error = -1;  ///< < 0: none
   std::string thresholds;
   std::size_t worst = 5;
+  bool quiet = false;  ///< no progress on stderr
 };
 CLI::App* add_check(CLI::App& app, check_args& a);
 /// 0 when every row is within the limits (or none is given), 1 otherwise.

@@ -191,6 +191,28 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(q.stderr, "")
         self.assertEqual(q.stdout, p.stdout)
 
+    def test_long_length_and_check_print_progress_and_quiet_silences_it(self):
+        # Issue 16: length reports its evaluations against the method's budget, check its rows; both
+        # on stderr once a run takes over a second. 6e7 evaluations of the 1e5-segment Lissajous
+        # (composite Gauss, 20 points x 30 panels) take a few seconds here.
+        spec = os.path.join(CASES, "lissajous_many_segments_1e5.json")
+        args = ("length", spec, "--method", "composite_gauss", "--n", "20", "--panels", "30")
+        p = run(*args)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertRegex(p.stderr, r"length: evaluations \(at most\): \d+ of 60000000 \(\d+\.\d%\), \d+\.\d s elapsed")
+        self.assertEqual(json.loads(p.stdout)["evaluations"], 60000000)
+        q = run(*args, "--quiet")
+        self.assertEqual(q.returncode, 0, q.stderr)
+        self.assertEqual(q.stderr, "")
+        self.assertEqual(q.stdout, p.stdout)
+        # check: every row's 50-digit reference; 20000 rows of the Lissajous take seconds.
+        values = self.write("values.csv", run("sample", spec, "--count", "20000", "--quiet").stdout)
+        c = run("check", spec, "--values", values)
+        self.assertEqual(c.returncode, 0, c.stderr)
+        self.assertRegex(c.stderr, r"check .*values\.csv: rows: \d+ of 20000 \(\d+\.\d%\), \d+\.\d s elapsed")
+        self.assertNotIn("elapsed", c.stdout)
+        self.assertEqual(run("check", spec, "--values", values, "--quiet").stderr, "")
+
     def test_sample_count_has_a_documented_limit(self):
         p = run("sample", ARCH, "--count", "1000001")
         self.assertNotEqual(p.returncode, 0)
