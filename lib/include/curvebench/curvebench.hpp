@@ -3,7 +3,7 @@
 // What: every public header of curvebench::curvebench - core (points, the curve concept, errors,
 // Real utilities, any_curve), basis (Bernstein, cubic basis matrices, constraint solver), curves
 // (one family per header), the property audit, arclength (quadrature, lengths, inversion,
-// parameterization), motion (ease functions, keyframes, motion along a path) and reference (the
+// parameterization), channel (keyframe segments' time solvers, CSS easing), motion (ease functions, keyframes, motion along a path) and reference (the
 // 50-digit type real50, conversion to it, reference arc length, closed forms).
 // Not included: io/ (JSON specs and the family registry), which needs nlohmann/json and lives in
 // its own target curvebench::io (include "curvebench/io/spec.hpp" and link curvebench::io), and
@@ -46,6 +46,8 @@
 #include "curvebench/arclength/newton_inversion.hpp"
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/arclength/result.hpp"
+
+#include "curvebench/channel/time_solver.hpp"
 
 #include "curvebench/motion/distance_time.hpp"
 #include "curvebench/motion/keyframes.hpp"
