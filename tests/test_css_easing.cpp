@@ -31,15 +31,15 @@ TYPED_TEST_SUITE(css_easing_test, float_double);
 // Chromium's published values (ui/gfx/geometry/cubic_bezier_unittest.cc, tests Basic and
 // UnclampedYValues), 5 decimals, checked there at 1.5e-4: pairs (input, output).
 const std::vector<std::pair<double, double>> chromium_basic{
-    {0, 0},           {0.05, 0.01136}, {0.1, 0.03978}, {0.15, 0.079780}, {0.2, 0.12803},  {0.25, 0.18235},
-    {0.3, 0.24115},   {0.35, 0.30323}, {0.4, 0.36761}, {0.45, 0.43345},  {0.5, 0.5},      {0.6, 0.63238},
-    {0.65, 0.69676},  {0.7, 0.75884},  {0.75, 0.81764}, {0.8, 0.87196},  {0.85, 0.92021}, {0.9, 0.96021},
-    {0.95, 0.98863},  {1, 1}};
+    {0, 0},          {0.05, 0.01136}, {0.1, 0.03978},  {0.15, 0.079780}, {0.2, 0.12803},
+    {0.25, 0.18235}, {0.3, 0.24115},  {0.35, 0.30323}, {0.4, 0.36761},   {0.45, 0.43345},
+    {0.5, 0.5},      {0.6, 0.63238},  {0.65, 0.69676}, {0.7, 0.75884},   {0.75, 0.81764},
+    {0.8, 0.87196},  {0.85, 0.92021}, {0.9, 0.96021},  {0.95, 0.98863},  {1, 1}};
 const std::vector<std::pair<double, double>> chromium_unclamped{
-    {0.0, 0.0},       {0.05, -0.08954}, {0.1, -0.15613}, {0.15, -0.19641}, {0.2, -0.20651}, {0.25, -0.18232},
-    {0.3, -0.11992},  {0.35, -0.01672}, {0.4, 0.12660},  {0.45, 0.30349},  {0.5, 0.50000},  {0.55, 0.69651},
-    {0.6, 0.87340},   {0.65, 1.01672},  {0.7, 1.11992},  {0.75, 1.18232},  {0.8, 1.20651},  {0.85, 1.19641},
-    {0.9, 1.15613},   {0.95, 1.08954},  {1.0, 1.0}};
+    {0.0, 0.0},      {0.05, -0.08954}, {0.1, -0.15613}, {0.15, -0.19641}, {0.2, -0.20651}, {0.25, -0.18232},
+    {0.3, -0.11992}, {0.35, -0.01672}, {0.4, 0.12660},  {0.45, 0.30349},  {0.5, 0.50000},  {0.55, 0.69651},
+    {0.6, 0.87340},  {0.65, 1.01672},  {0.7, 1.11992},  {0.75, 1.18232},  {0.8, 1.20651},  {0.85, 1.19641},
+    {0.9, 1.15613},  {0.95, 1.08954},  {1.0, 1.0}};
 constexpr double chromium_tolerance = 1.5e-4;
 
 }  // namespace
@@ -68,12 +68,15 @@ TYPED_TEST(css_easing_test, chromium_symmetric_values) {
   using Real = TypeParam;
   for (ch::time_solver solver : {ch::time_solver::curvebench, ch::time_solver::exact, ch::time_solver::isolate_brent,
                                  ch::time_solver::closed_form}) {
-    EXPECT_TRUE(cbt::within_ulps(ch::css_easing<Real>::cubic_bezier(Real(0.5), Real(1), Real(0.5), Real(1), solver)(Real(0.5)),
-                                 real50(0.875), 4));
-    EXPECT_TRUE(cbt::within_ulps(ch::css_easing<Real>::cubic_bezier(Real(0.5), Real(2), Real(0.5), Real(2), solver)(Real(0.5)),
-                                 real50(1.625), 4));
-    EXPECT_TRUE(cbt::within_ulps(ch::css_easing<Real>::cubic_bezier(Real(0.5), Real(-1), Real(0.5), Real(-1), solver)(Real(0.5)),
-                                 real50(-0.625), 4));
+    EXPECT_TRUE(
+        cbt::within_ulps(ch::css_easing<Real>::cubic_bezier(Real(0.5), Real(1), Real(0.5), Real(1), solver)(Real(0.5)),
+                         real50(0.875), 4));
+    EXPECT_TRUE(
+        cbt::within_ulps(ch::css_easing<Real>::cubic_bezier(Real(0.5), Real(2), Real(0.5), Real(2), solver)(Real(0.5)),
+                         real50(1.625), 4));
+    EXPECT_TRUE(cbt::within_ulps(
+        ch::css_easing<Real>::cubic_bezier(Real(0.5), Real(-1), Real(0.5), Real(-1), solver)(Real(0.5)), real50(-0.625),
+        4));
   }
 }
 
@@ -111,11 +114,14 @@ TYPED_TEST(css_easing_test, extrapolation_by_the_spec) {
 // The keywords are their definitions (the same control points, hence the same outputs).
 TYPED_TEST(css_easing_test, keywords_are_their_definitions) {
   using Real = TypeParam;
-  const std::vector<std::pair<std::string, std::string>> defs{
-      {"ease", "cubic-bezier(0.25, 0.1, 0.25, 1)"},   {"ease-in", "cubic-bezier(0.42, 0, 1, 1)"},
-      {"ease-out", "cubic-bezier(0, 0, 0.58, 1)"},    {"ease-in-out", "cubic-bezier(0.42, 0, 0.58, 1)"},
-      {"step-start", "steps(1, jump-start)"},         {"step-end", "steps(1, jump-end)"},
-      {"linear", "linear(0, 1)"},                     {"EASE-IN", "Cubic-Bezier(0.42,0,1,1)"}};
+  const std::vector<std::pair<std::string, std::string>> defs{{"ease", "cubic-bezier(0.25, 0.1, 0.25, 1)"},
+                                                              {"ease-in", "cubic-bezier(0.42, 0, 1, 1)"},
+                                                              {"ease-out", "cubic-bezier(0, 0, 0.58, 1)"},
+                                                              {"ease-in-out", "cubic-bezier(0.42, 0, 0.58, 1)"},
+                                                              {"step-start", "steps(1, jump-start)"},
+                                                              {"step-end", "steps(1, jump-end)"},
+                                                              {"linear", "linear(0, 1)"},
+                                                              {"EASE-IN", "Cubic-Bezier(0.42,0,1,1)"}};
   for (const auto& [keyword, definition] : defs) {
     const auto k = ch::parse_css_easing<Real>(keyword);
     const auto d = ch::parse_css_easing<Real>(definition);
@@ -167,7 +173,9 @@ TYPED_TEST(css_easing_test, steps_by_the_spec) {
 // linear(): the spec's examples and its position rules.
 TYPED_TEST(css_easing_test, linear_by_the_spec) {
   using Real = TypeParam;
-  const auto f = [](const char* text, double x) { return static_cast<double>(ch::parse_css_easing<Real>(text)(Real(x))); };
+  const auto f = [](const char* text, double x) {
+    return static_cast<double>(ch::parse_css_easing<Real>(text)(Real(x)));
+  };
   // linear(0, 0.25, 1): 0.25 at 50%.
   EXPECT_EQ(f("linear(0, 0.25, 1)", 0.5), 0.25);
   EXPECT_EQ(f("linear(0, 0.25, 1)", 0.25), 0.125);
@@ -233,13 +241,14 @@ TEST(css_easing, real50_keywords_are_exact_decimals) {
 // Errors name the function, the argument and the value.
 
 TEST(css_easing, bad_arguments) {
-  const auto msg = [](const char* text) {
-    return cbt::message_of([&] { (void)ch::parse_css_easing<double>(text); });
-  };
+  const auto msg = [](const char* text) { return cbt::message_of([&] { (void)ch::parse_css_easing<double>(text); }); };
   EXPECT_THAT(msg("cubic-bezier(1.5, 0, 0.5, 1)"), HasSubstr("cubic-bezier argument 1 (x1) = 1.5: must be in [0, 1]"));
-  EXPECT_THAT(msg("cubic-bezier(0.5, 0, -0.25, 1)"), HasSubstr("cubic-bezier argument 3 (x2) = -0.25: must be in [0, 1]"));
-  EXPECT_THAT(msg("cubic-bezier(0.25, 0.1, abc, 1)"), HasSubstr("cubic-bezier argument 3: expected a number, got 'abc'"));
-  EXPECT_THAT(msg("cubic-bezier(0.25, 1e999, 0.25, 1)"), HasSubstr("cubic-bezier argument 2 = 1e999: not representable"));
+  EXPECT_THAT(msg("cubic-bezier(0.5, 0, -0.25, 1)"),
+              HasSubstr("cubic-bezier argument 3 (x2) = -0.25: must be in [0, 1]"));
+  EXPECT_THAT(msg("cubic-bezier(0.25, 0.1, abc, 1)"),
+              HasSubstr("cubic-bezier argument 3: expected a number, got 'abc'"));
+  EXPECT_THAT(msg("cubic-bezier(0.25, 1e999, 0.25, 1)"),
+              HasSubstr("cubic-bezier argument 2 = 1e999: not representable"));
   EXPECT_THAT(msg("cubic-bezier(0, 0, 1)"), HasSubstr("expected ','"));
   EXPECT_THAT(msg("cubic-bezier(0, 0, 1, 1"), HasSubstr("expected ')'"));
   EXPECT_THAT(msg("cubic-bezier(0, 0, 1, 1, 1)"), HasSubstr("expected ')'"));
@@ -264,9 +273,11 @@ TEST(css_easing, bad_values_through_the_api) {
   const auto msg = [](auto f) { return cbt::message_of(f); };
   EXPECT_THAT(msg([] { (void)ch::css_easing<double>::cubic_bezier(0.5, std::nan(""), 0.5, 1); }),
               HasSubstr("cubic-bezier argument 2 (y1) = nan: must be finite"));
-  EXPECT_THAT(msg([] { (void)ch::css_easing<double>::steps(-3); }), HasSubstr("steps argument 1 (n) = -3: must be >= 1"));
+  EXPECT_THAT(msg([] { (void)ch::css_easing<double>::steps(-3); }),
+              HasSubstr("steps argument 1 (n) = -3: must be >= 1"));
   const std::vector<ch::linear_stop<double>> stops{{0, std::nullopt, std::nullopt}, {1, std::nullopt, 0.5}};
-  EXPECT_THAT(msg([&] { (void)ch::css_easing<double>::linear(stops); }), HasSubstr("linear argument 2: a second position needs a first"));
+  EXPECT_THAT(msg([&] { (void)ch::css_easing<double>::linear(stops); }),
+              HasSubstr("linear argument 2: a second position needs a first"));
   const auto e = ch::css_easing<double>::identity();
   EXPECT_THROW((void)e(std::nan("")), std::domain_error);
   EXPECT_THAT(msg([&] { (void)e(INFINITY); }), HasSubstr("input progress = inf: must be finite"));

@@ -168,7 +168,8 @@ class css_easing {
       while (!inputs[j]) ++j;
       const Real a = *inputs[i - 1], b = *inputs[j];
       const Real count = Real(static_cast<long long>(j - i + 1));
-      for (std::size_t k = i; k < j; ++k) e.points_[k].input = a + (b - a) * Real(static_cast<long long>(k - i + 1)) / count;
+      for (std::size_t k = i; k < j; ++k)
+        e.points_[k].input = a + (b - a) * Real(static_cast<long long>(k - i + 1)) / count;
       i = j;
     }
     return e;
@@ -293,8 +294,8 @@ class css_reader {
   std::string_view identifier() {
     skip_space();
     const std::size_t start = pos_;
-    while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '-' ||
-                                   text_[pos_] == '_'))
+    while (pos_ < text_.size() &&
+           (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '-' || text_[pos_] == '_'))
       ++pos_;
     return text_.substr(start, pos_ - start);
   }
@@ -373,7 +374,8 @@ Real parse_real(std::string_view token) {
     if (!token.empty() && token.front() == '+') token.remove_prefix(1);
     Real v{};
     const auto r = std::from_chars(token.data(), token.data() + token.size(), v);
-    if (r.ec == std::errc::result_out_of_range) return token.front() == '-' ? -std::numeric_limits<Real>::infinity() : std::numeric_limits<Real>::infinity();
+    if (r.ec == std::errc::result_out_of_range)
+      return token.front() == '-' ? -std::numeric_limits<Real>::infinity() : std::numeric_limits<Real>::infinity();
     return v;
   } else {
     return Real(std::string(token));
@@ -438,7 +440,8 @@ css_easing<Real> parse_css_easing(std::string_view text, time_solver solver) {
   } else if (iequal(name, "steps")) {
     bool integer = false;
     const std::string_view t = in.number_token(&integer);
-    if (t.empty() || !integer) in.fail("steps argument 1: expected an integer, got " + (t.empty() ? in.rest() : "'" + std::string(t) + "'"));
+    if (t.empty() || !integer)
+      in.fail("steps argument 1: expected an integer, got " + (t.empty() ? in.rest() : "'" + std::string(t) + "'"));
     long long n = 0;
     std::string_view digits = t;
     if (digits.front() == '+') digits.remove_prefix(1);

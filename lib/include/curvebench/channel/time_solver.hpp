@@ -92,7 +92,8 @@ void validate_time_cubic(const time_cubic<Real>& c) {
   validate::finite("t2", c.t2);
   validate::finite("t3", c.t3);
   if (!(c.t0 < c.t3))
-    validate::fail("t3 = " + to_text(c.t3) + " <= t0 = " + to_text(c.t0) + ": a segment's end time must follow its start");
+    validate::fail("t3 = " + to_text(c.t3) + " <= t0 = " + to_text(c.t0) +
+                   ": a segment's end time must follow its start");
   validate::resolvable("t3 - t0", c.t0, c.t3);
   const auto handle = [&](std::string_view name, const Real& v) {
     if (c.t0 <= v && v <= c.t3) return;
@@ -104,11 +105,20 @@ void validate_time_cubic(const time_cubic<Real>& c) {
 }
 
 /// The time solvers, one per scheme (see the header comment).
-enum class time_solver { closed_form, table_newton, newton_bisection, bisection12, bisection30, isolate_brent, curvebench, exact };
+enum class time_solver {
+  closed_form,
+  table_newton,
+  newton_bisection,
+  bisection12,
+  bisection30,
+  isolate_brent,
+  curvebench,
+  exact
+};
 
 inline constexpr std::array<time_solver, 8> all_time_solvers{
-    time_solver::closed_form,   time_solver::table_newton, time_solver::newton_bisection, time_solver::bisection12,
-    time_solver::bisection30,   time_solver::isolate_brent, time_solver::curvebench,     time_solver::exact};
+    time_solver::closed_form, time_solver::table_newton,  time_solver::newton_bisection, time_solver::bisection12,
+    time_solver::bisection30, time_solver::isolate_brent, time_solver::curvebench,       time_solver::exact};
 
 [[nodiscard]] inline const char* to_string(time_solver s) {
   switch (s) {
