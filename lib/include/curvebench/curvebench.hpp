@@ -3,8 +3,9 @@
 // What: every public header of curvebench::curvebench - core (points, the curve concept, errors,
 // Real utilities, any_curve), basis (Bernstein, cubic basis matrices, constraint solver), curves
 // (one family per header), the property audit, arclength (quadrature, lengths, inversion,
-// parameterization), motion (ease functions, keyframes, motion along a path) and reference (the
-// 50-digit type real50, conversion to it, reference arc length, closed forms).
+// parameterization), motion (ease functions, keyframes, motion along a path), channel (animation
+// tools' rules over keys: glTF 2.0 samplers) and reference (the 50-digit type real50, conversion
+// to it, reference arc length, closed forms).
 // Not included: io/ (JSON specs and the family registry), which needs nlohmann/json and lives in
 // its own target curvebench::io (include "curvebench/io/spec.hpp" and link curvebench::io), and
 // the private detail/ headers.
@@ -37,6 +38,8 @@
 #include "curvebench/curves/rational_bezier.hpp"
 
 #include "curvebench/analysis/property_audit.hpp"
+
+#include "curvebench/channel/gltf.hpp"
 
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
