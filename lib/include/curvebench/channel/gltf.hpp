@@ -25,7 +25,8 @@
 //     + s w). Rotation, cubicspline: the Hermite above on the 4 components (no sign flip, as the
 //     spec states), then normalized (the spec's MUST). Rotation, step: v_k.
 // Derivatives: derivative(t, order, side) is the exact derivative in time (per second^order) of
-// the piece that holds just after t (side::right, the default) or just before t (side::left):
+// the piece that holds just after t (side::right, the default) or just before t (side::left; at
+// order 0 the left limit of the value):
 // the segment polynomial, the slerp closed form, or the derivative of the normalization q = p / |p|
 // (orders 0..2 for nlerp and cubicspline rotations). Clamped ends and step channels are piecewise
 // constant, so their derivatives are 0 (a step's jumps have no classical derivative); at a key
@@ -323,10 +324,12 @@ class sampler {
     return derivative(t, 0)[0];
   }
 
-  /// d^order value / dt^order (per second^order) of the piece on the given side of t.
+  /// d^order value / dt^order (per second^order) of the piece on the given side of t. Order 0 on
+  /// side::left is the left limit of the value (at a key time: the previous segment's end, which
+  /// for step is the previous key; the value the spec prescribes there is operator()).
   [[nodiscard]] point_type derivative(const Real& t, int order, side from = side::right) const {
     validate::derivative_order(order);
-    const auto at = detail::locate<Real>(input_, t, order == 0 ? side::right : from);
+    const auto at = detail::locate<Real>(input_, t, from);
     using L = detail::location<Real>;
     if (order == 0) {
       if (at.kind != L::in_segment) return values_[at.k];
@@ -416,7 +419,8 @@ class rotation_sampler {
   /// The rotation at time t (clamped to the end keys outside them).
   [[nodiscard]] quaternion operator()(const Real& t) const { return derivative(t, 0); }
 
-  /// d^order q / dt^order (per second^order) of the piece on the given side of t. Orders: any
+  /// d^order q / dt^order (per second^order) of the piece on the given side of t (order 0 on
+  /// side::left: the left limit, as for sampler::derivative). Orders: any
   /// for slerp (closed form), 0..2 for nlerp and cubicspline (normalization), any for step (0).
   [[nodiscard]] quaternion derivative(const Real& t, int order, side from = side::right) const {
     validate::derivative_order(order);
@@ -426,7 +430,7 @@ class rotation_sampler {
       validate::fail("order = " + std::to_string(order) + ": " +
                      (mode_ == interpolation::cubicspline ? std::string("cubicspline") : std::string("nlerp")) +
                      " rotations give derivatives up to order 2");
-    const auto at = detail::locate<Real>(input_, t, order == 0 ? side::right : from);
+    const auto at = detail::locate<Real>(input_, t, from);
     using L = detail::location<Real>;
     if (order == 0) {
       if (at.kind != L::in_segment) return values_[at.k];
