@@ -255,6 +255,30 @@ TYPED_TEST(gltf_test, cubicspline_reproduces_a_cubic_sampled_with_exact_tangents
   }
 }
 
+TYPED_TEST(gltf_test, cubicspline_with_secant_tangents_is_linear) {
+  using Real = TypeParam;
+  // b_k = a_{k+1} = (v_{k+1} - v_k) / t_d on every segment makes the Hermite the straight line,
+  // because the tangents are per second and the formula multiplies them by t_d. On these
+  // non-uniform keys (t_d = 1/4, 3/4, 1/2, 3/2) a formula without that factor is off by O(1).
+  // a_0 and b_4 hold the end values, which the spec never uses. Tolerance: both samplers' own.
+  const auto v = cbt::points_from<Real>(vd);
+  const std::vector<Real> t = times<Real>();
+  std::vector<cb::point<Real, 3>> out;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const cb::point<Real, 3> in = k > 0 ? cb::point<Real, 3>((v[k] - v[k - 1]) / (t[k] - t[k - 1])) : v[k];
+    const cb::point<Real, 3> leave =
+        k + 1 < v.size() ? cb::point<Real, 3>((v[k + 1] - v[k]) / (t[k + 1] - t[k])) : v[k];
+    out.insert(out.end(), {in, v[k], leave});
+  }
+  const gltf::sampler<Real, 3> cubic(t, std::span<const cb::point<Real, 3>>(out), gltf::interpolation::cubicspline);
+  const auto line = make_sampler<Real>(gltf::interpolation::linear);
+  for (double x : sample_times())
+    for (int order = 0; order <= 2; ++order)
+      ASSERT_TRUE(cbt::point_within(cubic.derivative(Real(x), order), to50(line.derivative(Real(x), order)),
+                                    real50(data_scale) * real50(std::pow(4.0, order)), hermite_ulps + lerp_ulps))
+          << "t=" << x << " order=" << order;
+}
+
 TYPED_TEST(gltf_test, scalar_channels_and_constants) {
   using Real = TypeParam;
   // A scalar (Dim = 1) cubicspline with equal values and zero tangents is that constant exactly
