@@ -64,13 +64,18 @@ struct segment {
   std::vector<double> extra_fractions;  // sample times t0 + f (t3 - t0) besides the u grid
 };
 
-// The stress set. Time handles must stay inside [t0, t3] (validated: that keeps x monotone), so the
-// extreme cases put the *time* handles on the interval's ends and let the *value* handles overshoot:
-// - handle_limit: time handles at the far ends (t1 = t3, t2 = t0), the limit of monotone time,
-//   x'(u) = 3 (2u - 1)^2 vanishes at u = 1/2; value handles at 4/3 and -1/3 of the range.
-// - handle_limit_thirds: value handles at 1/3 and 4/3 and 4/3, 1/3 in the two halves (two segments
-//   of the regression example with their time handles at 1/3 and 1 of the interval: vertical
-//   tangent at u = 1, and at 0 and 2/3 of the interval: vertical tangent at u = 0).
+// The stress set. Time stays monotone while a = t1 - t0 >= 0, c = t3 - t2 >= 0 and (b = t2 - t1 >= 0
+// or b^2 <= a c) (validated), so the extreme cases sit on that condition's boundary, where x' has a
+// double root, and let the *value* handles overshoot:
+// - handle_limit: time handles at the far ends (t1 = t3, t2 = t0: a = c = h, b = -h), x'(u) =
+//   3 h (2u - 1)^2 vanishes at u = 1/2; value handles at 4/3 and -1/3 of the range.
+// - regression_limit_a: the regression limit (a, c) = (1/3, 4/3) h, handles reaching
+//   outside the interval (t2 = t0 - h/3): x'(u) = h (1 - 3u)^2, a vertical tangent at u = 1/3,
+//   x = h/9; in normalized form (1/3 rounded to Real, which the validation's margin accepts).
+// - regression_limit_b: the mirror (a, c) = (4/3, 1/3) h (t1 = t3 + h/3): vertical at u = 2/3,
+//   x = 8 h / 9.
+// - regression_limit_a_far, regression_limit_b_far: the same at t0 = 1e5 with h = 9, so every
+//   control time is an integer, exact in float, and the segment sits exactly on the limit.
 // - vertical_start / vertical_end: one time handle of zero length, x'(0) = 0 or x'(1) = 0.
 // - cusp: x' and y' both vanish at u = 1/2 (times (0,1,0,1), values (0,1,1,0)).
 // - zero_handles: both handles of zero length (x' = y' = 0 at both ends).
@@ -83,8 +88,10 @@ std::vector<segment> stress_set() {
   for (int j = -50; j <= 50; ++j) near_0001.push_back(0.001 * (1 + j / 100.0));
   return {
       {"handle_limit", {0, 1, 0, 1}, {0, 4.0 / 3, -1.0 / 3, 1}, {}},
-      {"handle_limit_thirds_a", {0, 1.0 / 3, 1, 1}, {0, 1.0 / 3, 4.0 / 3, 1}, {}},
-      {"handle_limit_thirds_b", {0, 0, 2.0 / 3, 1}, {0, 4.0 / 3, 1.0 / 3, 1}, {}},
+      {"regression_limit_a", {0, 1.0 / 3, -1.0 / 3, 1}, {0, 1.0 / 3, 4.0 / 3, 1}, {}},
+      {"regression_limit_b", {0, 4.0 / 3, 2.0 / 3, 1}, {0, 1.0 / 3, 4.0 / 3, 1}, {}},
+      {"regression_limit_a_far", {1e5, 1e5 + 3, 1e5 - 3, 1e5 + 9}, {-1, 2, -2, 1}, {}},
+      {"regression_limit_b_far", {1e5, 1e5 + 12, 1e5 + 6, 1e5 + 9}, {1, -2, 2, -1}, {}},
       {"vertical_start", {0, 0, 2.0 / 3, 1}, {0, 1.0 / 3, 1, 1}, {}},
       {"vertical_end", {0, 1.0 / 3, 1, 1}, {0, 0, 2.0 / 3, 1}, {}},
       {"cusp", {0, 1, 0, 1}, {0, 1, 1, 0}, {}},
@@ -198,7 +205,9 @@ std::map<ch::time_solver, std::map<std::string, measured>> measure_all(int grid)
 //   roundings relative to the range: 6 ulps, rounded up to 8): 3 * 2^(digits-1-n-1) ulps + 8.
 //   Measured: 3.07e3 and 1.65e12 (n = 12, at the derived bound), 1.08 and 6.29e6 (n = 30).
 // - curvebench (the goal): 4 ulps of the range in double, mixed and forward; measured 0.66 mixed,
-//   1.53 forward in double, 0.66 and 1.49 in float. Asserted at 4 in both types.
+//   1.53 forward in double, 0.66 and 1.49 in float before the regression limits joined the set;
+//   with them 0.76 mixed in double and 0.77 in float (forward: see forward_exempt). Asserted at 4
+//   in both types.
 // - exact: measured 0.66 mixed in both types; bound 2 (3x margin).
 // - isolate_brent: measured 1.92 (float) and 1.87 (double); bound 4 (2x margin).
 // - closed_form: measured 93.2 (float) and 7.73 (double, overshoot: Cardano's cancellation); 2x.
@@ -224,6 +233,25 @@ constexpr std::array<bound, 8> bounds{{
 }};
 // The forward error bound of the curvebench solver (the goal, in both types).
 constexpr double curvebench_forward_ulps = 4;
+// Segments where no forward bound exists: the normalized regression limits hold 1/3 rounded, which
+// moves the double root of x' off its exact place by O(eps); x' is then O(eps h) near u = 1/3 (or
+// 2/3), dy/dt is of order 1 / eps there, and the truth itself spreads over hundreds of ulps of the
+// range within one ulp of t (measured forward errors in double: 750 and 917 for curvebench and for
+// exact alike, while the mixed errors stay at 0.76 and 0.65). The exact twins at t0 = 1e5 (integer
+// data, the limit held exactly) keep the forward bound: 0.75 and 1.5.
+// The regression limits in float, for the two schemes whose rounding the triple root of x(u) - t at
+// the vertical tangent amplifies to eps^(1/3) in u: closed_form (Cardano's cancellation) and
+// bisection30 (the normalized handles (t_i - t0) / h rounded in float move the triple root by
+// (eps / 3)^(1/3) ~ 3e-3 in u, beyond the window y*(t +- 1 ulp) on the far segment). Measured:
+// closed_form 5010 (regression_limit_a), 1309 (a_far), 6621 (b); bisection30 741 (a_far). Bound
+// 2x, on these segments only; the other segments keep the table's bounds.
+double limit_bound(ch::time_solver solver, const std::string& name, double otherwise) {
+  if (name.rfind("regression_limit", 0) != 0) return otherwise;
+  if (solver == ch::time_solver::closed_form) return 1.4e4;
+  if (solver == ch::time_solver::bisection30) return 1.5e3;
+  return otherwise;
+}
+bool forward_exempt(const std::string& name) { return name == "regression_limit_a" || name == "regression_limit_b"; }
 
 constexpr int stress_grid = 256;
 
@@ -244,8 +272,8 @@ TEST(time_solvers, measure_by_solver) {
       mf.forward = std::max(mf.forward, m.forward);
       mf.caps += m.caps;
       mf.mean_evaluations = std::max(mf.mean_evaluations, m.mean_evaluations);
-      EXPECT_LE(m.mixed, b.float_ulps) << ch::to_string(b.solver) << " float " << name;
-      if (b.solver == ch::time_solver::curvebench) {
+      EXPECT_LE(m.mixed, limit_bound(b.solver, name, b.float_ulps)) << ch::to_string(b.solver) << " float " << name;
+      if (b.solver == ch::time_solver::curvebench && !forward_exempt(name)) {
         EXPECT_LE(m.forward, curvebench_forward_ulps) << name;
       }
       EXPECT_EQ(m.caps, 0) << ch::to_string(b.solver) << " float " << name;
@@ -256,7 +284,7 @@ TEST(time_solvers, measure_by_solver) {
       md.caps += m.caps;
       md.mean_evaluations = std::max(md.mean_evaluations, m.mean_evaluations);
       EXPECT_LE(m.mixed, b.double_ulps) << ch::to_string(b.solver) << " double " << name;
-      if (b.solver == ch::time_solver::curvebench) {
+      if (b.solver == ch::time_solver::curvebench && !forward_exempt(name)) {
         EXPECT_LE(m.forward, curvebench_forward_ulps) << name;
       }
       EXPECT_EQ(m.caps, 0) << ch::to_string(b.solver) << " double " << name;
@@ -388,18 +416,96 @@ void check_monotone() {
 TEST(time_solvers, monotone_float) { check_monotone<float>(); }
 TEST(time_solvers, monotone_double) { check_monotone<double>(); }
 
-// The header's proof that handles inside [t0, t3] keep x non-decreasing, checked on a grid of
-// handle positions: min over u of x'(u) (exactly, in real50, at 201 points) is >= 0.
-TEST(time_solvers, handles_inside_keep_time_monotone) {
-  for (int i = 0; i <= 20; ++i)
-    for (int j = 0; j <= 20; ++j) {
-      const real50 a = real50(i) / 20, b = real50(j) / 20;
-      for (int k = 0; k <= 200; ++k) {
-        const real50 u = real50(k) / 200, w = real50(1) - u;
-        const real50 slope = w * w * a + 2 * u * w * (b - a) + u * u * (real50(1) - b);
-        EXPECT_GE(slope, 0) << "x1=" << a << " x2=" << b << " u=" << u;
+// The header's monotonicity condition checked against x' itself on a grid of handle positions
+// a, c in [0, 1.5] (steps of 1/24, exact in real50 up to the 1/3 multiples): the validation
+// accepts exactly the segments whose min over u of x'(u) (the quadratic's minimum at its vertex
+// when inside [0, 1], else at the ends; computed in real50) is >= -1e-40 (real50's rounding), and
+// the two regression limits are among the accepted ones, in double and in real50.
+TEST(time_solvers, monotone_condition_is_exact) {
+  int accepted = 0, rejected = 0;
+  for (int i = 0; i <= 36; ++i)
+    for (int j = 0; j <= 36; ++j) {
+      const real50 a = real50(i) / 24, c = real50(j) / 24, b = 1 - a - c;
+      // min over [0, 1] of a (1-u)^2 + 2 b u (1-u) + c u^2 = (a - 2b + c) u^2 + 2 (b - a) u + a.
+      const real50 qa = a - 2 * b + c, qb = 2 * (b - a);
+      real50 m = std::min(a, c);
+      if (qa > 0) {
+        const real50 u = -qb / (2 * qa);
+        if (u > 0 && u < 1) m = std::min(m, (qa * u + qb) * u + a);
       }
+      const bool monotone = m >= real50(-1e-40);
+      const ch::time_cubic<real50> c50{real50(0), a, 1 - c, real50(1)};
+      const ch::time_cubic<double> c64{0, static_cast<double>(a), static_cast<double>(1 - c), 1};
+      bool ok50 = true;
+      try {
+        ch::validate_time_cubic(c50);
+      } catch (const cb::invalid_input&) {
+        ok50 = false;
+      }
+      EXPECT_EQ(ok50, monotone) << "a=" << a << " c=" << c << " min x'/3h=" << m;
+      // In double the rounded handles may cross the boundary by rounding; away from it (min x'/3h
+      // beyond 1e-12 either way) the verdict must agree.
+      if (abs(m) > real50(1e-12)) {
+        bool ok64 = true;
+        try {
+          ch::validate_time_cubic(c64);
+        } catch (const cb::invalid_input&) {
+          ok64 = false;
+        }
+        EXPECT_EQ(ok64, monotone) << "a=" << a << " c=" << c;
+      }
+      (monotone ? accepted : rejected)++;
     }
+  EXPECT_GT(accepted, 0);
+  EXPECT_GT(rejected, 0);
+  for (const ch::time_cubic<double>& lim : {ch::time_cubic<double>{0, 1.0 / 3, -1.0 / 3, 1},
+                                            ch::time_cubic<double>{0, 4.0 / 3, 2.0 / 3, 1},
+                                            ch::time_cubic<double>{0, 3, -3, 9}, ch::time_cubic<double>{0, 12, 6, 9}})
+    EXPECT_NO_THROW(ch::validate_time_cubic(lim)) << lim.t1 << " " << lim.t2;
+  const real50 third = real50(1) / 3;
+  EXPECT_NO_THROW(ch::validate_time_cubic(ch::time_cubic<real50>{real50(0), third, -third, real50(1)}));
+  EXPECT_NO_THROW(ch::validate_time_cubic(ch::time_cubic<real50>{real50(0), 4 * third, 2 * third, real50(1)}));
+}
+
+// Every solver on the regression limits returns u in [0, 1] with x(u) = t to its own tolerance:
+// |x(u) - t| / h within the solver's stopping rule, checked at 2003 times each, including the
+// vertical-tangent times h/9 and 8h/9. Here x'(u) = h (1 - 3u)^2 (or h (2 - 3u)^2), at most 4 h.
+TEST(time_solvers, regression_limits_solve_inside) {
+  for (const ch::time_cubic<double>& c : {ch::time_cubic<double>{0, 1.0 / 3, -1.0 / 3, 1},
+                                          ch::time_cubic<double>{0, 4.0 / 3, 2.0 / 3, 1},
+                                          ch::time_cubic<double>{1e5, 1e5 + 3, 1e5 - 3, 1e5 + 9},
+                                          ch::time_cubic<double>{1e5, 1e5 + 12, 1e5 + 6, 1e5 + 9}}) {
+    const double h = c.t3 - c.t0;
+    std::vector<double> times;
+    for (int k = 0; k <= 2000; ++k) times.push_back(c.t0 + h * k / 2000.0);
+    times.push_back(c.t0 + h / 9);
+    times.push_back(c.t0 + 8 * h / 9);
+    for (ch::time_solver solver : ch::all_time_solvers) {
+      double worst = 0;
+      for (double t : times) {
+        t = std::clamp(t, c.t0, c.t3);
+        const double u = ch::solve_time(solver, c, t).u;
+        ASSERT_GE(u, 0.0) << ch::to_string(solver);
+        ASSERT_LE(u, 1.0) << ch::to_string(solver);
+        const auto x = to50(std::array<double, 4>{c.t0, c.t1, c.t2, c.t3});
+        worst = std::max(worst, static_cast<double>(abs(residual50(x, real50(t), real50(u))) / real50(h)));
+      }
+      // The tolerance of each scheme on |x(u) - t| / h: closed_form's cancellation at the triple
+      // root of x(u) - t at the vertical tangent (cube root of eps: 1e-5 relative), the tool
+      // schemes' 1e-7 and 1e-6, bisection's midpoint within 2^-(n+1) of the root times max x' = 4 h,
+      // the others' rounding level (a few eps, 1e-11 here relative to h since t0 = 1e5 carries
+      // 1e5 / 9 times h's ulp).
+      const double allowed = solver == ch::time_solver::closed_form        ? 1e-5
+                             : solver == ch::time_solver::table_newton     ? 1e-7
+                             : solver == ch::time_solver::newton_bisection ? 1e-6
+                             : solver == ch::time_solver::bisection12      ? 4 * 0x1p-13
+                             : solver == ch::time_solver::bisection30      ? 4 * 0x1p-31
+                                                                           : 1e-11;
+      EXPECT_LE(worst, allowed) << ch::to_string(solver) << " t1=" << c.t1 << " t2=" << c.t2;
+      std::cout << "regression limit t1=" << c.t1 << " t2=" << c.t2 << " " << ch::to_string(solver)
+                << ": max |x(u) - t| / h = " << worst << "\n";
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -434,8 +540,15 @@ TEST(time_solvers, bad_segments_name_the_field) {
   const auto msg = [](C c) { return cbt::message_of([&] { (void)ch::solve_time(ch::time_solver::exact, c, c.t0); }); };
   EXPECT_THAT(msg({0, nan, 0.5, 1}), HasSubstr("t1 = nan: must be finite"));
   EXPECT_THAT(msg({1, 1, 1, 1}), HasSubstr("t3 = 1 <= t0 = 1"));
-  EXPECT_THAT(msg({0, 1.5, 0.5, 1}), HasSubstr("t1 = 1.5: must be in [t0, t3] = [0, 1]"));
-  EXPECT_THAT(msg({0, 0.5, -0.25, 1}), HasSubstr("t2 = -0.25: must be in [t0, t3] = [0, 1]"));
+  EXPECT_THAT(msg({0, -0.5, 0.5, 1}), HasSubstr("t1 = -0.5: must be >= t0 = 0 (the handle points backwards"));
+  EXPECT_THAT(msg({0, 0.5, 1.5, 1}), HasSubstr("t2 = 1.5: must be <= t3 = 1 (the handle points backwards"));
+  // a = 1.5, c = 0.5, 1 - a - c = -1: (-1)^2 > 0.75, x'(1/2) < 0.
+  EXPECT_THAT(msg({0, 1.5, 0.5, 1}), HasSubstr("t1 = 1.5, t2 = 0.5 with [t0, t3] = [0, 1]: the handles regress"));
+  EXPECT_THAT(msg({0, 1.5, 0.5, 1}), HasSubstr("time runs backwards"));
+  // Just past the limit (1/3, 4/3) by 1/64 of h: b^2 - a c = 0.0117 h^2, clearly regressive.
+  EXPECT_THAT(msg({0, 1.0 / 3 + 1.0 / 64, -1.0 / 3, 1}), HasSubstr("the handles regress"));
+  // Handles outside the interval that keep time monotone are valid now: a = 0.5, c = 1.25.
+  EXPECT_NO_THROW((void)ch::solve_time(ch::time_solver::exact, C{0, 0.5, -0.25, 1}, 0.5));
   EXPECT_THAT(msg({1e15, 1e15, 1e15, 1e15 + 1}), HasSubstr("t3 - t0"));
   EXPECT_THROW((void)ch::solve_time(ch::time_solver::exact, C{0, nan, 0.5, 1}, 0.0), cb::invalid_input);
 }

@@ -3,12 +3,19 @@
 // t0..t3. Every animation tool solves this before it evaluates the value v(u); each does it its
 // own way, and this header offers each scheme behind one function, solve_time(solver, cubic, t).
 //
-// Monotone time: with t1, t2 in [t0, t3] (checked), x'(u) / 3 is the quadratic Bernstein
-// polynomial a (1-u)^2 + 2 b u (1-u) + c u^2 with a = t1 - t0 >= 0, c = t3 - t2 >= 0 and
-// b = t2 - t1 = (t3 - t0) - a - c >= -min(a, c) >= -sqrt(a c), which is exactly the condition for
-// a quadratic in this form to be >= 0 on [0, 1]; so x is non-decreasing and every t in [t0, t3]
-// has a root, unique except where x is flat (x' = 0 on an interval only when a = b = c = 0, which
-// t0 < t3 excludes; isolated zeros of x' are points of vertical tangent in the value's graph).
+// Monotone time: x'(u) / 3 is the quadratic Bernstein polynomial a (1-u)^2 + 2 b u (1-u) + c u^2
+// with a = t1 - t0, c = t3 - t2 and b = t2 - t1 = (t3 - t0) - a - c, and a quadratic in this form
+// is >= 0 on [0, 1] exactly when a >= 0, c >= 0 and (b >= 0 or b^2 <= a c). Handles may therefore
+// reach outside [t0, t3] (t1 up to t0 + 4/3 h, t2 down to t3 - 4/3 h, h = t3 - t0); the limits
+// (a, c) = (h/3, 4h/3) and (4h/3, h/3) give x'(u) = h (1 - 3u)^2 and h (2 - 3u)^2, a double
+// root: a vertical tangent of the value's graph at 1/9 or 8/9 of the interval. The check decides
+// b >= 0 exactly and b^2 <= a c with a margin of 8 eps relative (detail::time_handles_regress):
+// every exactly monotone segment passes, the limits included, and what passes beyond them dips by
+// rounding level only. So x is non-decreasing and every t in [t0, t3] has a root, unique except
+// where x is flat (x' = 0 on an interval only when a = b = c = 0, which t0 < t3 excludes; isolated
+// zeros of x' are points of vertical tangent in the value's graph). Every solver below returns a u
+// in [0, 1]: none assumes the handles inside the interval (the bracket is always [0, 1], the
+// closed form keeps the root in [0, 1], the table's samples stay ordered up to rounding).
 //
 // Solvers (each derived from its published description; no code is taken from the tools):
 // - closed_form: Cardano's / the trigonometric solution of the cubic in power form on the
@@ -54,8 +61,9 @@
 // Every iterative solver reports iterations, residual evaluations and whether it stopped by its
 // own criterion (converged) or by its cap (converged == false, the best iterate returned).
 // Errors: a segment with non-finite times, t3 <= t0, a span t3 - t0 too narrow to be resolved
-// (validate::resolvable) or a handle time outside [t0, t3] -> invalid_input naming the field and
-// value; t outside [t0, t3] (or NaN) -> std::domain_error naming t and the interval.
+// (validate::resolvable), t1 < t0 or t2 > t3 (a handle pointing backwards in time), or handles that
+// regress (x decreasing somewhere: the condition above) -> invalid_input naming the fields and
+// values; t outside [t0, t3] (or NaN) -> std::domain_error naming t and the interval.
 // Sources: CSS Easing Functions Level 1 (cubic-bezier), the WebKit / Chromium UnitBezier scheme,
 // @mapbox/unitbezier, Brent (1973), Press et al. (Numerical Recipes, rtsafe); see docs/references.md.
 #pragma once
@@ -78,13 +86,15 @@
 
 namespace curvebench::channel {
 
-/// The control times of a keyframe segment's Bezier curve: t0 < t3, t1 and t2 in [t0, t3].
+/// The control times of a keyframe segment's Bezier curve: t0 < t3, t1 >= t0, t2 <= t3 and the
+/// handles not regressive (see the header).
 template <class Real>
 struct time_cubic {
   Real t0, t1, t2, t3;
 };
 
-/// Throws invalid_input unless c is a valid segment: "t1 = 2: must be in [t0, t3] = [0, 1]".
+/// Throws invalid_input unless c is a valid segment: "t1 = -1: must be >= t0 = 0 (the handle points
+/// backwards in time)", "t1 = 0.3333, t2 = -0.5 with [t0, t3] = [0, 1]: the handles regress ...".
 template <class Real>
 void validate_time_cubic(const time_cubic<Real>& c) {
   validate::finite("t0", c.t0);
@@ -95,13 +105,18 @@ void validate_time_cubic(const time_cubic<Real>& c) {
     validate::fail("t3 = " + to_text(c.t3) + " <= t0 = " + to_text(c.t0) +
                    ": a segment's end time must follow its start");
   validate::resolvable("t3 - t0", c.t0, c.t3);
-  const auto handle = [&](std::string_view name, const Real& v) {
-    if (c.t0 <= v && v <= c.t3) return;
-    validate::fail(std::string(name) + " = " + to_text(v) + ": must be in [t0, t3] = [" + to_text(c.t0) + ", " +
-                   to_text(c.t3) + "] (handle times inside the segment keep time monotone)");
-  };
-  handle("t1", c.t1);
-  handle("t2", c.t2);
+  if (!(c.t1 >= c.t0))
+    validate::fail("t1 = " + to_text(c.t1) + ": must be >= t0 = " + to_text(c.t0) +
+                   " (the handle points backwards in time)");
+  if (!(c.t2 <= c.t3))
+    validate::fail("t2 = " + to_text(c.t2) + ": must be <= t3 = " + to_text(c.t3) +
+                   " (the handle points backwards in time)");
+  if (detail::time_handles_regress(c.t0, c.t1, c.t2, c.t3))
+    validate::fail("t1 = " + to_text(c.t1) + ", t2 = " + to_text(c.t2) + " with [t0, t3] = [" + to_text(c.t0) +
+                   ", " + to_text(c.t3) +
+                   "]: the handles regress (time runs backwards inside the segment); with h = t3 - t0, "
+                   "a = (t1 - t0) / h and c = (t3 - t2) / h, time is monotone only when 1 - a - c >= 0 or "
+                   "(1 - a - c)^2 <= a c");
 }
 
 /// The time solvers, one per scheme (see the header comment).

@@ -30,6 +30,33 @@ template <class Real>
   return Real(3) * (e0 + u * (e1 - e0));
 }
 
+/// Whether the time handles of a segment with t0 < t3, t1 >= t0 and t2 <= t3 let x(u) decrease
+/// somewhere in [0, 1]. x'(u) / 3 = a (1-u)^2 + 2 b u (1-u) + c u^2 with a = t1 - t0 >= 0,
+/// c = t3 - t2 >= 0 and b = t2 - t1, and such a quadratic is >= 0 on [0, 1] exactly when b >= 0 or
+/// b^2 <= a c. b >= 0 is decided exactly (t2 >= t1). Otherwise a, b, c are rounded differences
+/// (relative error eps/2 each), scaled exactly by a power of two so that the squares neither
+/// overflow nor underflow, and b^2 <= a c is tested with a margin of 8 eps relative: it covers the
+/// rounding of the differences and products (at most about 3 eps on each side), so every segment
+/// with exactly non-decreasing time passes, the double-root limits (a, c) = (1/3, 4/3) h and
+/// (4/3, 1/3) h included; what passes beyond the exact condition has b^2 > a c by at most 8 eps
+/// relative, so x' dips below 0 by at most 8 eps a c / (a - 2 b + c) <= 8 eps h, and x regresses
+/// by at most that times the width of the dip, a few eps of h (rounding level, not a regression).
+template <class Real>
+[[nodiscard]] bool time_handles_regress(const Real& t0, const Real& t1, const Real& t2, const Real& t3) {
+  using std::abs;
+  using std::frexp;
+  using std::ldexp;
+  if (t2 >= t1) return false;
+  Real a = t1 - t0, b = t1 - t2, c = t3 - t2;  // b here is -(t2 - t1) > 0
+  const Real big = a > b ? (a > c ? a : c) : (b > c ? b : c);
+  int exponent = 0;
+  (void)frexp(big, &exponent);
+  a = ldexp(a, -exponent);
+  b = ldexp(b, -exponent);
+  c = ldexp(c, -exponent);
+  return b * b > a * c * (Real(1) + Real(8) * epsilon<Real>());
+}
+
 /// The result of brent_root: the root estimate, iterations and function evaluations spent, and
 /// whether the tolerance was met before the iteration cap.
 template <class Real>
