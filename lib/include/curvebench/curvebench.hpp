@@ -3,7 +3,8 @@
 // What: every public header of curvebench::curvebench - core (points, the curve concept, errors,
 // Real utilities, any_curve), basis (Bernstein, cubic basis matrices, constraint solver), curves
 // (one family per header), the property audit, arclength (quadrature, lengths, inversion,
-// parameterization), channel (keyframe channels: the time solvers of a Bezier segment, CSS
+// parameterization), channel (keyframe channels: keys, segments, extrapolation and the curve
+// view; the time solvers of a Bezier segment, CSS
 // easing, glTF 2.0 samplers), motion (ease functions, keyframes, motion along a path) and
 // reference (the 50-digit type real50, conversion
 // to it, reference arc length, closed forms).
@@ -49,6 +50,7 @@
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/arclength/result.hpp"
 
+#include "curvebench/channel/channel.hpp"
 #include "curvebench/channel/css_easing.hpp"
 #include "curvebench/channel/gltf.hpp"
 #include "curvebench/channel/time_solver.hpp"
