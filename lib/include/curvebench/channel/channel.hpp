@@ -336,7 +336,11 @@ channel<Real>::channel(std::vector<key<Real>> keys, extrapolation before, extrap
   for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
     const key<Real>& k0 = keys[i];
     const key<Real>& k1 = keys[i + 1];
-    detail::segment<Real> s{k0.interp, {k0.time, k0.time, k1.time, k1.time}, {k0.value, k0.value, k1.value, k1.value}};
+    detail::segment<Real> s{k0.interp,
+                            {k0.time, k0.time, k1.time, k1.time},
+                            {k0.value, k0.value, k1.value, k1.value},
+                            Real(0),
+                            Real(0)};
     const Real h = k1.time - k0.time;
     if (k0.interp == interpolation::bezier) {
       s.t = {k0.time, k0.time + k0.out.dt, k1.time + k1.in.dt, k1.time};
@@ -364,6 +368,8 @@ channel<Real>::channel(std::vector<key<Real>> keys, extrapolation before, extrap
       validate::finite(key_field(i, "out slope"), m0);
       validate::finite(key_field(i + 1, "in slope"), m1);
       s.v = {k0.value, k0.value + m0 * h / Real(3), k1.value - m1 * h / Real(3), k1.value};
+      s.m0 = m0;
+      s.m1 = m1;
       validate::finite(key_field(i, "hermite control value"), s.v[1]);
       validate::finite(key_field(i + 1, "hermite control value"), s.v[2]);
     }

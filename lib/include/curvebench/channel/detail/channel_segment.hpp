@@ -39,13 +39,14 @@ template <class Real>
 }
 
 /// One segment [t[0], t[3]]: for bezier the control times and values of the cubic Bezier; for
-/// hermite t[0], t[3] and the Bernstein values v0, v0 + m0 h / 3, v3 - m1 h / 3, v3 (t[1], t[2]
-/// unused: time is linear); for linear, constant and step_next t[0], t[3] and v[0], v[3].
+/// hermite t[0], t[3], the Bernstein values v0, v0 + m0 h / 3, v3 - m1 h / 3, v3 (t[1], t[2]
+/// unused: time is linear) and the slopes m0, m1 themselves (dv/dt at the keys, exactly); for linear, constant and step_next t[0], t[3] and v[0], v[3].
 template <class Real>
 struct segment {
   interpolation kind;
   std::array<Real, 4> t;
   std::array<Real, 4> v;
+  Real m0{0}, m1{0};  // hermite: the end slopes as given (exact at the keys, not via v1, v2)
 
   [[nodiscard]] Real span() const { return t[3] - t[0]; }
 
@@ -87,6 +88,8 @@ struct segment {
   /// is the limit along the segment: +-infinity with the sign of v'(w) when v'(w) != 0, else the
   /// ratio of the first derivatives of order 2 or 3 that do not both vanish (l'Hopital).
   [[nodiscard]] Real slope_at(const Real& w) const {
+    if (kind == interpolation::hermite && w == Real(0)) return m0;
+    if (kind == interpolation::hermite && w == Real(1)) return m1;
     const Real xp = time_at(w, 1), vp = value_at(w, 1);
     if (xp > Real(0)) return vp / xp;
     const Real inf = std::numeric_limits<Real>::infinity();
