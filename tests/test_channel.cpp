@@ -11,8 +11,8 @@
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/reference/multiprecision.hpp"
 
-#include <boost/math/special_functions/next.hpp>
 #include <gmock/gmock.h>
+#include <boost/math/special_functions/next.hpp>
 
 #include <algorithm>
 #include <array>
@@ -73,8 +73,8 @@ template <class Real>
 std::vector<ch::key<Real>> keys_of(const std::vector<key_data>& data) {
   std::vector<ch::key<Real>> keys;
   for (const key_data& k : data)
-    keys.push_back({Real(k.time), Real(k.value), {Real(k.in_dt), Real(k.in_dv)}, {Real(k.out_dt), Real(k.out_dv)},
-                    k.interp});
+    keys.push_back(
+        {Real(k.time), Real(k.value), {Real(k.in_dt), Real(k.in_dv)}, {Real(k.out_dt), Real(k.out_dv)}, k.interp});
   return keys;
 }
 
@@ -176,8 +176,7 @@ TYPED_TEST(channel_ieee_test, bezier_segments_against_the_50_digit_truth) {
       EXPECT_LE(error, real50(solver_ulps) + smp.rounding) << ch::to_string(solver) << " t=" << smp.t;
       worst = std::max(worst, static_cast<double>(error - smp.rounding));
     }
-    std::cout << ch::to_string(solver) << ": max error beyond the query's rounding " << worst
-              << " ulps of the range\n";
+    std::cout << ch::to_string(solver) << ": max error beyond the query's rounding " << worst << " ulps of the range\n";
   }
 }
 
@@ -185,8 +184,7 @@ TYPED_TEST(channel_ieee_test, bezier_segments_against_the_50_digit_truth) {
 TEST(channel, real50_exact_solver_against_the_truth) {
   const auto keys = keys_of<real50>(mixed_keys());
   const real50 range = value_range(keys);
-  const ch::channel<real50> c(keys, ch::extrapolation::constant, ch::extrapolation::constant,
-                              ch::time_solver::exact);
+  const ch::channel<real50> c(keys, ch::extrapolation::constant, ch::extrapolation::constant, ch::time_solver::exact);
   real50 worst = 0, max_used = 0;
   for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
     if (keys[i].interp != ch::interpolation::bezier) continue;
@@ -245,8 +243,8 @@ TYPED_TEST(channel_test, hermite_reproduces_a_cubic) {
 TYPED_TEST(channel_test, thirds_bezier_equals_hermite) {
   using Real = TypeParam;
   using I = ch::interpolation;
-  const std::vector<key_data> hermite{{0, 0, 0, 0, 1, 2, I::hermite}, {3, 1, -1, 0.5, 1, -1, I::hermite},
-                                      {6, -1, -1, -3, 0, 0, I::hermite}};
+  const std::vector<key_data> hermite{
+      {0, 0, 0, 0, 1, 2, I::hermite}, {3, 1, -1, 0.5, 1, -1, I::hermite}, {6, -1, -1, -3, 0, 0, I::hermite}};
   std::vector<key_data> bezier = hermite;
   for (auto& k : bezier) k.interp = I::bezier;
   const ch::channel<Real> h(keys_of<Real>(hermite)), b(keys_of<Real>(bezier));
@@ -343,7 +341,7 @@ TYPED_TEST(channel_test, extrapolation_cycle_and_cycle_offset) {
   // The repeats of the last key's time are the first key of the next repeat.
   EXPECT_EQ(c.value(Real(5)), Real(0.5));
   EXPECT_EQ(c.value(Real(3)), Real(-0.25));  // the keyed range's own last key
-  EXPECT_EQ(o.value(Real(5)), Real(-1));  // two periods after t_first: 0.5 + 2 (-0.75)
+  EXPECT_EQ(o.value(Real(5)), Real(-1));     // two periods after t_first: 0.5 + 2 (-0.75)
   EXPECT_EQ(o.value(Real(3)), Real(-0.25));
 }
 
@@ -451,8 +449,9 @@ TEST(channel, vertical_tangents_and_zero_length_handles) {
   EXPECT_DOUBLE_EQ(z.derivative(0.0, 1), 2.0);
   // Linear extrapolation from a vertical end is refused at construction.
   EXPECT_THAT(cbt::message_of([] {
-                ch::channel<double> c(keys_of<double>({{0, 0, 0, 0, 0, 1, I::bezier}, {1, 1, -0.5, 0, 0, 0, I::linear}}),
-                                      ch::extrapolation::linear);
+                ch::channel<double> c(
+                    keys_of<double>({{0, 0, 0, 0, 0, 1, I::bezier}, {1, 1, -0.5, 0, 0, 0, I::linear}}),
+                    ch::extrapolation::linear);
               }),
               HasSubstr("extrapolation before = linear needs a finite slope at keys[0]"));
 }
@@ -589,15 +588,19 @@ TEST(channel, validation_names_key_field_and_value) {
               HasSubstr("keys[0].out.dt = 0: a hermite segment takes its slope dv/dt from the handle"));
   EXPECT_THAT(msg({{0, 0, 0, 0, 0.5, 1, I::hermite}, {1, 1, 0, 0, 0, 0, I::linear}}),
               HasSubstr("keys[1].in.dt = 0: a hermite segment"));
-  EXPECT_THAT(msg({{0, 0, 0, 0, 0, 0, I::linear}, {1e15, 0, 0, 0, 0, 0, I::linear}, {1e15 + 1, 0, 0, 0, 0, 0,
-                                                                                      I::linear}}),
-              HasSubstr("keys[2].time - keys[1].time"));
+  EXPECT_THAT(
+      msg({{0, 0, 0, 0, 0, 0, I::linear}, {1e15, 0, 0, 0, 0, 0, I::linear}, {1e15 + 1, 0, 0, 0, 0, 0, I::linear}}),
+      HasSubstr("keys[2].time - keys[1].time"));
   EXPECT_THAT(msg({{0, 0, 0, 0, 0, 0, static_cast<I>(9)}}), HasSubstr("keys[0].interp = 9: not an interpolation"));
-  EXPECT_THAT(cbt::message_of([] {
-                ch::channel<double> c(keys_of<double>({{0, 0, 0, 0, 0, 0, I::linear}}), static_cast<ch::extrapolation>(7));
-              }),
-              HasSubstr("extrapolation before = 7: not an extrapolation"));
+  EXPECT_THAT(
+      cbt::message_of([] {
+        ch::channel<double> c(keys_of<double>({{0, 0, 0, 0, 0, 0, I::linear}}), static_cast<ch::extrapolation>(7));
+      }),
+      HasSubstr("extrapolation before = 7: not an extrapolation"));
   EXPECT_THAT(cbt::message_of([] { (void)ch::out_handle(1.0, -0.5, 2.0); }), HasSubstr("weight = -0.5: must be >= 0"));
-  EXPECT_THAT(cbt::message_of([] { ch::channel<double> c(keys_of<double>({{0, 0, 0, 0, 0, 0, I::linear}})); (void)c.derivative(0.0, 3); }),
+  EXPECT_THAT(cbt::message_of([] {
+                ch::channel<double> c(keys_of<double>({{0, 0, 0, 0, 0, 0, I::linear}}));
+                (void)c.derivative(0.0, 3);
+              }),
               HasSubstr("order = 3"));
 }

@@ -458,9 +458,9 @@ TEST(time_solvers, monotone_condition_is_exact) {
     }
   EXPECT_GT(accepted, 0);
   EXPECT_GT(rejected, 0);
-  for (const ch::time_cubic<double>& lim : {ch::time_cubic<double>{0, 1.0 / 3, -1.0 / 3, 1},
-                                            ch::time_cubic<double>{0, 4.0 / 3, 2.0 / 3, 1},
-                                            ch::time_cubic<double>{0, 3, -3, 9}, ch::time_cubic<double>{0, 12, 6, 9}})
+  for (const ch::time_cubic<double>& lim :
+       {ch::time_cubic<double>{0, 1.0 / 3, -1.0 / 3, 1}, ch::time_cubic<double>{0, 4.0 / 3, 2.0 / 3, 1},
+        ch::time_cubic<double>{0, 3, -3, 9}, ch::time_cubic<double>{0, 12, 6, 9}})
     EXPECT_NO_THROW(ch::validate_time_cubic(lim)) << lim.t1 << " " << lim.t2;
   const real50 third = real50(1) / 3;
   EXPECT_NO_THROW(ch::validate_time_cubic(ch::time_cubic<real50>{real50(0), third, -third, real50(1)}));
@@ -471,10 +471,10 @@ TEST(time_solvers, monotone_condition_is_exact) {
 // |x(u) - t| / h within the solver's stopping rule, checked at 2003 times each, including the
 // vertical-tangent times h/9 and 8h/9. Here x'(u) = h (1 - 3u)^2 (or h (2 - 3u)^2), at most 4 h.
 TEST(time_solvers, regression_limits_solve_inside) {
-  for (const ch::time_cubic<double>& c : {ch::time_cubic<double>{0, 1.0 / 3, -1.0 / 3, 1},
-                                          ch::time_cubic<double>{0, 4.0 / 3, 2.0 / 3, 1},
-                                          ch::time_cubic<double>{1e5, 1e5 + 3, 1e5 - 3, 1e5 + 9},
-                                          ch::time_cubic<double>{1e5, 1e5 + 12, 1e5 + 6, 1e5 + 9}}) {
+  for (const ch::time_cubic<double>& c :
+       {ch::time_cubic<double>{0, 1.0 / 3, -1.0 / 3, 1}, ch::time_cubic<double>{0, 4.0 / 3, 2.0 / 3, 1},
+        ch::time_cubic<double>{1e5, 1e5 + 3, 1e5 - 3, 1e5 + 9},
+        ch::time_cubic<double>{1e5, 1e5 + 12, 1e5 + 6, 1e5 + 9}}) {
     const double h = c.t3 - c.t0;
     std::vector<double> times;
     for (int k = 0; k <= 2000; ++k) times.push_back(c.t0 + h * k / 2000.0);

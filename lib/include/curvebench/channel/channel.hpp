@@ -97,11 +97,11 @@ namespace curvebench::channel {
 enum class extrapolation : std::uint8_t { constant, linear, cycle, cycle_offset, oscillate };
 
 inline constexpr std::array<interpolation, 5> all_interpolations{interpolation::constant, interpolation::step_next,
-                                                                  interpolation::linear, interpolation::bezier,
-                                                                  interpolation::hermite};
+                                                                 interpolation::linear, interpolation::bezier,
+                                                                 interpolation::hermite};
 inline constexpr std::array<extrapolation, 5> all_extrapolations{extrapolation::constant, extrapolation::linear,
-                                                                  extrapolation::cycle, extrapolation::cycle_offset,
-                                                                  extrapolation::oscillate};
+                                                                 extrapolation::cycle, extrapolation::cycle_offset,
+                                                                 extrapolation::oscillate};
 
 [[nodiscard]] inline const char* to_string(interpolation i) {
   switch (i) {
@@ -198,9 +198,9 @@ namespace detail {
 template <class Real>
 struct channel_data {
   std::vector<key<Real>> keys;
-  std::vector<Real> times;        // keys[i].time
+  std::vector<Real> times;  // keys[i].time
   std::vector<segment<Real>> segments;
-  std::vector<Real> breaks;       // 0, 1, ..., segments
+  std::vector<Real> breaks;  // 0, 1, ..., segments
   extrapolation before = extrapolation::constant;
   extrapolation after = extrapolation::constant;
   time_solver solver = time_solver::curvebench;
@@ -226,8 +226,7 @@ class channel {
   /// d^order v / dt^order at time t, order 0, 1 or 2 (see the header for vertical tangents).
   [[nodiscard]] Real derivative(const Real& t, int order) const {
     validate::derivative_order(order);
-    if (order > 2)
-      validate::fail("order = " + std::to_string(order) + ": a channel's time derivatives go to order 2");
+    if (order > 2) validate::fail("order = " + std::to_string(order) + ": a channel's time derivatives go to order 2");
     return eval(t, order);
   }
   /// out[i] = value(times[i]); no allocation. Spans of different sizes are an invalid_input.
@@ -272,7 +271,8 @@ class channel_curve {
     validate::derivative_order(order);
     check_parameter(u, domain());
     const auto& d = *data_;
-    if (d.segments.empty()) return order == 0 ? point_type(d.keys[0].time, d.keys[0].value) : point_type(Real(0), Real(0));
+    if (d.segments.empty())
+      return order == 0 ? point_type(d.keys[0].time, d.keys[0].value) : point_type(Real(0), Real(0));
     using std::floor;
     const std::size_t n = d.segments.size();
     std::size_t i = static_cast<std::size_t>(static_cast<long long>(floor(u)));
@@ -336,11 +336,8 @@ channel<Real>::channel(std::vector<key<Real>> keys, extrapolation before, extrap
   for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
     const key<Real>& k0 = keys[i];
     const key<Real>& k1 = keys[i + 1];
-    detail::segment<Real> s{k0.interp,
-                            {k0.time, k0.time, k1.time, k1.time},
-                            {k0.value, k0.value, k1.value, k1.value},
-                            Real(0),
-                            Real(0)};
+    detail::segment<Real> s{
+        k0.interp, {k0.time, k0.time, k1.time, k1.time}, {k0.value, k0.value, k1.value, k1.value}, Real(0), Real(0)};
     const Real h = k1.time - k0.time;
     if (k0.interp == interpolation::bezier) {
       s.t = {k0.time, k0.time + k0.out.dt, k1.time + k1.in.dt, k1.time};
@@ -384,9 +381,10 @@ channel<Real>::channel(std::vector<key<Real>> keys, extrapolation before, extrap
     d->slope_first = d->segments.front().slope_at(Real(0));
     d->slope_last = d->segments.back().slope_at(Real(1));
     if (before == extrapolation::linear && !is_finite(d->slope_first))
-      validate::fail("extrapolation before = linear needs a finite slope at keys[0]: the first segment's tangent "
-                     "there is vertical (" + key_field(0, "out") + " = (" + to_text(keys[0].out.dt) + ", " +
-                     to_text(keys[0].out.dv) + "))");
+      validate::fail(
+          "extrapolation before = linear needs a finite slope at keys[0]: the first segment's tangent "
+          "there is vertical (" +
+          key_field(0, "out") + " = (" + to_text(keys[0].out.dt) + ", " + to_text(keys[0].out.dv) + "))");
     if (after == extrapolation::linear && !is_finite(d->slope_last))
       validate::fail("extrapolation after = linear needs a finite slope at " +
                      validate::indexed("keys", keys.size() - 1) + ": the last segment's tangent there is vertical (" +
@@ -399,8 +397,7 @@ channel<Real>::channel(std::vector<key<Real>> keys, extrapolation before, extrap
 
 template <class Real>
 Real channel<Real>::eval(const Real& t, int order) const {
-  if (!is_finite(t))
-    throw std::domain_error("t = " + to_text(t) + ": a channel is evaluated at finite times only");
+  if (!is_finite(t)) throw std::domain_error("t = " + to_text(t) + ": a channel is evaluated at finite times only");
   const auto& d = *data_;
   if (d.segments.empty()) return order == 0 ? d.keys[0].value : Real(0);
   if (t < d.times.front()) return extrapolate(d.before, true, t, order);
@@ -443,7 +440,7 @@ Real channel<Real>::extrapolate(extrapolation mode, bool before, const Real& t, 
       const Real offset = t - t_first;
       Real r = fmod(offset, period);  // exact; the sign of offset
       if (r < Real(0)) r += period;
-      if (r >= period) r = Real(0);  // r + period rounded up to the period: the next repeat's start
+      if (r >= period) r = Real(0);                 // r + period rounded up to the period: the next repeat's start
       const Real k = round((offset - r) / period);  // whole periods; an integer up to rounding, rounded
       bool mirrored = false;
       if (mode == extrapolation::oscillate) {

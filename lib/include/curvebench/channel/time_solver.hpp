@@ -112,8 +112,8 @@ void validate_time_cubic(const time_cubic<Real>& c) {
     validate::fail("t2 = " + to_text(c.t2) + ": must be <= t3 = " + to_text(c.t3) +
                    " (the handle points backwards in time)");
   if (detail::time_handles_regress(c.t0, c.t1, c.t2, c.t3))
-    validate::fail("t1 = " + to_text(c.t1) + ", t2 = " + to_text(c.t2) + " with [t0, t3] = [" + to_text(c.t0) +
-                   ", " + to_text(c.t3) +
+    validate::fail("t1 = " + to_text(c.t1) + ", t2 = " + to_text(c.t2) + " with [t0, t3] = [" + to_text(c.t0) + ", " +
+                   to_text(c.t3) +
                    "]: the handles regress (time runs backwards inside the segment); with h = t3 - t0, "
                    "a = (t1 - t0) / h and c = (t3 - t2) / h, time is monotone only when 1 - a - c >= 0 or "
                    "(1 - a - c)^2 <= a c");

@@ -40,7 +40,8 @@ template <class Real>
 
 /// One segment [t[0], t[3]]: for bezier the control times and values of the cubic Bezier; for
 /// hermite t[0], t[3], the Bernstein values v0, v0 + m0 h / 3, v3 - m1 h / 3, v3 (t[1], t[2]
-/// unused: time is linear) and the slopes m0, m1 themselves (dv/dt at the keys, exactly); for linear, constant and step_next t[0], t[3] and v[0], v[3].
+/// unused: time is linear) and the slopes m0, m1 themselves (dv/dt at the keys, exactly); for linear, constant and
+/// step_next t[0], t[3] and v[0], v[3].
 template <class Real>
 struct segment {
   interpolation kind;
