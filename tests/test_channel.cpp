@@ -456,6 +456,27 @@ TEST(channel, vertical_tangents_and_zero_length_handles) {
               HasSubstr("extrapolation before = linear needs a finite slope at keys[0]"));
 }
 
+// The regression-limit segment of the mixed keys (times 6.5, 9.5, 3.5, 15.5: x'(u) = 9 (1 - 3u)^2)
+// has its vertical tangent at t = 6.5 + 9 / 9 = 7.5 (u = 1/3, v'(1/3) = 3). At real50 the exact
+// solver lands within about eps50^(1/3) ~ 1e-17 of u = 1/3 (the triple root of x(u) - 7.5), where
+// x' ~ 1e-33, so dv/dt is at least 1e30 or infinite; the value is y(1/3) of the value controls
+// (-0.25, 0.75, 2.5, 0.5): 22.5 / 27 = 5/6.
+TEST(channel, regression_limit_vertical_tangent) {
+  const ch::channel<real50> c(keys_of<real50>(mixed_keys()), ch::extrapolation::constant, ch::extrapolation::constant,
+                              ch::time_solver::exact);
+  const real50 y = bsum({real50(-0.25), real50(0.75), real50(2.5), real50(0.5)}, real50(1) / 3);
+  using std::abs;
+  // Within eps50^(1/3) in u times |v'| = 3: 1e-16 absolute.
+  EXPECT_LE(abs(c.value(real50(7.5)) - y), real50("1e-15"));
+  EXPECT_GE(c.derivative(real50(7.5), 1), real50("1e30"));
+  // In double: finite or +inf, never negative or NaN, and large (x' <= 1e-10 within the rounding).
+  const ch::channel<double> d(keys_of<double>(mixed_keys()));
+  EXPECT_GE(d.derivative(7.5, 1), 1e4);
+  EXPECT_LE(abs(y * 6 - 5), real50("1e-45"));  // the test's own sum agrees with 5/6
+  std::cout << "dv/dt at the vertical tangent: real50 " << static_cast<double>(c.derivative(real50(7.5), 1))
+            << ", double " << d.derivative(7.5, 1) << "\n";
+}
+
 // Continuity at a key whose handles are aligned (in = -(1/2) out): the value and dv/dt from the
 // left (real50, 1e-30 before the key) match the key's own (the right side) to first order.
 TEST(channel, aligned_handles_are_continuous_at_the_key) {
