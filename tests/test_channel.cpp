@@ -619,6 +619,18 @@ TEST(channel, validation_names_key_field_and_value) {
       }),
       HasSubstr("extrapolation before = 7: not an extrapolation"));
   EXPECT_THAT(cbt::message_of([] { (void)ch::out_handle(1.0, -0.5, 2.0); }), HasSubstr("weight = -0.5: must be >= 0"));
+  EXPECT_THAT(cbt::message_of([] { (void)ch::in_handle(1.0, 0.5, 0.0); }), HasSubstr("span = 0: must be > 0"));
+  EXPECT_THAT(cbt::message_of([&] { (void)ch::in_handle(nan, 0.5, 1.0); }), HasSubstr("slope = nan: must be finite"));
+  EXPECT_THAT(cbt::message_of([] {
+                ch::channel<double> c(keys_of<double>({{0, 0, 0, 0, 0, 0, I::linear}}), ch::extrapolation::constant,
+                                      ch::extrapolation::constant, static_cast<ch::time_solver>(42));
+              }),
+              HasSubstr("time solver = 42: not a time_solver"));
+  EXPECT_THAT(cbt::message_of([] {
+                ch::channel<double> c(keys_of<double>({{0, 0, 0, 0, 0, 0, I::linear}}), ch::extrapolation::constant,
+                                      static_cast<ch::extrapolation>(5));
+              }),
+              HasSubstr("extrapolation after = 5: not an extrapolation"));
   EXPECT_THAT(cbt::message_of([] {
                 ch::channel<double> c(keys_of<double>({{0, 0, 0, 0, 0, 0, I::linear}}));
                 (void)c.derivative(0.0, 3);
