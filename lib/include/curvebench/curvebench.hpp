@@ -4,9 +4,8 @@
 // Real utilities, any_curve), basis (Bernstein, cubic basis matrices, constraint solver), curves
 // (one family per header), the property audit, arclength (quadrature, lengths, inversion,
 // parameterization), channel (keyframe channels: keys, segments, extrapolation and the curve
-// view; the time solvers of a Bezier segment, CSS
-// easing, glTF 2.0 samplers), motion (ease functions, keyframes, motion along a path) and
-// reference (the 50-digit type real50, conversion
+// view; the time solvers of a Bezier segment, CSS easing, glTF 2.0 samplers), motion (ease
+// functions, keyframes, motion along a path) and reference (the 50-digit type real50, conversion
 // to it, reference arc length, closed forms).
 // Not included: io/ (JSON specs and the family registry), which needs nlohmann/json and lives in
 // its own target curvebench::io (include "curvebench/io/spec.hpp" and link curvebench::io), and
