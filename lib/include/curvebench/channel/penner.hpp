@@ -45,7 +45,7 @@
 // Sources: R. Penner, "Robert Penner's Programming Macromedia Flash MX" ch. 7 and his easing
 // equations (BSD licence); Blender's manual and Python API reference (defaults, AUTO); the
 // normalisations above were decided by Blender 3.4.1's own values (tests/data/blender_easing.json,
-// scripts/peers/blender_fcurves.py). See docs/references.md. No Blender code was read or used.
+// scripts/peers/blender_fcurves.py). See docs/references.md. Blender's (GPL) source was not used.
 // Validation: invalid_input naming the argument and value: t, begin, change, back, amplitude and
 // period must be finite, duration finite and > 0, amplitude >= 0 (Blender's property range), order
 // 0, 1 or 2; names that are not a family or mode. t outside [0, duration] -> std::domain_error.
