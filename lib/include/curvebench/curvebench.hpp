@@ -4,8 +4,9 @@
 // Real utilities, any_curve), basis (Bernstein, cubic basis matrices, constraint solver), curves
 // (one family per header), the property audit, arclength (quadrature, lengths, inversion,
 // parameterization), channel (keyframe channels: keys, segments, extrapolation and the curve
-// view; the time solvers of a Bezier segment, CSS easing, glTF 2.0 samplers), motion (ease
-// functions, keyframes, motion along a path) and reference (the 50-digit type real50, conversion
+// view; the time solvers of a Bezier segment, CSS easing, glTF 2.0 samplers, Penner's easing
+// equations as Blender applies them), motion (ease functions, keyframes, motion along a path) and
+// reference (the 50-digit type real50, conversion
 // to it, reference arc length, closed forms).
 // Not included: io/ (JSON specs and the family registry), which needs nlohmann/json and lives in
 // its own target curvebench::io (include "curvebench/io/spec.hpp" and link curvebench::io), and
@@ -52,6 +53,7 @@
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/channel/css_easing.hpp"
 #include "curvebench/channel/gltf.hpp"
+#include "curvebench/channel/penner.hpp"
 #include "curvebench/channel/time_solver.hpp"
 
 #include "curvebench/motion/distance_time.hpp"
