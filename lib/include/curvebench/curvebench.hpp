@@ -3,8 +3,11 @@
 // What: every public header of curvebench::curvebench - core (points, the curve concept, errors,
 // Real utilities, any_curve), basis (Bernstein, cubic basis matrices, constraint solver), curves
 // (one family per header), the property audit, arclength (quadrature, lengths, inversion,
-// parameterization), motion (ease functions, keyframes, motion along a path) and reference (the
-// 50-digit type real50, conversion to it, reference arc length, closed forms).
+// parameterization), channel (keyframe channels: keys, segments, extrapolation and the curve
+// view; the time solvers of a Bezier segment, CSS easing, glTF 2.0 samplers, Penner's easing
+// equations as Blender applies them), motion (ease functions, keyframes, motion along a path) and
+// reference (the 50-digit type real50, conversion
+// to it, reference arc length, closed forms).
 // Not included: io/ (JSON specs and the family registry), which needs nlohmann/json and lives in
 // its own target curvebench::io (include "curvebench/io/spec.hpp" and link curvebench::io), and
 // the private detail/ headers.
@@ -46,6 +49,12 @@
 #include "curvebench/arclength/newton_inversion.hpp"
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/arclength/result.hpp"
+
+#include "curvebench/channel/channel.hpp"
+#include "curvebench/channel/css_easing.hpp"
+#include "curvebench/channel/gltf.hpp"
+#include "curvebench/channel/penner.hpp"
+#include "curvebench/channel/time_solver.hpp"
 
 #include "curvebench/motion/distance_time.hpp"
 #include "curvebench/motion/keyframes.hpp"

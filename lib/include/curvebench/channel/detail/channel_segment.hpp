@@ -1,0 +1,119 @@
+// Private helpers of channel/channel.hpp: one segment of a keyframe channel in Bernstein form, its
+// evaluation at a local parameter w in [0, 1] (the curve view) and at a time t (the channel), and
+// the limit of dv/dt where x'(w) vanishes. Not part of the public interface.
+#pragma once
+
+#include "curvebench/channel/detail/cubic_time.hpp"
+#include "curvebench/channel/time_solver.hpp"
+#include "curvebench/core/real.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace curvebench::channel {
+
+/// How the segment that starts at a key interpolates (see channel.hpp).
+enum class interpolation : std::uint8_t { constant, step_next, linear, bezier, hermite };
+
+}  // namespace curvebench::channel
+
+namespace curvebench::channel::detail {
+
+/// The order-th derivative in w of the cubic with Bernstein coefficients b (any order >= 0).
+template <class Real>
+[[nodiscard]] Real bernstein3_any(const std::array<Real, 4>& b, const Real& w, int order) {
+  switch (order) {
+    case 0: return bernstein3(b[0], b[1], b[2], b[3], w);
+    case 1: return bernstein3_derivative(b[0], b[1], b[2], b[3], w);
+    case 2: {
+      const Real d0 = b[2] - Real(2) * b[1] + b[0], d1 = b[3] - Real(2) * b[2] + b[1];
+      return Real(6) * (d0 + w * (d1 - d0));
+    }
+    case 3: return Real(6) * ((b[3] - b[0]) - Real(3) * (b[2] - b[1]));
+    default: return Real(0);
+  }
+}
+
+/// One segment [t[0], t[3]]: for bezier the control times and values of the cubic Bezier; for
+/// hermite t[0], t[3], the Bernstein values v0, v0 + m0 h / 3, v3 - m1 h / 3, v3 (t[1], t[2]
+/// unused: time is linear) and the slopes m0, m1 themselves (dv/dt at the keys, exactly); for linear, constant and
+/// step_next t[0], t[3] and v[0], v[3].
+template <class Real>
+struct segment {
+  interpolation kind;
+  std::array<Real, 4> t;
+  std::array<Real, 4> v;
+  Real m0{0}, m1{0};  // hermite: the end slopes as given (exact at the keys, not via v1, v2)
+
+  [[nodiscard]] Real span() const { return t[3] - t[0]; }
+
+  /// The time coordinate's order-th derivative at local parameter w.
+  [[nodiscard]] Real time_at(const Real& w, int order) const {
+    if (kind == interpolation::bezier) return bernstein3_any(t, w, order);
+    if (order == 0) return (Real(1) - w) * t[0] + w * t[3];  // exact at both ends
+    return order == 1 ? span() : Real(0);
+  }
+
+  /// The value coordinate's order-th derivative at local parameter w; constant and step_next are
+  /// horizontal with their jump at the segment's end (constant) or start (step_next).
+  [[nodiscard]] Real value_at(const Real& w, int order) const {
+    switch (kind) {
+      case interpolation::bezier:
+      case interpolation::hermite: return bernstein3_any(v, w, order);
+      case interpolation::linear:
+        if (order == 0) return (Real(1) - w) * v[0] + w * v[3];
+        return order == 1 ? v[3] - v[0] : Real(0);
+      case interpolation::constant:
+        if (order > 0) return Real(0);
+        return w < Real(1) ? v[0] : v[3];
+      case interpolation::step_next:
+        if (order > 0) return Real(0);
+        return w > Real(0) ? v[3] : v[0];
+    }
+    return Real(0);
+  }
+
+  /// The local parameter at time t in [t[0], t[3]]: the solver's root for bezier, else linear.
+  [[nodiscard]] Real local(const Real& time, time_solver solver) const {
+    if (kind == interpolation::bezier) return solve_time(solver, time_cubic<Real>{t[0], t[1], t[2], t[3]}, time).u;
+    if (time == t[3]) return Real(1);
+    return std::clamp((time - t[0]) / span(), Real(0), Real(1));
+  }
+
+  /// dv/dt at local parameter w. Where x'(w) > 0 it is v'(w) / x'(w). Where x'(w) <= 0 (a vertical
+  /// tangent, a zero-length time handle at an end, or a dip by rounding at a regression limit) it
+  /// is the limit along the segment: +-infinity with the sign of v'(w) when v'(w) != 0, else the
+  /// ratio of the first derivatives of order 2 or 3 that do not both vanish (l'Hopital).
+  [[nodiscard]] Real slope_at(const Real& w) const {
+    if (kind == interpolation::hermite && w == Real(0)) return m0;
+    if (kind == interpolation::hermite && w == Real(1)) return m1;
+    const Real xp = time_at(w, 1), vp = value_at(w, 1);
+    if (xp > Real(0)) return vp / xp;
+    const Real inf = std::numeric_limits<Real>::infinity();
+    if (vp != Real(0)) return vp > Real(0) ? inf : Real(-inf);
+    for (int order = 2; order <= 3; ++order) {
+      const Real xk = time_at(w, order), vk = value_at(w, order);
+      if (xk != Real(0)) return vk / xk;
+      if (vk != Real(0)) return vk > Real(0) ? inf : Real(-inf);
+    }
+    return Real(0);  // not reached for a segment with t[0] < t[3]: x''' or x'' or x' is nonzero
+  }
+
+  /// d^2 v / dt^2 at local parameter w: (v'' x' - v' x'') / x'^3; std::domain_error where x'(w) <= 0
+  /// (the second derivative is unbounded there except in degenerate alignments; none is made up).
+  [[nodiscard]] Real curvature_at(const Real& w, const Real& time) const {
+    const Real xp = time_at(w, 1);
+    if (!(xp > Real(0)))
+      throw std::domain_error("d2v/dt2 at t = " + to_text(time) +
+                              ": the segment's time derivative x'(u) vanishes there (vertical tangent or "
+                              "zero-length time handle), so the second derivative is unbounded");
+    const Real vp = value_at(w, 1), xpp = time_at(w, 2), vpp = value_at(w, 2);
+    return (vpp * xp - vp * xpp) / (xp * xp * xp);
+  }
+};
+
+}  // namespace curvebench::channel::detail

@@ -1,0 +1,225 @@
+"""Evaluate keyframe channels with real Blender: the peer that records Blender's F-curve values.
+
+Run inside Blender:
+    blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- IN.json OUT.json
+
+IN.json is a list of channels, or an object {"channels": [...], "note": "..."} (the note, e.g. the
+command that regenerated the file, is copied to the output). A channel:
+    {"name": "quad/in",                      (any text; copied)
+     "keys": [{"time": 1, "value": 2,
+               "interpolation": "QUAD",      (Blender's names: CONSTANT, LINEAR, BEZIER, SINE, ...)
+               "easing": "EASE_IN",          (AUTO, EASE_IN, EASE_OUT, EASE_IN_OUT; optional)
+               "back": 1.70158, "amplitude": 0.8, "period": 4.1,        (optional)
+               "handle_left_type": "FREE", "handle_right_type": "FREE", (optional)
+               "handle_left": [0, 2], "handle_right": [2, 2]},          (optional)
+              ...],
+     "extrapolation": "CONSTANT",            (or LINEAR; optional)
+     "cycles": {"mode_before": "REPEAT", "mode_after": "REPEAT",
+                "cycles_before": 0, "cycles_after": 0},                 (optional Cycles modifier)
+     "times": [1, 1.5, ...]}                 (where to call fcurve.evaluate)
+Each channel becomes an F-curve on location[0] of its own empty object in the factory scene. Keys are
+set in the order given, handle types before handle coordinates, and fcurve.update() runs once after
+all keys are set (it sorts the keys and recomputes automatic handles, as the UI would).
+
+OUT.json: {"blender_version": "3.4.1", "note": ..., "channels": [{"name", "keys", "extrapolation",
+"cycles", "times", "values"}]} where "keys" are read back from Blender after update() (so they hold
+the float32 values Blender stores: back = 1.70158 reads back as 1.7015800476074219) and "values"
+are fcurve.evaluate(t) at each time (float32 results, written as exact doubles).
+
+The reading, checking and writing functions do not import bpy, so they can be tested with plain
+Python (tests/python/test_blender_fcurves.py).
+"""
+
+import json
+import math
+import sys
+
+INTERPOLATIONS = ("CONSTANT", "LINEAR", "BEZIER", "SINE", "QUAD", "CUBIC", "QUART", "QUINT", "EXPO", "CIRC",
+                  "BACK", "BOUNCE", "ELASTIC")
+EASINGS = ("AUTO", "EASE_IN", "EASE_OUT", "EASE_IN_OUT")
+HANDLE_TYPES = ("FREE", "ALIGNED", "VECTOR", "AUTO", "AUTO_CLAMPED")
+EXTRAPOLATIONS = ("CONSTANT", "LINEAR")
+CYCLE_MODES = ("NONE", "REPEAT", "REPEAT_OFFSET", "MIRROR")
+KEY_FIELDS = ("time", "value", "interpolation", "easing", "back", "amplitude", "period", "handle_left_type",
+              "handle_right_type", "handle_left", "handle_right")
+CHANNEL_FIELDS = ("name", "keys", "extrapolation", "cycles", "times")
+CYCLE_FIELDS = ("mode_before", "mode_after", "cycles_before", "cycles_after")
+
+
+class RequestError(ValueError):
+    """A malformed request; the message names the field by its path."""
+
+
+def _number(path, value):
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise RequestError(f"{path} = {value!r}: expected a finite number")
+    return float(value)
+
+
+def _choice(path, value, allowed):
+    if value not in allowed:
+        raise RequestError(f"{path} = {value!r}: expected one of {', '.join(allowed)}")
+    return value
+
+
+def _pair(path, value):
+    if not isinstance(value, list) or len(value) != 2:
+        raise RequestError(f"{path} = {value!r}: expected [time, value]")
+    return [_number(f"{path}[{i}]", v) for i, v in enumerate(value)]
+
+
+def _unknown(path, obj, known):
+    for k in obj:
+        if k not in known:
+            raise RequestError(f"{path}.{k}: unknown field (known: {', '.join(known)})")
+
+
+def check_request(data):
+    """Returns (channels, note) with every field checked; raises RequestError naming the bad field."""
+    note = None
+    if isinstance(data, dict):
+        _unknown("request", data, ("channels", "note"))
+        note = data.get("note")
+        data = data.get("channels")
+    if not isinstance(data, list) or not data:
+        raise RequestError("channels: expected a non-empty list")
+    out = []
+    for ci, ch in enumerate(data):
+        p = f"channels[{ci}]"
+        if not isinstance(ch, dict):
+            raise RequestError(f"{p}: expected an object")
+        _unknown(p, ch, CHANNEL_FIELDS)
+        keys = ch.get("keys")
+        if not isinstance(keys, list) or len(keys) < 1:
+            raise RequestError(f"{p}.keys: expected a non-empty list")
+        checked_keys = []
+        for ki, k in enumerate(keys):
+            kp = f"{p}.keys[{ki}]"
+            if not isinstance(k, dict):
+                raise RequestError(f"{kp}: expected an object")
+            _unknown(kp, k, KEY_FIELDS)
+            ck = {"time": _number(f"{kp}.time", k.get("time")), "value": _number(f"{kp}.value", k.get("value"))}
+            ck["interpolation"] = _choice(f"{kp}.interpolation", k.get("interpolation", "BEZIER"), INTERPOLATIONS)
+            ck["easing"] = _choice(f"{kp}.easing", k.get("easing", "AUTO"), EASINGS)
+            for f in ("back", "amplitude", "period"):
+                if f in k:
+                    ck[f] = _number(f"{kp}.{f}", k[f])
+            for f in ("handle_left_type", "handle_right_type"):
+                if f in k:
+                    ck[f] = _choice(f"{kp}.{f}", k[f], HANDLE_TYPES)
+            for f in ("handle_left", "handle_right"):
+                if f in k:
+                    ck[f] = _pair(f"{kp}.{f}", k[f])
+            checked_keys.append(ck)
+        times = ch.get("times")
+        if not isinstance(times, list) or not times:
+            raise RequestError(f"{p}.times: expected a non-empty list of numbers")
+        c = {"name": str(ch.get("name", f"channel{ci}")), "keys": checked_keys,
+             "extrapolation": _choice(f"{p}.extrapolation", ch.get("extrapolation", "CONSTANT"), EXTRAPOLATIONS),
+             "times": [_number(f"{p}.times[{i}]", t) for i, t in enumerate(times)]}
+        if "cycles" in ch:
+            cy = ch["cycles"]
+            if not isinstance(cy, dict):
+                raise RequestError(f"{p}.cycles: expected an object")
+            _unknown(f"{p}.cycles", cy, CYCLE_FIELDS)
+            c["cycles"] = {
+                "mode_before": _choice(f"{p}.cycles.mode_before", cy.get("mode_before", "REPEAT"), CYCLE_MODES),
+                "mode_after": _choice(f"{p}.cycles.mode_after", cy.get("mode_after", "REPEAT"), CYCLE_MODES),
+                "cycles_before": int(_number(f"{p}.cycles.cycles_before", cy.get("cycles_before", 0))),
+                "cycles_after": int(_number(f"{p}.cycles.cycles_after", cy.get("cycles_after", 0)))}
+        out.append(c)
+    return out, note
+
+
+def read_request(path):
+    with open(path, encoding="utf-8") as f:
+        return check_request(json.load(f))
+
+
+def result_document(version, note, channels):
+    """The output document; `channels` are the checked channels with "keys" read back and "values" added."""
+    doc = {"blender_version": version}
+    if note is not None:
+        doc["note"] = note
+    doc["channels"] = channels
+    return doc
+
+
+def write_result(path, doc):
+    # json writes floats with repr(): the shortest text that reads back as the same double, so the
+    # float32 values Blender returns survive exactly.
+    # One channel per line keeps recorded fixtures small and their diffs readable.
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("{\n")
+        for k, v in doc.items():
+            if k != "channels":
+                f.write(f" {json.dumps(k)}: {json.dumps(v)},\n")
+        f.write(' "channels": [\n')
+        f.write(",\n".join("  " + json.dumps(ch, separators=(",", ":")) for ch in doc["channels"]))
+        f.write("\n ]\n}\n")
+
+
+def script_arguments(argv):
+    """The arguments after Blender's "--" separator: [IN.json, OUT.json]."""
+    args = argv[argv.index("--") + 1:] if "--" in argv else []
+    if len(args) != 2:
+        raise RequestError("usage: blender -b --factory-startup --python blender_fcurves.py -- IN.json OUT.json")
+    return args
+
+
+def evaluate_in_blender(bpy, channels):
+    """Builds one F-curve per channel and evaluates it; returns the channels with keys read back and values."""
+    scene = bpy.context.scene
+    results = []
+    for ci, ch in enumerate(channels):
+        obj = bpy.data.objects.new(f"curvebench_{ci}", None)
+        scene.collection.objects.link(obj)
+        action = bpy.data.actions.new(f"curvebench_action_{ci}")
+        obj.animation_data_create()
+        obj.animation_data.action = action
+        fc = action.fcurves.new("location", index=0)
+        fc.keyframe_points.add(len(ch["keys"]))
+        for kp, k in zip(fc.keyframe_points, ch["keys"]):
+            kp.co = (k["time"], k["value"])
+            kp.interpolation = k["interpolation"]
+            kp.easing = k["easing"]
+            for f in ("back", "amplitude", "period"):
+                if f in k:
+                    setattr(kp, f, k[f])
+            for f in ("handle_left_type", "handle_right_type", "handle_left", "handle_right"):
+                if f in k:
+                    setattr(kp, f, k[f])
+        fc.extrapolation = ch["extrapolation"]
+        if "cycles" in ch:
+            m = fc.modifiers.new("CYCLES")
+            for f in CYCLE_FIELDS:
+                setattr(m, f, ch["cycles"][f])
+        fc.update()
+        keys = [{"time": kp.co[0], "value": kp.co[1], "interpolation": kp.interpolation, "easing": kp.easing,
+                 "back": kp.back, "amplitude": kp.amplitude, "period": kp.period,
+                 "handle_left_type": kp.handle_left_type, "handle_right_type": kp.handle_right_type,
+                 "handle_left": list(kp.handle_left), "handle_right": list(kp.handle_right)}
+                for kp in fc.keyframe_points]
+        r = {"name": ch["name"], "keys": keys, "extrapolation": fc.extrapolation}
+        if "cycles" in ch:
+            r["cycles"] = ch["cycles"]
+        r["times"] = ch["times"]
+        r["values"] = [fc.evaluate(t) for t in ch["times"]]
+        results.append(r)
+    return results
+
+
+def main(argv):
+    in_path, out_path = script_arguments(argv)
+    channels, note = read_request(in_path)
+    import bpy  # only inside Blender
+    version = ".".join(str(v) for v in bpy.app.version)
+    write_result(out_path, result_document(version, note, evaluate_in_blender(bpy, channels)))
+
+
+if __name__ == "__main__":
+    try:
+        main(sys.argv)
+    except RequestError as e:
+        print(f"blender_fcurves.py: {e}", file=sys.stderr)
+        sys.exit(2)

@@ -1,0 +1,95 @@
+"""scripts/peers/blender_fcurves.py without Blender: the request checker names bad fields by their
+path, the writer keeps float32 values exact and writes a document json reads back, the easing
+request covers every family x easing, and the recorded fixture was produced from that request."""
+import json
+import os
+import sys
+import tempfile
+import unittest
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+sys.path.insert(0, os.path.join(ROOT, "scripts", "peers"))
+
+import blender_easing_request  # noqa: E402
+import blender_fcurves as bf  # noqa: E402
+
+
+def channel(**over):
+    ch = {"name": "c", "keys": [{"time": 0, "value": 1, "interpolation": "QUAD", "easing": "EASE_IN"},
+                                {"time": 4, "value": 3}], "times": [0, 1, 2]}
+    ch.update(over)
+    return ch
+
+
+class CheckRequest(unittest.TestCase):
+    def test_defaults_filled(self):
+        channels, note = bf.check_request([channel()])
+        self.assertIsNone(note)
+        self.assertEqual(channels[0]["keys"][1]["interpolation"], "BEZIER")
+        self.assertEqual(channels[0]["keys"][1]["easing"], "AUTO")
+        self.assertEqual(channels[0]["extrapolation"], "CONSTANT")
+        self.assertEqual(channels[0]["times"], [0.0, 1.0, 2.0])
+
+    def test_object_form_keeps_note_and_cycles(self):
+        channels, note = bf.check_request({"note": "n", "channels": [channel(cycles={"mode_after": "MIRROR"})]})
+        self.assertEqual(note, "n")
+        self.assertEqual(channels[0]["cycles"], {"mode_before": "REPEAT", "mode_after": "MIRROR",
+                                                 "cycles_before": 0, "cycles_after": 0})
+
+    def test_errors_name_the_field(self):
+        cases = [
+            ([channel(times=[0, float("nan")])], "channels[0].times[1] = nan: expected a finite number"),
+            ([channel(keys=[{"time": 0, "value": 1, "interpolation": "SMOOTH"}])],
+             "channels[0].keys[0].interpolation = 'SMOOTH': expected one of CONSTANT"),
+            ([channel(keys=[{"time": 0, "value": 1, "handle_left": [1]}])],
+             "channels[0].keys[0].handle_left = [1]: expected [time, value]"),
+            ([channel(keys=[{"time": 0, "value": 1, "bounce": 2}])], "channels[0].keys[0].bounce: unknown field"),
+            ([channel(extrapolation="CYCLIC")], "channels[0].extrapolation = 'CYCLIC'"),
+            ([], "channels: expected a non-empty list"),
+            ([channel(keys=[{"time": True, "value": 1}])], "channels[0].keys[0].time = True"),
+        ]
+        for data, words in cases:
+            with self.assertRaises(bf.RequestError) as e:
+                bf.check_request(data)
+            self.assertIn(words, str(e.exception))
+
+    def test_script_arguments(self):
+        self.assertEqual(bf.script_arguments(["blender", "-b", "--python", "x.py", "--", "a", "b"]), ["a", "b"])
+        with self.assertRaises(bf.RequestError):
+            bf.script_arguments(["blender", "--", "a"])
+
+
+class WriteResult(unittest.TestCase):
+    def test_float32_values_round_trip(self):
+        # 1.70158 stored as float32 reads back as this double; the file must keep every digit.
+        v = 1.7015800476074219
+        doc = bf.result_document("3.4.1", "note", [{"name": "c", "times": [0.1], "values": [v, 1e-45]}])
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "out.json")
+            bf.write_result(path, doc)
+            with open(path, encoding="utf-8") as f:
+                back = json.load(f)
+        self.assertEqual(back, doc)
+        self.assertEqual(back["channels"][0]["values"][0], v)
+
+
+class EasingFixture(unittest.TestCase):
+    def test_request_covers_every_family_and_easing(self):
+        req = blender_easing_request.request()
+        bf.check_request(req)
+        seen = {(ch["keys"][0]["interpolation"], ch["keys"][0]["easing"]) for ch in req["channels"]}
+        self.assertEqual(len(seen), 10 * 4)
+
+    def test_fixture_is_the_recorded_output_of_the_request(self):
+        with open(os.path.join(ROOT, "tests", "data", "blender_easing.json"), encoding="utf-8") as f:
+            fixture = json.load(f)
+        req = blender_easing_request.request()
+        self.assertEqual(fixture["note"], req["note"])
+        self.assertEqual([c["name"] for c in fixture["channels"]], [c["name"] for c in req["channels"]])
+        for rec, asked in zip(fixture["channels"], req["channels"]):
+            self.assertEqual(rec["times"], asked["times"])
+            self.assertEqual(len(rec["values"]), len(asked["times"]))
+
+
+if __name__ == "__main__":
+    unittest.main()
