@@ -32,10 +32,12 @@
 //   side's slope is the chord to j (0 for equal values), else the spline slope. Maya does not
 //   publish its tolerance; maya_curve::clamp_tolerance (default 0: equal values only) makes it an
 //   explicit input.
-// - plateau: flat at the first and last key and at local extrema (v_i >= both neighbours or <= both:
-//   "the curve is flat at the keys' extremes"); elsewhere the spline slope limited to 3 min(|d_l|,
-//   |d_r|), which by Fritsch and Carlson's condition keeps each Hermite segment between two such
-//   keys monotone, so the curve never overshoots its keys (the documented intent; Maya's exact
+// - plateau: described as keeping the curve from going beyond its keys' values, so that its
+//   maxima and minima do not overshoot the keys (the Plateau entry of the Tangents menu; its
+//   official wording was not retrieved, the rule follows that description): flat at the first and
+//   last key and at local extrema (v_i >= both neighbours or <= both); elsewhere the spline slope
+//   limited to 3 min(|d_l|, |d_r|), which by Fritsch and Carlson's condition keeps each Hermite
+//   segment between two such keys monotone, so the curve never overshoots its keys (Maya's exact
 //   limiter is not published).
 // - auto (spelled auto_ in C++, "auto" in to_string): Maya Help's Auto Span (legacy) description,
 //   "first and last keyframes have flat tangents, keyframes in between do not overshoot the
