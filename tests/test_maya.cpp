@@ -266,6 +266,26 @@ TEST(Maya, WeightedHandlesAtThirdsEqualTheNonWeightedCurve) {
   }
 }
 
+TEST(Maya, WeightedFixedTangentsAreBezierHandlesAtAThirdOfTheVector) {
+  // Handles (0.4, 1.2) and (-0.9, 0.3) on [0, 2]: the vectors are three times the handles.
+  std::vector<ch::maya_key<double>> keys{key(0, 1, maya_tangent::fixed), key(2, 0, maya_tangent::fixed)};
+  keys[0].out_x = 1.2, keys[0].out_y = 3.6;
+  keys[1].in_x = 2.7, keys[1].in_y = -0.9;
+  const auto exact = ch::maya_exact<real50>(curve_of(keys, true));
+  // The Bezier at u = 1/2: time (t0 + 3 t1 + 3 t2 + t3) / 8, value (v0 + 3 v1 + 3 v2 + v3) / 8.
+  // (The keys are the doubles nearest 1.2, 3.6, 2.7, 0.9, converted exactly.)
+  const real50 t1 = real50(1.2) / 3, t2 = 2 - real50(2.7) / 3, v1 = 1 + real50(3.6) / 3, v2 = real50(0.9) / 3;
+  const real50 t_mid = (0 + 3 * t1 + 3 * t2 + 2) / 8, v_mid = (1 + 3 * v1 + 3 * v2 + 0) / 8;
+  EXPECT_LT(abs(exact.value(t_mid) - v_mid), real50(1e-45));
+  // The non-weighted curve with the same slopes is a different curve (the weight matters).
+  const auto plain = ch::maya_exact<real50>(curve_of(keys, false));
+  EXPECT_GT(abs(plain.value(t_mid) - v_mid), real50(1e-3));
+  // Maya's (angle, weight) gives the same vector.
+  const auto [x, y] = ch::tangent_from_angle(std::atan2(1.2, 0.4), std::hypot(0.4, 1.2));
+  EXPECT_NEAR(x, 1.2, 1e-15);
+  EXPECT_NEAR(y, 3.6, 1e-15);
+}
+
 TEST(Maya, RegressiveHandlesAreShortenedSoTimeStaysMonotone) {
   // Handles 1.5 segment durations long on both sides (a = c = 1.5): (1 - a - c)^2 = 4 > a c = 2.25,
   // time would run backwards; the channel refuses such handles as they are.
