@@ -1,0 +1,406 @@
+// The Maya animCurve tool model: the rules that turn a Maya animation curve's description (keys
+// with in and out tangent types, fixed tangents, a weighted flag, pre and post infinity) into what
+// Maya evaluates, built on the keyframe channel (channel/channel.hpp), so that the same keys can be
+// evaluated as Maya does (double, the isolate_brent time solver) and exactly (real50, the exact
+// solver) and the two compared.
+//
+// Keys: maya_key { time, value, in_type, out_type, in_x, in_y, out_x, out_y }. Times are in one
+// unit throughout (frames or seconds, whichever the caller uses; Maya stores key times in the
+// scene's time unit, its API's tangents in seconds: convert before building). A fixed tangent is
+// the vector (x, y), x > 0, in (time, value) units, pointing forwards in time on both sides (as
+// Maya stores kix/kiy and kox/koy): its slope is y / x. On a weighted curve the vector is also the
+// handle: the Bezier control point is key + (x, y) / 3 (out) or key - (x, y) / 3 (in), so a vector
+// of x = the segment's duration puts the handle at a third. tangent_from_angle(angle, weight) makes
+// (x, y) = 3 weight (cos angle, sin angle) from Maya's angle (radians) and weight (the handle's
+// length in the (time, value) plane).
+// Tangent rules (slopes dv/dt; Maya Help, "Graph Editor Tangents menu" and "Graph Editor Curves
+// menu", docs/references.md). n = the number of keys, d_l and d_r = the chord slopes to the
+// previous and the next key (v_i - v_{i-1}) / (t_i - t_{i-1}) and (v_{i+1} - v_i) / (t_{i+1} - t_i):
+// - fixed: y / x of the given vector.
+// - linear: "a straight line joining two keys": in = d_l, out = d_r; an end key's missing side
+//   takes the other side's chord.
+// - flat: 0.
+// - step (out side): the key's value holds until the next key (channel constant); step_next (out
+//   side): the next key's value from just after the key (channel step_next). Only the segment's
+//   start key's out type makes a segment stepped; a step or step_next in tangent has slope 0.
+// - spline: "smooth between the key before and the key after", both tangents co-linear: the slope
+//   of the chord through the two neighbours, (v_{i+1} - v_{i-1}) / (t_{i+1} - t_{i-1})
+//   (Catmull-Rom-like); an end key takes the chord to its only neighbour.
+// - clamped: "splines unless the value of two adjacent keys are very close; then the out tangent
+//   of the first key and the in tangent of the second are interpolated as linear": per side, when
+//   |v_i - v_j| <= clamp_tolerance * max(1, |v_i|, |v_j|) for the neighbour j on that side, that
+//   side's slope is the chord to j (0 for equal values), else the spline slope. Maya does not
+//   publish its tolerance; maya_curve::clamp_tolerance (default 0: equal values only) makes it an
+//   explicit input.
+// - plateau: described as keeping the curve from going beyond its keys' values, so that its
+//   maxima and minima do not overshoot the keys (the Plateau entry of the Tangents menu; its
+//   official wording was not retrieved, the rule follows that description): flat at the first and
+//   last key and at local extrema (v_i >= both neighbours or <= both); elsewhere the spline slope
+//   limited to 3 min(|d_l|, |d_r|), which by Fritsch and Carlson's condition keeps each Hermite
+//   segment between two such keys monotone, so the curve never overshoots its keys (Maya's exact
+//   limiter is not published).
+// - auto (spelled auto_ in C++, "auto" in to_string): Maya Help's Auto Span (legacy) description,
+//   "first and last keyframes have flat tangents, keyframes in between do not overshoot the
+//   neighbouring keyframe value": in this model the same rule as plateau. Auto Ease / Mix / Custom
+//   are not modelled.
+// Segments: a non-weighted curve's segment is the cubic Hermite polynomial in time with the two
+// slopes (the handles' lengths ignored; channel hermite, handles at thirds). A weighted curve's
+// segment is the cubic Bezier with the handles above (computed tangent types put their handles at
+// thirds of the adjacent segment, so only fixed tangents carry a weight). Regressive handles:
+// Maya's documented intent is that time stays monotone; the rule here (Maya's own is not
+// published): with h the duration, a = out handle time / h, c = in handle time / h, when
+// a + c > 1 both handles are scaled by 1 / (a + c) along their directions (then a + c = 1, the
+// middle Bernstein coefficient of x'(u) is 0 and time is monotone). Segments whose handles overlap
+// in time but are still monotone are corrected too (the rule looks at a + c only).
+// Infinity (pre before the first key, post after the last; Maya Help "Pre and Post Infinity"):
+// constant (the end key's value), linear (the end key's tangent facing out of the keyed range: the
+// first key's in tangent, the last key's out tangent, "extrapolates the value ... using its
+// tangent information"; a step type there is slope 0), cycle, cycle_relative ("Cycle with Offset",
+// channel cycle_offset) and oscillate (channel oscillate). Linear infinity is evaluated here from
+// the end key's own tangent; the other modes are the channel's. A one-key curve is constant under
+// every mode (the channel's rule).
+// Evaluation: maya_model(curve) builds the evaluator in double with the isolate_brent time solver
+// (the zeros of x'(u) isolate monotone pieces, Brent on the bracketing piece: the approach of
+// Autodesk's AnimX description); maya_exact<High>(curve) builds the same keys converted exactly to
+// High (real50) with the exact solver; the tangent rules are then applied in High too.
+// Validation (invalid_input naming the key index and field with the value): no keys, non-finite
+// numbers, unknown enum values, fixed tangents with x <= 0, a non-finite slope y / x, negative
+// clamp_tolerance; the channel's own checks (time order, duplicate times) follow.
+// Cost: O(n) to build; evaluation as the channel (O(log n) search plus the solver on weighted
+// segments). Accuracy: the channel's plus the slopes' rounding (a few eps relative);
+// tests/test_maya.cpp measures the double model against the real50 truth.
+// Sources: Autodesk Maya Help (Graph Editor Tangents menu, Graph Editor Curves menu); Autodesk's
+// AnimX documentation (Maya's evaluator approach); Fritsch and Carlson (1980). Facts only, no code.
+#pragma once
+
+#include "curvebench/channel/channel.hpp"
+#include "curvebench/channel/time_solver.hpp"
+#include "curvebench/core/error.hpp"
+#include "curvebench/core/real.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace curvebench::channel {
+
+/// Maya's tangent types (auto_ is Maya's "auto").
+enum class maya_tangent : std::uint8_t { fixed, linear, flat, step, step_next, spline, clamped, plateau, auto_ };
+/// Maya's pre / post infinity modes.
+enum class maya_infinity : std::uint8_t { constant, linear, cycle, cycle_relative, oscillate };
+
+inline constexpr std::array<maya_tangent, 9> all_maya_tangents{
+    maya_tangent::fixed,  maya_tangent::linear,  maya_tangent::flat,    maya_tangent::step, maya_tangent::step_next,
+    maya_tangent::spline, maya_tangent::clamped, maya_tangent::plateau, maya_tangent::auto_};
+inline constexpr std::array<maya_infinity, 5> all_maya_infinities{maya_infinity::constant, maya_infinity::linear,
+                                                                  maya_infinity::cycle, maya_infinity::cycle_relative,
+                                                                  maya_infinity::oscillate};
+
+[[nodiscard]] inline const char* to_string(maya_tangent t) {
+  switch (t) {
+    case maya_tangent::fixed: return "fixed";
+    case maya_tangent::linear: return "linear";
+    case maya_tangent::flat: return "flat";
+    case maya_tangent::step: return "step";
+    case maya_tangent::step_next: return "step_next";
+    case maya_tangent::spline: return "spline";
+    case maya_tangent::clamped: return "clamped";
+    case maya_tangent::plateau: return "plateau";
+    case maya_tangent::auto_: return "auto";
+  }
+  return "unknown";
+}
+
+[[nodiscard]] inline const char* to_string(maya_infinity m) {
+  switch (m) {
+    case maya_infinity::constant: return "constant";
+    case maya_infinity::linear: return "linear";
+    case maya_infinity::cycle: return "cycle";
+    case maya_infinity::cycle_relative: return "cycle_relative";
+    case maya_infinity::oscillate: return "oscillate";
+  }
+  return "unknown";
+}
+
+template <>
+[[nodiscard]] inline maya_tangent from_string<maya_tangent>(std::string_view name) {
+  return detail::enum_from_string("maya tangent", name, all_maya_tangents);
+}
+
+template <>
+[[nodiscard]] inline maya_infinity from_string<maya_infinity>(std::string_view name) {
+  return detail::enum_from_string("maya infinity", name, all_maya_infinities);
+}
+
+/// A Maya key: time, value, tangent types, and the fixed tangent vectors (x > 0, both pointing
+/// forwards in time; used by fixed tangents, and on weighted curves also their handle length).
+template <class Real>
+struct maya_key {
+  Real time{0};
+  Real value{0};
+  maya_tangent in_type = maya_tangent::spline;
+  maya_tangent out_type = maya_tangent::spline;
+  Real in_x{1}, in_y{0};
+  Real out_x{1}, out_y{0};
+};
+
+/// A Maya animation curve: keys in time order, weighted or not, pre and post infinity.
+template <class Real>
+struct maya_curve {
+  std::vector<maya_key<Real>> keys;
+  bool weighted = false;
+  maya_infinity pre = maya_infinity::constant;
+  maya_infinity post = maya_infinity::constant;
+  Real clamp_tolerance{0};  // clamped: neighbours this close (relative to max(1, |v|)) count as equal
+};
+
+/// Maya's (angle in radians, weight) as the tangent vector (x, y) = 3 weight (cos, sin).
+template <class Real>
+[[nodiscard]] std::pair<Real, Real> tangent_from_angle(const Real& angle, const Real& weight) {
+  using std::cos;
+  using std::sin;
+  validate::finite("angle", angle);
+  validate::finite("weight", weight);
+  if (!(weight > Real(0))) validate::fail("weight = " + to_text(weight) + ": must be > 0");
+  return {Real(3) * weight * cos(angle), Real(3) * weight * sin(angle)};
+}
+
+/// The curve with every number converted to To (exactly when To is wider).
+template <class To, class From>
+[[nodiscard]] maya_curve<To> convert(const maya_curve<From>& c) {
+  maya_curve<To> r;
+  r.weighted = c.weighted;
+  r.pre = c.pre;
+  r.post = c.post;
+  r.clamp_tolerance = To(c.clamp_tolerance);
+  for (const auto& k : c.keys)
+    r.keys.push_back(
+        {To(k.time), To(k.value), k.in_type, k.out_type, To(k.in_x), To(k.in_y), To(k.out_x), To(k.out_y)});
+  return r;
+}
+
+namespace detail {
+
+[[nodiscard]] inline std::string maya_field(std::size_t i, std::string_view field) {
+  return validate::indexed("keys", i) + "." + std::string(field);
+}
+
+template <class Real>
+void validate_maya(const maya_curve<Real>& c) {
+  validate::count_at_least("keys", c.keys.size(), 1, "a Maya curve needs a key");
+  validate::finite("clamp_tolerance", c.clamp_tolerance);
+  if (c.clamp_tolerance < Real(0)) validate::fail("clamp_tolerance = " + to_text(c.clamp_tolerance) + ": must be >= 0");
+  const auto known_infinity = [](maya_infinity m) {
+    return std::find(all_maya_infinities.begin(), all_maya_infinities.end(), m) != all_maya_infinities.end();
+  };
+  if (!known_infinity(c.pre))
+    validate::fail("pre = " + std::to_string(static_cast<int>(c.pre)) + ": not a maya_infinity");
+  if (!known_infinity(c.post))
+    validate::fail("post = " + std::to_string(static_cast<int>(c.post)) + ": not a maya_infinity");
+  for (std::size_t i = 0; i < c.keys.size(); ++i) {
+    const auto& k = c.keys[i];
+    validate::finite(maya_field(i, "time"), k.time);
+    validate::finite(maya_field(i, "value"), k.value);
+    const std::array<std::pair<const char*, maya_tangent>, 2> types{{{"in_type", k.in_type}, {"out_type", k.out_type}}};
+    for (const auto& [name, type] : types)
+      if (std::find(all_maya_tangents.begin(), all_maya_tangents.end(), type) == all_maya_tangents.end())
+        validate::fail(maya_field(i, name) + " = " + std::to_string(static_cast<int>(type)) + ": not a maya_tangent");
+    const bool in_used = k.in_type == maya_tangent::fixed, out_used = k.out_type == maya_tangent::fixed;
+    const std::array<std::pair<const char*, const Real*>, 4> fields{
+        {{"in_x", &k.in_x}, {"in_y", &k.in_y}, {"out_x", &k.out_x}, {"out_y", &k.out_y}}};
+    for (const auto& [name, value] : fields) validate::finite(maya_field(i, name), *value);
+    if (in_used && !(k.in_x > Real(0)))
+      validate::fail(maya_field(i, "in_x") + " = " + to_text(k.in_x) +
+                     ": a fixed tangent's x must be > 0 (the vector points forwards in time)");
+    if (out_used && !(k.out_x > Real(0)))
+      validate::fail(maya_field(i, "out_x") + " = " + to_text(k.out_x) +
+                     ": a fixed tangent's x must be > 0 (the vector points forwards in time)");
+    if (in_used) validate::finite(maya_field(i, "in_y / in_x"), Real(k.in_y / k.in_x));
+    if (out_used) validate::finite(maya_field(i, "out_y / out_x"), Real(k.out_y / k.out_x));
+    if (i > 0 && !(k.time > c.keys[i - 1].time))
+      validate::fail("keys must be in increasing time order: " + maya_field(i, "time") + " = " + to_text(k.time) +
+                     " <= " + maya_field(i - 1, "time") + " = " + to_text(c.keys[i - 1].time));
+  }
+}
+
+template <class Real>
+Real maya_chord(const maya_key<Real>& a, const maya_key<Real>& b) {
+  return (b.value - a.value) / (b.time - a.time);
+}
+
+/// The slope of key i's tangent on one side (in: toward i - 1, out: toward i + 1).
+template <class Real>
+Real maya_slope(const maya_curve<Real>& c, std::size_t i, bool out) {
+  using std::abs;
+  using std::max;
+  using std::min;
+  const auto& keys = c.keys;
+  const std::size_t n = keys.size();
+  const maya_key<Real>& k = keys[i];
+  const maya_tangent type = out ? k.out_type : k.in_type;
+  if (n == 1) return type == maya_tangent::fixed ? (out ? k.out_y / k.out_x : k.in_y / k.in_x) : Real(0);
+  const bool has_prev = i > 0, has_next = i + 1 < n;
+  const Real d_l = has_prev ? maya_chord(keys[i - 1], k) : maya_chord(k, keys[i + 1]);
+  const Real d_r = has_next ? maya_chord(k, keys[i + 1]) : d_l;
+  const Real spline = has_prev && has_next
+                          ? (keys[i + 1].value - keys[i - 1].value) / (keys[i + 1].time - keys[i - 1].time)
+                          : (has_prev ? d_l : d_r);
+  switch (type) {
+    case maya_tangent::fixed: return out ? k.out_y / k.out_x : k.in_y / k.in_x;
+    case maya_tangent::linear: return out ? d_r : d_l;
+    case maya_tangent::flat:
+    case maya_tangent::step:
+    case maya_tangent::step_next: return Real(0);
+    case maya_tangent::spline: return spline;
+    case maya_tangent::clamped: {
+      const bool side_exists = out ? has_next : has_prev;
+      if (side_exists) {
+        const maya_key<Real>& j = keys[out ? i + 1 : i - 1];
+        const Real scale = max(Real(1), max(abs(k.value), abs(j.value)));
+        if (abs(k.value - j.value) <= c.clamp_tolerance * scale) return out ? d_r : d_l;
+      }
+      return spline;
+    }
+    case maya_tangent::plateau:
+    case maya_tangent::auto_: {
+      if (!has_prev || !has_next) return Real(0);
+      const Real vp = keys[i - 1].value, vn = keys[i + 1].value;
+      if ((k.value >= vp && k.value >= vn) || (k.value <= vp && k.value <= vn)) return Real(0);
+      const Real limit = Real(3) * min(abs(d_l), abs(d_r));
+      return std::clamp(spline, -limit, limit);
+    }
+  }
+  return Real(0);
+}
+
+}  // namespace detail
+
+/// The channel keys Maya's rules make of the curve: slopes by tangent type, Hermite (non-weighted)
+/// or Bezier (weighted, regressive handles shortened) segments, step / step_next segments.
+template <class Real>
+[[nodiscard]] std::vector<key<Real>> maya_channel_keys(const maya_curve<Real>& c) {
+  detail::validate_maya(c);
+  const auto& mk = c.keys;
+  const std::size_t n = mk.size();
+  std::vector<key<Real>> keys(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    keys[i].time = mk[i].time;
+    keys[i].value = mk[i].value;
+  }
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const Real h = mk[i + 1].time - mk[i].time;
+    key<Real>& k0 = keys[i];
+    key<Real>& k1 = keys[i + 1];
+    if (mk[i].out_type == maya_tangent::step) {
+      k0.interp = interpolation::constant;
+      continue;
+    }
+    if (mk[i].out_type == maya_tangent::step_next) {
+      k0.interp = interpolation::step_next;
+      continue;
+    }
+    const Real m0 = detail::maya_slope(c, i, true), m1 = detail::maya_slope(c, i + 1, false);
+    if (!c.weighted) {
+      k0.interp = interpolation::hermite;
+      k0.out = {h / Real(3), m0 * h / Real(3)};
+      k1.in = {-h / Real(3), -m1 * h / Real(3)};
+      continue;
+    }
+    k0.interp = interpolation::bezier;
+    handle<Real> out{h / Real(3), m0 * h / Real(3)}, in{-h / Real(3), -m1 * h / Real(3)};
+    if (mk[i].out_type == maya_tangent::fixed) out = {mk[i].out_x / Real(3), mk[i].out_y / Real(3)};
+    if (mk[i + 1].in_type == maya_tangent::fixed) in = {-mk[i + 1].in_x / Real(3), -mk[i + 1].in_y / Real(3)};
+    const Real a = out.dt / h, cc = -in.dt / h;
+    if (a + cc > Real(1)) {  // regressive or overlapping handles: shorten both along their directions
+      const Real f = Real(1) / (a + cc);
+      out = {out.dt * f, out.dv * f};
+      in = {in.dt * f, in.dv * f};
+    }
+    k0.out = out;
+    k1.in = in;
+  }
+  return keys;
+}
+
+[[nodiscard]] inline extrapolation to_extrapolation(maya_infinity m) {
+  switch (m) {
+    case maya_infinity::constant: return extrapolation::constant;
+    case maya_infinity::linear: return extrapolation::linear;
+    case maya_infinity::cycle: return extrapolation::cycle;
+    case maya_infinity::cycle_relative: return extrapolation::cycle_offset;
+    case maya_infinity::oscillate: return extrapolation::oscillate;
+  }
+  validate::fail("maya infinity = " + std::to_string(static_cast<int>(m)) + ": not a maya_infinity");
+}
+
+/// What Maya evaluates: the channel of maya_channel_keys with the curve's infinity, linear
+/// infinity along the end key's own outward tangent.
+template <class Real>
+class maya_evaluator {
+ public:
+  using real_type = Real;
+
+  maya_evaluator(const maya_curve<Real>& c, time_solver solver)
+      : channel_(make_channel(c, solver)),
+        pre_(c.pre),
+        post_(c.post),
+        slope_pre_(detail::maya_slope(c, 0, false)),
+        slope_post_(detail::maya_slope(c, c.keys.size() - 1, true)) {
+    // Maya's end tangents are never vertical (x > 0), but a weighted end key's slope can overflow.
+    validate::finite("keys[0] in slope (linear pre infinity)", slope_pre_);
+    validate::finite(validate::indexed("keys", c.keys.size() - 1) + " out slope (linear post infinity)", slope_post_);
+  }
+
+  /// The value at time t (any finite t).
+  [[nodiscard]] Real value(const Real& t) const { return derivative(t, 0); }
+  /// d^order v / dt^order, order 0, 1 or 2 (the channel's conventions).
+  [[nodiscard]] Real derivative(const Real& t, int order) const {
+    const auto keys = channel_.keys();
+    if (keys.size() > 1 && is_finite(t)) {  // non-finite t: the channel's domain_error
+      if (pre_ == maya_infinity::linear && t < keys.front().time) return line(keys.front(), slope_pre_, t, order);
+      if (post_ == maya_infinity::linear && t > keys.back().time) return line(keys.back(), slope_post_, t, order);
+    }
+    return channel_.derivative(t, order);
+  }
+  [[nodiscard]] const channel<Real>& underlying() const { return channel_; }
+
+ private:
+  channel<Real> channel_;
+  maya_infinity pre_, post_;
+  Real slope_pre_, slope_post_;
+
+  // The keys first (they validate the whole curve), then the channel with the infinity modes.
+  static channel<Real> make_channel(const maya_curve<Real>& c, time_solver solver) {
+    std::vector<key<Real>> keys = maya_channel_keys(c);
+    return channel<Real>(std::move(keys),
+                         c.pre == maya_infinity::linear ? extrapolation::constant : to_extrapolation(c.pre),
+                         c.post == maya_infinity::linear ? extrapolation::constant : to_extrapolation(c.post), solver);
+  }
+
+  static Real line(const key<Real>& k, const Real& slope, const Real& t, int order) {
+    validate::derivative_order(order);
+    if (order > 2) validate::fail("order = " + std::to_string(order) + ": a channel's time derivatives go to order 2");
+    if (order == 0) return k.value + (t - k.time) * slope;
+    return order == 1 ? slope : Real(0);
+  }
+};
+
+/// Maya's evaluation of the curve: double, the isolate_brent time solver.
+[[nodiscard]] inline maya_evaluator<double> maya_model(const maya_curve<double>& c) {
+  return maya_evaluator<double>(c, time_solver::isolate_brent);
+}
+
+/// The truth of the same keys: converted exactly to High (real50), the rules applied in High, the
+/// exact time solver.
+template <class High>
+[[nodiscard]] maya_evaluator<High> maya_exact(const maya_curve<double>& c) {
+  return maya_evaluator<High>(convert<High>(c), time_solver::exact);
+}
+
+}  // namespace curvebench::channel

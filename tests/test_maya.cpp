@@ -1,0 +1,508 @@
+// The Maya animCurve tool model (channel/maya.hpp): each tangent type's defining property, the
+// non-weighted segments against the Hermite closed form in real50, weighted handles at thirds
+// against the non-weighted curve, the regressive-handle correction, the infinity modes against
+// their closed forms, the double model (isolate_brent) against the real50 truth (exact solver),
+// float / double / real50 instantiation, and the validation messages.
+#include "support/accuracy.hpp"
+
+#include "curvebench/channel/maya.hpp"
+#include "curvebench/reference/multiprecision.hpp"
+
+#include <gmock/gmock.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cb = curvebench;
+namespace ch = curvebench::channel;
+namespace cbt = curvebench::testing;
+using cb::real50;
+using ch::maya_infinity;
+using ch::maya_tangent;
+using ::testing::HasSubstr;
+
+namespace {
+
+// Tolerances, in eps(Real) of the scale V + S (T + H): V the largest |key value|, S the largest
+// |dv/dt| at the keys (the slopes), T the largest |t| evaluated, H the longest segment.
+//  - model_vs_exact: the double model against the real50 truth of the same keys. Roundings: the
+//    slope of each tangent rule (a chord: two differences and a quotient, 3 eps relative of S; the
+//    plateau limit and the spline's wider chord likewise), the handle m h / 3 (2 more), the
+//    segment's de Casteljau in the value (3 levels, about 3 eps of V + S H), the time inversion
+//    (isolate_brent to full precision, the channel's bound: a few eps of the range) and t's own
+//    rounding in the wrapped / normalized time (eps T times the slope). Summed without
+//    cancellation that is about 12; the bound is 16. Measured over stress_curves(): 0.54 (double),
+//    0.36 (float); the test prints them.
+constexpr double model_vs_exact = 16;
+//  - float_vs_exact: the same roundings in float, on the float keys converted exactly.
+constexpr double float_vs_exact = 16;
+//  - same_curve: two evaluations of the same polynomial by different exact-in-theory routes in
+//    double (Bezier handles at thirds through the time solver vs the Hermite form): the solver's
+//    u is exact to a few eps of the span, times the slope; 8.
+constexpr double same_curve = 8;
+
+using curve_d = ch::maya_curve<double>;
+
+ch::maya_key<double> key(double t, double v, maya_tangent in, maya_tangent out) {
+  ch::maya_key<double> k;
+  k.time = t;
+  k.value = v;
+  k.in_type = in;
+  k.out_type = out;
+  return k;
+}
+
+ch::maya_key<double> key(double t, double v, maya_tangent both) { return key(t, v, both, both); }
+
+curve_d curve_of(std::vector<ch::maya_key<double>> keys, bool weighted = false) {
+  curve_d c;
+  c.keys = std::move(keys);
+  c.weighted = weighted;
+  return c;
+}
+
+// The out slope of key i (segment i's slope at its start) and the in slope of key i (segment
+// i - 1's slope at its end) from the channel keys the rules produced.
+double out_slope(const std::vector<ch::key<double>>& k, std::size_t i) { return k[i].out.dv / k[i].out.dt; }
+double in_slope(const std::vector<ch::key<double>>& k, std::size_t i) { return k[i].in.dv / k[i].in.dt; }
+
+const std::vector<double> times_uneven{0, 1, 3, 3.5, 6};
+const std::vector<double> values_mixed{0, 2, 1, 1, 4};
+
+curve_d uniform_type(maya_tangent type, bool weighted = false) {
+  std::vector<ch::maya_key<double>> keys;
+  for (std::size_t i = 0; i < times_uneven.size(); ++i) keys.push_back(key(times_uneven[i], values_mixed[i], type));
+  return curve_of(keys, weighted);
+}
+
+TEST(Maya, NamesRoundTripAndAutoIsSpelledAuto) {
+  for (auto t : ch::all_maya_tangents) EXPECT_EQ(ch::from_string<maya_tangent>(ch::to_string(t)), t);
+  for (auto m : ch::all_maya_infinities) EXPECT_EQ(ch::from_string<maya_infinity>(ch::to_string(m)), m);
+  EXPECT_STREQ(ch::to_string(maya_tangent::auto_), "auto");
+  EXPECT_STREQ(ch::to_string(maya_infinity::cycle_relative), "cycle_relative");
+  EXPECT_THAT([] { (void)ch::from_string<maya_tangent>("smooth"); },
+              ::testing::ThrowsMessage<cb::invalid_input>(HasSubstr("expected one of fixed, linear, flat")));
+}
+
+TEST(Maya, FlatTangentsHaveZeroSlope) {
+  const auto keys = ch::maya_channel_keys(uniform_type(maya_tangent::flat));
+  const auto eval = ch::maya_model(uniform_type(maya_tangent::flat));
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+    EXPECT_EQ(out_slope(keys, i), 0.0) << i;
+    EXPECT_EQ(in_slope(keys, i + 1), 0.0) << i;
+    EXPECT_EQ(eval.derivative(times_uneven[i], 1), 0.0) << i;
+  }
+}
+
+TEST(Maya, LinearTangentsPointAtTheNeighbourAndMakeStraightSegments) {
+  const curve_d c = uniform_type(maya_tangent::linear);
+  const auto keys = ch::maya_channel_keys(c);
+  const auto eval = ch::maya_model(c);
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+    const double chord = (values_mixed[i + 1] - values_mixed[i]) / (times_uneven[i + 1] - times_uneven[i]);
+    EXPECT_DOUBLE_EQ(out_slope(keys, i), chord) << i;
+    EXPECT_DOUBLE_EQ(in_slope(keys, i + 1), chord) << i;
+    // Linear on both sides: the segment is the chord, its midpoint the mean of the values.
+    const double mid = (times_uneven[i] + times_uneven[i + 1]) / 2;
+    EXPECT_NEAR(eval.value(mid), (values_mixed[i] + values_mixed[i + 1]) / 2, 1e-14) << i;
+  }
+}
+
+TEST(Maya, SplineSlopeIsTheChordThroughTheNeighbours) {
+  const curve_d c = uniform_type(maya_tangent::spline);
+  const auto keys = ch::maya_channel_keys(c);
+  const std::size_t n = keys.size();
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double m = (values_mixed[i + 1] - values_mixed[i - 1]) / (times_uneven[i + 1] - times_uneven[i - 1]);
+    EXPECT_DOUBLE_EQ(out_slope(keys, i), m) << i;
+    EXPECT_DOUBLE_EQ(in_slope(keys, i), m) << i;  // co-linear tangents
+  }
+  // The ends take the chord to their only neighbour.
+  EXPECT_DOUBLE_EQ(out_slope(keys, 0), (values_mixed[1] - values_mixed[0]) / (times_uneven[1] - times_uneven[0]));
+  EXPECT_DOUBLE_EQ(in_slope(keys, n - 1),
+                   (values_mixed[n - 1] - values_mixed[n - 2]) / (times_uneven[n - 1] - times_uneven[n - 2]));
+  // On evenly spaced samples of a parabola the chord slope is the parabola's derivative at the
+  // middle key, so the interior slopes are 2 t exactly.
+  std::vector<ch::maya_key<double>> parabola;
+  for (int i = 0; i < 5; ++i) parabola.push_back(key(i, i * i, maya_tangent::spline));
+  const auto pk = ch::maya_channel_keys(curve_of(parabola));
+  for (std::size_t i = 1; i < 4; ++i) EXPECT_EQ(out_slope(pk, i), 2.0 * static_cast<double>(i));
+}
+
+TEST(Maya, ClampedDoesNotOvershootBetweenEqualNeighboursAndIsSplineOtherwise) {
+  const std::vector<double> t{0, 1, 2, 3, 4}, v{0, 1, 1, 0, 2};
+  std::vector<ch::maya_key<double>> sk, ck;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    sk.push_back(key(t[i], v[i], maya_tangent::spline));
+    ck.push_back(key(t[i], v[i], maya_tangent::clamped));
+  }
+  const auto spline = ch::maya_model(curve_of(sk));
+  const auto clamped = ch::maya_model(curve_of(ck));
+  // Spline overshoots the equal keys 1 and 2; clamped stays on them.
+  double spline_max = 0, clamped_max = -1;
+  for (int j = 0; j <= 100; ++j) {
+    const double tt = 1 + j / 100.0;
+    spline_max = std::max(spline_max, spline.value(tt));
+    clamped_max = std::max(clamped_max, clamped.value(tt));
+  }
+  EXPECT_GT(spline_max, 1.05);
+  EXPECT_EQ(clamped_max, 1.0);
+  // Where the neighbours differ, clamped is spline: key 3's in and out, key 1's in.
+  const auto s = ch::maya_channel_keys(curve_of(sk));
+  const auto c = ch::maya_channel_keys(curve_of(ck));
+  EXPECT_EQ(in_slope(c, 1), in_slope(s, 1));
+  EXPECT_EQ(in_slope(c, 3), in_slope(s, 3));
+  EXPECT_EQ(out_slope(c, 3), out_slope(s, 3));
+  EXPECT_EQ(out_slope(c, 1), 0.0);
+  EXPECT_EQ(in_slope(c, 2), 0.0);
+  // A tolerance makes close values count as equal: the linear slope toward the neighbour.
+  curve_d close = curve_of(ck);
+  close.keys[2].value = 1.001;
+  close.clamp_tolerance = 0.01;
+  const auto cc = ch::maya_channel_keys(close);
+  EXPECT_EQ(out_slope(cc, 1), 1.001 - 1.0);  // the chord over a duration of 1
+  EXPECT_EQ(in_slope(cc, 2), 1.001 - 1.0);
+}
+
+TEST(Maya, PlateauAndAutoAreFlatAtExtremaAndNeverOvershoot) {
+  for (maya_tangent type : {maya_tangent::plateau, maya_tangent::auto_}) {
+    // Steep and shallow chords side by side, extrema, a plateau of equal values.
+    const std::vector<double> t{0, 0.5, 1, 4, 4.2, 7, 8, 9}, v{0, 5, 5.2, 6, 2, 2, 3, 10};
+    std::vector<ch::maya_key<double>> keys;
+    for (std::size_t i = 0; i < t.size(); ++i) keys.push_back(key(t[i], v[i], type));
+    const auto k = ch::maya_channel_keys(curve_of(keys));
+    const auto eval = ch::maya_model(curve_of(keys));
+    EXPECT_EQ(out_slope(k, 0), 0.0);
+    EXPECT_EQ(in_slope(k, t.size() - 1), 0.0);
+    EXPECT_EQ(out_slope(k, 3), 0.0);  // local maximum
+    EXPECT_EQ(in_slope(k, 3), 0.0);
+    EXPECT_EQ(out_slope(k, 4), 0.0);  // equal to a neighbour: an extremum by the rule
+    EXPECT_GT(out_slope(k, 1), 0.0);  // a transitional key keeps a slope
+    for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+      const double lo = std::min(v[i], v[i + 1]), hi = std::max(v[i], v[i + 1]);
+      for (int j = 0; j <= 200; ++j) {
+        const double tt = t[i] + (t[i + 1] - t[i]) * j / 200.0;
+        const double value = eval.value(tt);
+        EXPECT_GE(value, lo - 1e-14 * (1 + hi)) << ch::to_string(type) << " segment " << i << " t " << tt;
+        EXPECT_LE(value, hi + 1e-14 * (1 + hi)) << ch::to_string(type) << " segment " << i << " t " << tt;
+      }
+    }
+  }
+  // Spline on the same keys does overshoot (so the test above can fail).
+  const std::vector<double> t{0, 0.5, 1, 4}, v{0, 5, 5.2, 6};
+  std::vector<ch::maya_key<double>> keys;
+  for (std::size_t i = 0; i < t.size(); ++i) keys.push_back(key(t[i], v[i], maya_tangent::spline));
+  EXPECT_GT(ch::maya_model(curve_of(keys)).value(0.75), 5.2);
+}
+
+TEST(Maya, StepHoldsTheKeyAndStepNextTheNextKey) {
+  std::vector<ch::maya_key<double>> keys{key(0, 1, maya_tangent::spline, maya_tangent::step),
+                                         key(2, 3, maya_tangent::spline, maya_tangent::step_next),
+                                         key(4, -1, maya_tangent::spline)};
+  const auto eval = ch::maya_model(curve_of(keys));
+  EXPECT_EQ(eval.value(0), 1.0);
+  EXPECT_EQ(eval.value(1.999), 1.0);
+  EXPECT_EQ(eval.value(2), 3.0);
+  EXPECT_EQ(eval.value(2.001), -1.0);
+  EXPECT_EQ(eval.value(4), -1.0);
+  EXPECT_EQ(eval.derivative(1, 1), 0.0);
+}
+
+// Hermite in real50: h00 v0 + h10 h m0 + h01 v1 + h11 h m1 with s = (t - t0) / h.
+real50 hermite(real50 t0, real50 t1, real50 v0, real50 v1, real50 m0, real50 m1, real50 t) {
+  const real50 h = t1 - t0, s = (t - t0) / h;
+  const real50 s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * v0 + (s3 - 2 * s2 + s) * h * m0 + (-2 * s3 + 3 * s2) * v1 + (s3 - s2) * h * m1;
+}
+
+TEST(Maya, NonWeightedSegmentsAreCubicHermite) {
+  // Fixed tangents with long and short vectors: only the direction counts.
+  std::vector<ch::maya_key<double>> keys{key(0, 1, maya_tangent::fixed), key(2, 3, maya_tangent::fixed),
+                                         key(5, -1, maya_tangent::fixed)};
+  keys[0].out_x = 10, keys[0].out_y = 5;    // slope 0.5
+  keys[1].in_x = 0.1, keys[1].in_y = -0.2;  // slope -2
+  keys[1].out_x = 3, keys[1].out_y = 3;     // slope 1
+  keys[2].in_x = 1, keys[2].in_y = 4;       // slope 4
+  const auto eval = ch::maya_exact<real50>(curve_of(keys));
+  const auto model = ch::maya_model(curve_of(keys));
+  for (int j = 0; j <= 50; ++j) {
+    const real50 t = real50(5) * j / 50;
+    const real50 ref = t <= 2 ? hermite(0, 2, 1, 3, real50(0.5), -2, t) : hermite(2, 5, 3, -1, 1, 4, t);
+    EXPECT_LT(abs(eval.value(t) - ref), real50(1e-45)) << j;
+    EXPECT_TRUE(cbt::within_scaled_ulps(model.value(static_cast<double>(t)), ref, real50(20), 8)) << j;
+  }
+}
+
+TEST(Maya, WeightedHandlesAtThirdsEqualTheNonWeightedCurve) {
+  const std::vector<double> t{0, 1.5, 2, 5}, v{0, 2, -1, 3}, m{1, -2, 0.5, 3};
+  std::vector<ch::maya_key<double>> keys;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    auto k = key(t[i], v[i], maya_tangent::fixed);
+    const double h_in = i > 0 ? t[i] - t[i - 1] : 1, h_out = i + 1 < t.size() ? t[i + 1] - t[i] : 1;
+    k.in_x = h_in, k.in_y = m[i] * h_in;
+    k.out_x = h_out, k.out_y = m[i] * h_out;
+    keys.push_back(k);
+  }
+  const auto weighted = ch::maya_model(curve_of(keys, true));
+  const auto plain = ch::maya_model(curve_of(keys, false));
+  EXPECT_EQ(weighted.underlying().keys()[0].interp, ch::interpolation::bezier);
+  EXPECT_EQ(plain.underlying().keys()[0].interp, ch::interpolation::hermite);
+  for (int j = 0; j <= 100; ++j) {
+    const double tt = 5.0 * j / 100;
+    EXPECT_TRUE(cbt::within_scaled_ulps(weighted.value(tt), real50(plain.value(tt)), real50(3 + 3 * 5), same_curve))
+        << tt;
+  }
+  // Computed tangent types on a weighted curve put their handles at thirds too.
+  const auto w2 = ch::maya_model(uniform_type(maya_tangent::spline, true));
+  const auto p2 = ch::maya_model(uniform_type(maya_tangent::spline, false));
+  for (int j = 0; j <= 60; ++j) {
+    const double tt = 6.0 * j / 60;
+    EXPECT_TRUE(cbt::within_scaled_ulps(w2.value(tt), real50(p2.value(tt)), real50(4 + 2 * 6), same_curve)) << tt;
+  }
+}
+
+TEST(Maya, WeightedFixedTangentsAreBezierHandlesAtAThirdOfTheVector) {
+  // Handles (0.4, 1.2) and (-0.9, 0.3) on [0, 2]: the vectors are three times the handles.
+  std::vector<ch::maya_key<double>> keys{key(0, 1, maya_tangent::fixed), key(2, 0, maya_tangent::fixed)};
+  keys[0].out_x = 1.2, keys[0].out_y = 3.6;
+  keys[1].in_x = 2.7, keys[1].in_y = -0.9;
+  const auto exact = ch::maya_exact<real50>(curve_of(keys, true));
+  // The Bezier at u = 1/2: time (t0 + 3 t1 + 3 t2 + t3) / 8, value (v0 + 3 v1 + 3 v2 + v3) / 8.
+  // (The keys are the doubles nearest 1.2, 3.6, 2.7, 0.9, converted exactly.)
+  const real50 t1 = real50(1.2) / 3, t2 = 2 - real50(2.7) / 3, v1 = 1 + real50(3.6) / 3, v2 = real50(0.9) / 3;
+  const real50 t_mid = (0 + 3 * t1 + 3 * t2 + 2) / 8, v_mid = (1 + 3 * v1 + 3 * v2 + 0) / 8;
+  EXPECT_LT(abs(exact.value(t_mid) - v_mid), real50(1e-45));
+  // The non-weighted curve with the same slopes is a different curve (the weight matters).
+  const auto plain = ch::maya_exact<real50>(curve_of(keys, false));
+  EXPECT_GT(abs(plain.value(t_mid) - v_mid), real50(1e-3));
+  // Maya's (angle, weight) gives the same vector.
+  const auto [x, y] = ch::tangent_from_angle(std::atan2(1.2, 0.4), std::hypot(0.4, 1.2));
+  EXPECT_NEAR(x, 1.2, 1e-15);
+  EXPECT_NEAR(y, 3.6, 1e-15);
+}
+
+TEST(Maya, RegressiveHandlesAreShortenedSoTimeStaysMonotone) {
+  // Handles 1.5 segment durations long on both sides (a = c = 1.5): (1 - a - c)^2 = 4 > a c = 2.25,
+  // time would run backwards; the channel refuses such handles as they are.
+  std::vector<ch::maya_key<double>> keys{key(0, 0, maya_tangent::fixed), key(2, 1, maya_tangent::fixed)};
+  keys[0].out_x = 9, keys[0].out_y = 3;  // handle (3, 1): slope 1/3, 1.5 h
+  keys[1].in_x = 9, keys[1].in_y = -6;   // handle (-3, 2): slope -2/3
+  std::vector<ch::key<double>> raw(2);
+  raw[0] = {0, 0, {}, {3, 1}, ch::interpolation::bezier};
+  raw[1] = {2, 1, {-3, 2}, {}, ch::interpolation::bezier};
+  EXPECT_THROW((void)ch::channel<double>(raw), cb::invalid_input);
+  const auto k = ch::maya_channel_keys(curve_of(keys, true));
+  // The documented result of the rule: both scaled by 1 / (a + c) = 1/3, directions kept, their
+  // time extents sum to the duration.
+  EXPECT_DOUBLE_EQ(k[0].out.dt, 1.0);
+  EXPECT_DOUBLE_EQ(k[0].out.dv, 1.0 / 3);
+  EXPECT_DOUBLE_EQ(k[1].in.dt, -1.0);
+  EXPECT_DOUBLE_EQ(k[1].in.dv, 2.0 / 3);
+  EXPECT_DOUBLE_EQ(k[0].out.dt - k[1].in.dt, 2.0);
+  // Time is monotone along the corrected segment's curve.
+  const auto eval = ch::maya_model(curve_of(keys, true));
+  const auto curve = eval.underlying().curve();
+  double previous = -1;
+  for (int j = 0; j <= 1000; ++j) {
+    const double time = curve(j / 1000.0)[0];
+    EXPECT_GE(time, previous) << j;
+    previous = time;
+  }
+  // Handles within the interval are left alone.
+  keys[0].out_x = 1.5, keys[0].out_y = 0.5;
+  keys[1].in_x = 1.5, keys[1].in_y = -1;
+  const auto kept = ch::maya_channel_keys(curve_of(keys, true));
+  EXPECT_DOUBLE_EQ(kept[0].out.dt, 0.5);
+  EXPECT_DOUBLE_EQ(kept[1].in.dt, -0.5);
+}
+
+TEST(Maya, InfinityModesMatchTheirClosedForms) {
+  std::vector<ch::maya_key<double>> keys{key(1, 2, maya_tangent::fixed), key(2, 5, maya_tangent::spline),
+                                         key(4, 3, maya_tangent::fixed)};
+  keys[0].in_x = 1, keys[0].in_y = -3;  // broken tangents: in slope -3, out slope 2
+  keys[0].out_x = 1, keys[0].out_y = 2;
+  keys[2].in_x = 1, keys[2].in_y = 0.5;
+  keys[2].out_x = 2, keys[2].out_y = 1;  // out slope 0.5... distinct from in below
+  keys[2].out_y = -1;                    // out slope -0.5
+  curve_d c = curve_of(keys);
+  const double period = 3;
+  for (maya_infinity mode : ch::all_maya_infinities) {
+    c.pre = c.post = mode;
+    const auto e = ch::maya_model(c);
+    for (double r : {0.25, 1.0, 2.5}) {
+      const double before = 1 - r, after = 4 + r;
+      switch (mode) {
+        case maya_infinity::constant:
+          EXPECT_EQ(e.value(before), 2.0);
+          EXPECT_EQ(e.value(after), 3.0);
+          break;
+        case maya_infinity::linear:  // the end key's own outward tangent, not the segment's
+          EXPECT_DOUBLE_EQ(e.value(before), 2 + 3 * r);
+          EXPECT_DOUBLE_EQ(e.value(after), 3 - 0.5 * r);
+          EXPECT_EQ(e.derivative(before, 1), -3.0);
+          break;
+        case maya_infinity::cycle:
+          EXPECT_NEAR(e.value(after), e.value(1 + r), 1e-14);
+          EXPECT_NEAR(e.value(before), e.value(before + period), 1e-14);
+          break;
+        case maya_infinity::cycle_relative:  // each repeat offset by v_last - v_first = 1
+          EXPECT_NEAR(e.value(after), e.value(1 + r) + 1, 1e-14);
+          EXPECT_NEAR(e.value(before), e.value(before + period) - 1, 1e-14);
+          break;
+        case maya_infinity::oscillate:  // mirrored in time about each end
+          EXPECT_NEAR(e.value(after), e.value(4 - r), 1e-14);
+          EXPECT_NEAR(e.value(before), e.value(1 + r), 1e-14);
+          break;
+      }
+    }
+  }
+}
+
+// Mixed curves for the model against the truth: every tangent type, weighted and not, regressive
+// handles, all infinity modes.
+std::vector<curve_d> stress_curves() {
+  std::vector<curve_d> out;
+  const std::vector<maya_tangent> types{maya_tangent::spline, maya_tangent::clamped, maya_tangent::plateau,
+                                        maya_tangent::auto_,  maya_tangent::linear,  maya_tangent::flat,
+                                        maya_tangent::fixed};
+  const std::vector<double> t{-3.7, -1.1, 0.3, 2.9, 3.05, 7.5, 11}, v{0.5, 4.25, -2, -1.9, 6, 6, -3.3};
+  for (bool weighted : {false, true})
+    for (std::size_t shift = 0; shift < types.size(); ++shift) {
+      curve_d c;
+      c.weighted = weighted;
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        auto k = key(t[i], v[i], types[(i + shift) % types.size()], types[(i + 2 * shift + 1) % types.size()]);
+        k.in_x = 0.7 + 0.9 * static_cast<double>(i % 3), k.in_y = 1.3 - 0.6 * static_cast<double>(i);
+        k.out_x = 2.6 - 0.4 * static_cast<double>(i % 4), k.out_y = -0.8 + 0.5 * static_cast<double>(i);
+        c.keys.push_back(k);
+      }
+      c.pre = ch::all_maya_infinities[shift % 5];
+      c.post = ch::all_maya_infinities[(shift + 2) % 5];
+      out.push_back(c);
+    }
+  return out;
+}
+
+// The largest error of the model (Real, the given solver) against the truth over stress_curves(),
+// in eps(Real) of V + S (|t| + H); each sample asserted within `bound` when `check`.
+template <class Real>
+double worst_against_truth(ch::time_solver solver, double bound, bool check, const char* label) {
+  double worst = 0;
+  for (const curve_d& cd : stress_curves()) {
+    const ch::maya_curve<Real> c = ch::convert<Real>(cd);
+    const ch::maya_evaluator<Real> model(c, solver);
+    // The truth of the keys the model saw (exact conversion of the Real keys).
+    const ch::maya_evaluator<real50> truth(ch::convert<real50>(c), ch::time_solver::exact);
+    real50 v_max = 0, s_max = 0, h_max = 0;
+    for (std::size_t i = 0; i < c.keys.size(); ++i) {
+      v_max = std::max(v_max, real50(abs(real50(c.keys[i].value))));
+      s_max = std::max(s_max, real50(abs(truth.derivative(real50(c.keys[i].time), 1))));
+      if (i > 0) h_max = std::max(h_max, real50(c.keys[i].time) - real50(c.keys[i - 1].time));
+    }
+    for (const auto& k : truth.underlying().keys()) {  // the handle slopes too
+      if (k.out.dt > 0) s_max = std::max(s_max, real50(abs(k.out.dv / k.out.dt)));
+      if (k.in.dt < 0) s_max = std::max(s_max, real50(abs(k.in.dv / k.in.dt)));
+    }
+    for (int j = 0; j <= 600; ++j) {
+      const Real tt = Real(-40 + 80 * static_cast<double>(j) / 600);
+      const real50 t50(tt);
+      // Sample the curve densely too for the largest slope between keys.
+      s_max = std::max(s_max, real50(abs(truth.derivative(t50, 1))));
+    }
+    for (int j = 0; j <= 600; ++j) {
+      const Real tt = Real(-40 + 80 * static_cast<double>(j) / 600);
+      const real50 t50(tt);
+      const real50 scale = v_max + s_max * (abs(t50) + h_max);
+      const real50 ref = truth.value(t50);
+      const Real got = model.value(tt);
+      worst = std::max(worst, static_cast<double>(cbt::scaled_ulps(got, ref, scale)));
+      if (check) {
+        EXPECT_TRUE(cbt::within_scaled_ulps(got, ref, scale, bound)) << label << " t = " << static_cast<double>(tt);
+      }
+    }
+  }
+  std::cout << "[maya] " << label << " model (" << ch::to_string(solver) << ") vs real50 exact: max " << worst
+            << " eps * (V + S (|t| + H)), bound " << bound << "\n";
+  return worst;
+}
+
+TEST(Maya, DoubleModelAgainstTheExactTruth) {
+  (void)worst_against_truth<double>(ch::time_solver::isolate_brent, model_vs_exact, true, "double");
+}
+TEST(Maya, FloatModelAgainstTheExactTruth) {
+  (void)worst_against_truth<float>(ch::time_solver::isolate_brent, float_vs_exact, true, "float");
+}
+// The measurement can tell solvers apart: 12 halvings leave u within 2^-13, far above the bound
+// on the weighted stress curves, so the comparison above would catch a coarse solver.
+TEST(Maya, TheTruthComparisonCatchesACoarseSolver) {
+  EXPECT_GT(worst_against_truth<double>(ch::time_solver::bisection12, model_vs_exact, false, "double"),
+            100 * model_vs_exact);
+}
+
+TEST(Maya, NonFiniteTimesAreDomainErrorsUnderLinearInfinity) {
+  curve_d c = uniform_type(maya_tangent::spline);
+  c.pre = c.post = maya_infinity::linear;
+  const auto e = ch::maya_model(c);
+  EXPECT_THROW((void)e.value(-std::numeric_limits<double>::infinity()), std::domain_error);
+  EXPECT_THROW((void)e.value(std::numeric_limits<double>::infinity()), std::domain_error);
+  EXPECT_THROW((void)e.value(std::nan("")), std::domain_error);
+}
+
+TEST(Maya, InstantiatesOnFloatDoubleAndReal50) {
+  const curve_d c = uniform_type(maya_tangent::spline, true);
+  const auto f = ch::maya_evaluator<float>(ch::convert<float>(c), ch::time_solver::isolate_brent);
+  const auto d = ch::maya_model(c);
+  const auto r = ch::maya_exact<real50>(c);
+  EXPECT_EQ(f.value(3.0f), 1.0f);
+  EXPECT_EQ(d.value(3.0), 1.0);
+  EXPECT_EQ(r.value(real50(3)), real50(1));
+  EXPECT_NEAR(static_cast<double>(r.value(real50(2))), d.value(2.0), 1e-14);
+}
+
+TEST(Maya, TangentFromAngleAndWeight) {
+  const auto [x, y] = ch::tangent_from_angle(std::atan(0.5), std::sqrt(1.25));
+  EXPECT_NEAR(x, 3.0, 1e-15);
+  EXPECT_NEAR(y, 1.5, 1e-15);
+  EXPECT_THAT([] { (void)ch::tangent_from_angle(0.1, 0.0); },
+              ::testing::ThrowsMessage<cb::invalid_input>(HasSubstr("weight = 0")));
+}
+
+TEST(Maya, ValidationNamesTheKeyAndField) {
+  const auto message = [](curve_d c) {
+    try {
+      (void)ch::maya_model(c);
+    } catch (const cb::invalid_input& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(message(curve_d{}), HasSubstr("keys"));
+  curve_d c = uniform_type(maya_tangent::spline);
+  c.keys[2].value = std::nan("");
+  EXPECT_THAT(message(c), HasSubstr("keys[2].value"));
+  c = uniform_type(maya_tangent::fixed);
+  c.keys[3].out_x = -1;
+  EXPECT_THAT(message(c), HasSubstr("keys[3].out_x = -1: a fixed tangent's x must be > 0"));
+  c = uniform_type(maya_tangent::fixed);
+  c.keys[1].in_x = 0;
+  EXPECT_THAT(message(c), HasSubstr("keys[1].in_x = 0"));
+  c = uniform_type(maya_tangent::spline);
+  c.keys[3].time = 1;
+  EXPECT_THAT(message(c), HasSubstr("keys must be in increasing time order: keys[3].time = 1 <= keys[2].time = 3"));
+  c = uniform_type(maya_tangent::spline);
+  c.keys[0].in_type = static_cast<maya_tangent>(42);
+  EXPECT_THAT(message(c), HasSubstr("keys[0].in_type = 42: not a maya_tangent"));
+  c = uniform_type(maya_tangent::spline);
+  c.post = static_cast<maya_infinity>(9);
+  EXPECT_THAT(message(c), HasSubstr("post = 9: not a maya_infinity"));
+  c = uniform_type(maya_tangent::spline);
+  c.clamp_tolerance = -0.5;
+  EXPECT_THAT(message(c), HasSubstr("clamp_tolerance = -0.5: must be >= 0"));
+}
+
+}  // namespace
