@@ -7,6 +7,7 @@
 #include "support/accuracy.hpp"
 #include "support/fixtures.hpp"
 
+#include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/reference/multiprecision.hpp"
@@ -500,9 +501,11 @@ TYPED_TEST(channel_test, curve_view_breakpoints_keys_and_derivatives) {
   const auto keys = keys_of<Real>(mixed_keys());
   const ch::channel<Real> c(keys);
   const auto p = c.curve();
-  ASSERT_EQ(p.breakpoints().size(), keys.size());
+  // The integers and the middles of the constant and step_next segments (4 and 5).
+  ASSERT_EQ(p.breakpoints().size(), keys.size() + 2);
+  EXPECT_EQ(p.breakpoints()[5], Real(4.5));
+  EXPECT_EQ(p.breakpoints()[7], Real(5.5));
   for (std::size_t i = 0; i < keys.size(); ++i) {
-    EXPECT_EQ(p.breakpoints()[i], Real(static_cast<int>(i)));
     EXPECT_EQ(p(Real(static_cast<int>(i)))[0], keys[i].time) << i;
     EXPECT_EQ(p(Real(static_cast<int>(i)))[1], keys[i].value) << i;
   }
@@ -530,15 +533,24 @@ TYPED_TEST(channel_test, curve_view_breakpoints_keys_and_derivatives) {
           << "u=" << u << " order " << order;
     }
   }
-  // constant (segment 5) and step_next (segment 4): horizontal, the jump at a breakpoint.
+  // constant (segment 5) and step_next (segment 4): the jump drawn in, continuous at every
+  // breakpoint (left limit = value), horizontal and vertical pieces.
   EXPECT_EQ(p(Real(5.5))[1], Real(0.5));
   EXPECT_EQ(p(Real(4.5))[1], Real(0.5));
   EXPECT_EQ(p(Real(4))[1], Real(0.75));
   EXPECT_EQ(p.derivative(Real(4.5), 1)[1], Real(0));
+  EXPECT_EQ(p.derivative(Real(4.25), 1)[0], Real(0));  // step_next climbs first
+  EXPECT_EQ(p.derivative(Real(5.25), 1)[1], Real(0));  // constant runs first
+  for (double b : {4.0, 4.5, 5.0, 5.5, 6.0}) {
+    const auto left = p(Real(b) - Real(b) * cb::epsilon<Real>()), at = p(Real(b));
+    EXPECT_NEAR(static_cast<double>(left[0]), static_cast<double>(at[0]), 1e-5) << b;
+    EXPECT_NEAR(static_cast<double>(left[1]), static_cast<double>(at[1]), 1e-5) << b;
+  }
   EXPECT_THROW((void)p(Real(7.5)), std::domain_error);
 }
 
-// Arc length applies: a channel of linear and constant segments is a polyline (jumps excluded).
+// Arc length applies: a channel of linear and constant segments is a polyline, the jump's height
+// included (the curve view draws it in).
 TEST(channel, arc_length_of_the_curve_view) {
   using I = ch::interpolation;
   const ch::channel<double> c(keys_of<double>({{0, 0, 0, 0, 0, 0, I::linear},
@@ -546,8 +558,10 @@ TEST(channel, arc_length_of_the_curve_view) {
                                                {5, -1, 0, 0, 0, 0, I::linear},
                                                {6, 0, 0, 0, 0, 0, I::linear}}));
   const auto r = cb::arclength::adaptive_length(c.curve());
-  const double truth = 5 + 2 + std::sqrt(2.0);
+  const double truth = 5 + 2 + 5 + std::sqrt(2.0);
   EXPECT_NEAR(r.value, truth, 1e-13 * truth);
+  const auto sub = cb::arclength::subdivision_length(c.curve());
+  EXPECT_NEAR(sub.value, truth, 1e-9 * truth);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -46,10 +46,12 @@
 // std::domain_error there (unbounded). Steps and constant pieces have derivative 0; the jumps have
 // none.
 // Curve view: curve() is P(u) on [0, segments], segment i on [i, i+1] with local w = u - i, the
-// breakpoints the integers; derivative(u, order) exact for every order. constant and step_next are
-// horizontal pieces (time linear in w) whose jump happens at a breakpoint: P(i) is always key i,
-// a constant segment holds v_i on [i, i+1) and step_next holds v_{i+1} on (i, i+1]. A one-key
-// channel's curve is the single point P(0) on [0, 0].
+// breakpoints the integers; derivative(u, order) exact for every order. P(i) is always key i. A
+// constant or step_next segment is the graph with its jump drawn in, so that the curve stays
+// continuous and every arc-length method (chords and polygons as well as quadrature) measures the
+// same length, the jump's height included: constant runs horizontally at v_i on [i, i + 1/2] and
+// climbs at t_{i+1} to v_{i+1} on [i + 1/2, i + 1]; step_next climbs at t_i first, then runs at
+// v_{i+1}; i + 1/2 is a breakpoint. A one-key channel's curve is the single point P(0) on [0, 0].
 // Validation (invalid_input naming the key index and field, with the value): no keys; non-finite
 // numbers (keys[i].time, .value, .in.dt, .in.dv, .out.dt, .out.dv); keys out of time order or with
 // duplicate times, or too close to be resolved; handles pointing backwards in time (in.dt > 0,
@@ -279,6 +281,21 @@ class channel_curve {
     if (i >= n) i = n - 1;
     const Real w = u - Real(static_cast<long long>(i));
     const auto& s = d.segments[i];
+    if (s.kind == interpolation::constant || s.kind == interpolation::step_next) {
+      // Two straight pieces that keep the curve continuous (see the header): constant runs
+      // horizontally on [0, 1/2] and climbs to the next key on [1/2, 1]; step_next climbs first.
+      const bool horizontal = (s.kind == interpolation::constant) == (w < Real(1) / Real(2));
+      const Real f = s.kind == interpolation::constant ? Real(2) * w : Real(2) * w - Real(1);  // along the horizontal
+      const Real g = s.kind == interpolation::constant ? Real(2) * w - Real(1) : Real(2) * w;  // along the vertical
+      if (horizontal) {
+        const Real level = s.kind == interpolation::constant ? s.v[0] : s.v[3];
+        if (order == 0) return point_type(f >= Real(1) ? s.t[3] : s.t[0] + f * s.span(), level);
+        return order == 1 ? point_type(Real(2) * s.span(), Real(0)) : point_type(Real(0), Real(0));
+      }
+      const Real at = s.kind == interpolation::constant ? s.t[3] : s.t[0];
+      if (order == 0) return point_type(at, g >= Real(1) ? s.v[3] : s.v[0] + g * (s.v[3] - s.v[0]));
+      return order == 1 ? point_type(Real(0), Real(2) * (s.v[3] - s.v[0])) : point_type(Real(0), Real(0));
+    }
     return point_type(s.time_at(w, order), s.value_at(w, order));
   }
   [[nodiscard]] std::span<const Real> breakpoints() const { return data_->breaks; }
@@ -373,7 +390,13 @@ channel<Real>::channel(std::vector<key<Real>> keys, extrapolation before, extrap
     d->segments.push_back(s);
   }
   for (const auto& k : keys) d->times.push_back(k.time);
-  for (std::size_t i = 0; i <= d->segments.size(); ++i) d->breaks.push_back(Real(static_cast<long long>(i)));
+  for (std::size_t i = 0; i <= d->segments.size(); ++i) {
+    d->breaks.push_back(Real(static_cast<long long>(i)));
+    // A constant or step_next segment's curve turns a corner at its middle (see the header).
+    if (i < d->segments.size() && (d->segments[i].kind == interpolation::constant ||
+                                   d->segments[i].kind == interpolation::step_next))
+      d->breaks.push_back(Real(static_cast<long long>(i)) + Real(1) / Real(2));
+  }
   d->before = before;
   d->after = after;
   d->solver = solver;
