@@ -7,6 +7,8 @@
 #include "harness/vocabulary.hpp"
 
 #include "curvebench/arclength/parameterization.hpp"
+#include "curvebench/channel/channel.hpp"
+#include "curvebench/io/families/channel.hpp"
 #include "curvebench/motion/distance_time.hpp"
 
 #include <cmath>
@@ -257,6 +259,40 @@ void sample(const io::field& spec, const sample_args& a) {
   }
 }
 
+/// A channel spec at given times: t, the value and its time derivatives (orders 1..min(K, 2)) under
+/// the spec's tool (io/families/channel.hpp). A vertical tangent's slope is printed as inf or -inf.
+void sample_times(const io::field& spec, const sample_args& a) {
+  std::vector<parameter> given;
+  if (!a.at.empty()) given = parse_at(a.at);
+  if (!a.at_file.empty()) given = parse_at_file(a.at_file);
+  if (!a.range.empty()) given = parse_range(a.range);
+  if (a.derivatives > 2)
+    throw invalid_input("--derivatives " + std::to_string(a.derivatives) +
+                        ": a channel's time derivatives go to order 2 (d2value)");
+  const io::channel_model<double> ch = io::channel_model_of_spec<double>(spec);
+  std::cout << "t,value";
+  for (int k = 1; k <= a.derivatives; ++k) std::cout << (k == 1 ? ",dvalue" : ",d2value");
+  std::cout << "\n" << std::setprecision(17);
+  progress shown("sample", given.size(), a.quiet);
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    shown.update(i);
+    const double t = given[i].u;
+    const double v = ch.at(t, 0);
+    if (!std::isfinite(v))
+      throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): the value is " + to_text(v));
+    std::cout << t << "," << v;
+    for (int k = 1; k <= a.derivatives; ++k) {
+      try {
+        std::cout << "," << ch.at(t, k);
+      } catch (const std::domain_error& e) {
+        throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): d" +
+                            std::to_string(k) + "value: " + e.what());
+      }
+    }
+    std::cout << "\n";
+  }
+}
+
 }  // namespace
 
 CLI::App* add_sample(CLI::App& app, sample_args& a) {
@@ -283,9 +319,12 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
                       ->check(CLI::ExistingFile);
   auto* range = samp->add_option("--range", a.range,
                                  "evaluate at A, A+STEP, ... up to B (inclusive when B lies on the grid): A:B:STEP");
-  for (CLI::Option* o : {at, at_file, range}) {
+  auto* frames = samp->add_option("--frames", a.range,
+                                  "the same as --range, named for channel specs, whose --at, --frames and --range "
+                                  "values are times: A:B:STEP");
+  for (CLI::Option* o : {at, at_file, range, frames}) {
     o->excludes(count);
-    for (CLI::Option* other : {at, at_file, range})
+    for (CLI::Option* other : {at, at_file, range, frames})
       if (other != o) o->excludes(other);
   }
   samp->add_option("--derivatives", a.derivatives,
@@ -302,6 +341,11 @@ void run_sample(const sample_args& a) {
                         "--range (which give the parameters)");
   const nlohmann::json j = read_spec(a.spec);
   const io::field spec = io::root(j, a.spec);
+  if (spec.has("type") && spec.member("type").value == "channel" &&
+      (!a.at.empty() || !a.at_file.empty() || !a.range.empty())) {
+    sample_times(spec, a);
+    return;
+  }
   with_dimension(spec, [&](auto dim) { sample<decltype(dim)::value>(spec, a); });
 }
 

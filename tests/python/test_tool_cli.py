@@ -72,6 +72,13 @@ class ToolCli(unittest.TestCase):
     def test_sample_at_works_for_every_family_of_the_suite(self):
         for name in sorted(os.listdir(CASES)):
             spec = os.path.join(CASES, name)
+            with open(spec) as f:
+                if json.load(f)["type"] == "channel":  # --at gives times: t, value, dvalue, d2value
+                    p = run("sample", spec, "--at", "-1,0.37,1e300", "--derivatives", "2")  # off the vertical tangents
+                    self.assertEqual(p.returncode, 0, name + ": " + p.stderr)
+                    self.assertEqual(p.stdout.splitlines()[0], "t,value,dvalue,d2value", name)
+                    self.assertEqual(len(p.stdout.splitlines()), 4, name)
+                    continue
             # The domain, from the error of a parameter outside it (sample --count builds a u(s)
             # table: minutes on degree-20 Runge).
             p = run("sample", spec, "--at", "1e300")
@@ -212,6 +219,26 @@ class ToolCli(unittest.TestCase):
         self.assertRegex(c.stderr, r"check .*values\.csv: rows: \d+ of 20000 \(\d+\.\d%\), \d+\.\d s elapsed")
         self.assertNotIn("elapsed", c.stdout)
         self.assertEqual(run("check", spec, "--values", values, "--quiet").stderr, "")
+
+    def test_channel_specs_sample_at_times(self):
+        # Issue 12: --at, --frames and --range give times for channel specs: t, value, dvalue, d2value.
+        spec = os.path.join(CASES, "channel_regression_limit.json")
+        p = run("sample", spec, "--at", "0,4.5,9,12", "--derivatives", "2")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        rows = p.stdout.splitlines()
+        self.assertEqual(rows[0], "t,value,dvalue,d2value")
+        self.assertEqual([r.split(",")[:2] for r in rows[1:]][0], ["0", "0"])
+        self.assertEqual(rows[3].split(",")[1], "1")  # the last key
+        self.assertEqual(rows[4].split(",")[1:3], ["1", "0"])  # constant extrapolation after it
+        f = run("sample", os.path.join(CASES, "css_overshoot.json"), "--frames", "0:1:0.25", "--derivatives", "0")
+        self.assertEqual(f.returncode, 0, f.stderr)
+        self.assertEqual(len(f.stdout.splitlines()), 6)
+        self.assertEqual(f.stdout.splitlines()[-1], "1,1")
+        # Without times a channel samples its curve view by u, as every family does.
+        u = run("sample", spec, "--count", "3")
+        self.assertEqual(u.returncode, 0, u.stderr)
+        self.assertTrue(u.stdout.startswith("u,s,x,y"))
+        self.assert_error(run("sample", spec, "--at", "1", "--derivatives", "3"), "--derivatives 3", "order 2")
 
     def test_sample_count_has_a_documented_limit(self):
         p = run("sample", ARCH, "--count", "1000001")

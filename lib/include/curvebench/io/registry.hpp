@@ -15,6 +15,7 @@
 #include "curvebench/io/families/bezier.hpp"
 #include "curvebench/io/families/bspline.hpp"
 #include "curvebench/io/families/cardinal.hpp"
+#include "curvebench/io/families/channel.hpp"
 #include "curvebench/io/families/composite_bezier.hpp"
 #include "curvebench/io/families/conic.hpp"
 #include "curvebench/io/families/hermite.hpp"
@@ -41,7 +42,7 @@ struct family_list {};
 using all_families =
     family_list<polyline_family, lagrange_family, bezier_family, rational_bezier_family, composite_bezier_family,
                 conic_family, arc_family, circle_family, hermite_family, cardinal_family, catmull_rom_family,
-                kochanek_bartels_family, natural_cubic_family, bspline_family, nurbs_family>;
+                kochanek_bartels_family, natural_cubic_family, bspline_family, nurbs_family, channel_family>;
 
 namespace detail {
 template <class F, class... Entries>
