@@ -5,7 +5,8 @@
 // (one family per header), the property audit, arclength (quadrature, lengths, inversion,
 // parameterization), channel (keyframe channels: keys, segments, extrapolation and the curve
 // view; the time solvers of a Bezier segment, CSS easing, glTF 2.0 samplers, Penner's easing
-// equations as Blender applies them), motion (ease functions, keyframes, motion along a path) and
+// equations as Blender applies them, Blender's F-curve tool model: handle rules, correction,
+// easing, extrapolation and the Cycles modifier in float, with its real50 truth), motion (ease functions, keyframes, motion along a path) and
 // reference (the 50-digit type real50, conversion
 // to it, reference arc length, closed forms).
 // Not included: io/ (JSON specs and the family registry), which needs nlohmann/json and lives in
@@ -50,6 +51,7 @@
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/arclength/result.hpp"
 
+#include "curvebench/channel/blender.hpp"
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/channel/css_easing.hpp"
 #include "curvebench/channel/gltf.hpp"

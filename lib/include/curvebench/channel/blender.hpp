@@ -40,7 +40,10 @@
 // n-2 moved back and key 1 moved on by the period T and by v_last - v_first (under repeat too), and
 // cont_accel solves the periodic spline.
 // cont_accel is modelled for curves whose keys are all auto / auto_clamped (Blender's default for
-// inserted keys) or none of them; a curve mixing them under cont_accel is an invalid_input.
+// inserted keys) or none of them; a curve mixing them under cont_accel is an invalid_input (there
+// Blender blends vector handles into the solve, and fixed handles bound it; not yet measured).
+// Sources: Blender's manual and API reference name the options (docs/references.md); the rules are
+// measured, as above.
 // Evaluation (blender_evaluator, built by blender_model): the keys with the handles above become a
 // channel<Real>: bezier segments with each handle's time length first limited to the segment's
 // duration, scaled along its direction (Blender's correction: measured per handle, not on the sum,
