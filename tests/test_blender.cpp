@@ -31,19 +31,21 @@ namespace {
 // Tolerances, in eps_float (2^-23) of a scale, with the reasons:
 //  - handle_tol: our handle rules in double on Blender's float32 keys against Blender's float32
 //    handles, in eps_float of the key's |time| + |value| + the handle's offset (|dt| + |dv|):
-//    Blender computes them in float32, a handful of roundings (and the cont_accel solve, which is
-//    diagonally dominant, so it does not amplify them much); measured 1.69; 4 leaves a factor 2.4.
-constexpr double handle_tol = 4;
+//    Blender computes them in float32, a handful of roundings, and the cont_accel solve carries
+//    them through a tridiagonal system whose rows are dominant by a factor 2 (2 (h_l + h_r) against
+//    h_l + h_r), so its condition is at most 3; measured 3.37 (pseudo-random layouts with short
+//    intervals beside long ones; 1.69 on the designed ones); 8 = a few roundings x 3 leaves 2.4.
+constexpr double handle_tol = 8;
 //  - value_tol: the float model against Blender's value, in eps_float of the scale
 //    |v| + max |key or handle value| + (|t| + |t_first| + T) |dv/dt|: the values' magnitudes plus
 //    the time's rounding carried by the slope (and the cycles' wrapped time, T the period). Both
 //    sides are float32 evaluations of the same formulas with handles that differ by rounding;
-//    measured 1.55 with the exact solver (the default; closed_form in float reaches 6.2, printed
-//    per solver below); 4 leaves a factor 2.6.
+//    measured 1.59 with the exact solver (the default; closed_form in float reaches 6.2, printed
+//    per solver below); 4 leaves a factor 2.5.
 constexpr double value_tol = 4;
 //  - truth_tol: the float model (Blender's arithmetic) against the real50 truth of the same float
 //    description, same scale: the float rounding of the handles, the solver and the value;
-//    measured 0.93; 3 leaves a factor 3.2.
+//    measured 1.43; 3 leaves a factor 2.1.
 constexpr double truth_tol = 3;
 //  - blender_truth_tol: Blender's recorded value against the same truth: value_tol's comparison
 //    with the truth in place of our float model; measured 1.77; 4 leaves a factor 2.3.
@@ -153,6 +155,22 @@ double value_scale(const ch::blender_fcurve<double>& f, const ch::blender_evalua
   return mag + extent + (std::abs(t) + std::abs(t0) + period) * slope;
 }
 
+// Channels the model refuses on purpose (blender.hpp: cyclic auto_clamped under cont_accel): the
+// refusal is checked instead, so the list cannot hide a channel the model would accept.
+bool refused(const std::string& name, const nlohmann::json& c) {
+  const auto repeats = [](const nlohmann::json& m) { return m == "REPEAT" || m == "REPEAT_OFFSET"; };
+  const bool cyclic = c.contains("cycles") && repeats(c.at("cycles").at("mode_before")) &&
+                      repeats(c.at("cycles").at("mode_after")) && c.at("cycles").at("cycles_before") == 0 &&
+                      c.at("cycles").at("cycles_after") == 0;
+  bool clamped = false;
+  for (const auto& k : c.at("keys")) clamped = clamped || k.at("handle_left_type") == "AUTO_CLAMPED";
+  if (!(cyclic && clamped && c.at("auto_smoothing") == "CONT_ACCEL" && c.at("keys").size() > 1)) return false;
+  EXPECT_THAT(cbt::message_of([&] { (void)ch::blender_handles(fcurve_of<double>(c)); }),
+              HasSubstr("with auto_clamped keys under smoothing cont_accel is not modelled"))
+      << name;
+  return true;
+}
+
 bool at_key_time(const ch::blender_fcurve<double>& f, double t) {
   for (const auto& k : f.keys)
     if (t == k.time) return true;
@@ -182,7 +200,7 @@ TEST(blender, handles_match_recorded) {
   for (const auto& c : doc.at("channels")) {
     const std::string name = c.at("name");
     ch::blender_fcurve<double> f = fcurve_of<double>(c);
-    if (f.keys.size() < 2) continue;
+    if (f.keys.size() < 2 || refused(name, c)) continue;
     restore_request_handles(name, f);
     const std::vector<ch::blender_key<double>> got = ch::blender_handles(f);
     for (std::size_t i = 0; i < got.size(); ++i) {
@@ -201,7 +219,7 @@ TEST(blender, handles_match_recorded) {
       }
     }
   }
-  EXPECT_GT(checked, 400u);
+  EXPECT_GT(checked, 1500u);
   std::cout << "checked " << checked << " handles; worst " << worst << " eps_float of the scale\n";
 }
 
@@ -213,6 +231,7 @@ TEST(blender, values_match_recorded) {
   std::size_t checked = 0;
   for (const auto& c : doc.at("channels")) {
     const std::string name = c.at("name");
+    if (refused(name, c)) continue;
     const ch::blender_fcurve<double> fd = fcurve_of<double>(c);
     const ch::blender_fcurve<float> ff = fcurve_of<float>(c);
     const auto md = ch::blender_model(fd, ch::time_solver::exact);
@@ -243,6 +262,7 @@ TEST(blender, float_model_against_truth) {
   double worst = 0, worst_abs = 0, worst_blender = 0, worst_blender_abs = 0;
   for (const auto& c : doc.at("channels")) {
     const std::string name = c.at("name");
+    if (refused(name, c)) continue;
     const ch::blender_fcurve<double> fd = fcurve_of<double>(c);
     const ch::blender_fcurve<float> ff = fcurve_of<float>(c);
     const auto md = ch::blender_model(fd, ch::time_solver::exact);

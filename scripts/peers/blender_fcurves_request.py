@@ -10,6 +10,7 @@ Regenerate the fixture (Blender 3.4.1 from Debian bookworm was used):
 """
 
 import json
+import random
 import sys
 
 COMMAND = ("python3 scripts/peers/blender_fcurves_request.py > /tmp/blender_fcurves_request.json && "
@@ -106,7 +107,27 @@ def request():
                              "cycles": {"mode_before": before, "mode_after": after, "cycles_before": nb,
                                         "cycles_after": na},
                              "times": grid(-40, 50, 360) + [1.0 - 1e-3, 11.0 + 1e-3, 21.0, 31.0, -9.0]})
-    # 7. A single key.
+    # 7. Pseudo-random layouts (fixed seed): the rules beyond the designed cases, for the auto types
+    #    under both smoothing modes and extrapolations, and as a cyclic curve.
+    rng = random.Random(12)
+    for r in range(6):
+        t, layout = 0.0, []
+        for _ in range(rng.randint(3, 9)):
+            layout.append((t, round(rng.uniform(-5, 5), 3)))
+            t = round(t + rng.choice((0.5, 1.0, 2.0, 3.0, 7.0, 12.0)) * rng.uniform(0.5, 1.5), 3)
+        t0, t1 = layout[0][0], layout[-1][0]
+        for ht in ("AUTO", "AUTO_CLAMPED"):
+            for sm in ("NONE", "CONT_ACCEL"):
+                for ex in ("CONSTANT", "LINEAR"):
+                    channels.append({"name": f"random{r}/{ht.lower()}/{sm.lower()}/{ex.lower()}",
+                                     "keys": keys_of(layout, ht, ht), "extrapolation": ex, "auto_smoothing": sm,
+                                     "times": grid(t0 - 2, t1 + 2, 64)})
+                channels.append({"name": f"random{r}/{ht.lower()}/{sm.lower()}/cyclic",
+                                 "keys": keys_of(layout, ht, ht), "auto_smoothing": sm,
+                                 "cycles": {"mode_before": "REPEAT_OFFSET", "mode_after": "REPEAT", "cycles_before": 0,
+                                            "cycles_after": 0},
+                                 "times": grid(t0 - (t1 - t0) * 1.5, t1 + (t1 - t0) * 1.5, 96)})
+    # 8. A single key.
     channels.append({"name": "single_key", "keys": [{"time": 3.0, "value": 2.5, "interpolation": "BEZIER"}],
                      "extrapolation": "LINEAR", "times": [-1.0, 3.0, 7.0]})
     return {"note": "recorded output of real Blender; regenerate with: " + COMMAND, "channels": channels}
