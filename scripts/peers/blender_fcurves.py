@@ -14,6 +14,8 @@ command that regenerated the file, is copied to the output). A channel:
                "handle_left": [0, 2], "handle_right": [2, 2]},          (optional)
               ...],
      "extrapolation": "CONSTANT",            (or LINEAR; optional)
+     "auto_smoothing": "NONE",               (or CONT_ACCEL; optional, Blender's default for new
+                                              F-curves is CONT_ACCEL)
      "cycles": {"mode_before": "REPEAT", "mode_after": "REPEAT",
                 "cycles_before": 0, "cycles_after": 0},                 (optional Cycles modifier)
      "times": [1, 1.5, ...]}                 (where to call fcurve.evaluate)
@@ -42,7 +44,8 @@ EXTRAPOLATIONS = ("CONSTANT", "LINEAR")
 CYCLE_MODES = ("NONE", "REPEAT", "REPEAT_OFFSET", "MIRROR")
 KEY_FIELDS = ("time", "value", "interpolation", "easing", "back", "amplitude", "period", "handle_left_type",
               "handle_right_type", "handle_left", "handle_right")
-CHANNEL_FIELDS = ("name", "keys", "extrapolation", "cycles", "times")
+CHANNEL_FIELDS = ("name", "keys", "extrapolation", "auto_smoothing", "cycles", "times")
+AUTO_SMOOTHINGS = ("NONE", "CONT_ACCEL")
 CYCLE_FIELDS = ("mode_before", "mode_after", "cycles_before", "cycles_after")
 
 
@@ -117,6 +120,8 @@ def check_request(data):
         c = {"name": str(ch.get("name", f"channel{ci}")), "keys": checked_keys,
              "extrapolation": _choice(f"{p}.extrapolation", ch.get("extrapolation", "CONSTANT"), EXTRAPOLATIONS),
              "times": [_number(f"{p}.times[{i}]", t) for i, t in enumerate(times)]}
+        if "auto_smoothing" in ch:
+            c["auto_smoothing"] = _choice(f"{p}.auto_smoothing", ch["auto_smoothing"], AUTO_SMOOTHINGS)
         if "cycles" in ch:
             cy = ch["cycles"]
             if not isinstance(cy, dict):
@@ -178,6 +183,8 @@ def evaluate_in_blender(bpy, channels):
         obj.animation_data_create()
         obj.animation_data.action = action
         fc = action.fcurves.new("location", index=0)
+        if "auto_smoothing" in ch:
+            fc.auto_smoothing = ch["auto_smoothing"]
         fc.keyframe_points.add(len(ch["keys"]))
         for kp, k in zip(fc.keyframe_points, ch["keys"]):
             kp.co = (k["time"], k["value"])
@@ -200,7 +207,8 @@ def evaluate_in_blender(bpy, channels):
                  "handle_left_type": kp.handle_left_type, "handle_right_type": kp.handle_right_type,
                  "handle_left": list(kp.handle_left), "handle_right": list(kp.handle_right)}
                 for kp in fc.keyframe_points]
-        r = {"name": ch["name"], "keys": keys, "extrapolation": fc.extrapolation}
+        r = {"name": ch["name"], "keys": keys, "extrapolation": fc.extrapolation,
+             "auto_smoothing": fc.auto_smoothing}
         if "cycles" in ch:
             r["cycles"] = ch["cycles"]
         r["times"] = ch["times"]

@@ -1,6 +1,7 @@
 """scripts/peers/blender_fcurves.py without Blender: the request checker names bad fields by their
 path, the writer keeps float32 values exact and writes a document json reads back, the easing
-request covers every family x easing, and the recorded fixture was produced from that request."""
+request covers every family x easing, and the recorded fixtures were produced from their requests
+(blender_easing.json, blender_fcurves.json)."""
 import json
 import os
 import sys
@@ -12,6 +13,7 @@ sys.path.insert(0, os.path.join(ROOT, "scripts", "peers"))
 
 import blender_easing_request  # noqa: E402
 import blender_fcurves as bf  # noqa: E402
+import blender_fcurves_request  # noqa: E402
 
 
 def channel(**over):
@@ -45,6 +47,7 @@ class CheckRequest(unittest.TestCase):
              "channels[0].keys[0].handle_left = [1]: expected [time, value]"),
             ([channel(keys=[{"time": 0, "value": 1, "bounce": 2}])], "channels[0].keys[0].bounce: unknown field"),
             ([channel(extrapolation="CYCLIC")], "channels[0].extrapolation = 'CYCLIC'"),
+            ([channel(auto_smoothing="SMOOTH")], "channels[0].auto_smoothing = 'SMOOTH': expected one of NONE"),
             ([], "channels: expected a non-empty list"),
             ([channel(keys=[{"time": True, "value": 1}])], "channels[0].keys[0].time = True"),
         ]
@@ -52,6 +55,11 @@ class CheckRequest(unittest.TestCase):
             with self.assertRaises(bf.RequestError) as e:
                 bf.check_request(data)
             self.assertIn(words, str(e.exception))
+
+    def test_auto_smoothing_is_optional(self):
+        channels, _ = bf.check_request([channel(), channel(auto_smoothing="NONE")])
+        self.assertNotIn("auto_smoothing", channels[0])
+        self.assertEqual(channels[1]["auto_smoothing"], "NONE")
 
     def test_script_arguments(self):
         self.assertEqual(bf.script_arguments(["blender", "-b", "--python", "x.py", "--", "a", "b"]), ["a", "b"])
@@ -89,6 +97,30 @@ class EasingFixture(unittest.TestCase):
         for rec, asked in zip(fixture["channels"], req["channels"]):
             self.assertEqual(rec["times"], asked["times"])
             self.assertEqual(len(rec["values"]), len(asked["times"]))
+
+
+class FcurvesFixture(unittest.TestCase):
+    def test_request_is_valid_and_covers_the_rules(self):
+        req = blender_fcurves_request.request()
+        channels, _ = bf.check_request(req)
+        names = [c["name"] for c in channels]
+        for prefix in ("handles/auto/", "handles/auto_clamped/", "handles/vector/", "handles/aligned/", "free/",
+                       "mixed_interpolation/", "cycles/"):
+            self.assertTrue(any(n.startswith(prefix) for n in names), prefix)
+        self.assertEqual({c.get("auto_smoothing") for c in channels}, {None, "NONE", "CONT_ACCEL"})
+
+    def test_fixture_is_the_recorded_output_of_the_request(self):
+        with open(os.path.join(ROOT, "tests", "data", "blender_fcurves.json"), encoding="utf-8") as f:
+            fixture = json.load(f)
+        req = blender_fcurves_request.request()
+        self.assertEqual(fixture["note"], req["note"])
+        self.assertEqual([c["name"] for c in fixture["channels"]], [c["name"] for c in req["channels"]])
+        for rec, asked in zip(fixture["channels"], req["channels"]):
+            self.assertEqual(rec["times"], asked["times"])
+            self.assertEqual(len(rec["values"]), len(asked["times"]))
+            self.assertEqual(len(rec["keys"]), len(asked["keys"]))
+            if "auto_smoothing" in asked:
+                self.assertEqual(rec["auto_smoothing"], asked["auto_smoothing"])
 
 
 if __name__ == "__main__":

@@ -4,11 +4,10 @@
 // Real utilities, any_curve), basis (Bernstein, cubic basis matrices, constraint solver), curves
 // (one family per header), the property audit, arclength (quadrature, lengths, inversion,
 // parameterization), channel (keyframe channels: keys, segments, extrapolation and the curve
-// view; the time solvers of a Bezier segment, CSS easing, glTF 2.0 samplers, Penner's easing
-// equations as Blender applies them, the Maya animCurve model: tangent types, weighted handles,
-// infinity), motion (ease functions, keyframes, motion along a path) and
-// reference (the 50-digit type real50, conversion
-// to it, reference arc length, closed forms).
+// view; the time solvers of a Bezier segment; the tool models: CSS easing, glTF 2.0 samplers,
+// Penner's easing equations as Blender applies them, Blender's F-curves, Maya's animCurves, USD's
+// Ts splines), motion (ease functions, keyframes, motion along a path) and reference (the 50-digit
+// type real50, conversion to it, reference arc length, closed forms).
 // Not included: io/ (JSON specs and the family registry), which needs nlohmann/json and lives in
 // its own target curvebench::io (include "curvebench/io/spec.hpp" and link curvebench::io), and
 // the private detail/ headers.
@@ -51,6 +50,7 @@
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/arclength/result.hpp"
 
+#include "curvebench/channel/blender.hpp"
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/channel/css_easing.hpp"
 #include "curvebench/channel/gltf.hpp"

@@ -1,0 +1,700 @@
+// Blender's F-curve as a tool model: the rules that turn an F-curve description (keys with
+// absolute handle coordinates, handle types, per-segment interpolation and easing, extrapolation,
+// auto-handle smoothing and a Cycles modifier) into the values Blender evaluates, on top of the
+// keyframe channel (channel/channel.hpp) and Penner's easing (channel/penner.hpp).
+//
+// Description: blender_key { time, value, handle_left, handle_right (absolute (frame, value), as
+// Blender stores them), handle_left_type, handle_right_type (free, aligned, vector, auto,
+// auto_clamped; `automatic` in C++, "auto" as text), interpolation of the segment starting at the
+// key (constant, linear, bezier, or a Penner family sine .. elastic), easing (penner.hpp's
+// ease_mode) and back / amplitude / period }; blender_fcurve { keys (sorted by time),
+// extrapolation (constant, linear), smoothing (none, cont_accel: Blender's "Auto Handle
+// Smoothing"; new F-curves get cont_accel), cycles (the Cycles modifier: mode_before, mode_after in
+// none, repeat, repeat_offset, mirror; cycles_before, cycles_after >= 0, 0 = infinite) }.
+//
+// Handle rules (blender_handles), found by experiment with Blender 3.4.1 through
+// scripts/peers/blender_fcurves.py (tests/data/blender_fcurves.json; Blender's source was not
+// read). h_l, h_r are the key's intervals to its neighbours (at an end key both are the one
+// interval it has); s_l, s_r the chord slopes to the neighbours.
+// - auto and auto_clamped (both sides the same type, or one side beside a vector handle):
+//   handles of time length f h_l (left) and f h_r (right) along one slope m. smoothing none:
+//   f = 1 / 2.5614, each length limited to 5 times the other side's, m = (s_l + s_r) / 2 at
+//   interior keys. smoothing cont_accel: f = 1/3 (the
+//   segment between two such keys is a cubic polynomial in time) and the slopes make the curve C2
+//   at interior keys: h_r m_{i-1} + 2 (h_l + h_r) m_i + h_l m_{i+1} = 3 (h_r s_l + h_l s_r), a
+//   cubic spline. End keys: m = 0 under constant extrapolation; under linear, m = s (none) or the
+//   natural end 2 m_0 + m_1 = 3 s (cont_accel).
+//   auto_clamped then clamps interior keys: m = 0 at a local extremum (value >= both neighbours'
+//   or <= both) or where m has the sign opposite to v_next - v_prev; else m is reduced until
+//   neither handle's value offset exceeds the value change to its neighbour key. Under
+//   cont_accel a clamped slope is fixed and the spline solved again for the rest until no slope
+//   needs clamping (the end slopes measured with linear extrapolation show the re-solve): the
+//   extrema are flat from the start, then an active set clamps keys whose solved slope breaks the
+//   bound and releases clamped keys whose own equation falls back inside it, until stable (checked
+//   on pseudo-random layouts). End keys are not clamped.
+// - vector: time length h/3 of its side's interval, pointing at the neighbour key (an end key's
+//   missing side mirrors the other), so vector handles sit at thirds of the chords.
+// - aligned (both sides): the left handle is kept, the right keeps its length (in (frame, value)
+//   units) and takes the opposite direction (what Blender's update() does with both handles set).
+// - free: as given.
+// Cyclic curves: a Cycles modifier repeating without a count on both sides (repeat or
+// repeat_offset) makes key 0 and key n-1 one interior key for the rules above, its neighbours key
+// n-2 moved back and key 1 moved on by the period T and by v_last - v_first (under repeat too), and
+// cont_accel solves the periodic spline, with the end keys' handle lengths their own interval's
+// (auto; cyclic auto_clamped curves under cont_accel are not modelled: an invalid_input).
+// cont_accel is modelled for curves whose keys are all auto / auto_clamped (Blender's default for
+// inserted keys) or none of them; a curve mixing them under cont_accel is an invalid_input (there
+// Blender blends vector handles into the solve, and fixed handles bound it; not yet measured).
+// Sources: Blender's manual and API reference name the options (docs/references.md); the rules are
+// measured, as above.
+// Evaluation (blender_evaluator, built by blender_model): the keys with the handles above become a
+// channel<Real>: bezier segments with each handle's time length first limited to the segment's
+// duration, scaled along its direction (Blender's correction: measured per handle, not on the sum,
+// and this keeps time monotone); linear and constant as such; an eased segment is the chord in the
+// channel (it is what Blender's linear extrapolation uses at an eased end segment, measured) and
+// penner_ease(family, easing, params) inside. Extrapolation constant, or linear with the end
+// segment's slope (the handle's for bezier, flat for constant, the chord otherwise); a single key
+// extrapolates linearly along its handle on that side (its handles are not recomputed; a handle of
+// zero time length gives a flat line), measured.
+// Cycles modifier: outside [t_first, t_last] the time is wrapped into the keyed range for the first
+// N repeats on that side (repeat: as channel's cycle; repeat_offset: shifted by k (v_last -
+// v_first); mirror: every odd repeat mirrored, as channel's oscillate); t_last + N T and t_first -
+// N T still belong to the repeats; beyond them (or with mode none) the curve's own extrapolation.
+// Precision: Blender stores keys and handles in float32 and its values are float32.
+// blender_model<float>(fcurve) with an accurate time solver (the default, exact; curvebench,
+// isolate_brent and table_newton do as well) reproduces Blender's values to float rounding of the
+// value scale; closed_form solved in float does not where long handles make the cubic cancel, so
+// Blender's own root is not float-limited (tests/test_blender.cpp measures every solver against the
+// recorded values). blender_model<real50>(fcurve) is the 50-digit truth of the same description.
+// Validation (invalid_input naming the key index and field, with the value): no keys; non-finite
+// numbers; keys not in increasing time order; handle_left after or handle_right before its key;
+// enum values outside their lists; aligned on one side only, auto / auto_clamped on one side beside
+// free or aligned; cont_accel mixing auto keys with others, or cyclic with auto_clamped keys;
+// negative cycle counts; amplitude < 0.
+// Cost: O(n) handles for none; cont_accel solves a (cyclic) tridiagonal system in O(n), again after
+// each round of newly clamped keys (at most n rounds, O(n^2) worst); evaluation as channel.hpp and
+// penner.hpp, plus one fmod for the cycles. No allocation when evaluating.
+#pragma once
+
+#include "curvebench/channel/channel.hpp"
+#include "curvebench/channel/penner.hpp"
+#include "curvebench/channel/time_solver.hpp"
+#include "curvebench/core/error.hpp"
+#include "curvebench/core/real.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace curvebench::channel {
+
+/// Blender's handle types (Python: FREE, ALIGNED, VECTOR, AUTO, AUTO_CLAMPED); to_string gives
+/// "free", "aligned", "vector", "auto", "auto_clamped".
+enum class handle_type : std::uint8_t { free, aligned, vector, automatic, auto_clamped };
+/// Blender's keyframe interpolation (the segment starting at the key).
+enum class blender_interpolation : std::uint8_t {
+  constant,
+  linear,
+  bezier,
+  sine,
+  quad,
+  cubic,
+  quart,
+  quint,
+  expo,
+  circ,
+  back,
+  bounce,
+  elastic
+};
+enum class blender_extrapolation : std::uint8_t { constant, linear };
+/// Blender's F-curve auto_smoothing (NONE, CONT_ACCEL).
+enum class auto_smoothing : std::uint8_t { none, cont_accel };
+/// The Cycles modifier's modes (NONE, REPEAT, REPEAT_OFFSET, MIRROR).
+enum class cycles_mode : std::uint8_t { none, repeat, repeat_offset, mirror };
+
+[[nodiscard]] inline const char* to_string(handle_type h) {
+  switch (h) {
+    case handle_type::free: return "free";
+    case handle_type::aligned: return "aligned";
+    case handle_type::vector: return "vector";
+    case handle_type::automatic: return "auto";
+    case handle_type::auto_clamped: return "auto_clamped";
+  }
+  return "unknown";
+}
+
+[[nodiscard]] inline const char* to_string(blender_interpolation i) {
+  static constexpr std::array<const char*, 13> names{"constant", "linear", "bezier", "sine", "quad",
+                                                     "cubic",    "quart",  "quint",  "expo", "circ",
+                                                     "back",     "bounce", "elastic"};
+  const auto k = static_cast<std::size_t>(i);
+  return k < names.size() ? names[k] : "unknown";
+}
+
+[[nodiscard]] inline const char* to_string(blender_extrapolation e) {
+  switch (e) {
+    case blender_extrapolation::constant: return "constant";
+    case blender_extrapolation::linear: return "linear";
+  }
+  return "unknown";
+}
+
+[[nodiscard]] inline const char* to_string(auto_smoothing s) {
+  switch (s) {
+    case auto_smoothing::none: return "none";
+    case auto_smoothing::cont_accel: return "cont_accel";
+  }
+  return "unknown";
+}
+
+[[nodiscard]] inline const char* to_string(cycles_mode m) {
+  switch (m) {
+    case cycles_mode::none: return "none";
+    case cycles_mode::repeat: return "repeat";
+    case cycles_mode::repeat_offset: return "repeat_offset";
+    case cycles_mode::mirror: return "mirror";
+  }
+  return "unknown";
+}
+
+/// The Penner family of an eased interpolation (sine .. elastic).
+[[nodiscard]] inline bool is_eased(blender_interpolation i) {
+  return i >= blender_interpolation::sine && i <= blender_interpolation::elastic;
+}
+
+[[nodiscard]] inline penner_family penner_family_of(blender_interpolation i) {
+  if (!is_eased(i)) validate::fail(std::string("interpolation = ") + to_string(i) + ": not a Penner family");
+  return static_cast<penner_family>(static_cast<int>(i) - static_cast<int>(blender_interpolation::sine));
+}
+
+/// A point in Blender's (frame, value) plane.
+template <class Real>
+struct blender_point {
+  Real time{0};
+  Real value{0};
+};
+
+/// A Blender keyframe (see the header). Handles are absolute coordinates.
+template <class Real>
+struct blender_key {
+  Real time{0};
+  Real value{0};
+  blender_point<Real> handle_left{};
+  blender_point<Real> handle_right{};
+  handle_type handle_left_type = handle_type::auto_clamped;
+  handle_type handle_right_type = handle_type::auto_clamped;
+  blender_interpolation interpolation = blender_interpolation::bezier;
+  ease_mode easing = ease_mode::automatic;
+  penner_params<Real> params{};
+};
+
+/// The Cycles modifier; enabled = false means no modifier.
+struct blender_cycles {
+  bool enabled = false;
+  cycles_mode mode_before = cycles_mode::repeat;
+  cycles_mode mode_after = cycles_mode::repeat;
+  int cycles_before = 0;  ///< 0 = infinite
+  int cycles_after = 0;   ///< 0 = infinite
+};
+
+/// A Blender F-curve description (see the header).
+template <class Real>
+struct blender_fcurve {
+  std::vector<blender_key<Real>> keys;
+  blender_extrapolation extrapolation = blender_extrapolation::constant;
+  auto_smoothing smoothing = auto_smoothing::cont_accel;
+  blender_cycles cycles{};
+};
+
+namespace detail {
+
+[[nodiscard]] inline std::string bkey_field(std::size_t i, std::string_view field) {
+  return validate::indexed("keys", i) + "." + std::string(field);
+}
+
+[[nodiscard]] inline bool is_auto(handle_type h) {
+  return h == handle_type::automatic || h == handle_type::auto_clamped;
+}
+
+template <class Real>
+void validate_fcurve(const blender_fcurve<Real>& c) {
+  validate::count_at_least("keys", c.keys.size(), 1, "an F-curve needs a key");
+  if (c.extrapolation != blender_extrapolation::constant && c.extrapolation != blender_extrapolation::linear)
+    validate::fail("extrapolation = " + std::to_string(static_cast<int>(c.extrapolation)) +
+                   ": not an extrapolation (constant, linear)");
+  if (c.smoothing != auto_smoothing::none && c.smoothing != auto_smoothing::cont_accel)
+    validate::fail("smoothing = " + std::to_string(static_cast<int>(c.smoothing)) +
+                   ": not an auto_smoothing (none, cont_accel)");
+  if (c.cycles.enabled) {
+    for (auto [name, m] :
+         {std::pair{"cycles.mode_before", c.cycles.mode_before}, std::pair{"cycles.mode_after", c.cycles.mode_after}})
+      if (std::string_view(to_string(m)) == "unknown")
+        validate::fail(std::string(name) + " = " + std::to_string(static_cast<int>(m)) +
+                       ": not a cycles mode (none, repeat, repeat_offset, mirror)");
+    if (c.cycles.cycles_before < 0)
+      validate::fail("cycles.cycles_before = " + std::to_string(c.cycles.cycles_before) +
+                     ": must be >= 0 (0 = infinite)");
+    if (c.cycles.cycles_after < 0)
+      validate::fail("cycles.cycles_after = " + std::to_string(c.cycles.cycles_after) +
+                     ": must be >= 0 (0 = infinite)");
+  }
+  for (std::size_t i = 0; i < c.keys.size(); ++i) {
+    const blender_key<Real>& k = c.keys[i];
+    validate::finite(bkey_field(i, "time"), k.time);
+    validate::finite(bkey_field(i, "value"), k.value);
+    validate::finite(bkey_field(i, "handle_left.time"), k.handle_left.time);
+    validate::finite(bkey_field(i, "handle_left.value"), k.handle_left.value);
+    validate::finite(bkey_field(i, "handle_right.time"), k.handle_right.time);
+    validate::finite(bkey_field(i, "handle_right.value"), k.handle_right.value);
+    for (auto [name, h] :
+         {std::pair{"handle_left_type", k.handle_left_type}, std::pair{"handle_right_type", k.handle_right_type}})
+      if (std::string_view(to_string(h)) == "unknown")
+        validate::fail(bkey_field(i, name) + " = " + std::to_string(static_cast<int>(h)) +
+                       ": not a handle type (free, aligned, vector, auto, auto_clamped)");
+    if (std::string_view(to_string(k.interpolation)) == "unknown")
+      validate::fail(bkey_field(i, "interpolation") + " = " + std::to_string(static_cast<int>(k.interpolation)) +
+                     ": not an interpolation");
+    if (std::string_view(to_string(k.easing)) == "unknown")
+      validate::fail(bkey_field(i, "easing") + " = " + std::to_string(static_cast<int>(k.easing)) +
+                     ": not an easing (in, out, in_out, automatic)");
+    validate::finite(bkey_field(i, "back"), k.params.back);
+    validate::finite(bkey_field(i, "amplitude"), k.params.amplitude);
+    validate::finite(bkey_field(i, "period"), k.params.period);
+    if (k.params.amplitude < Real(0))
+      validate::fail(bkey_field(i, "amplitude") + " = " + to_text(k.params.amplitude) + ": must be >= 0");
+    const handle_type l = k.handle_left_type, r = k.handle_right_type;
+    const bool auto_ok = !(is_auto(l) || is_auto(r)) || l == r || l == handle_type::vector || r == handle_type::vector;
+    const bool aligned_ok = (l == handle_type::aligned) == (r == handle_type::aligned);
+    if (!auto_ok || !aligned_ok)
+      validate::fail(bkey_field(i, "handle_right_type") + " = " + to_string(r) + " with " +
+                     bkey_field(i, "handle_left_type") + " = " + to_string(l) +
+                     ": aligned is modelled on both sides of a key, auto and auto_clamped on both sides or "
+                     "beside a vector handle");
+    const auto auto_key = [](const blender_key<Real>& x) {
+      return is_auto(x.handle_left_type) && is_auto(x.handle_right_type);
+    };
+    const auto any_auto = [](const blender_key<Real>& x) {
+      return is_auto(x.handle_left_type) || is_auto(x.handle_right_type);
+    };
+    if (c.smoothing == auto_smoothing::cont_accel && !auto_key(k) &&
+        std::any_of(c.keys.begin(), c.keys.end(), any_auto))
+      validate::fail(bkey_field(i, "handle_left_type") + " = " + to_string(k.handle_left_type) +
+                     ": smoothing cont_accel is modelled for curves whose keys are all auto / auto_clamped or none "
+                     "of them (use smoothing none to mix)");
+    if (i > 0 && !(k.time > c.keys[i - 1].time))
+      validate::fail("keys must be in increasing time order: " + bkey_field(i, "time") + " = " + to_text(k.time) +
+                     " <= " + bkey_field(i - 1, "time") + " = " + to_text(c.keys[i - 1].time));
+  }
+}
+
+/// Solves the tridiagonal system a[i] x[i-1] + b[i] x[i] + c[i] x[i+1] = d[i] (Thomas; the
+/// systems here are diagonally dominant).
+template <class Real>
+std::vector<Real> solve_tridiagonal(std::vector<Real> a, std::vector<Real> b, std::vector<Real> c,
+                                    std::vector<Real> d) {
+  const std::size_t n = b.size();
+  for (std::size_t i = 1; i < n; ++i) {
+    const Real w = a[i] / b[i - 1];
+    b[i] -= w * c[i - 1];
+    d[i] -= w * d[i - 1];
+  }
+  std::vector<Real> x(n);
+  x[n - 1] = d[n - 1] / b[n - 1];
+  for (std::size_t i = n - 1; i-- > 0;) x[i] = (d[i] - c[i] * x[i + 1]) / b[i];
+  return x;
+}
+
+/// The cyclic tridiagonal system: as solve_tridiagonal with a[0] multiplying x[n-1] and c[n-1]
+/// multiplying x[0] (Sherman-Morrison on two tridiagonal solves; n >= 1).
+template <class Real>
+std::vector<Real> solve_cyclic_tridiagonal(std::vector<Real> a, std::vector<Real> b, std::vector<Real> c,
+                                           std::vector<Real> d) {
+  const std::size_t n = b.size();
+  if (n == 1) return {Real(d[0] / (b[0] + a[0] + c[0]))};
+  const Real alpha = c[n - 1], beta = a[0];
+  const Real gamma = -b[0];
+  std::vector<Real> bb = b;
+  bb[0] = b[0] - gamma;
+  bb[n - 1] = b[n - 1] - alpha * beta / gamma;
+  std::vector<Real> u(n, Real(0));
+  u[0] = gamma;
+  u[n - 1] = alpha;
+  const std::vector<Real> x = solve_tridiagonal(a, bb, c, d);
+  const std::vector<Real> z = solve_tridiagonal(a, bb, c, u);
+  const Real fact = (x[0] + beta * x[n - 1] / gamma) / (Real(1) + z[0] + beta * z[n - 1] / gamma);
+  std::vector<Real> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = x[i] - fact * z[i];
+  return out;
+}
+
+}  // namespace detail
+
+/// The keys with Blender's handle rules applied (see the header): auto, auto_clamped, vector and
+/// aligned handles recomputed, free handles as given. Validates the description.
+template <class Real>
+[[nodiscard]] std::vector<blender_key<Real>> blender_handles(const blender_fcurve<Real>& c) {
+  using std::abs;
+  using std::min;
+  using std::sqrt;
+  detail::validate_fcurve(c);
+  std::vector<blender_key<Real>> k = c.keys;
+  const std::size_t n = k.size();
+  if (n < 2) return k;
+  const bool accel = c.smoothing == auto_smoothing::cont_accel;
+  const bool linear = c.extrapolation == blender_extrapolation::linear;
+  const Real f = accel ? Real(1) / Real(3) : Real(10000) / Real(25614);
+  // Cyclic: an infinite Cycles modifier repeating on both sides (repeat or repeat_offset) makes
+  // Blender treat key 0 and key n-1 as one key whose neighbours are key n-2 moved back and key 1
+  // moved on by the period T and the offset v_last - v_first (also under repeat; measured).
+  const auto repeats = [](cycles_mode m) { return m == cycles_mode::repeat || m == cycles_mode::repeat_offset; };
+  const bool cyclic = c.cycles.enabled && repeats(c.cycles.mode_before) && repeats(c.cycles.mode_after) &&
+                      c.cycles.cycles_before == 0 && c.cycles.cycles_after == 0;
+  if (cyclic && accel && std::any_of(k.begin(), k.end(), [](const blender_key<Real>& x) {
+        return x.handle_left_type == handle_type::auto_clamped || x.handle_right_type == handle_type::auto_clamped;
+      }))
+    validate::fail(
+        "cycles: a cyclic curve (repeat or repeat_offset on both sides, no count) with auto_clamped keys "
+        "under smoothing cont_accel is not modelled (Blender's end-key handles there are recorded in "
+        "tests/data/blender_fcurves.json but their rule is not yet derived)");
+  const Real period = k[n - 1].time - k[0].time, offset = k[n - 1].value - k[0].value;
+  // The neighbour before / after key i, false at an end of a non-cyclic curve.
+  const auto prev = [&](std::size_t i, blender_point<Real>& p) {
+    if (i > 0)
+      p = {k[i - 1].time, k[i - 1].value};
+    else if (cyclic)
+      p = {Real(k[n - 2].time - period), Real(k[n - 2].value - offset)};
+    else
+      return false;
+    return true;
+  };
+  const auto next = [&](std::size_t i, blender_point<Real>& p) {
+    if (i + 1 < n)
+      p = {k[i + 1].time, k[i + 1].value};
+    else if (cyclic)
+      p = {Real(k[1].time + period), Real(k[1].value + offset)};
+    else
+      return false;
+    return true;
+  };
+  const auto interval = [&](std::size_t i, bool left) {
+    if (left) return i > 0 ? k[i].time - k[i - 1].time : k[1].time - k[0].time;
+    return i + 1 < n ? k[i + 1].time - k[i].time : k[n - 1].time - k[n - 2].time;
+  };
+  const auto chord = [&](std::size_t i) { return (k[i + 1].value - k[i].value) / (k[i + 1].time - k[i].time); };
+  // Handle time lengths of the auto types.
+  const auto auto_lengths = [&](std::size_t i) {
+    blender_point<Real> p, q;
+    // cont_accel keeps an end key's own interval on both sides even on a cyclic curve (measured).
+    Real l = !accel && prev(i, p) ? Real(k[i].time - p.time) : interval(i, true);
+    Real r = !accel && next(i, q) ? Real(q.time - k[i].time) : interval(i, false);
+    if (!accel) {
+      const Real l5 = Real(5) * l, r5 = Real(5) * r;
+      l = min(l, r5);
+      r = min(r, l5);
+    }
+    return std::pair<Real, Real>{Real(f * l), Real(f * r)};
+  };
+  const auto clamp = [&](std::size_t i, Real m) {
+    blender_point<Real> p, q;
+    if (!prev(i, p) || !next(i, q)) return m;
+    const Real vp = p.value, v = k[i].value, vn = q.value;
+    if ((v >= vp && v >= vn) || (v <= vp && v <= vn)) return Real(0);
+    if (m * (vn - vp) < Real(0)) return Real(0);
+    const auto [dl, dr] = auto_lengths(i);
+    if (abs(m * dr) > abs(vn - v)) m = (vn - v) / dr;
+    if (abs(m * dl) > abs(v - vp)) m = (v - vp) / dl;
+    return m;
+  };
+  const auto clamped = [](const blender_key<Real>& x) {
+    return x.handle_left_type == handle_type::auto_clamped || x.handle_right_type == handle_type::auto_clamped;
+  };
+  std::vector<Real> slope(n, Real(0));
+  if (accel) {
+    // Unknowns m_0 .. m_{u-1}; cyclic: u = n - 1 and m_{n-1} = m_0.
+    const std::size_t u = cyclic ? n - 1 : n;
+    // auto_clamped extrema are flat before anything is solved; other clamped keys are fixed round
+    // by round (measured: the extrema never take part in the solve).
+    std::vector<bool> fixed(u, false);
+    std::vector<Real> m(u, Real(0));
+    for (std::size_t i = 0; i < u; ++i) {
+      blender_point<Real> p, q;
+      if (clamped(k[i]) && prev(i, p) && next(i, q)) {
+        const Real v = k[i].value;
+        fixed[i] = (v >= p.value && v >= q.value) || (v <= p.value && v <= q.value);
+      }
+    }
+    // The equations of the free slopes (row i: ra m_{i-1} + rb m_i + rc m_{i+1} = rd, cyclic indices).
+    std::vector<Real> ra(u, Real(0)), rb(u, Real(1)), rc(u, Real(0)), rd(u, Real(0));
+    for (std::size_t i = 0; i < u; ++i) {
+      blender_point<Real> p, q;
+      if (prev(i, p) && next(i, q)) {
+        const Real hl = k[i].time - p.time, hr = q.time - k[i].time;
+        ra[i] = hr;
+        rb[i] = Real(2) * (hl + hr);
+        rc[i] = hl;
+        rd[i] = Real(3) * (hr * (k[i].value - p.value) / hl + hl * (q.value - k[i].value) / hr);
+      } else if (linear) {  // natural end: 2 m_end + m_neighbour = 3 s
+        rb[i] = Real(2);
+        (i == 0 ? rc[i] : ra[i]) = Real(1);
+        rd[i] = Real(3) * chord(i == 0 ? 0 : n - 2);
+      }  // else constant extrapolation: m = 0
+    }
+    const std::vector<bool> extremum = fixed;
+    // Active set: clamp the keys whose solved slope breaks their bound, release a clamped key whose
+    // own equation, given its neighbours, is back inside the bound; until nothing changes.
+    for (std::size_t round = 0; round <= 4 * u + 4; ++round) {
+      std::vector<Real> a = ra, bb = rb, cc = rc, d = rd;
+      for (std::size_t i = 0; i < u; ++i)
+        if (fixed[i]) {
+          a[i] = cc[i] = Real(0);
+          bb[i] = Real(1);
+          d[i] = m[i];
+        }
+      m = cyclic ? detail::solve_cyclic_tridiagonal(a, bb, cc, d) : detail::solve_tridiagonal(a, bb, cc, d);
+      bool changed = false;
+      for (std::size_t i = 0; i < u; ++i) {
+        if (extremum[i] || !clamped(k[i])) continue;
+        if (!fixed[i]) {
+          const Real mc = clamp(i, m[i]);
+          if (mc != m[i]) {
+            m[i] = mc;
+            fixed[i] = true;
+            changed = true;
+          }
+        } else {
+          const Real ml = m[i > 0 ? i - 1 : u - 1], mr = m[i + 1 < u ? i + 1 : 0];
+          const Real free_m = (rd[i] - ra[i] * ml - rc[i] * mr) / rb[i];
+          if (clamp(i, free_m) == free_m) {
+            fixed[i] = false;
+            changed = true;
+          }
+        }
+      }
+      if (!changed) break;
+    }
+    for (std::size_t i = 0; i < n; ++i) slope[i] = m[i < u ? i : 0];
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      blender_point<Real> p, q;
+      const bool hp = prev(i, p), hn = next(i, q);
+      Real mi;
+      if (hp && hn)
+        mi = ((k[i].value - p.value) / (k[i].time - p.time) + (q.value - k[i].value) / (q.time - k[i].time)) / Real(2);
+      else if (!hp)
+        mi = linear ? chord(0) : Real(0);
+      else
+        mi = linear ? chord(n - 2) : Real(0);
+      slope[i] = clamped(k[i]) ? clamp(i, mi) : mi;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    blender_key<Real>& key = k[i];
+    if (detail::is_auto(key.handle_left_type) || detail::is_auto(key.handle_right_type)) {
+      const auto [dl, dr] = auto_lengths(i);
+      if (detail::is_auto(key.handle_left_type))
+        key.handle_left = {Real(key.time - dl), Real(key.value - slope[i] * dl)};
+      if (detail::is_auto(key.handle_right_type))
+        key.handle_right = {Real(key.time + dr), Real(key.value + slope[i] * dr)};
+    } else if (key.handle_left_type == handle_type::aligned) {
+      const Real lx = key.time - key.handle_left.time, ly = key.value - key.handle_left.value;
+      const Real rx = key.handle_right.time - key.time, ry = key.handle_right.value - key.value;
+      const Real ll = sqrt(lx * lx + ly * ly), lr = sqrt(rx * rx + ry * ry);
+      if (ll > Real(0)) key.handle_right = {Real(key.time + lx * lr / ll), Real(key.value + ly * lr / ll)};
+    }
+  }
+  // Vector handles: along the chord to the neighbour key (an end key's missing side mirrors it).
+  for (std::size_t i = 0; i < n; ++i) {
+    for (bool left : {true, false}) {
+      blender_key<Real>& key = k[i];
+      if ((left ? key.handle_left_type : key.handle_right_type) != handle_type::vector) continue;
+      const bool to_left = (left && i > 0) || (!left && i + 1 == n);
+      const blender_key<Real>& target = k[to_left ? i - 1 : i + 1];
+      // Along the line from the key to the target (an end key's mirrored side points away from it).
+      const Real s = (target.value - key.value) / (target.time - key.time);
+      const Real out_dt = left ? Real(-interval(i, left) / Real(3)) : Real(interval(i, left) / Real(3));
+      const Real out_dv = s * out_dt;
+      const blender_point<Real> p{Real(key.time + out_dt), Real(key.value + out_dv)};
+      if (left)
+        key.handle_left = p;
+      else
+        key.handle_right = p;
+    }
+  }
+  return k;
+}
+
+/// Blender's evaluation of an F-curve (see the header): value(t) and derivative(t, order) at any
+/// finite t, from the keys with Blender's handle rules.
+template <class Real>
+class blender_evaluator {
+ public:
+  using real_type = Real;
+
+  blender_evaluator(const blender_fcurve<Real>& curve, time_solver solver)
+      : keys_(blender_handles(curve)),
+        cycles_(curve.cycles),
+        linear_(curve.extrapolation == blender_extrapolation::linear),
+        channel_(make_channel(keys_, curve, solver)) {}
+
+  [[nodiscard]] Real value(const Real& t) const { return eval(t, 0); }
+  /// d^order v / dt^order, order 0, 1 or 2 (channel.hpp's and penner.hpp's rules).
+  [[nodiscard]] Real derivative(const Real& t, int order) const {
+    validate::derivative_order(order);
+    if (order > 2) validate::fail("order = " + std::to_string(order) + ": the time derivatives go to order 2");
+    return eval(t, order);
+  }
+  /// The keys after the handle rules.
+  [[nodiscard]] const std::vector<blender_key<Real>>& keys() const { return keys_; }
+  /// The channel behind the evaluation (eased segments appear there as their chords).
+  [[nodiscard]] const channel<Real>& underlying() const { return channel_; }
+
+ private:
+  std::vector<blender_key<Real>> keys_;
+  blender_cycles cycles_;
+  bool linear_;
+  channel<Real> channel_;
+
+  static channel<Real> make_channel(const std::vector<blender_key<Real>>& ks, const blender_fcurve<Real>& c,
+                                    time_solver solver) {
+    using std::abs;
+    std::vector<key<Real>> out;
+    for (std::size_t i = 0; i < ks.size(); ++i) {
+      const blender_key<Real>& b = ks[i];
+      if (b.handle_left.time > b.time)
+        validate::fail(detail::bkey_field(i, "handle_left.time") + " = " + to_text(b.handle_left.time) +
+                       ": after the key's time " + to_text(b.time) + " (a left handle points back in time)");
+      if (b.handle_right.time < b.time)
+        validate::fail(detail::bkey_field(i, "handle_right.time") + " = " + to_text(b.handle_right.time) +
+                       ": before the key's time " + to_text(b.time) + " (a right handle points forward in time)");
+      key<Real> k;
+      k.time = b.time;
+      k.value = b.value;
+      k.interp = b.interpolation == blender_interpolation::constant ? interpolation::constant
+                 : b.interpolation == blender_interpolation::bezier ? interpolation::bezier
+                                                                    : interpolation::linear;
+      handle<Real> in{Real(b.handle_left.time - b.time), Real(b.handle_left.value - b.value)};
+      handle<Real> outh{Real(b.handle_right.time - b.time), Real(b.handle_right.value - b.value)};
+      // Blender's correction: each handle's time length at most its segment's duration.
+      if (i > 0) {
+        const Real h = b.time - ks[i - 1].time;
+        if (-in.dt > h) {
+          in.dv = in.dv * (h / -in.dt);
+          in.dt = -h;
+        }
+      }
+      if (i + 1 < ks.size()) {
+        const Real h = ks[i + 1].time - b.time;
+        if (outh.dt > h) {
+          outh.dv = outh.dv * (h / outh.dt);
+          outh.dt = h;
+        }
+      }
+      k.in = in;
+      k.out = outh;
+      out.push_back(k);
+    }
+    const extrapolation e =
+        c.extrapolation == blender_extrapolation::linear ? extrapolation::linear : extrapolation::constant;
+    return channel<Real>(std::move(out), e, e, solver);
+  }
+
+  [[nodiscard]] Real inside(const Real& t, int order) const {
+    const Real t_first = keys_.front().time, t_last = keys_.back().time;
+    if (keys_.size() > 1 && t >= t_first && t < t_last) {
+      const auto it = std::upper_bound(keys_.begin(), keys_.end(), t,
+                                       [](const Real& x, const blender_key<Real>& k) { return x < k.time; });
+      const std::size_t i = static_cast<std::size_t>(it - keys_.begin()) - 1;
+      const blender_key<Real>& k0 = keys_[i];
+      if (is_eased(k0.interpolation)) {
+        const blender_key<Real>& k1 = keys_[i + 1];
+        return penner_ease(penner_family_of(k0.interpolation), k0.easing, k0.params, Real(t - k0.time), k0.value,
+                           Real(k1.value - k0.value), Real(k1.time - k0.time), order);
+      }
+    }
+    return order == 0 ? channel_.value(t) : channel_.derivative(t, order);
+  }
+
+  [[nodiscard]] Real eval(const Real& t, int order) const {
+    using std::floor;
+    using std::fmod;
+    if (!is_finite(t)) throw std::domain_error("t = " + to_text(t) + ": an F-curve is evaluated at finite times only");
+    const Real t_first = keys_.front().time, t_last = keys_.back().time;
+    if (keys_.size() == 1 && linear_ && t != t_first) {
+      // One key, linear: the line along the handle on that side (flat for a zero time length).
+      const blender_key<Real>& k = keys_.front();
+      const bool before = t < t_first;
+      const blender_point<Real>& h = before ? k.handle_left : k.handle_right;
+      const Real dt = h.time - k.time;
+      const Real s = dt != Real(0) ? Real((h.value - k.value) / dt) : Real(0);
+      if (order == 0) return k.value + (t - k.time) * s;
+      return order == 1 ? s : Real(0);
+    }
+    if (!cycles_.enabled || keys_.size() < 2 || (t >= t_first && t <= t_last)) return inside(t, order);
+    const bool before = t < t_first;
+    const cycles_mode mode = before ? cycles_.mode_before : cycles_.mode_after;
+    const int count = before ? cycles_.cycles_before : cycles_.cycles_after;
+    const Real period = t_last - t_first;
+    if (mode == cycles_mode::none) return inside(t, order);
+    // Repeat number k >= 1 on this side and the position r in [0, period] inside it.
+    const Real dist = before ? t_first - t : t - t_last;
+    Real k = floor(dist / period);
+    Real r = dist - k * period;
+    if (r > Real(0))
+      k += Real(1);
+    else
+      r = period;  // exactly at a repeat's far end
+    if (count > 0 && k > Real(count)) return inside(t, order);
+    // Forward repeats: after the range the wrapped time is t_first + r, before it t_last - r.
+    bool mirrored = mode == cycles_mode::mirror && fmod(k, Real(2)) == Real(1);
+    Real wrapped = before ? t_last - r : t_first + r;
+    if (mirrored) wrapped = before ? t_first + r : t_last - r;
+    Real v = inside(std::clamp(wrapped, t_first, t_last), order);
+    if (mirrored && order == 1) v = -v;
+    if (mode == cycles_mode::repeat_offset && order == 0) {
+      const Real shift = keys_.back().value - keys_.front().value;
+      v += before ? Real(-k * shift) : Real(k * shift);
+    }
+    return v;
+  }
+};
+
+/// The evaluator of an F-curve as Blender computes it (Real = float) or its truth (Real = real50);
+/// the default solver, exact, is the one that reproduces Blender best in float (see the header).
+template <class Real>
+[[nodiscard]] blender_evaluator<Real> blender_model(const blender_fcurve<Real>& curve,
+                                                    time_solver solver = time_solver::exact) {
+  return blender_evaluator<Real>(curve, solver);
+}
+
+/// The same description in another Real (for the 50-digit truth of a float description).
+template <class To, class From>
+[[nodiscard]] blender_fcurve<To> convert_fcurve(const blender_fcurve<From>& c) {
+  blender_fcurve<To> out;
+  out.extrapolation = c.extrapolation;
+  out.smoothing = c.smoothing;
+  out.cycles = c.cycles;
+  for (const auto& k : c.keys) {
+    blender_key<To> b;
+    b.time = To(k.time);
+    b.value = To(k.value);
+    b.handle_left = {To(k.handle_left.time), To(k.handle_left.value)};
+    b.handle_right = {To(k.handle_right.time), To(k.handle_right.value)};
+    b.handle_left_type = k.handle_left_type;
+    b.handle_right_type = k.handle_right_type;
+    b.interpolation = k.interpolation;
+    b.easing = k.easing;
+    b.params = {To(k.params.back), To(k.params.amplitude), To(k.params.period)};
+    out.keys.push_back(b);
+  }
+  return out;
+}
+
+}  // namespace curvebench::channel
