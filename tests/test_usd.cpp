@@ -12,8 +12,8 @@
 #include <gmock/gmock.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 #include <vector>
@@ -113,7 +113,9 @@ TEST(usd_regression, the_ellipse_edge_and_its_limits) {
 
 TYPED_TEST(usd_test, keep_ratio_scales_onto_the_ellipse_and_keeps_the_ratio) {
   using Real = TypeParam;
-  const auto r = [](double a, double c) { return ch::usd_limit_widths(ch::usd_anti_regression::keep_ratio, Real(a), Real(c)); };
+  const auto r = [](double a, double c) {
+    return ch::usd_limit_widths(ch::usd_anti_regression::keep_ratio, Real(a), Real(c));
+  };
   // Documented results: (2, 2) -> (1, 1), the centre vertical; (2/3, 8/3) -> (1/3, 4/3); (3, 0) -> (1, 0).
   const real50 s = 1;
   auto w = r(2, 2);
@@ -140,7 +142,8 @@ TYPED_TEST(usd_test, keep_ratio_scales_onto_the_ellipse_and_keeps_the_ratio) {
       const real50 A = w.start, C = w.end;
       const real50 residual = (A + C - 1) * (A + C - 1) - A * C;
       EXPECT_TRUE(cbt::within_scaled_ulps(Real(residual), real50(0), s, ellipse_ulps)) << i << ", " << j;
-      EXPECT_TRUE(cbt::within_scaled_ulps(Real(w.start * c), real50(w.end) * real50(a), real50(a) * real50(c), 2 * widths_ulps));
+      EXPECT_TRUE(cbt::within_scaled_ulps(Real(w.start * c), real50(w.end) * real50(a), real50(a) * real50(c),
+                                          2 * widths_ulps));
       EXPECT_LT(w.start, a);
       EXPECT_LT(w.end, c);
     }
@@ -148,7 +151,9 @@ TYPED_TEST(usd_test, keep_ratio_scales_onto_the_ellipse_and_keeps_the_ratio) {
 
 TYPED_TEST(usd_test, keep_start_keeps_the_start_and_moves_the_end_to_the_nearest_edge) {
   using Real = TypeParam;
-  const auto k = [](const Real& a, const Real& c) { return ch::usd_limit_widths(ch::usd_anti_regression::keep_start, a, c); };
+  const auto k = [](const Real& a, const Real& c) {
+    return ch::usd_limit_widths(ch::usd_anti_regression::keep_start, a, c);
+  };
   const real50 s = 1;
   const Real third = Real(1) / Real(3);
   // a = 1/3: the end tangent shortened to the 4/3 limit.
@@ -167,8 +172,8 @@ TYPED_TEST(usd_test, keep_start_keeps_the_start_and_moves_the_end_to_the_nearest
   // line a = 1.2 on the ellipse lengthens it to (0.8 - sqrt(0.48)) / 2.
   w = k(Real(1.2), Real(0.01));
   EXPECT_EQ(w.start, Real(1.2));
-  EXPECT_TRUE(cbt::within_scaled_ulps(w.end, (real50(Real(0.8)) - sqrt(real50(Real(1.2)) * (4 - 3 * real50(Real(1.2))))) / 2, s,
-                                      widths_ulps));
+  EXPECT_TRUE(cbt::within_scaled_ulps(
+      w.end, (real50(Real(0.8)) - sqrt(real50(Real(1.2)) * (4 - 3 * real50(Real(1.2))))) / 2, s, widths_ulps));
   EXPECT_GT(w.end, Real(0.01));
   // Untouched when not regressive.
   w = k(Real(1.2), Real(0.2));
@@ -179,7 +184,9 @@ TYPED_TEST(usd_test, keep_start_keeps_the_start_and_moves_the_end_to_the_nearest
 
 TYPED_TEST(usd_test, contain_clamps_every_tangent_to_the_interval) {
   using Real = TypeParam;
-  const auto c = [](double a, double b) { return ch::usd_limit_widths(ch::usd_anti_regression::contain, Real(a), Real(b)); };
+  const auto c = [](double a, double b) {
+    return ch::usd_limit_widths(ch::usd_anti_regression::contain, Real(a), Real(b));
+  };
   auto w = c(1.2, 0.2);  // bold, not regressive: shortened all the same
   EXPECT_EQ(w.start, Real(1));
   EXPECT_EQ(w.end, Real(0.2));
@@ -197,8 +204,8 @@ TYPED_TEST(usd_test, contain_clamps_every_tangent_to_the_interval) {
 // it (validate_time_cubic), and the applied spline builds a channel segment.
 TYPED_TEST(usd_test, every_mode_makes_regressive_segments_monotone) {
   using Real = TypeParam;
-  for (auto mode : {ch::usd_anti_regression::contain, ch::usd_anti_regression::keep_ratio,
-                    ch::usd_anti_regression::keep_start}) {
+  for (auto mode :
+       {ch::usd_anti_regression::contain, ch::usd_anti_regression::keep_ratio, ch::usd_anti_regression::keep_start}) {
     for (int i = 0; i <= 40; ++i)
       for (int j = 0; j <= 40; ++j) {
         const Real a = Real(i) / Real(10), c = Real(j) / Real(10);
@@ -209,7 +216,8 @@ TYPED_TEST(usd_test, every_mode_makes_regressive_segments_monotone) {
       }
     // The same through a spline with interval 2 starting at 10.
     ch::usd_spline<Real> s;
-    s.knots = {knot<Real>(10, 0, ch::usd_interpolation::curve, 0, 0, 3, 1), knot<Real>(12, 1, ch::usd_interpolation::curve, 5, 2)};
+    s.knots = {knot<Real>(10, 0, ch::usd_interpolation::curve, 0, 0, 3, 1),
+               knot<Real>(12, 1, ch::usd_interpolation::curve, 5, 2)};
     s.anti_regression = mode;
     const auto applied = ch::usd_apply_anti_regression(s, mode);
     EXPECT_LT(applied.knots[1].pre_width, Real(5));
@@ -217,7 +225,8 @@ TYPED_TEST(usd_test, every_mode_makes_regressive_segments_monotone) {
   }
   // none keeps the regressive widths in the description; the model evaluates them as keep_ratio.
   ch::usd_spline<Real> s;
-  s.knots = {knot<Real>(0, 0, ch::usd_interpolation::curve, 0, 0, 2, 1), knot<Real>(1, 1, ch::usd_interpolation::curve, 2, 1)};
+  s.knots = {knot<Real>(0, 0, ch::usd_interpolation::curve, 0, 0, 2, 1),
+             knot<Real>(1, 1, ch::usd_interpolation::curve, 2, 1)};
   s.anti_regression = ch::usd_anti_regression::none;
   EXPECT_EQ(ch::usd_apply_anti_regression(s, ch::usd_anti_regression::none).knots[0].post_width, Real(2));
   const ch::usd_model<Real> m(s);
@@ -302,8 +311,8 @@ TYPED_TEST(usd_test, extrapolation_held_linear_sloped) {
   s.knots[0].next_interp = ch::usd_interpolation::held;
   s.knots[1].next_interp = ch::usd_interpolation::linear;
   m = ch::usd_model<Real>(s);
-  EXPECT_EQ(m.linear_slope_before(), Real(0));   // held end segment: flat
-  EXPECT_EQ(m.linear_slope_after(), Real(-1));   // linear end segment: its slope (0 - 2) / 2
+  EXPECT_EQ(m.linear_slope_before(), Real(0));  // held end segment: flat
+  EXPECT_EQ(m.linear_slope_after(), Real(-1));  // linear end segment: its slope (0 - 2) / 2
   EXPECT_EQ(m.value(Real(7)), Real(-4));
   s.pre = {ch::usd_extrapolation_mode::sloped, Real(0.25)};
   s.post = {ch::usd_extrapolation_mode::held, Real(9)};
@@ -354,7 +363,8 @@ TYPED_TEST(usd_test, loop_repeat_reset_and_oscillate) {
       const Real mirror_t = mirrored ? Real(period - r) : t;
       if (!(mirrored && r == Real(0))) {
         EXPECT_EQ(oscillate.value(tk), oscillate.value(mirror_t)) << "t = " << t << " k = " << k;
-        EXPECT_EQ(oscillate.derivative(tk, 1), mirrored ? Real(-oscillate.derivative(mirror_t, 1)) : oscillate.derivative(t, 1));
+        EXPECT_EQ(oscillate.derivative(tk, 1),
+                  mirrored ? Real(-oscillate.derivative(mirror_t, 1)) : oscillate.derivative(t, 1));
       } else {
         EXPECT_EQ(oscillate.value(tk), Real(0));  // a mirrored iteration starts at the last knot's value
       }
@@ -387,8 +397,9 @@ double measure_model_error(std::uint32_t seed) {
     double t = 0;
     for (int i = 0; i < 5; ++i) {
       const double r = coin(gen);
-      const auto interp = r < 0.7 ? ch::usd_interpolation::curve : r < 0.85 ? ch::usd_interpolation::linear
-                                                                           : ch::usd_interpolation::held;
+      const auto interp = r < 0.7    ? ch::usd_interpolation::curve
+                          : r < 0.85 ? ch::usd_interpolation::linear
+                                     : ch::usd_interpolation::held;
       auto k = knot<double>(t, u(gen), interp, 3 * w(gen), u(gen), 3 * w(gen), u(gen));
       if (coin(gen) < 0.2) {
         k.dual_valued = true;
@@ -440,7 +451,9 @@ TEST(usd_accuracy, float_model_against_the_exact_twin) {
 }
 
 TEST(usd_validation, messages_name_the_knot_and_field) {
-  const auto msg = [](const ch::usd_spline<double>& s) { return cbt::message_of([&] { (void)ch::usd_model<double>(s); }); };
+  const auto msg = [](const ch::usd_spline<double>& s) {
+    return cbt::message_of([&] { (void)ch::usd_model<double>(s); });
+  };
   ch::usd_spline<double> s;
   EXPECT_THAT(msg(s), HasSubstr("knots"));
   s.knots = {knot<double>(0, 0), knot<double>(1, 1)};

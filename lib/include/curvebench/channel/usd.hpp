@@ -234,7 +234,8 @@ template <class Real>
       const Real root = sqrt(a * (Real(4) - Real(3) * a));
       const Real upper = (Real(2) - a + root) / Real(2);
       const Real lower = (Real(2) - a - root) / Real(2);
-      return c > upper ? std::pair<usd_widths<Real>, int>{{a, upper}, 2} : std::pair<usd_widths<Real>, int>{{a, lower}, 3};
+      return c > upper ? std::pair<usd_widths<Real>, int>{{a, upper}, 2}
+                       : std::pair<usd_widths<Real>, int>{{a, lower}, 3};
     }
   }
   validate::fail("anti-regression mode = " + std::to_string(static_cast<int>(mode)) + ": not a usd_anti_regression");
@@ -508,7 +509,8 @@ class usd_model {
         if (r < Real(0)) r += period;
         if (r >= period) r = Real(0);  // r + period rounded up to the period: the next iteration's start
         const Real iteration = round((offset - r) / period);
-        const bool mirrored = e.mode == usd_extrapolation_mode::loop_oscillate && fmod(abs(iteration), Real(2)) == Real(1);
+        const bool mirrored =
+            e.mode == usd_extrapolation_mode::loop_oscillate && fmod(abs(iteration), Real(2)) == Real(1);
         const Real local = mirrored ? t_last - r : t_first + r;
         Real result = inside(std::clamp(local, t_first, t_last), order);
         if (mirrored && order == 1) result = -result;
