@@ -5,9 +5,9 @@
 // (one family per header), the property audit, arclength (quadrature, lengths, inversion,
 // parameterization), channel (keyframe channels: keys, segments, extrapolation and the curve
 // view; the time solvers of a Bezier segment, CSS easing, glTF 2.0 samplers, Penner's easing
-// equations as Blender applies them), motion (ease functions, keyframes, motion along a path) and
-// reference (the 50-digit type real50, conversion
-// to it, reference arc length, closed forms).
+// equations as Blender applies them, the OpenUSD Ts spline model), motion (ease functions,
+// keyframes, motion along a path) and reference (the 50-digit type real50, conversion to it,
+// reference arc length, closed forms).
 // Not included: io/ (JSON specs and the family registry), which needs nlohmann/json and lives in
 // its own target curvebench::io (include "curvebench/io/spec.hpp" and link curvebench::io), and
 // the private detail/ headers.
@@ -55,6 +55,7 @@
 #include "curvebench/channel/gltf.hpp"
 #include "curvebench/channel/penner.hpp"
 #include "curvebench/channel/time_solver.hpp"
+#include "curvebench/channel/usd.hpp"
 
 #include "curvebench/motion/distance_time.hpp"
 #include "curvebench/motion/keyframes.hpp"
