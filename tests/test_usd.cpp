@@ -381,6 +381,50 @@ TYPED_TEST(usd_test, loop_repeat_reset_and_oscillate) {
   EXPECT_EQ(oscillate.value(Real(4)), oscillate.value(Real(2)));
 }
 
+// Inner loops: knots 0, 1, 2, 5 with the prototype [0, 2) looped once before and twice after with
+// offset 1/2: the baked knots are the prototype's at -2, -1 (j = -1), 0, 1, 2, 3, 4, 5 (j = 1, 2)
+// and the start knot's closing copy at 6; the authored knots at 2 and 5 are shadowed. The looped
+// spline then satisfies v(t + 2) = v(t) + 1/2 on [-2, 4] (exact data: the shifted segments are the
+// same cubics, the values rounded once more by the offset: 1 ulp of the value).
+TYPED_TEST(usd_test, inner_loops_repeat_the_prototype_with_the_value_offset) {
+  using Real = TypeParam;
+  ch::usd_spline<Real> s;
+  s.knots = {knot<Real>(0, 0, ch::usd_interpolation::curve, 0.25, 1, 0.5, 3),
+             knot<Real>(1, 2, ch::usd_interpolation::curve, 0.5, -1, 0.25, 0.5),
+             knot<Real>(2, 1, ch::usd_interpolation::linear), knot<Real>(5, 0, ch::usd_interpolation::held)};
+  s.inner_loops = {Real(0), Real(2), 1, 2, Real(0.5)};
+  const auto baked = ch::usd_bake_inner_loops(s);
+  const std::vector<double> times{-2, -1, 0, 1, 2, 3, 4, 5, 6}, values{-0.5, 1.5, 0, 2, 0.5, 2.5, 1, 3, 1.5};
+  ASSERT_EQ(baked.knots.size(), times.size());
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    EXPECT_EQ(baked.knots[i].time, Real(times[i])) << i;
+    EXPECT_EQ(baked.knots[i].value, Real(values[i])) << i;
+  }
+  EXPECT_EQ(baked.knots[4].post_slope, Real(3));  // whole knots copied, tangents included
+  EXPECT_EQ(baked.inner_loops.num_post_loops, 0);
+  const ch::usd_model<Real> m(s);
+  for (int i = 0; i <= 96; ++i) {
+    const Real t = Real(-2) + Real(i) / Real(16);
+    EXPECT_TRUE(cbt::within_scaled_ulps(m.value(Real(t + 2)), real50(m.value(t)) + real50(0.5), real50(4), 2))
+        << "t = " << t;
+  }
+  EXPECT_EQ(m.value(Real(2)), Real(0.5));  // the echoed start knot, not the authored 1
+  // Invalid parameters are ignored: no knot at proto_start, or no loops.
+  auto no_knot = s;
+  no_knot.inner_loops.proto_start = Real(0.5);
+  auto no_loops = s;
+  no_loops.inner_loops.num_pre_loops = no_loops.inner_loops.num_post_loops = -1;
+  auto plain = s;
+  plain.inner_loops = {};
+  const ch::usd_model<Real> a(no_knot), b(no_loops), c(plain);
+  for (int i = 0; i <= 32; ++i) {
+    const Real t = Real(i) / Real(4) - Real(1);
+    EXPECT_EQ(a.value(t), c.value(t));
+    EXPECT_EQ(b.value(t), c.value(t));
+  }
+  EXPECT_EQ(c.value(Real(2)), Real(1));
+}
+
 // The model in double (closed_form) and in float against the exact twin (real50, exact solver) of
 // the same knots under the same rules: random splines with long tangents (regressive ones
 // included) under every anti-regression mode, curve, linear and held segments, dual-valued knots.
@@ -479,6 +523,9 @@ TEST(usd_validation, messages_name_the_knot_and_field) {
   bad = s;
   bad.anti_regression = static_cast<ch::usd_anti_regression>(7);
   EXPECT_THAT(msg(bad), HasSubstr("anti_regression = 7: not a usd_anti_regression"));
+  bad = s;
+  bad.inner_loops.value_offset = NAN;
+  EXPECT_THAT(msg(bad), HasSubstr("inner_loops.value_offset = nan: must be finite"));
   EXPECT_THAT(cbt::message_of([] { (void)ch::usd_limit_widths(ch::usd_anti_regression::keep_ratio, -1.0, 0.5); }),
               HasSubstr("a = -1: a tangent width must be >= 0"));
   const ch::usd_model<double> m(s);

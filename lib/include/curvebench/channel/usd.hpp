@@ -48,6 +48,17 @@
 //   T = t_last - t_first away, negative before) offset by k (v_last - v_first) so that the ends
 //   meet; loop_reset: repeated exactly (a jump at each join when v_last != v_first); loop_oscillate:
 //   every other iteration reversed in time (t_last - r instead of t_first + r), dv/dt negated there.
+// Inner loops (usd_loops, TsLoopParams; "Continue" mode): the prototype [proto_start, proto_end)
+// is repeated num_pre_loops times before and num_post_loops times after itself by copying its knots
+// whole (tangents kept), iteration j shifted by j P in time (P = proto_end - proto_start) and by
+// j value_offset in value (and pre-value); a copy of the start knot (offset by num_post_loops + 1)
+// closes the last iteration at proto_end + num_post_loops P. Authored knots inside the looped
+// interval [proto_start - num_pre_loops P, proto_end + num_post_loops P] other than the
+// prototype's are shadowed (ignored); a knot exactly at proto_end is not part of the prototype.
+// The loop parameters are ignored unless proto_end > proto_start, a count is positive (negative
+// counts are 0) and a knot sits exactly at proto_start. usd_bake_inner_loops does this; inner
+// loops are resolved before anti-regression and before the extrapolating loops, which then repeat
+// the whole baked knot range.
 // A one-knot spline is constant, except sloped extrapolation, which keeps its line.
 // Side convention: at a knot time the segment that starts there applies (the ordinary value; its
 // derivatives from the right); the last knot's time gives its ordinary value and the left
@@ -58,14 +69,15 @@
 // extrapolation; USD solves the Bezier time cubic in closed form (time_solver::closed_form, the
 // default), and the exact twin is the same spline in real50 with time_solver::exact
 // (usd_convert<real50>).
-// Left out: value blocks (TsInterpValueBlock, TsExtrapValueBlock: no value), inner loops
-// (TsLoopParams), automatic tangents, half-precision values, the interactive anti-regression modes
-// (limit_active, limit_opposite) and the [1/4, 4] ratio clamp mentioned for the keep-ratio
-// prototype in the USD Anim proposal (the released documentation does not state it).
+// Left out: value blocks (TsInterpValueBlock, TsExtrapValueBlock: no value), automatic tangents,
+// half-precision values, the interactive anti-regression modes (limit_active, limit_opposite) and
+// the [1/4, 4] ratio clamp mentioned for the keep-ratio prototype in the USD Anim proposal (the
+// released documentation does not state it).
 // Validation (invalid_input naming the knot index and field, with the value): no knots; non-finite
-// time, value, widths, slopes or pre-value; negative widths; knot times not increasing or too close
-// to be resolved; enum values outside their lists; a non-finite extrapolation slope. Evaluating at a
-// non-finite time throws std::domain_error.
+// time, value, widths, slopes or pre-value; non-finite loop parameters; negative widths; knot
+// times not increasing or too close to be resolved (also after baking the inner loops); enum
+// values outside their lists; a non-finite extrapolation slope. Evaluating at a non-finite time
+// throws std::domain_error.
 // Cost: O(n) construction (one channel per segment); per evaluation O(log n) search, a fmod for
 // loops and the channel's cost (one closed-form cubic solve on a Bezier segment).
 // Accuracy: the channel's on each segment with the chosen solver; with closed_form the Cardano /
@@ -187,6 +199,19 @@ struct usd_extrapolation {
   Real slope{0};
 };
 
+/// Inner-loop parameters (TsLoopParams): the prototype [proto_start, proto_end) repeated
+/// num_pre_loops times before and num_post_loops times after it, each iteration offset in value by
+/// value_offset from the previous one. Ignored unless proto_end > proto_start, a count is > 0 and a
+/// knot sits at proto_start (negative counts count as 0).
+template <class Real>
+struct usd_loops {
+  Real proto_start{0};
+  Real proto_end{0};
+  int num_pre_loops = 0;
+  int num_post_loops = 0;
+  Real value_offset{0};
+};
+
 /// A Ts spline description.
 template <class Real>
 struct usd_spline {
@@ -195,6 +220,7 @@ struct usd_spline {
   usd_anti_regression anti_regression = usd_anti_regression::keep_ratio;
   usd_extrapolation<Real> pre{};
   usd_extrapolation<Real> post{};
+  usd_loops<Real> inner_loops{};
 };
 
 /// One segment's tangent widths as fractions of its interval: a the start knot's post width, c the
@@ -385,6 +411,41 @@ template <class Real>
   return {a, b};
 }
 
+/// The spline with its inner loops baked into knots (and the loop parameters cleared), as the Ts
+/// documentation describes them (see the header); a spline without valid loops is returned as is.
+template <class Real>
+[[nodiscard]] usd_spline<Real> usd_bake_inner_loops(usd_spline<Real> s) {
+  const usd_loops<Real> p = s.inner_loops;
+  s.inner_loops = {};
+  validate::finite("inner_loops.proto_start", p.proto_start);
+  validate::finite("inner_loops.proto_end", p.proto_end);
+  validate::finite("inner_loops.value_offset", p.value_offset);
+  const int pre = std::max(p.num_pre_loops, 0), post = std::max(p.num_post_loops, 0);
+  const auto start =
+      std::find_if(s.knots.begin(), s.knots.end(), [&](const usd_knot<Real>& k) { return k.time == p.proto_start; });
+  if (!(p.proto_end > p.proto_start) || (pre == 0 && post == 0) || start == s.knots.end()) return s;
+  const Real period = p.proto_end - p.proto_start;
+  const Real lo = p.proto_start - Real(pre) * period, hi = p.proto_end + Real(post) * period;
+  std::vector<usd_knot<Real>> proto, baked;
+  for (const auto& k : s.knots)
+    if (k.time >= p.proto_start && k.time < p.proto_end) proto.push_back(k);
+  const auto echo = [&](usd_knot<Real> k, int j) {
+    k.time += Real(j) * period;
+    k.value += Real(j) * p.value_offset;
+    if (k.dual_valued) k.pre_value += Real(j) * p.value_offset;
+    return k;
+  };
+  for (const auto& k : s.knots)
+    if (k.time < lo) baked.push_back(k);
+  for (int j = -pre; j <= post; ++j)
+    for (const auto& k : proto) baked.push_back(echo(k, j));
+  baked.push_back(echo(*start, post + 1));  // the start knot's copy closes the last iteration
+  for (const auto& k : s.knots)
+    if (k.time > hi) baked.push_back(k);
+  s.knots = std::move(baked);
+  return s;
+}
+
 /// The spline's numbers converted to another Real (enums and flags copied).
 template <class To, class From>
 [[nodiscard]] usd_spline<To> usd_convert(const usd_spline<From>& s) {
@@ -393,6 +454,8 @@ template <class To, class From>
   r.anti_regression = s.anti_regression;
   r.pre = {s.pre.mode, To(s.pre.slope)};
   r.post = {s.post.mode, To(s.post.slope)};
+  r.inner_loops = {To(s.inner_loops.proto_start), To(s.inner_loops.proto_end), s.inner_loops.num_pre_loops,
+                   s.inner_loops.num_post_loops, To(s.inner_loops.value_offset)};
   for (const auto& k : s.knots)
     r.knots.push_back({To(k.time), To(k.value), k.next_interp, To(k.pre_width), To(k.pre_slope), To(k.post_width),
                        To(k.post_slope), k.dual_valued, To(k.pre_value)});
@@ -407,8 +470,9 @@ class usd_model {
   using real_type = Real;
 
   explicit usd_model(const usd_spline<Real>& spline, time_solver solver = time_solver::closed_form)
-      : resolved_(usd_apply_anti_regression(usd_apply_anti_regression(spline, spline.anti_regression),
-                                            usd_anti_regression::keep_ratio)),
+      : resolved_(usd_apply_anti_regression(
+            usd_apply_anti_regression(usd_bake_inner_loops(validated(spline)), spline.anti_regression),
+            usd_anti_regression::keep_ratio)),
         solver_(solver) {
     if (std::string_view(to_string(solver)) == "unknown")
       validate::fail("time solver = " + std::to_string(static_cast<int>(solver)) + ": not a time_solver");
@@ -441,6 +505,10 @@ class usd_model {
   [[nodiscard]] Real linear_slope_after() const { return slope_last_; }
 
  private:
+  static const usd_spline<Real>& validated(const usd_spline<Real>& s) {
+    detail::usd_validate(s);
+    return s;
+  }
   usd_spline<Real> resolved_;
   time_solver solver_;
   std::vector<Real> times_;
