@@ -40,11 +40,14 @@ namespace {
 //   2x margin, as tests/test_time_solvers.cpp bounds closed_form. Measured 57.9 (double) and 68.6
 //   (float) on the 24 random splines below (seed 20261124). Both come from the closed_form solver
 //   itself: with the truth built from the double model's own limited widths the maxima are the same
-//   (57.9 on a keep_start segment at dv/dt = 0.55, far from its vertical; 68.6 on a contain
-//   segment), so the widths' rounding adds nothing visible. The closed_form bound of
-//   test_time_solvers.cpp (16 in double, measured 7.73 on its stress set) does not carry over: the
-//   longer tangents here give cubics whose Cardano / trigonometric solution cancels more, and no
-//   bound of that cancellation is derived yet (listed as open in the report of issue 12).
+//   (so the widths' rounding adds nothing visible). The double maximum is on a keep_start segment
+//   limited to (4/3, 1/3) (every segment of that spline starts with a > 4/3), at t = 3.406, u ~ 0.02,
+//   dv/dt = 0.55, far from the vertical at u = 1/3: there x(u) = x* + h (3u - 1)^3 / 9 has a
+//   depressed cubic with p = 0, and Cardano's u = 1/3 + q / 3 with q ~ -0.94 cancels, so u carries
+//   an absolute error of a few eps instead of a few eps u, and the window t +- 1 ulp is narrow
+//   there (x' = 4h). The closed_form bound of test_time_solvers.cpp (16 in double, measured 7.73
+//   on its stress set) does not carry over to such limited segments; a derived bound of this
+//   cancellation is open.
 constexpr double widths_ulps = 8;
 constexpr double ellipse_ulps = 256;
 constexpr double hermite_vs_bezier_ulps = 8;
