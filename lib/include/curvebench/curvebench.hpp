@@ -57,6 +57,7 @@
 #include "curvebench/channel/maya.hpp"
 #include "curvebench/channel/penner.hpp"
 #include "curvebench/channel/time_solver.hpp"
+#include "curvebench/channel/usd.hpp"
 
 #include "curvebench/motion/distance_time.hpp"
 #include "curvebench/motion/keyframes.hpp"
