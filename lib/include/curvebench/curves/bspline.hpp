@@ -165,6 +165,13 @@ class bspline {
   bspline(int order, std::vector<Real> knots, point_list<Real, Dim> control_points) {
     validate::finite_points<Real, Dim>("control_points", control_points);
     core_ = detail::bspline_core<Real, point_type>(order, std::move(knots), std::move(control_points));
+    for (int level = 0; level <= 1 && level < core_.order(); ++level) {
+      Real biggest(0);
+      for (std::size_t k : core_.spans())
+        for (const point_type& q : core_.active_control(level, k)) biggest = std::max(biggest, safe_norm(q));
+      rounding_bound_[static_cast<std::size_t>(level)] =
+          core_.de_boor_rounding_factor(level) * biggest * (Real(101) / Real(100));
+    }
   }
 
   [[nodiscard]] int order() const { return core_.order(); }
@@ -173,14 +180,10 @@ class bspline {
   /// Upper bound on the rounding of the default de Boor evaluation of P (order 0) or P' (order 1)
   /// over the domain: the largest over the spans of (9p + 4) eps max |P_i| and (9(p - 1) + 6) eps
   /// max |Q^1_i| over the control data active there (detail/bspline_core.hpp,
-  /// de_boor_rounding_factor), 1% more; +inf for other orders. O(n m) per call.
+  /// de_boor_rounding_factor), 1% more, computed at construction; +inf for other orders.
   [[nodiscard]] Real rounding_bound(int order) const {
     if (order < 0 || order > 1) return std::numeric_limits<Real>::infinity();
-    if (order >= core_.order()) return Real(0);
-    Real biggest(0);
-    for (std::size_t k : core_.spans())
-      for (const point_type& q : core_.active_control(order, k)) biggest = std::max(biggest, safe_norm(q));
-    return core_.de_boor_rounding_factor(order) * biggest * (Real(101) / Real(100));
+    return rounding_bound_[static_cast<std::size_t>(order)];
   }
   [[nodiscard]] std::span<const Real> knots() const { return core_.knots(); }
   [[nodiscard]] std::span<const point_type> control_points() const { return core_.control(0); }
@@ -308,6 +311,7 @@ class bspline {
   }
 
   detail::bspline_core<Real, point_type> core_;
+  std::array<Real, 2> rounding_bound_{};  // 0 at levels >= order (exact zeros)
 };
 
 /// A closed (periodic) B-spline with the control loop P_0 .. P_{s-1} (s >= 2 points), on

@@ -18,7 +18,9 @@
 #include "curvebench/curves/bezier.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -67,6 +69,9 @@ class composite_bezier {
         for (int d = 0; d < Dim; ++d) scale_ = std::max(scale_, Real(abs(p[d])));
     }
     if (scale_ == Real(0)) scale_ = Real(1);
+    for (const segment_type& seg : segments_)
+      for (std::size_t k = 0; k < 2; ++k)
+        rounding_bound_[k] = std::max(rounding_bound_[k], seg.rounding_bound(static_cast<int>(k)));
   }
 
   [[nodiscard]] interval<Real> domain() const { return {knots_.front(), knots_.back()}; }
@@ -92,11 +97,10 @@ class composite_bezier {
   [[nodiscard]] point_type operator()(const Real& u) const { return segments_[segment_index(u)](u); }
 
   /// Upper bound on the rounding of P (order 0) or P' (order 1) over the domain: the largest of the
-  /// segments' de Casteljau bounds (bezier.hpp); +inf for other orders.
+  /// segments' de Casteljau bounds (bezier.hpp), taken at construction; +inf for other orders.
   [[nodiscard]] Real rounding_bound(int order) const {
-    Real b(0);
-    for (const segment_type& s : segments_) b = std::max(b, s.rounding_bound(order));
-    return b;
+    if (order < 0 || order > 1) return std::numeric_limits<Real>::infinity();
+    return rounding_bound_[static_cast<std::size_t>(order)];
   }
 
   /// d^order P / du^order: the segment's derivative (chain rule 1 / h_i^order included).
@@ -166,6 +170,7 @@ class composite_bezier {
  private:
   std::vector<Real> knots_;
   std::vector<segment_type> segments_;
+  std::array<Real, 2> rounding_bound_{};
   Real scale_{};
 };
 

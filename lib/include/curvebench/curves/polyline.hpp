@@ -19,6 +19,7 @@
 #include "curvebench/core/real.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -56,6 +57,7 @@ class polyline {
     check_vertices();
     params_.reserve(vertices_.size());
     for (std::size_t i = 0; i < vertices_.size(); ++i) params_.push_back(from_int<Real>(static_cast<long long>(i)));
+    build_rounding_bounds();
   }
 
   /// Vertices at the given parameters (one per vertex, finite, strictly increasing).
@@ -64,6 +66,7 @@ class polyline {
     check_vertices();
     validate::same_count("parameters", params_.size(), "vertices", vertices_.size());
     validate::increasing<Real>("parameters", params_);
+    build_rounding_bounds();
   }
 
   [[nodiscard]] interval<Real> domain() const { return {params_.front(), params_.back()}; }
@@ -84,19 +87,11 @@ class polyline {
 
   [[nodiscard]] point_type operator()(const Real& u) const { return derivative(u, 0); }
 
-  /// Upper bound on the rounding of P (order 0) or P' (order 1) over the domain (see the header);
-  /// 0 for higher orders (exact zeros). O(n).
+  /// Upper bound on the rounding of P (order 0) or P' (order 1) over the domain (see the header),
+  /// computed at construction; 0 for higher orders (exact zeros).
   [[nodiscard]] Real rounding_bound(int order) const {
     if (order < 0) return std::numeric_limits<Real>::infinity();
-    Real b(0);
-    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
-      if (order == 0)
-        b = std::max(b, Real(3) * epsilon<Real>() * (safe_norm(vertices_[i]) + safe_norm(vertices_[i + 1])));
-      else if (order == 1)
-        b = std::max(b, Real(2) * epsilon<Real>() * safe_norm(point_type(vertices_[i + 1] - vertices_[i])) /
-                            (params_[i + 1] - params_[i]));
-    }
-    return b * (Real(101) / Real(100));
+    return order <= 1 ? rounding_bound_[static_cast<std::size_t>(order)] : Real(0);
   }
 
   /// d^order P / du^order: the value (order 0), the segment slope (order 1), zero (order >= 2).
@@ -114,6 +109,17 @@ class polyline {
   }
 
  private:
+  void build_rounding_bounds() {
+    Real b0(0), b1(0);
+    for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
+      b0 = std::max(b0, Real(3) * epsilon<Real>() * (safe_norm(vertices_[i]) + safe_norm(vertices_[i + 1])));
+      b1 = std::max(b1, Real(2) * epsilon<Real>() * safe_norm(point_type(vertices_[i + 1] - vertices_[i])) /
+                            (params_[i + 1] - params_[i]));
+    }
+    const Real margin = Real(101) / Real(100);
+    rounding_bound_ = {b0 * margin, b1 * margin};
+  }
+
   void check_vertices() const {
     validate::count_at_least("vertices", vertices_.size(), 2, "a polyline has at least one segment");
     validate::finite_points<Real, Dim>("vertices", vertices_);
@@ -121,6 +127,7 @@ class polyline {
 
   point_list<Real, Dim> vertices_;
   std::vector<Real> params_;
+  std::array<Real, 2> rounding_bound_{};
 };
 
 }  // namespace curvebench
