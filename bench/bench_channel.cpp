@@ -105,12 +105,11 @@ void solver_benchmark(benchmark::State& state, const std::vector<cbc::key<double
     for (std::size_t j = 0; j < ts.size(); ++j) {
       using std::abs;
       worst = std::max(worst, static_cast<double>(abs(cb::real50(c.value(ts[j])) - truth[j])) / unit);
-      const auto it = std::upper_bound(kd.begin(), kd.end(), td[j], [](double x, const auto& k) { return x < k.time; });
-      const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - kd.begin()), kd.size() - 1) - 1;
-      const auto& k0 = c.keys()[i];
-      const auto& k1 = c.keys()[i + 1];
-      const cbc::time_cubic<Real> cubic{k0.time, Real(k0.time + k0.out.dt), Real(k1.time + k1.in.dt), k1.time};
-      iterations += cbc::solve_time(solver, cubic, ts[j]).iterations;
+      const auto ks = c.keys();
+      const auto it = std::upper_bound(ks.begin(), ks.end(), ts[j], [](const Real& x, const auto& k) { return x < k.time; });
+      const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - ks.begin()), ks.size() - 1) - 1;
+      if (ts[j] >= c.keys()[i + 1].time) continue;  // the segment's end: no inversion
+      iterations += cbc::solve_time(solver, c.segment_time_cubic(i), Real(ts[j] - c.keys()[i].time)).iterations;
     }
     cbb::set_counter(state, vocab::counters::max_err_range_eps, worst);
     cbb::set_counter(state, vocab::counters::iterations, iterations / static_cast<double>(ts.size()));

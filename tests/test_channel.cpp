@@ -651,3 +651,35 @@ TEST(channel, validation_names_key_field_and_value) {
               }),
               HasSubstr("order = 3"));
 }
+
+TEST(channel, keys_far_from_time_zero_keep_their_digits) {
+  // Keys at frame 1e5 with handle lengths that are not binary fractions (0.45 of a frame): the
+  // absolute control time 100003.45 rounds by ulp(1e5) / 2 = 7e-12, which would move u by about
+  // that much and the value by 1e-12 (1800 ulps of this channel's range). The channel inverts the
+  // control times relative to the segment's start, so the error stays at rounding level: 4 ulps of
+  // the value range in double (the solver's bound), as near time 0.
+  for (double start : {0.0, 1e5, 1e7}) {
+    std::vector<ch::key<double>> keys;
+    for (int i = 0; i < 6; ++i) {
+      const double v = std::sin(0.37 * i) + std::sin(1.91 * i) / 2;
+      const double a = i % 2 == 0 ? 0.25 : 0.45, c = i % 2 == 0 ? 0.45 : 0.25;
+      keys.push_back({start + i, v, {-c, -0.3 * c}, {a, 0.7 * a}, ch::interpolation::bezier});
+    }
+    const ch::channel<double> d(keys, ch::extrapolation::constant, ch::extrapolation::constant, ch::time_solver::curvebench);
+    std::vector<ch::key<real50>> k50;
+    for (const auto& k : keys)
+      k50.push_back({real50(k.time), real50(k.value), {real50(k.in.dt), real50(k.in.dv)},
+                     {real50(k.out.dt), real50(k.out.dv)}, k.interp});
+    const ch::channel<real50> exact(k50, ch::extrapolation::constant, ch::extrapolation::constant, ch::time_solver::exact);
+    double lo = 1e300, hi = -1e300, worst = 0;
+    std::vector<double> errors;
+    for (int j = 0; j <= 2000; ++j) {
+      const double t = start + 5.0 * j / 2000;
+      const real50 truth = exact.value(real50(t));
+      lo = std::min(lo, static_cast<double>(truth)), hi = std::max(hi, static_cast<double>(truth));
+      errors.push_back(static_cast<double>(abs(real50(d.value(t)) - truth)));
+    }
+    for (double e : errors) worst = std::max(worst, e / (std::numeric_limits<double>::epsilon() * (hi - lo)));
+    EXPECT_LE(worst, 4) << "keys starting at " << start;
+  }
+}

@@ -60,7 +60,9 @@
 // from_string<interpolation> / from_string<extrapolation> use lowercase snake_case names.
 // Evaluating at a non-finite time throws std::domain_error.
 // Algorithm and sources: binary search of the key times; Bezier and Hermite segments in Bernstein
-// form by de Casteljau (Farin, Curves and Surfaces for CAGD); the inversion by the chosen solver;
+// form by de Casteljau (Farin, Curves and Surfaces for CAGD); the inversion by the chosen solver on
+// the control times relative to the segment's start (segment_time_cubic), so keys at frame 1e5
+// keep the accuracy they have near 0;
 // extrapolation by fmod of the time. Derived from the definitions above, no tool's code.
 // Cost: O(n) construction, O(log n) search plus the solver's cost (bezier only) per evaluation; no
 // allocation when evaluating (evaluate() writes into the caller's span).
@@ -247,6 +249,18 @@ class channel {
   [[nodiscard]] extrapolation after() const { return data_->after; }
   [[nodiscard]] time_solver solver() const { return data_->solver; }
   [[nodiscard]] std::size_t segment_count() const { return data_->segments.size(); }
+  /// The time cubic that segment i (a bezier segment) inverts: its control times relative to
+  /// keys()[i].time, {0, out.dt, (t_{i+1} - t_i) + in.dt, t_{i+1} - t_i}; a time t in the segment is
+  /// solved as t - keys()[i].time. invalid_input for an index out of range or another interpolation.
+  [[nodiscard]] time_cubic<Real> segment_time_cubic(std::size_t i) const {
+    if (i >= data_->segments.size())
+      validate::fail("segment = " + std::to_string(i) + ": the channel has " + std::to_string(data_->segments.size()) +
+                     " segments");
+    const auto& s = data_->segments[i];
+    if (s.kind != interpolation::bezier)
+      validate::fail("segment = " + std::to_string(i) + ": is " + to_string(s.kind) + ", not bezier (no time cubic)");
+    return {s.rel[0], s.rel[1], s.rel[2], s.rel[3]};
+  }
   /// The planar-curve view P(u) = (t(u), v(u)) (shares the channel's data).
   [[nodiscard]] channel_curve<Real> curve() const { return channel_curve<Real>(data_); }
 
@@ -358,12 +372,13 @@ channel<Real>::channel(std::vector<key<Real>> keys, extrapolation before, extrap
     const Real h = k1.time - k0.time;
     if (k0.interp == interpolation::bezier) {
       s.t = {k0.time, k0.time + k0.out.dt, k1.time + k1.in.dt, k1.time};
+      s.rel = {Real(0), k0.out.dt, Real(h + k1.in.dt), h};
       s.v = {k0.value, k0.value + k0.out.dv, k1.value + k1.in.dv, k1.value};
       validate::finite(key_field(i, "time + out.dt"), s.t[1]);
       validate::finite(key_field(i + 1, "time + in.dt"), s.t[2]);
       validate::finite(key_field(i, "value + out.dv"), s.v[1]);
       validate::finite(key_field(i + 1, "value + in.dv"), s.v[2]);
-      if (detail::time_handles_regress(s.t[0], s.t[1], s.t[2], s.t[3]))
+      if (detail::time_handles_regress(s.rel[0], s.rel[1], s.rel[2], s.rel[3]))
         validate::fail(key_field(i, "out") + " = (" + to_text(k0.out.dt) + ", " + to_text(k0.out.dv) + ") and " +
                        key_field(i + 1, "in") + " = (" + to_text(k1.in.dt) + ", " + to_text(k1.in.dv) +
                        "): the handles of segment " + std::to_string(i) + " [" + to_text(k0.time) + ", " +

@@ -35,7 +35,7 @@
 // as 2 atan2(| |w| v_k - |v_k| w |, | |w| v_k + |v_k| w |) (Kahan's angle between vectors), which
 // is accurate for small angles where the spec's arccos(|v_k . v_{k+1}|) loses half the digits;
 // at a = 0 slerp is the lerp it tends to. Both are the spec's formula computed differently, which
-// the spec allows ("implementations MAY approximate these equations").
+// the spec allows (it lets implementations approximate its equations).
 // Validation: invalid_input naming the field and index (input[i], output[i] with the key and its
 // role) for too few keys, non-finite numbers, negative or out-of-order or duplicate times, spans
 // too narrow to resolve (validate::resolvable), output counts that do not match, and rotation

@@ -17,17 +17,17 @@
 // menu", docs/references.md). n = the number of keys, d_l and d_r = the chord slopes to the
 // previous and the next key (v_i - v_{i-1}) / (t_i - t_{i-1}) and (v_{i+1} - v_i) / (t_{i+1} - t_i):
 // - fixed: y / x of the given vector.
-// - linear: "a straight line joining two keys": in = d_l, out = d_r; an end key's missing side
+// - linear: the tangent lies along the straight line to the neighbouring key: in = d_l, out = d_r; an end key's missing side
 //   takes the other side's chord.
 // - flat: 0.
 // - step (out side): the key's value holds until the next key (channel constant); step_next (out
 //   side): the next key's value from just after the key (channel step_next). Only the segment's
 //   start key's out type makes a segment stepped; a step or step_next in tangent has slope 0.
-// - spline: "smooth between the key before and the key after", both tangents co-linear: the slope
+// - spline: a smooth pass from the previous key to the next, both tangents co-linear: the slope
 //   of the chord through the two neighbours, (v_{i+1} - v_{i-1}) / (t_{i+1} - t_{i-1})
 //   (Catmull-Rom-like); an end key takes the chord to its only neighbour.
-// - clamped: "splines unless the value of two adjacent keys are very close; then the out tangent
-//   of the first key and the in tangent of the second are interpolated as linear": per side, when
+// - clamped: spline, except where two neighbouring keys have (nearly) the same value, where the
+//   tangents between them become linear (the Help describes it so): per side, when
 //   |v_i - v_j| <= clamp_tolerance * max(1, |v_i|, |v_j|) for the neighbour j on that side, that
 //   side's slope is the chord to j (0 for equal values), else the spline slope. Maya does not
 //   publish its tolerance; maya_curve::clamp_tolerance (default 0: equal values only) makes it an
@@ -39,9 +39,9 @@
 //   limited to 3 min(|d_l|, |d_r|), which by Fritsch and Carlson's condition keeps each Hermite
 //   segment between two such keys monotone, so the curve never overshoots its keys (Maya's exact
 //   limiter is not published).
-// - auto (spelled auto_ in C++, "auto" in to_string): Maya Help's Auto Span (legacy) description,
-//   "first and last keyframes have flat tangents, keyframes in between do not overshoot the
-//   neighbouring keyframe value": in this model the same rule as plateau. Auto Ease / Mix / Custom
+// - auto (spelled auto_ in C++, "auto" in to_string): Maya Help's (legacy) auto tangents: flat at
+//   the first and last key, and interior keys that never overshoot their neighbours' values; in
+//   this model the same rule as plateau. Auto Ease / Mix / Custom
 //   are not modelled.
 // Segments: a non-weighted curve's segment is the cubic Hermite polynomial in time with the two
 // slopes (the handles' lengths ignored; channel hermite, handles at thirds). A weighted curve's
@@ -54,8 +54,8 @@
 // in time but are still monotone are corrected too (the rule looks at a + c only).
 // Infinity (pre before the first key, post after the last; Maya Help "Pre and Post Infinity"):
 // constant (the end key's value), linear (the end key's tangent facing out of the keyed range: the
-// first key's in tangent, the last key's out tangent, "extrapolates the value ... using its
-// tangent information"; a step type there is slope 0), cycle, cycle_relative ("Cycle with Offset",
+// first key's in tangent, the last key's out tangent: the Help says linear infinity continues
+// along the end key's tangent; a step type there is slope 0), cycle, cycle_relative (Cycle with Offset,
 // channel cycle_offset) and oscillate (channel oscillate). Linear infinity is evaluated here from
 // the end key's own tangent; the other modes are the channel's. A one-key curve is constant under
 // every mode (the channel's rule).

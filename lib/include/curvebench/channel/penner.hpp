@@ -9,8 +9,9 @@
 //   out     b + c - E(d - t)                      (the point reflection of in)
 //   in_out  b + E2(2t) / 2 for t < d/2, else b + c - E2(2d - 2t) / 2, where E2 is E with back
 //           multiplied by 1.525 and elastic's default period 0.45 d (Penner's easeInOut constants)
-//   automatic  out for back, bounce and elastic, in for the others (Blender's AUTO easing: "Ease In
-//           for transitional types, and Ease Out for dynamic effects", Blender's API reference).
+//   automatic  out for back, bounce and elastic, in for the others (Blender's AUTO easing, which its
+//           API reference describes as ease-in for the transition families and ease-out for the
+//           dynamic ones).
 // With x = t / d the in offsets are E = c G(x):
 //   sine 1 - cos(pi x / 2); quad .. quint x^2 .. x^5; circ 1 - sqrt(1 - x^2);
 //   back x^2 ((s + 1) x - s), s = back (any finite value; 0 gives x^3; Blender's keys inserted

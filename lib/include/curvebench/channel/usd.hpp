@@ -267,14 +267,16 @@ template <class Real>
   validate::fail("anti-regression mode = " + std::to_string(static_cast<int>(mode)) + ": not a usd_anti_regression");
 }
 
-// A limited segment lies on the ellipse up to rounding, and its rounded control times
-// (t0, t0 + w0, t1 - w1, t1) may then fail the channel's monotonicity check by a few ulps. Settle
+// A limited segment lies on the ellipse up to rounding, and its rounded control times relative
+// to the segment's start (0, w0, h - w1, h), h = t1 - t0, which the channel checks, may then fail
+// the channel's monotonicity check by a few ulps. Settle
 // moves the widths inside by 2 eps relative per step (scaled widths shrink, an end moved to the
 // upper edge shrinks, one moved to the lower edge grows) until the check passes; a few steps.
 template <class Real>
 void usd_settle(int how, Real& w0, Real& w1, const Real& t0, const Real& t1) {
   const Real step = Real(2) * epsilon<Real>();
-  for (int i = 0; i < 64 && how != 0 && time_handles_regress(t0, Real(t0 + w0), Real(t1 - w1), t1); ++i) {
+  const Real h = t1 - t0;
+  for (int i = 0; i < 64 && how != 0 && time_handles_regress(Real(0), w0, Real(h + Real(-w1)), h); ++i) {
     if (how == 1) w0 *= Real(1) - step;
     if (how == 1 || how == 2) w1 *= Real(1) - step;
     if (how == 3) w1 *= Real(1) + step;

@@ -42,18 +42,24 @@ template <class Real>
 /// hermite t[0], t[3], the Bernstein values v0, v0 + m0 h / 3, v3 - m1 h / 3, v3 (t[1], t[2]
 /// unused: time is linear) and the slopes m0, m1 themselves (dv/dt at the keys, exactly); for linear, constant and
 /// step_next t[0], t[3] and v[0], v[3].
+/// For bezier, rel holds the control times relative to the segment's start, {0, out.dt, (t3 - t0)
+/// + in.dt, t3 - t0}: the time inversion and the time derivatives work on them, so that keys far
+/// from time 0 (frame 1e5) lose nothing to the rounding of absolute control times (which would
+/// shift u by ulp(t) / h: about 1e-11 of the interval at frame 1e5 in double).
 template <class Real>
 struct segment {
   interpolation kind;
   std::array<Real, 4> t;
   std::array<Real, 4> v;
   Real m0{0}, m1{0};  // hermite: the end slopes as given (exact at the keys, not via v1, v2)
+  std::array<Real, 4> rel{};  // bezier: control times relative to t[0] (see above)
 
   [[nodiscard]] Real span() const { return t[3] - t[0]; }
 
-  /// The time coordinate's order-th derivative at local parameter w.
+  /// The time coordinate's order-th derivative at local parameter w (order 0 absolute, exact at
+  /// both ends; the derivatives from the relative control times).
   [[nodiscard]] Real time_at(const Real& w, int order) const {
-    if (kind == interpolation::bezier) return bernstein3_any(t, w, order);
+    if (kind == interpolation::bezier) return order == 0 ? bernstein3_any(t, w, 0) : bernstein3_any(rel, w, order);
     if (order == 0) return (Real(1) - w) * t[0] + w * t[3];  // exact at both ends
     return order == 1 ? span() : Real(0);
   }
@@ -79,7 +85,8 @@ struct segment {
 
   /// The local parameter at time t in [t[0], t[3]]: the solver's root for bezier, else linear.
   [[nodiscard]] Real local(const Real& time, time_solver solver) const {
-    if (kind == interpolation::bezier) return solve_time(solver, time_cubic<Real>{t[0], t[1], t[2], t[3]}, time).u;
+    if (kind == interpolation::bezier)
+      return solve_time(solver, time_cubic<Real>{rel[0], rel[1], rel[2], rel[3]}, Real(time - t[0])).u;
     if (time == t[3]) return Real(1);
     return std::clamp((time - t[0]) / span(), Real(0), Real(1));
   }
