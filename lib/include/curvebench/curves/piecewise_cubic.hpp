@@ -7,7 +7,7 @@
 // coordinate), matrix (T · M · G per call, the textbook form), bezier (de Casteljau, 6 lerps).
 // Derivatives of order <= 3 exact by the chain rule h_i^-k; higher orders zero. Segment lookup O(1)
 // for uniform knots (index corrected against the neighbours); for other knots O(1) expected: an
-// index of n uniform buckets over the domain, built at construction, holds each bucket's first
+// index of 2n uniform buckets over the domain, built at construction, holds each bucket's first
 // segment, and a binary search over the few knots of the bucket (corrected against the neighbours
 // at the bucket's edges) finishes: the segment is the same as a binary search over all knots at
 // every u. evaluate_batch and evaluate_sorted (non-decreasing parameters; the default power
@@ -476,14 +476,19 @@ class piecewise_cubic {
       // Bucket b's segments are bucket_first_[b] .. bucket_first_[b + 1]; rounding of x may put u
       // just outside them, so widen the range until knots[lo] <= u < knots[hi + 1] (or the ends):
       // then every interior knot up to lo is <= u, every one past hi is > u, and the search over
-      // knots lo + 1 .. hi counts the rest, as the binary search over all knots would.
+      // knots lo + 1 .. hi counts the rest, as the binary search over all knots would. (hi is
+      // needed only when u is past the second knot of the range.)
       const Real x = (u - lo_) * inv_bucket_width_;  // >= 0 as in the uniform case
-      const std::size_t b = x < last_real_ ? to_index(x) : last_;  // n buckets, as many as segments
-      std::size_t lo = bucket_first_[b], hi = bucket_first_[b + 1];
+      const std::size_t b = x < bucket_last_real_ ? to_index(x) : bucket_last_;
+      std::size_t lo = bucket_first_[b];
       while (u < lookup_[lo].left) --lo;
+      // Most buckets hold at most one knot: step over it without a branch (right is +inf at the
+      // last segment, so i stays a segment), and search only when more knots remain below u.
+      const std::size_t i = lo + static_cast<std::size_t>(!(u < lookup_[lo].right));
+      if (u < lookup_[i].right) return i;
+      std::size_t hi = bucket_first_[b + 1];  // u >= right at i, so hi ends above i
       while (!(u < lookup_[hi].right)) ++hi;
-      if (lo == hi) return lo;
-      const auto it = std::upper_bound(knots_.begin() + static_cast<std::ptrdiff_t>(lo) + 1,
+      const auto it = std::upper_bound(knots_.begin() + static_cast<std::ptrdiff_t>(i) + 1,
                                        knots_.begin() + static_cast<std::ptrdiff_t>(hi) + 1, u);
       return static_cast<std::size_t>(it - knots_.begin()) - 1;
     }
@@ -496,24 +501,28 @@ class piecewise_cubic {
     return static_cast<std::size_t>(it - knots_.begin()) - 1;
   }
 
-  // The bucket index of non-uniform knots: n buckets of equal width over the domain, bucket b's
-  // first segment the one holding its left edge u0 + b w (the last entry: the last segment). Any
-  // rounding in the edges only widens a lookup's range (locate), never changes its answer.
+  // The bucket index of non-uniform knots: 2n buckets of equal width w over the domain (so that
+  // most hold at most one knot), bucket b's first segment the one holding its left edge u0 + b w
+  // (the last entry: the last segment). Any rounding in the edges only widens a lookup's range
+  // (locate), never changes its answer.
   void build_buckets() {
     bucket_first_.clear();
     const std::size_t n = h_.size();
-    if (uniform_ || n < 2 || n >= std::size_t(std::numeric_limits<std::uint32_t>::max())) return;
-    const Real width = (knots_.back() - knots_.front()) / Real(static_cast<long long>(n));
-    inv_bucket_width_ = Real(static_cast<long long>(n)) / (knots_.back() - knots_.front());
+    if (uniform_ || n < 2 || n >= std::size_t(std::numeric_limits<std::uint32_t>::max() / 2)) return;
+    const std::size_t buckets = 2 * n;
+    const Real width = (knots_.back() - knots_.front()) / Real(static_cast<long long>(buckets));
+    inv_bucket_width_ = Real(static_cast<long long>(buckets)) / (knots_.back() - knots_.front());
     if (!is_finite(inv_bucket_width_) || !(width > Real(0))) return;
-    bucket_first_.resize(n + 1);
+    bucket_last_ = buckets - 1;
+    bucket_last_real_ = Real(static_cast<long long>(bucket_last_));
+    bucket_first_.resize(buckets + 1);
     std::size_t i = 0;
-    for (std::size_t b = 0; b < n; ++b) {
+    for (std::size_t b = 0; b < buckets; ++b) {
       const Real edge = knots_.front() + Real(static_cast<long long>(b)) * width;
       while (i < n - 1 && !(edge < knots_[i + 1])) ++i;
       bucket_first_[b] = static_cast<std::uint32_t>(i);
     }
-    bucket_first_[n] = static_cast<std::uint32_t>(n - 1);
+    bucket_first_[buckets] = static_cast<std::uint32_t>(n - 1);
   }
 
   [[nodiscard]] static std::size_t to_index(const Real& x) {
@@ -616,8 +625,10 @@ class piecewise_cubic {
   std::vector<lookup_record> lookup_;
   std::size_t last_ = 0;  // segment_count() - 1
   Real last_real_ = Real(0);
-  std::vector<std::uint32_t> bucket_first_;  // non-uniform knots: n + 1 entries (build_buckets)
+  std::vector<std::uint32_t> bucket_first_;  // non-uniform knots: 2n + 1 entries (build_buckets)
   Real inv_bucket_width_ = Real(1);
+  std::size_t bucket_last_ = 0;  // the number of buckets - 1
+  Real bucket_last_real_ = Real(0);
   std::array<Real, 2> rounding_bound_{};
 };
 
