@@ -11,7 +11,7 @@
 // float runtime), and the solver's mean iterations per value (counter iterations).
 // The tools' models of the 64 keys (harness/channel_models.hpp: Maya, USD, Blender in float,
 // glTF) are timed with calls:single beside them.
-// Names: channel_value/<solver | tool model>/keys:N/bits:B/calls:<single | sorted>.
+// Names: channel_value/<solver | tool model>/keys:N/bits:B/calls:<single | sorted>/timing:throughput.
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/reference/multiprecision.hpp"
 
@@ -150,9 +150,9 @@ const int registered = [] {
       const vocab::method& m = *vocab::time_solver_methods[s];
       for (const char* calls : {"single", "sorted"}) {
         const bool sorted = calls[1] == 'o';
-        cbb::register_benchmark(cbb::benchmark_name(family, m).arg("keys", keys).arg("bits", 64).variant(vocab::variant_keys::calls, calls),
+        cbb::register_benchmark(cbb::benchmark_name(family, m).arg("keys", keys).arg("bits", 64).variant(vocab::variant_keys::calls, calls).variant(vocab::variant_keys::timing, "throughput"),
                                 [d = *data, solver, sorted](benchmark::State& st) { solver_benchmark<double>(st, d, solver, sorted); });
-        cbb::register_benchmark(cbb::benchmark_name(family, m).arg("keys", keys).arg("bits", 32).variant(vocab::variant_keys::calls, calls),
+        cbb::register_benchmark(cbb::benchmark_name(family, m).arg("keys", keys).arg("bits", 32).variant(vocab::variant_keys::calls, calls).variant(vocab::variant_keys::timing, "throughput"),
                                 [d = *data, solver, sorted](benchmark::State& st) { solver_benchmark<float>(st, d, solver, sorted); });
       }
     }
@@ -163,7 +163,8 @@ const int registered = [] {
     cbb::register_benchmark(cbb::benchmark_name(family, *model_algorithm(model.name))
                                 .arg("keys", static_cast<long long>(k64.size()))
                                 .arg("bits", model.name == "blender" ? 32 : 64)
-                                .variant(vocab::variant_keys::calls, "single"),
+                                .variant(vocab::variant_keys::calls, "single")
+                                .variant(vocab::variant_keys::timing, "throughput"),
                             [at = model.at, ts](benchmark::State& st) { model_benchmark(st, at, ts); });
   return 0;
 }();

@@ -6,7 +6,7 @@
 //   uniform_bspline_1d  ours (bspline on uniform knots, Dim 1)      vs Boost.Math cardinal_cubic_b_spline
 // B-splines are also measured after to_piecewise_cubic() (the shared engine: O(1) lookup on uniform
 // knots, power form), which is what a user evaluating a cubic B-spline many times should do.
-// Names: family/algorithm/points:N/queries:random|sorted, the algorithm one of ours (power,
+// Names: family/algorithm/timing:throughput/points:N/queries:random|sorted, the algorithm one of ours (power,
 // de_boor, to_piecewise_cubic) or a peer id (vocabulary.hpp, "peer_<library>_<what>"), so
 // scripts/report.py reports each of ours as a ratio to each peer measured in the same run.
 // Parameters are precomputed (1024 per curve) and evaluated one call each, in both orders: operation
@@ -62,8 +62,7 @@ void run(benchmark::State& state, const std::vector<double>& us, F&& eval) {
   for (auto _ : state) {
     for (double u : us) {
       auto p = eval(u);
-      benchmark::DoNotOptimize(&p);
-      benchmark::ClobberMemory();
+      benchmark::DoNotOptimize(p);  // the value must be computed; no memory to flush per evaluation
     }
   }
   curvebench::bench::per_operation(state, curvebench::harness::vocab::operations::evaluation,
@@ -191,6 +190,7 @@ void add(std::string_view family, const auto& id, F fn) {
   for (bool sorted : {false, true}) {
     const shape a{1000, sorted};
     curvebench::bench::register_benchmark(curvebench::bench::benchmark_name(family, id)
+                                              .variant(curvebench::harness::vocab::variant_keys::timing, "throughput")
                                               .arg("points", a.points)
                                               .arg("queries", sorted ? "sorted" : "random"),
                                           [fn, a](benchmark::State& s) { fn(s, a); });

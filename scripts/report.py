@@ -101,6 +101,35 @@ def speed_section(rows, vocab):
     return "\n".join(lines)
 
 
+def floor_section(rows, vocab):
+    """Each row beside the floors timed in the same run on the same data (algorithm ids starting with
+    "floor_" in the vocabulary: the simplest correct hand-written kernel for the same work) with the
+    same call pattern and timing (calls:, timing:): time per operation, its ratio to each floor,
+    FLOPs per operation (the flops counter, per evaluation, never per batch) and the FLOP rate."""
+    floor_ids = {a for a in vocab.algorithms if a.startswith("floor_")}
+    body = []
+    for (family, operation, data), rs in sorted(lib.speed_groups(rows, vocab).items(),
+                                                key=lambda kv: (kv[0][0], kv[0][1], natural_key(lib.args_text(kv[0][2])))):
+        floors = [r for r in rs if r["algorithm"] in floor_ids]
+        for r in sorted(rs, key=lambda r: (r["algorithm"] in floor_ids, natural_key(lib.display_algorithm(r, vocab)))):
+            mine = [f for f in floors if f is not r and lib.variant_args(f, vocab) == lib.variant_args(r, vocab)]
+            if not mine:
+                continue
+            ratios = ", ".join(f"{f['algorithm']}: {fmt(r['ns_per_op'] / f['ns_per_op'])}"
+                               for f in sorted(mine, key=lambda f: f["algorithm"]))
+            flops = r["counters"].get("flops")
+            rate = f"{fmt(flops / r['ns_per_op'])}" if isinstance(flops, (int, float)) and flops > 0 else "-"
+            body.append([family, lib.args_text(data) or "-", lib.display_algorithm(r, vocab), r["ns_per_op"],
+                         ratios, flops if flops is not None else "-", rate])
+    if not body:
+        return "No benchmark has a floor row."
+    return ("Each row against the floors timed in the same run on the same data with the same call pattern "
+            "and timing (throughput: independent evaluations; latency: a dependent chain). A ratio near 1 "
+            "means the kernel runs at the speed of the simplest hand-written code for the same work.\n\n"
+            + table(["family", "data", "algorithm", "ns per operation", "x floor", "FLOPs per operation",
+                     "GFLOP/s"], body))
+
+
 def fastest_at_target(rows, vocab):
     out = []
     for t in lib.fastest_at_targets(rows, vocab):
@@ -339,6 +368,8 @@ def main():
             md.append("")
         md += ["", "### Fastest at an error target (benchmarks with a relative error counter)", ""]
         md.append(fastest_at_target(bench_rows, vocab))
+        md += ["", "### Against the floor (hand-written kernels for the same work)", ""]
+        md.append(floor_section(bench_rows, vocab))
         md += ["", "### All benchmarks", ""]
         md.append(speed_section(bench_rows, vocab))
     else:

@@ -1,16 +1,25 @@
 // piecewise_cubic engine: the three algorithms (power/Horner, matrix T·M·G, Bezier/de Casteljau)
 // against a closed-form cubic and against the real50 instantiation of the same data, chain rule
-// for derivatives, segment lookup (uniform O(1) path and binary search), batched and sorted
-// evaluation, continuity of Hermite assembly, and bad input.
+// for derivatives, segment lookup (uniform O(1) path and the bucket index, both against a binary
+// search at every knot, its float neighbours and random points), batched and sorted evaluation
+// (the sorted power path bit-identical to single calls), continuity of Hermite assembly, and bad
+// input.
 #include "support/accuracy.hpp"
 
 #include "curvebench/curves/piecewise_cubic.hpp"
 
 #include <gmock/gmock.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <random>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace cb = curvebench;
@@ -338,4 +347,164 @@ TEST(engine, bad_input_is_rejected_with_a_message) {
   const pc c({0.0, 1.0}, {g}, cb::basis::hermite_matrix<double>());
   EXPECT_THROW((void)c(1.5), std::domain_error);
   EXPECT_THAT(msg([&] { (void)c.derivative(0.5, -1); }), HasSubstr("order = -1"));
+}
+
+namespace {
+
+// Knot sets on which the lookup must agree with a binary search: uniform (also far from the origin,
+// where u0 + i h rounds), one knot moved by an ulp, random non-uniform, highly non-uniform (interval
+// ratio 1e4: random log-uniform widths, and a cluster of 1e4-times shorter intervals in the middle,
+// so that one bucket holds many segments), and the smallest cases (1 and 2 segments).
+template <class Real>
+std::vector<std::pair<std::string, std::vector<Real>>> lookup_knot_sets() {
+  std::vector<std::pair<std::string, std::vector<Real>>> sets;
+  std::mt19937_64 rng(2024);
+  sets.emplace_back("uniform 64", cb::uniform_knots<Real>(64, Real(-2), Real(0.3)));
+  sets.emplace_back("uniform 4096", cb::uniform_knots<Real>(4096));
+  sets.emplace_back("uniform 100 far from 0", cb::uniform_knots<Real>(100, Real(1000), Real(0.125)));
+  auto near = cb::uniform_knots<Real>(50, Real(0), Real(0.1));
+  near[17] = std::nextafter(near[17], Real(10));
+  sets.emplace_back("uniform, one knot moved an ulp", near);
+  sets.emplace_back("one segment", std::vector<Real>{Real(-1), Real(3)});
+  sets.emplace_back("two segments", std::vector<Real>{Real(0), Real(0.001), Real(10)});
+  // float resolves no interval below 2^8 ulps of the knots (validate::resolvable), so its widest
+  // ratio over many segments is 1e2 (and only on 64 segments); double takes 1e4 on 4096.
+  constexpr bool is_float = std::is_same_v<Real, float>;
+  const double small = is_float ? 1e-2 : 1e-4;
+  // Adversarial for the bucket index: interior knots exactly at, or one ulp either side of, the
+  // edges u0 + b (u1 - u0) / n of its n buckets (the engine's own formula), where rounding in the
+  // bucket of u decides between neighbours; every 8th knot moved to the middle of its bucket so
+  // that the knots are not uniform.
+  for (std::size_t n : {64u, 1000u}) {
+    const Real u0 = Real(0.1), u1 = Real(7.3);
+    const Real width = (u1 - u0) / Real(static_cast<long long>(n));
+    std::vector<Real> e{u0};
+    for (std::size_t b = 1; b < n; ++b) {
+      Real x = u0 + Real(static_cast<long long>(b)) * width;
+      if (b % 8 == 0) x = x + width / Real(2);
+      else if (b % 3 == 1) x = std::nextafter(x, u1);
+      else if (b % 3 == 2) x = std::nextafter(x, u0);
+      e.push_back(x);
+    }
+    e.push_back(u1);
+    sets.emplace_back("knots at the bucket edges and an ulp off them, " + std::to_string(n), e);
+  }
+  std::uniform_real_distribution<double> step(0.25, 1.75), log_step(std::log10(small), 0.0);
+  for (std::size_t n : {64u, 4096u}) {
+    std::vector<Real> k{Real(0)};
+    for (std::size_t i = 0; i < n; ++i) k.push_back(k.back() + Real(step(rng)));
+    sets.emplace_back("random steps in [0.25, 1.75], " + std::to_string(n), k);
+    if (is_float && n > 64) continue;
+    std::vector<Real> r{Real(-5)};
+    for (std::size_t i = 0; i < n; ++i) r.push_back(r.back() + Real(std::pow(10.0, log_step(rng))));
+    sets.emplace_back("log-uniform steps in [" + std::to_string(small) + ", 1], " + std::to_string(n), r);
+    std::vector<Real> c{Real(0)};
+    for (std::size_t i = 0; i < n; ++i) c.push_back(c.back() + Real(i > n / 3 && i < 2 * n / 3 ? small : 1.0));
+    sets.emplace_back("a cluster of " + std::to_string(small) + " steps among steps of 1, " + std::to_string(n), c);
+  }
+  return sets;
+}
+
+// A curve on the knots with random Hermite data in Dim 3, so that a wrong segment changes values.
+template <class Real>
+cb::piecewise_cubic<Real, 3> random_engine(const std::vector<Real>& knots, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coord(-1.0, 1.0);
+  cb::point_list<Real, 3> v(knots.size()), s(knots.size());
+  for (std::size_t i = 0; i < knots.size(); ++i) {
+    v[i] = cb::point<Real, 3>(Real(coord(rng)), Real(coord(rng)), Real(coord(rng)));
+    s[i] = cb::point<Real, 3>(Real(coord(rng)), Real(coord(rng)), Real(coord(rng)));
+  }
+  return cb::piecewise_cubic<Real, 3>::from_hermite(knots, v, s, s);
+}
+
+// The parameters to check on knots k: every knot, both float neighbours of each (those inside the
+// domain), and random points, sorted.
+template <class Real>
+std::vector<Real> lookup_parameters(const std::vector<Real>& k, std::size_t random_count) {
+  std::vector<Real> us;
+  for (const Real& x : k) {
+    us.push_back(x);
+    const Real below = std::nextafter(x, -std::numeric_limits<Real>::infinity());
+    const Real above = std::nextafter(x, std::numeric_limits<Real>::infinity());
+    if (below >= k.front()) us.push_back(below);
+    if (above <= k.back()) us.push_back(above);
+  }
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<Real> u(k.front(), k.back());
+  for (std::size_t j = 0; j < random_count; ++j) us.push_back(u(rng));
+  std::sort(us.begin(), us.end());
+  return us;
+}
+
+template <class Real>
+class lookup_test : public ::testing::Test {};
+using lookup_reals = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(lookup_test, lookup_reals);
+
+}  // namespace
+
+// The O(1) lookups (uniform index, bucket index) must be pure speed: the same segment as the
+// binary search over the knots (first interior knot > u, minus one) at every parameter, including
+// exactly at knots, one ulp either side and the domain ends; and the value at u must be that
+// segment's polynomial at t = (u - u_i) / h_i, bit for bit.
+TYPED_TEST(lookup_test, segment_lookup_equals_binary_search_at_knots_neighbours_and_random_points) {
+  using Real = TypeParam;
+  for (const auto& [name, k] : lookup_knot_sets<Real>()) {
+    const auto c = random_engine(k, 5);
+    const auto us = lookup_parameters(k, 20000);
+    for (const Real& u : us) {
+      const std::size_t want =
+          static_cast<std::size_t>(std::upper_bound(k.begin() + 1, k.end() - 1, u) - k.begin()) - 1;
+      ASSERT_EQ(c.segment_index(u), want) << name << ": u = " << std::hexfloat << u;
+      const Real t = (u - k[want]) / (k[want + 1] - k[want]);
+      ASSERT_EQ(c(u), c.evaluate_segment(want, t, 0)) << name << ": u = " << std::hexfloat << u;
+    }
+  }
+}
+
+// The sorted power path (per-segment runs, coefficients hoisted) computes what single calls do, in
+// the same order: bit-identical values, also with repeated parameters, runs that skip segments,
+// every knot and its neighbours, and both domain ends.
+TYPED_TEST(lookup_test, sorted_power_path_is_bit_identical_to_single_calls) {
+  using Real = TypeParam;
+  for (const auto& [name, k] : lookup_knot_sets<Real>()) {
+    const auto c = random_engine(k, 9);
+    for (std::size_t random_count : {std::size_t{3}, std::size_t{1024}, std::size_t{50000}}) {
+      auto us = lookup_parameters(k, random_count);
+      us.insert(us.begin() + static_cast<std::ptrdiff_t>(us.size() / 2), us[us.size() / 2]);  // a repeat
+      std::vector<cb::point<Real, 3>> out(us.size());
+      c.evaluate_sorted(us, out);
+      for (std::size_t j = 0; j < us.size(); ++j)
+        ASSERT_EQ(out[j], c(us[j])) << name << ": us[" << j << "] = " << std::hexfloat << us[j];
+      // A span that starts and ends inside the domain (not at its ends).
+      const std::size_t lo = us.size() / 3, hi = 2 * us.size() / 3;
+      std::span<const Real> part(us.data() + lo, hi - lo);
+      std::vector<cb::point<Real, 3>> out_part(part.size());
+      c.evaluate_sorted(part, out_part);
+      for (std::size_t j = 0; j < part.size(); ++j) ASSERT_EQ(out_part[j], out[lo + j]) << name << ": " << j;
+    }
+  }
+}
+
+// A descent or a parameter past u_n after a long sorted prefix still throws at its index with the
+// prefix written (the fast path checks first and hands bad input to the checked walk).
+TEST(engine, sorted_power_path_rejects_bad_input_at_its_index_with_the_prefix_written) {
+  const auto k = cb::uniform_knots<double>(64);
+  const auto c = random_engine(k, 3);
+  std::vector<double> us;
+  for (int j = 0; j < 500; ++j) us.push_back(0.125 * j);
+  std::vector<cb::point<double, 3>> out(us.size(), cb::point<double, 3>::Constant(7.0));
+  auto desc = us;
+  desc[300] = desc[299] - 1.0;
+  try {
+    c.evaluate_sorted(desc, out);
+    FAIL() << "descent accepted";
+  } catch (const cb::invalid_input& e) {
+    EXPECT_THAT(e.what(), HasSubstr("us[300]"));
+  }
+  for (std::size_t j = 0; j < 300; ++j) ASSERT_EQ(out[j], c(desc[j])) << j;
+  auto past = us;
+  past.back() = std::nextafter(64.0, 65.0);
+  EXPECT_THROW(c.evaluate_sorted(past, out), std::domain_error);
 }

@@ -233,6 +233,18 @@ inline constexpr algorithm blender_fcurve{"blender_fcurve", "bits",
                                           "channel: Blender's F-curve model of the keys (free handles, float32)"};
 inline constexpr algorithm gltf_sampler{"gltf_sampler", "bits",
                                         "channel: a glTF cubicspline sampler with the keys' handle slopes"};
+// Floors (ids start with "floor_"): the simplest correct hand-written kernel for the same work,
+// timed in the same run beside the library's rows; the report gives each row's ratio to them.
+inline constexpr algorithm floor_horner{"floor_horner", "",
+                                        "floor: scalar Horner on one flat array of power coefficients, t = (u - u_i) / "
+                                        "h_i, segment by the O(1) uniform index (uniform knots) or std::upper_bound, "
+                                        "no checks"};
+inline constexpr algorithm floor_soa_sorted{"floor_soa_sorted", "",
+                                            "floor: sorted batch, coefficients hoisted per segment, coordinates in "
+                                            "separate arrays (SoA) in and out, one branch-free loop per segment"};
+inline constexpr algorithm floor_store_stream{"floor_store_stream", "",
+                                              "floor: a store-only stream of the batch's output bytes (the memory "
+                                              "bound of a batch that does not fit in cache)"};
 }  // namespace algorithms
 
 inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
@@ -256,7 +268,10 @@ inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
                                                       &algorithms::maya_animcurve,
                                                       &algorithms::usd_spline,
                                                       &algorithms::blender_fcurve,
-                                                      &algorithms::gltf_sampler};
+                                                      &algorithms::gltf_sampler,
+                                                      &algorithms::floor_horner,
+                                                      &algorithms::floor_soa_sorted,
+                                                      &algorithms::floor_store_stream};
 
 /// A benchmark-name key whose value picks a variant of how the algorithm is called, not the data
 /// or the method's setting: the report ranks rows that differ only in these keys and in settings
@@ -275,10 +290,13 @@ inline constexpr variant_key estimate{"estimate", "none nested",
                                       "none: the rule alone; nested: with the nested estimate (fixed_estimate)"};
 inline constexpr variant_key api{"api", "newton_invert",
                                  "newton_invert: the solver called directly, not through the parameterization"};
+inline constexpr variant_key timing{"timing", "throughput latency",
+                                    "throughput: independent evaluations (parameters fixed in advance); latency: a "
+                                    "dependent chain (each parameter depends on the previous result)"};
 }  // namespace variant_keys
 
 inline constexpr const variant_key* all_variant_keys[] = {&variant_keys::calls, &variant_keys::estimate,
-                                                          &variant_keys::api};
+                                                          &variant_keys::api, &variant_keys::timing};
 
 /// A benchmark counter. Kinds: "error" (an error of the result, compared across methods),
 /// "estimate" (the method's own error estimate), "count" (per operation), "setting" (an input).
@@ -299,12 +317,16 @@ inline constexpr counter max_err_eps{"max_err_eps", "error", "max evaluation err
 inline constexpr counter max_err_range_eps{"max_err_range_eps", "error",
                                            "max channel value error in eps(Real) x the channel's value range"};
 inline constexpr counter estimate_rel{"estimate_rel", "estimate", "the method's own error estimate / L"};
+inline constexpr counter flops{"flops", "count",
+                               "floating-point operations per evaluation in the kernel's arithmetic, counted by "
+                               "hand (power: t's subtraction and division plus Horner's 6 per coordinate)"};
 }  // namespace counters
 
 inline constexpr const counter* all_counters[] = {&counters::evaluations, &counters::iterations,
                                                   &counters::table_intervals, &counters::rel_error,
                                                   &counters::max_ds_rel,      &counters::max_err_eps,
-                                                  &counters::max_err_range_eps, &counters::estimate_rel};
+                                                  &counters::max_err_range_eps, &counters::estimate_rel,
+                                                  &counters::flops};
 
 /// The method with this id, or nullptr.
 [[nodiscard]] constexpr const method* find_method(std::string_view id) {

@@ -226,10 +226,14 @@ class Join(unittest.TestCase):
 class ReportScript(unittest.TestCase):
     """report.py itself: per-operation speed tables, and exit 1 naming an unknown benchmark."""
 
-    def run_report(self, benchmarks):
+    def run_report(self, benchmarks, vocabulary=None):
         d = tempfile.mkdtemp()
         self.addCleanup(shutil.rmtree, d)
-        shutil.copy(os.path.join(FIXTURES, "vocabulary.json"), d)
+        if vocabulary is None:
+            shutil.copy(os.path.join(FIXTURES, "vocabulary.json"), d)
+        else:
+            with open(os.path.join(d, "vocabulary.json"), "w", encoding="utf-8") as f:
+                json.dump(vocabulary, f)
         with open(os.path.join(d, "bench_x.json"), "w", encoding="utf-8") as f:
             json.dump(benchmarks, f)
         p = subprocess.run([sys.executable, os.path.join(SCRIPTS, "report.py"), "--reports", d],
@@ -246,6 +250,33 @@ class ReportScript(unittest.TestCase):
         self.assertIn("| data | algorithm | ns per evaluation |", report)
         self.assertIn("| segments:64/knots:uniform | power calls:sorted | 2 | 1 |", report)
         self.assertIn("| segments:64/knots:uniform | power calls:single | 5 | 2.5 |", report)
+
+    def test_floor_ratio_per_evaluation_with_matching_calls_and_timing(self):
+        # A sorted batch of 1024 taking 2.048 us is 2 ns per evaluation; its floor, a batch of 4096 at
+        # 4.096 us, 1 ns: ratio 2 whatever the batch sizes. The single call (5 ns) has a floor only
+        # for timing:latency, so it gets no ratio; FLOPs are per evaluation as the counter says.
+        with open(os.path.join(FIXTURES, "vocabulary.json"), encoding="utf-8") as f:
+            vocabulary = json.load(f)
+        vocabulary["algorithms"].append({"id": "floor_soa_sorted", "settings": [], "doc": "floor"})
+        vocabulary["algorithms"].append({"id": "floor_horner", "settings": [], "doc": "floor"})
+        vocabulary["variant_keys"].append({"id": "timing", "values": ["throughput", "latency"], "doc": "t"})
+        vocabulary["counters"].append({"name": "flops", "kind": "count", "doc": "per evaluation"})
+
+        def entry(name, cpu_ns, items_per_iteration, flops):
+            return {"name": name, "run_name": name, "run_type": "iteration", "repetitions": 1, "repetition_index": 0,
+                    "threads": 1, "iterations": 1000, "real_time": cpu_ns, "cpu_time": cpu_ns, "time_unit": "ns",
+                    "items_per_second": items_per_iteration * 1e9 / cpu_ns, "flops": flops, "label": "evaluation"}
+        data = "segments:64/knots:uniform"
+        benchmarks = {"context": {}, "benchmarks": [
+            entry(f"piecewise_cubic/power/calls:sorted/timing:throughput/{data}", 2048.0, 1024, 20),
+            entry(f"piecewise_cubic/floor_soa_sorted/calls:sorted/timing:throughput/{data}", 4096.0, 4096, 20),
+            entry(f"piecewise_cubic/power/calls:single/timing:throughput/{data}", 5.0, 1, 20),
+            entry(f"piecewise_cubic/floor_horner/calls:single/timing:latency/{data}", 4.0, 1, 20)]}
+        p, report = self.run_report(benchmarks, vocabulary)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertIn("| piecewise_cubic | segments:64/knots:uniform | power calls:sorted timing:throughput | 2 | "
+                      "floor_soa_sorted: 2 | 20 | 10 |", report)
+        self.assertNotIn("power calls:single timing:throughput | 5 | floor", report)
 
     def test_unknown_counter_exits_1_naming_the_benchmark(self):
         data = fixture("bench_batch.json")

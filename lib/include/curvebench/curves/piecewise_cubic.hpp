@@ -6,8 +6,13 @@
 // G_i and M_i, and Bezier points. Algorithms (cubic_algorithm, per call): power (Horner, ~3 fma per
 // coordinate), matrix (T · M · G per call, the textbook form), bezier (de Casteljau, 6 lerps).
 // Derivatives of order <= 3 exact by the chain rule h_i^-k; higher orders zero. Segment lookup O(1)
-// for uniform knots (index corrected against the neighbours), else binary search; evaluate_batch
-// and evaluate_sorted (non-decreasing parameters, segment data hoisted) never allocate.
+// for uniform knots (index corrected against the neighbours); for other knots O(1) expected: an
+// index of 2n uniform buckets over the domain, built at construction, holds each bucket's first
+// segment, and a binary search over the few knots of the bucket (corrected against the neighbours
+// at the bucket's edges) finishes: the segment is the same as a binary search over all knots at
+// every u. evaluate_batch and evaluate_sorted (non-decreasing parameters; the default power
+// evaluation walks the segments and runs a branch-free loop per segment over its parameters, the
+// coefficients hoisted, bit-identical to single calls) never allocate.
 // Sources: seeds 000, 001, 002 (basis matrices, T · M · G); Farin (2002) for de Casteljau.
 // Cost: O(1) per value after lookup. Accuracy: O(eps · scale), scale the coefficients' size (power)
 // or the control items' (matrix, bezier); de Casteljau the most stable.
@@ -38,6 +43,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -45,6 +51,14 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+// The single-evaluation hot path (operator(), the lookup, Horner) is forced inline: left to its
+// heuristics GCC calls each of them out of line, which costs more than the evaluation itself.
+#if defined(__GNUC__)
+#define CURVEBENCH_PC_HOT [[gnu::always_inline]] inline
+#else
+#define CURVEBENCH_PC_HOT inline
+#endif
 
 namespace curvebench {
 
@@ -160,20 +174,33 @@ class piecewise_cubic {
   // ---- the curve concept ----
   [[nodiscard]] interval<Real> domain() const { return {knots_.front(), knots_.back()}; }
   [[nodiscard]] std::span<const Real> breakpoints() const { return knots_; }
-  [[nodiscard]] point_type operator()(const Real& u) const { return evaluate(u, 0, cubic_algorithm::power); }
+  [[nodiscard]] CURVEBENCH_PC_HOT point_type operator()(const Real& u) const {
+    // The hot path: the domain check inline (NaN fails it), the lookup, t and Horner.
+    if (!(lo_ <= u && u <= hi_)) out_of_domain(u);
+    const std::size_t i = locate(u);
+    const lookup_record& r = lookup_[i];
+    return horner(power_[i], (u - r.knot) / r.h);
+  }
   [[nodiscard]] point_type derivative(const Real& u, int order) const {
     return evaluate(u, order, cubic_algorithm::power);
   }
 
   /// d^order P / du^order at u by the chosen algorithm. Throws std::domain_error outside the domain,
   /// invalid_input for a negative order.
-  [[nodiscard]] point_type evaluate(const Real& u, int order, cubic_algorithm algorithm) const {
+  [[nodiscard]] CURVEBENCH_PC_HOT point_type evaluate(const Real& u, int order, cubic_algorithm algorithm) const {
+    if (order == 0 && algorithm == cubic_algorithm::power) return (*this)(u);
+    return evaluate_general(u, order, algorithm);
+  }
+
+ private:
+  [[nodiscard]] point_type evaluate_general(const Real& u, int order, cubic_algorithm algorithm) const {
     validate::derivative_order(order);
     check_parameter(u, domain());
     const std::size_t i = locate(u);
     return eval_segment(i, (u - knots_[i]) / h_[i], order, algorithm);
   }
 
+ public:
   /// d^order P / du^order of segment i at its local parameter t in [0, 1] (t = 1 gives the left
   /// limit at knot i + 1, t = 0 the right limit at knot i: what continuity checks need).
   /// Throws std::out_of_range for i >= segment_count(), std::domain_error for t outside [0, 1].
@@ -213,6 +240,12 @@ class piecewise_cubic {
     if (us.empty()) return;
     const interval<Real> d = domain();
     check_parameter(us.front(), d, "us", 0);
+    if (algorithm == cubic_algorithm::power && order == 0 && sorted_in_domain(us)) {
+      sorted_power(us, out);
+      return;
+    }
+    // Checked walk: the other algorithms and orders, and input that fails a check (which then
+    // throws at its first bad parameter with out[0..k) written, as documented).
     std::size_t i = locate(us.front());
     const std::size_t last = segment_count() - 1;
     for (std::size_t k = 0; k < us.size(); ++k) {
@@ -223,14 +256,7 @@ class piecewise_cubic {
         validate::fail("us must be non-decreasing for evaluate_sorted: " + validate::indexed("us", k) + " = " +
                        to_text(u) + " < " + validate::indexed("us", k - 1) + " = " + to_text(us[k - 1]));
       while (i < last && !(u < knots_[i + 1])) ++i;
-      if (algorithm == cubic_algorithm::power && order == 0) {
-        // The hot loop of the fast path: coefficients of segment i hoisted, Horner in t.
-        const auto& a = power_[i];
-        const Real t = (u - knots_[i]) / h_[i];
-        out[k] = a[0] + t * (a[1] + t * (a[2] + t * a[3]));
-      } else {
-        out[k] = eval_segment(i, (u - knots_[i]) / h_[i], order, algorithm);
-      }
+      out[k] = eval_segment(i, (u - knots_[i]) / h_[i], order, algorithm);
     }
   }
 
@@ -294,6 +320,15 @@ class piecewise_cubic {
     for (std::size_t i = 0; i <= n && uniform_; ++i)
       if (abs(knots_[i] - (knots_.front() + Real(static_cast<long long>(i)) * hbar)) > tol) uniform_ = false;
     inv_hbar_ = Real(1) / hbar;
+    lo_ = knots_.front();
+    hi_ = knots_.back();
+    last_ = n - 1;
+    last_real_ = Real(static_cast<long long>(last_));
+    lookup_.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      lookup_[i] = {i == 0 ? -std::numeric_limits<Real>::infinity() : knots_[i],
+                    i == last_ ? std::numeric_limits<Real>::infinity() : knots_[i + 1], knots_[i], h_[i]};
+    build_buckets();
     build_rounding_bounds(std::vector<std::array<Real, 4>>(n, std::array<Real, 4>{}));
   }
 
@@ -370,20 +405,124 @@ class piecewise_cubic {
     }
   }
 
-  // u must lie in the domain.
-  [[nodiscard]] std::size_t locate(const Real& u) const {
-    const std::size_t last = h_.size() - 1;
+  // The throwing path of operator(), kept out of line so that the hot path stays small enough to inline.
+#if defined(__GNUC__)
+  [[gnu::noinline, gnu::cold]]
+#endif
+  [[noreturn]] void out_of_domain(Real u) const {
+    check_parameter(u, domain());
+    throw std::logic_error("piecewise_cubic: out_of_domain called for a parameter inside the domain");
+  }
+
+  // Whether the parameters (us[0] already checked against the domain) are non-decreasing and at
+  // most u_n (NaN fails both): one pass without early exit, which the compiler vectorises.
+  [[nodiscard]] bool sorted_in_domain(std::span<const Real> us) const {
+    const Real hi = knots_.back();
+    bool ok = us.back() <= hi;
+    for (std::size_t k = 1; k < us.size(); ++k) ok &= us[k - 1] <= us[k];
+    return ok;
+  }
+
+  // evaluate_sorted's power path for checked input: per segment, the run of parameters below its
+  // right knot, then one loop over the run with the segment's coefficients hoisted. The arithmetic
+  // is horner()'s, in the same order, so each value is bit-identical to operator().
+  void sorted_power(std::span<const Real> us, std::span<point_type> out) const {
+    const std::size_t count = us.size(), last = segment_count() - 1;
+    std::size_t i = locate(us.front());
+    std::size_t k = 0;
+    while (k < count) {
+      std::size_t e = count;
+      if (i < last) {
+        const Real right = knots_[i + 1];
+        e = k;
+        while (e < count && us[e] < right) ++e;
+      }
+      run_power(i, us.data() + k, out.data() + k, e - k);
+      k = e;
+      if (k < count)
+        while (i < last && !(us[k] < knots_[i + 1])) ++i;
+    }
+  }
+
+  void run_power(std::size_t i, const Real* us, point_type* out, std::size_t m) const {
+    const Real ui = knots_[i], hi = h_[i];
+    std::array<std::array<Real, 4>, Dim> c;
+    for (int d = 0; d < Dim; ++d)
+      for (std::size_t j = 0; j < 4; ++j) c[static_cast<std::size_t>(d)][j] = power_[i][j][d];
+    for (std::size_t k = 0; k < m; ++k) {
+      const Real t = (us[k] - ui) / hi;
+      for (int d = 0; d < Dim; ++d) {
+        const auto& a = c[static_cast<std::size_t>(d)];
+        out[k][d] = a[0] + t * (a[1] + t * (a[2] + t * a[3]));
+      }
+    }
+  }
+
+  // The segment of u, u in the domain: the one a binary search over the knots gives (first
+  // interior knot > u, minus one; u_n in the last segment).
+  [[nodiscard]] CURVEBENCH_PC_HOT std::size_t locate(const Real& u) const {
+    // Segment i holds u when left <= u < right in its lookup record (-inf and +inf at the ends
+    // stand for "no knot to check"), so the corrections need no bounds tests.
     if (uniform_) {
-      const Real x = (u - knots_.front()) * inv_hbar_;
-      // Guard the floating index: x is in [0, n(1 + O(eps))]; clamp before converting.
-      std::size_t i = x <= Real(0) ? 0 : (x >= Real(static_cast<long long>(last)) ? last : to_index(x));
-      while (i > 0 && u < knots_[i]) --i;
-      while (i < last && !(u < knots_[i + 1])) ++i;
+      // u >= u0, so x = fl(fl(u - u0) / hbar) >= 0; it can exceed n - 1 (u in the last segment, or
+      // rounding), so clamp before converting.
+      const Real x = (u - lo_) * inv_hbar_;
+      std::size_t i = x < last_real_ ? to_index(x) : last_;
+      while (u < lookup_[i].left) --i;
+      while (!(u < lookup_[i].right)) ++i;
       return i;
     }
-    // First knot > u, minus one; u_n maps to the last segment.
+    if (!bucket_first_.empty()) {
+      // Bucket b's segments are bucket_first_[b] .. bucket_first_[b + 1]; rounding of x may put u
+      // just outside them, so widen the range until knots[lo] <= u < knots[hi + 1] (or the ends):
+      // then every interior knot up to lo is <= u, every one past hi is > u, and the search over
+      // knots lo + 1 .. hi counts the rest, as the binary search over all knots would. (hi is
+      // needed only when u is past the second knot of the range.)
+      const Real x = (u - lo_) * inv_bucket_width_;  // >= 0 as in the uniform case
+      const std::size_t b = x < bucket_last_real_ ? to_index(x) : bucket_last_;
+      std::size_t lo = bucket_first_[b];
+      while (u < lookup_[lo].left) --lo;
+      // Most buckets hold at most one knot: step over it without a branch (right is +inf at the
+      // last segment, so i stays a segment), and search only when more knots remain below u.
+      const std::size_t i = lo + static_cast<std::size_t>(!(u < lookup_[lo].right));
+      if (u < lookup_[i].right) return i;
+      std::size_t hi = bucket_first_[b + 1];  // u >= right at i, so hi ends above i
+      while (!(u < lookup_[hi].right)) ++hi;
+      const auto it = std::upper_bound(knots_.begin() + static_cast<std::ptrdiff_t>(i) + 1,
+                                       knots_.begin() + static_cast<std::ptrdiff_t>(hi) + 1, u);
+      return static_cast<std::size_t>(it - knots_.begin()) - 1;
+    }
+    return locate_binary(u);
+  }
+
+  [[nodiscard]] std::size_t locate_binary(const Real& u) const {
+    // First interior knot > u, minus one; u_n maps to the last segment.
     const auto it = std::upper_bound(knots_.begin() + 1, knots_.end() - 1, u);
     return static_cast<std::size_t>(it - knots_.begin()) - 1;
+  }
+
+  // The bucket index of non-uniform knots: 2n buckets of equal width w over the domain (so that
+  // most hold at most one knot), bucket b's first segment the one holding its left edge u0 + b w
+  // (the last entry: the last segment). Any rounding in the edges only widens a lookup's range
+  // (locate), never changes its answer.
+  void build_buckets() {
+    bucket_first_.clear();
+    const std::size_t n = h_.size();
+    if (uniform_ || n < 2 || n >= std::size_t(std::numeric_limits<std::uint32_t>::max() / 2)) return;
+    const std::size_t buckets = 2 * n;
+    const Real width = (knots_.back() - knots_.front()) / Real(static_cast<long long>(buckets));
+    inv_bucket_width_ = Real(static_cast<long long>(buckets)) / (knots_.back() - knots_.front());
+    if (!is_finite(inv_bucket_width_) || !(width > Real(0))) return;
+    bucket_last_ = buckets - 1;
+    bucket_last_real_ = Real(static_cast<long long>(bucket_last_));
+    bucket_first_.resize(buckets + 1);
+    std::size_t i = 0;
+    for (std::size_t b = 0; b < buckets; ++b) {
+      const Real edge = knots_.front() + Real(static_cast<long long>(b)) * width;
+      while (i < n - 1 && !(edge < knots_[i + 1])) ++i;
+      bucket_first_[b] = static_cast<std::uint32_t>(i);
+    }
+    bucket_first_[buckets] = static_cast<std::uint32_t>(n - 1);
   }
 
   [[nodiscard]] static std::size_t to_index(const Real& x) {
@@ -409,10 +548,14 @@ class piecewise_cubic {
     return point_type(p * chain_scale(i, order));
   }
 
+  [[nodiscard]] CURVEBENCH_PC_HOT static point_type horner(const std::array<point_type, 4>& a, const Real& t) {
+    return a[0] + t * (a[1] + t * (a[2] + t * a[3]));
+  }
+
   [[nodiscard]] static point_type eval_power(const std::array<point_type, 4>& a, const Real& t, int order) {
     switch (order) {
       case 0:
-        return a[0] + t * (a[1] + t * (a[2] + t * a[3]));
+        return horner(a, t);
       case 1:
         return a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]));
       case 2:
@@ -473,7 +616,22 @@ class piecewise_cubic {
   std::vector<std::array<point_type, 4>> bezier_;
   bool uniform_ = false;
   Real inv_hbar_ = Real(1);
+  Real lo_ = Real(0), hi_ = Real(0);  // the domain, kept beside the hot path's other members
+  // Per segment, what the lookup and t need, in one place: the knots to check u against (-inf,
+  // +inf at the ends), u_i and h_i.
+  struct lookup_record {
+    Real left, right, knot, h;
+  };
+  std::vector<lookup_record> lookup_;
+  std::size_t last_ = 0;  // segment_count() - 1
+  Real last_real_ = Real(0);
+  std::vector<std::uint32_t> bucket_first_;  // non-uniform knots: 2n + 1 entries (build_buckets)
+  Real inv_bucket_width_ = Real(1);
+  std::size_t bucket_last_ = 0;  // the number of buckets - 1
+  Real bucket_last_real_ = Real(0);
   std::array<Real, 2> rounding_bound_{};
 };
 
 }  // namespace curvebench
+
+#undef CURVEBENCH_PC_HOT
