@@ -104,13 +104,27 @@ inline constexpr peer eigen_spline_dynamic_degree{"peer_eigen_spline_dynamic_deg
                                                   "Spline<double, 3, Dynamic>"};
 inline constexpr peer bisection_reintegration{"peer_bisection_full_reintegration", "common practice",
                                               "u(s) by bisection on s(u) re-integrated from u0 (16-point Gauss)"};
+// GSL (issue 15): gsl_spline per coordinate on the spline's knots, and QUADPACK's adaptive
+// Gauss-Kronrod integrating the speed |P'(u)| over the whole domain (epsabs 0, epsrel = tol).
+inline constexpr peer gsl_cspline{"peer_gsl_cspline", "GSL", "gsl_spline, gsl_interp_cspline (natural cubic spline)"};
+inline constexpr peer gsl_cspline_periodic{"peer_gsl_cspline_periodic", "GSL",
+                                           "gsl_spline, gsl_interp_cspline_periodic (periodic cubic spline)"};
+inline constexpr peer gsl_akima{"peer_gsl_akima", "GSL", "gsl_spline, gsl_interp_akima (Akima's local cubic)"};
+inline constexpr peer gsl_steffen{"peer_gsl_steffen", "GSL",
+                                  "gsl_spline, gsl_interp_steffen (Steffen's monotone cubic)"};
+inline constexpr peer gsl_qag{"peer_gsl_qag", "GSL",
+                              "gsl_integration_qag, 15-point Gauss-Kronrod, of the speed over the whole domain"};
+inline constexpr peer gsl_qags{"peer_gsl_qags", "GSL",
+                               "gsl_integration_qags (21-point Gauss-Kronrod with epsilon-algorithm "
+                               "extrapolation) of the speed over the whole domain"};
 }  // namespace peers
 
 inline constexpr const peer* all_peers[] = {
     &peers::boost_gauss,       &peers::boost_gauss_kronrod15,        &peers::boost_gauss_kronrod31,
     &peers::boost_tanh_sinh,   &peers::boost_catmull_rom,            &peers::boost_cubic_hermite,
     &peers::boost_cardinal_cubic_b_spline, &peers::eigen_spline_fixed_degree, &peers::eigen_spline_dynamic_degree,
-    &peers::bisection_reintegration};
+    &peers::bisection_reintegration, &peers::gsl_cspline, &peers::gsl_cspline_periodic, &peers::gsl_akima,
+    &peers::gsl_steffen, &peers::gsl_qag, &peers::gsl_qags};
 
 /// What one item of a benchmark is: the unit of its time per operation.
 struct operation {
@@ -169,6 +183,9 @@ inline constexpr algorithm ease_distance_keys{"distance_keys", "",
                                               "ease: monotone interpolation of (time, distance) keys"};
 inline constexpr algorithm ease_speed_curve{"speed_curve", "interpolation",
                                             "ease: the integral of an interpolated speed curve"};
+inline constexpr algorithm monotone_cubic{"monotone_cubic", "",
+                                          "motion::monotone_cubic: C1 shape-preserving cubic (Fritsch-Butland "
+                                          "slopes), binary search and Horner"};
 }  // namespace algorithms
 
 inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
@@ -188,7 +205,8 @@ inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
                                                       &algorithms::ease_parabolic,
                                                       &algorithms::ease_smootherstep,
                                                       &algorithms::ease_distance_keys,
-                                                      &algorithms::ease_speed_curve};
+                                                      &algorithms::ease_speed_curve,
+                                                      &algorithms::monotone_cubic};
 
 /// A benchmark-name key whose value picks a variant of how the algorithm is called, not the data
 /// or the method's setting: the report ranks rows that differ only in these keys and in settings
