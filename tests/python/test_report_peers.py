@@ -1,0 +1,152 @@
+"""Unit tests of scripts/report_peers.py (REPORT.md's "Peers" section) on outputs recorded from real
+runs and checked into tests/data/peers/: accuracy_gsl.json is two cases of a quick accuracy run
+(`curvebench accuracy --quick`, GSL 2.7.1), trimmed to the records the section joins. Run by ctest
+(report_py) with the other tests of tests/python."""
+import copy
+import importlib.util
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCRIPTS = os.path.join(HERE, "..", "..", "scripts")
+DATA = os.path.join(HERE, "..", "data", "peers")
+FIXTURES = os.path.join(HERE, "fixtures")
+sys.path.insert(0, SCRIPTS)
+import report_peers as rp  # noqa: E402
+
+
+def load(name):
+    with open(os.path.join(DATA, name), encoding="utf-8") as f:
+        return json.load(f)
+
+
+def peer(case, method, setting, error, estimate, status="converged", peer_status="success", quantity="length"):
+    r = {"case": case, "group": "g", "quantity": quantity, "method": method, "setting": setting, "error": error,
+         "estimate": estimate, "evaluations": 15, "status": status, "peer_status": peer_status, "peer": True,
+         "library": "GSL 2.7.1"}
+    r["bounded"] = None if error is None or estimate is None else estimate >= error
+    return r
+
+
+class Findings(unittest.TestCase):
+    def test_success_beyond_the_requested_tolerance_is_a_finding(self):
+        f = rp.findings([peer("c", "peer_gsl_qag", "tol=1e-10", 5e-9, 1e-8)])
+        self.assertEqual(len(f), 1)
+        self.assertIn("peer_gsl_qag on c (tol=1e-10)", f[0])
+        self.assertIn("50 times the requested tolerance", f[0])
+
+    def test_an_estimate_below_the_error_is_a_finding(self):
+        f = rp.findings([peer("c", "peer_gsl_qag", "tol=1e-6", 1e-7, 1e-8, status="rounding_limited",
+                              peer_status="roundoff error")])
+        self.assertEqual(len(f), 1)
+        self.assertIn("does not bound its true error", f[0])
+        self.assertIn("under by 10x", f[0])
+        self.assertIn("roundoff error", f[0])
+
+    def test_within_tolerance_and_bounded_is_no_finding(self):
+        self.assertEqual(rp.findings([peer("c", "peer_gsl_qag", "tol=1e-6", 1e-9, 1e-7)]), [])
+        # A peer that reported failure (cap_hit) beyond the tolerance said so: no contradiction.
+        self.assertEqual(rp.findings([peer("c", "peer_gsl_qag", "tol=1e-10", 1e-8, 1e-7, status="cap_hit")]), [])
+
+    def test_refused_settings_listed_apart(self):
+        refused = peer("c", "peer_gsl_qag", "tol=1e-14", None, None, status="not_guaranteed",
+                       peer_status="specified tolerance is invalid or theoretically unattainable")
+        self.assertEqual(rp.findings([refused]), [])
+        self.assertEqual(rp.refusals([refused, dict(refused, case="d")]),
+                         ['peer_gsl_qag tol=1e-14: "specified tolerance is invalid or theoretically unattainable" '
+                          'on 2 case(s)'])
+
+    def test_recorded_run_finds_the_knot_ratio_case(self):
+        # Recorded: qag at tol=1e-10 on natural_cubic_knot_ratio_1e4 reports success with
+        # abserr / L = 1.78e-12 while |L_qag - L| / L = 5.35e-9 (whole-domain QUADPACK misses the
+        # 1e-4-wide segments; curvebench splits at breakpoints).
+        acc = load("accuracy_gsl.json")
+        f = rp.findings(acc["peer_records"])
+        self.assertTrue(any("peer_gsl_qag on natural_cubic_knot_ratio_1e4 (tol=1e-10): reported success" in x
+                            for x in f), f)
+        self.assertFalse(any("natural_cubic_2d" in x for x in f), f)
+
+
+class Joins(unittest.TestCase):
+    def test_eval_rows_join_curvebench_default_of_the_same_case(self):
+        acc = load("accuracy_gsl.json")
+        rows = rp.eval_rows(acc["records"], acc["peer_records"])
+        self.assertEqual([r[:2] for r in rows], [["natural_cubic_2d", "peer_gsl_cspline"],
+                                                 ["natural_cubic_knot_ratio_1e4", "peer_gsl_cspline"]])
+        own = {r["case"]: r["error"] for r in acc["records"] if r["quantity"] == "eval"}
+        for r in rows:
+            self.assertEqual(r[3], "default")
+            self.assertEqual(r[4], own[r[0]])
+            self.assertAlmostEqual(r[7], r[6] / r[5])
+
+    def test_length_rows_pair_each_tolerance_with_adaptive_gk_at_the_same_tolerance(self):
+        acc = load("accuracy_gsl.json")
+        rows = rp.length_rows(acc["records"], acc["peer_records"])
+        own = {(r["case"], r["setting"]): r for r in acc["records"] if r["method"] == "adaptive_gk"}
+        self.assertTrue(rows)
+        for case, setting, method, err, est, bounded, evals, status, own_err, own_evals, *_ in rows:
+            self.assertTrue(method.startswith("peer_gsl_"))
+            self.assertEqual(own_err, own[(case, setting)]["error"])
+            self.assertEqual(own_evals, own[(case, setting)]["evaluations"])
+            self.assertEqual(bounded, est >= err)
+        # Refused settings (GSL: epsrel 1e-14 with epsabs 0) have no row, only a refusal line.
+        self.assertFalse(any(r[1] == "tol=1e-14" for r in rows))
+        self.assertTrue(rp.refusals(acc["peer_records"]))
+
+    def test_versions_from_the_runner_and_the_driver_files(self):
+        acc = load("accuracy_gsl.json")
+        rows = rp.version_rows(acc, [("/r/peers_scipy.json", {"driver": "scipy", "versions": {"SciPy": "1.10.1"},
+                                                               "peer_records": [{}, {}]})])
+        self.assertEqual(rows[0], ["GSL", "2.7.1", "accuracy runner (always)", 14])
+        self.assertEqual(rows[1], ["SciPy", "1.10.1", "peers_scipy.json (scripts/peers.sh)", 2])
+        self.assertEqual(rp.missing_drivers([]), ["SciPy (scripts/peers/scipy_driver.py)"])
+
+    def test_malformed_peer_file_names_the_file(self):
+        d = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, d)
+        with open(os.path.join(d, "peers_x.json"), "w", encoding="utf-8") as f:
+            json.dump({"peer_records": [{"case": "c", "quantity": 3, "method": "m"}]}, f)
+        with self.assertRaises(rp.lib.ReportError) as e:
+            rp.load_peer_files(d)
+        self.assertIn("peers_x.json", str(e.exception))
+        self.assertIn("peer_records[0].quantity", str(e.exception))
+
+
+@unittest.skipUnless(importlib.util.find_spec("matplotlib"), "report.py plots with matplotlib")
+class ReportWithAndWithoutPeers(unittest.TestCase):
+    def run_report(self, acc):
+        d = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, d)
+        shutil.copy(os.path.join(FIXTURES, "vocabulary.json"), d)
+        shutil.copy(os.path.join(FIXTURES, "bench_batch.json"), os.path.join(d, "bench_x.json"))
+        with open(os.path.join(d, "accuracy.json"), "w", encoding="utf-8") as f:
+            json.dump(acc, f)
+        p = subprocess.run([sys.executable, os.path.join(SCRIPTS, "report.py"), "--reports", d],
+                           capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        with open(os.path.join(d, "REPORT.md"), encoding="utf-8") as f:
+            return f.read()
+
+    def test_with_peer_records(self):
+        report = self.run_report(load("accuracy_gsl.json"))
+        self.assertIn("## Peers: the libraries users would pick instead", report)
+        self.assertIn("| GSL | 2.7.1 | accuracy runner (always) | 14 |", report)
+        self.assertIn("| natural_cubic_2d | peer_gsl_cspline | 0.438 | default | 0.343 |", report)
+        self.assertIn("reported success, but its true relative error 5.35e-09", report)
+
+    def test_without_peer_records(self):
+        acc = copy.deepcopy(load("accuracy_gsl.json"))
+        del acc["peer_records"]
+        del acc["context"]["peers"]
+        report = self.run_report(acc)
+        self.assertIn("No peer results (this accuracy.json has no peer_records", report)
+        self.assertIn("## Convergence orders", report)
+
+
+if __name__ == "__main__":
+    unittest.main()
