@@ -117,11 +117,126 @@ class Joins(unittest.TestCase):
         self.assertIn("peer_records[0].quantity", str(e.exception))
 
 
+sys.path.insert(0, os.path.join(SCRIPTS, "peers"))
+import peer_results as pr  # noqa: E402
+
+SCIPY = os.path.join(DATA, "scipy")
+
+
+def read_check(csv):
+    with open(os.path.join(SCIPY, csv + ".check.json"), encoding="utf-8") as f:
+        return json.load(f)
+
+
+def scipy_doc():
+    """peers_scipy.json assembled from the recorded driver output and its recorded checks
+    (scripts/peers.sh --quick, SciPy 1.10.1, cases natural_cubic_2d and natural_cubic_knot_ratio_1e4)."""
+    return pr.assemble(load(os.path.join("scipy", "scipy_driver.json")), read_check)
+
+
+class ScipyRecorded(unittest.TestCase):
+    def test_every_run_becomes_records(self):
+        doc = scipy_doc()
+        self.assertEqual(doc["driver"], "scipy")
+        self.assertEqual(doc["versions"]["SciPy"], "1.10.1")
+        recs = {(r["case"], r["method"], r["setting"]): r for r in doc["peer_records"]}
+        # Two value runs per case (points and first derivative each) and three quad tolerances.
+        self.assertEqual(len(doc["peer_records"]), 2 * (2 * 2 + 3))
+        for r in doc["peer_records"]:
+            self.assertTrue(r["peer"])
+            self.assertNotIn("subject", r)
+            self.assertEqual(r["library"], "SciPy 1.10.1")
+        pts = recs[("natural_cubic_2d", "peer_scipy_cubic_spline", "")]
+        self.assertEqual(pts["counterpart"], {"method": "default", "setting": ""})
+        self.assertGreater(pts["ns_per_op"], 0)
+        self.assertIsNone(recs[("natural_cubic_2d", "peer_scipy_cubic_spline", "derivative=1")]["ns_per_op"])
+
+    def test_quad_records_join_check_rows_in_order(self):
+        recs = {(r["case"], r["setting"]): r for r in scipy_doc()["peer_records"] if r["method"] == "peer_scipy_quad"}
+        check = read_check("natural_cubic_knot_ratio_1e4.peer_scipy_quad.lengths.csv")["checks"][0]
+        r6, r10 = recs[("natural_cubic_knot_ratio_1e4", "tol=1e-06")], recs[("natural_cubic_knot_ratio_1e4", "tol=1e-10")]
+        self.assertEqual(r6["error"], check["rows"][0]["error"])
+        self.assertEqual(r10["error"], check["rows"][1]["error"])
+        # Recorded: QUADPACK's qags through quad misses the 1e-4-wide segments like GSL's.
+        self.assertGreater(r10["error"], 5e-9)
+        self.assertFalse(r10["bounded"])
+        self.assertEqual(r10["status"], "converged")
+        self.assertEqual(r10["counterpart"], {"method": "adaptive_gk", "setting": "tol=1e-10"})
+        refused = recs[("natural_cubic_knot_ratio_1e4", "tol=1e-14")]
+        self.assertIsNone(refused["error"])
+        self.assertIn("epsrel", refused["peer_status"])
+
+    def test_make_interp_spline_on_the_knot_ratio_case_is_a_finding(self):
+        doc = scipy_doc()
+        own = load("accuracy_gsl.json")["records"]
+        f = rp.findings(doc["peer_records"], own)
+        self.assertTrue(any(x.startswith("peer_scipy_make_interp_spline on natural_cubic_knot_ratio_1e4: error 661")
+                            and "curvebench's default evaluation: 0.813" in x for x in f), f)
+        self.assertFalse(any("peer_scipy_cubic_spline" in x and "eps(double)" in x for x in f), f)
+
+    def test_a_check_with_other_rows_than_the_driver_ran_fails(self):
+        driver = load(os.path.join("scipy", "scipy_driver.json"))
+
+        def short(csv):
+            c = read_check(csv)
+            if csv.endswith("lengths.csv"):
+                c["checks"][0]["rows"] = c["checks"][0]["rows"][:1]
+            return c
+        with self.assertRaises(pr.PeerResultError) as e:
+            pr.assemble(driver, short)
+        self.assertIn("1 rows measured, the driver ran 2 tolerances", str(e.exception))
+
+    def test_a_values_check_of_another_peer_fails(self):
+        driver = load(os.path.join("scipy", "scipy_driver.json"))
+
+        def renamed(csv):
+            c = read_check(csv)
+            for r in c["checks"][0]["records"]:
+                r["method"] = "other"
+            return c
+        with self.assertRaises(pr.PeerResultError):
+            pr.assemble(driver, renamed)
+
+    def test_quad_status(self):
+        self.assertEqual(pr.quad_status("success", False), "converged")
+        self.assertEqual(pr.quad_status("The maximum number of subdivisions (50) has been achieved.", True), "cap_hit")
+        self.assertEqual(pr.quad_status("The occurrence of roundoff error is detected, which prevents", True),
+                         "rounding_limited")
+        self.assertEqual(pr.quad_status("The integral is probably divergent, or slowly convergent.", True),
+                         "not_guaranteed")
+
+
+@unittest.skipUnless(importlib.util.find_spec("scipy"), "the SciPy driver needs python3-scipy")
+class ScipyDriver(unittest.TestCase):
+    def setUp(self):
+        import scipy_driver
+        self.d = scipy_driver
+
+    def test_clamped_knots_as_the_spec_documents(self):
+        self.assertEqual(list(self.d.clamped_knots(6, 3)), [0, 0, 0, 0, 1 / 3, 2 / 3, 1, 1, 1, 1])
+
+    def test_parameters_are_the_runners(self):
+        us = self.d.sample_parameters(0.0, 5.0, 65)
+        self.assertEqual((us[0], us[-1], len(set(us))), (0.0, 5.0, 65))
+        self.assertEqual(us[1], 5.0 * 0.6180339887498949)
+
+    def test_natural_end_means_zero_second_derivative(self):
+        built, reason = self.d.curves({"type": "natural_cubic", "points": [[0, 0], [1, 2], [3, 3], [4, 0]]})
+        self.assertIsNone(reason)
+        for peer, p, dp, dom in built:
+            d2 = dp.derivative()
+            for u in dom:
+                self.assertLess(abs(d2(u)).max(), 1e-13, peer)
+
+
 @unittest.skipUnless(importlib.util.find_spec("matplotlib"), "report.py plots with matplotlib")
 class ReportWithAndWithoutPeers(unittest.TestCase):
-    def run_report(self, acc):
+    def run_report(self, acc, peer_files=()):
         d = tempfile.mkdtemp()
         self.addCleanup(shutil.rmtree, d)
+        for name, doc in peer_files:
+            with open(os.path.join(d, name), "w", encoding="utf-8") as f:
+                json.dump(doc, f)
         shutil.copy(os.path.join(FIXTURES, "vocabulary.json"), d)
         shutil.copy(os.path.join(FIXTURES, "bench_batch.json"), os.path.join(d, "bench_x.json"))
         with open(os.path.join(d, "accuracy.json"), "w", encoding="utf-8") as f:
@@ -138,6 +253,13 @@ class ReportWithAndWithoutPeers(unittest.TestCase):
         self.assertIn("| GSL | 2.7.1 | accuracy runner (always) | 14 |", report)
         self.assertIn("| natural_cubic_2d | peer_gsl_cspline | 0.438 | default | 0.343 |", report)
         self.assertIn("reported success, but its true relative error 5.35e-09", report)
+
+    def test_with_the_scipy_driver_joined(self):
+        report = self.run_report(load("accuracy_gsl.json"), [("peers_scipy.json", scipy_doc())])
+        self.assertIn("| SciPy | 1.10.1 | peers_scipy.json (scripts/peers.sh) | 14 |", report)
+        self.assertNotIn("Optional peers that did not run", report)
+        self.assertIn("| natural_cubic_knot_ratio_1e4 | peer_scipy_make_interp_spline | 661 | default | 0.813 |", report)
+        self.assertIn("| natural_cubic_knot_ratio_1e4 | tol=1e-10 | peer_scipy_quad | 5.35e-09 |", report)
 
     def test_without_peer_records(self):
         acc = copy.deepcopy(load("accuracy_gsl.json"))

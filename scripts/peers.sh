@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# The optional peers (issue 15): installs what they need (apt, pinned versions, non-interactive)
+# and runs their drivers on the case suite, writing reports/peers_<driver>.json, which
+# scripts/report.py joins into REPORT.md's Peers section when present. The C++ peers (GSL) need
+# nothing from here: the accuracy runner runs them in every scripts/bench.sh.
+#   scripts/peers.sh               install, then run every driver (the full sweep's parameters)
+#   scripts/peers.sh --quick       the quick sweep's parameters and tolerances
+#   scripts/peers.sh --no-install  run only the drivers whose packages are already installed
+#                                  (scripts/bench.sh calls it so)
+# Drivers: scripts/peers/scipy_driver.py (SciPy: CubicSpline, make_interp_spline, BSpline, quad).
+# Each driver's values are measured by `curvebench check` against the 50-digit reference of the
+# case's spec (scripts/peers/peer_results.py joins them), so the truth is never a double
+# evaluation of curvebench's own code. The tool is $CURVEBENCH_TOOL, or build-bench's (built here
+# with scripts/bench.sh's configuration when missing).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+quick=0
+install=1
+for arg in "$@"; do
+  case "$arg" in
+    --quick) quick=1 ;;
+    --no-install) install=0 ;;
+    -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
+    *) echo "peers.sh: unknown argument '$arg' (allowed: --quick, --no-install)" >&2; exit 2 ;;
+  esac
+done
+
+# Debian 12 (bookworm) versions, pinned: a peer's figures are only comparable at one version.
+apt_pins=("python3-scipy=1.10.1-2" "python3-numpy=1:1.24.2-1+deb12u1")
+
+installed_at() {  # package=version -> 0 when exactly that version is installed
+  local name=${1%%=*} version=${1#*=}
+  [[ "$(dpkg-query -W -f='${Status} ${Version}' "$name" 2>/dev/null || true)" == "install ok installed $version" ]]
+}
+
+if [[ $install -eq 1 ]]; then
+  missing=()
+  for p in "${apt_pins[@]}"; do installed_at "$p" || missing+=("$p"); done
+  if [[ ${#missing[@]} -gt 0 ]]; then
+    echo "peers.sh: installing ${missing[*]}"
+    sudo=""
+    [[ $(id -u) -eq 0 ]] || sudo="sudo"
+    export DEBIAN_FRONTEND=noninteractive
+    $sudo apt-get update -qq
+    $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  fi
+fi
+
+tool=${CURVEBENCH_TOOL:-$root/build-bench/bench/curvebench}
+if [[ ! -x "$tool" ]]; then
+  bash "$root/scripts/setup.sh"
+  export CCACHE_BASEDIR="$root"
+  build="$root/build-bench"
+  # scripts/bench.sh's configuration, so that its build reuses this one.
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O3 -march=native -fno-math-errno -DNDEBUG" \
+        -DCURVEBENCH_WERROR=OFF -DCURVEBENCH_BUILD_TESTS=OFF -DCURVEBENCH_BUILD_BENCH=ON >/dev/null
+  echo "peers.sh: building the curvebench tool"
+  cmake --build "$build" --parallel "$(nproc)" --target curvebench_tool >/dev/null
+  tool="$build/bench/curvebench"
+fi
+
+reports="$root/reports"
+mkdir -p "$reports"
+quick_args=()
+[[ $quick -eq 1 ]] && quick_args=(--quick)
+
+run_scipy() {
+  local work="$reports/peers/scipy"
+  rm -f "$reports/peers_scipy.json"  # no stale results when this run fails
+  rm -rf "$work"
+  mkdir -p "$work"
+  /usr/bin/python3 "$root/scripts/peers/scipy_driver.py" --cases "$root/bench/cases" --out "$work" "${quick_args[@]}"
+  # Measure every CSV the driver wrote against the 50-digit reference of its case.
+  /usr/bin/python3 - "$work/scipy_driver.json" "$tool" "$root/bench/cases" <<'EOF'
+import json, os, subprocess, sys
+driver_path, tool, cases = sys.argv[1:4]
+work = os.path.dirname(driver_path)
+with open(driver_path, encoding="utf-8") as f:
+    driver = json.load(f)
+for run in driver["runs"]:
+    if not run.get("csv"):
+        continue
+    csv = os.path.join(work, run["csv"])
+    option = "--values" if run["kind"] == "values" else "--lengths"
+    with open(csv + ".check.json", "w", encoding="utf-8") as out:
+        subprocess.run([tool, "check", os.path.join(cases, run["case"] + ".json"), option, csv,
+                        "--name", run["peer"], "--json", "--quiet"], stdout=out, check=True)
+EOF
+  /usr/bin/python3 "$root/scripts/peers/peer_results.py" --driver "$work/scipy_driver.json" \
+                   --out "$reports/peers_scipy.json"
+}
+
+ran=0
+if /usr/bin/python3 -c "import scipy, numpy" 2>/dev/null; then
+  echo "peers.sh: SciPy"
+  run_scipy
+  ran=$((ran + 1))
+else
+  echo "peers.sh: SciPy not installed (python3-scipy); skipped" >&2
+  rm -f "$reports/peers_scipy.json"  # no stale results from another run
+fi
+echo "peers.sh: $ran optional peer driver(s) ran; results in $reports/peers_*.json"
