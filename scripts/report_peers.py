@@ -33,7 +33,8 @@ import report_lib as lib
 EVAL_FINDING_ULPS = 100.0
 
 # The optional peers scripts/peers.sh runs, by the driver name their peers_<driver>.json carries.
-OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)"}
+OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
+                    "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)"}
 
 
 def load_peer_files(report_dir):
@@ -65,16 +66,16 @@ def all_peer_records(acc, peer_files):
 
 
 def version_rows(acc, peer_files):
-    """[[library, version, where it ran, records]] for every peer that ran."""
+    """[[libraries with versions, where they ran, records]]: one row per peer library the runner
+    ran, one per driver file (its versions in the driver's order: the peers first)."""
     counts = defaultdict(int)
     for r in acc.get("peer_records", []):
         counts[r.get("library", "").split(" ")[0]] += 1
-    rows = [[lib_name, version, "accuracy runner (always)", counts.get(lib_name, 0)]
+    rows = [[f"{lib_name} {version}", "accuracy runner (always)", counts.get(lib_name, 0)]
             for lib_name, version in sorted(acc.get("context", {}).get("peers", {}).items())]
     for path, data in peer_files:
-        n = len(data["peer_records"])
-        for lib_name, version in sorted(data.get("versions", {}).items()):
-            rows.append([lib_name, version, f"{os.path.basename(path)} (scripts/peers.sh)", n])
+        versions = ", ".join(f"{k} {v}" for k, v in data.get("versions", {}).items())
+        rows.append([versions, f"{os.path.basename(path)} (scripts/peers.sh)", len(data["peer_records"])])
     return rows
 
 
@@ -129,6 +130,8 @@ def eval_rows(records, peer_records):
             k = r["counterpart"]
             ours_ns = timed.get((r["case"], "eval", k["method"], k.get("setting") or ""))
         label = f"{r['method']} {r.get('setting') or ''}".strip()
+        if c is None and r.get("counterpart") and "counterpart_error" in r:  # measured by the driver's join
+            c = {"method": r["counterpart"]["method"], "error": r["counterpart_error"]}
         rows.append([r["case"], label, r.get("error"), c["method"] if c else "-", c.get("error") if c else None,
                      r.get("ns_per_op"), ours_ns, _ratio(ours_ns, r.get("ns_per_op"))])
     return rows
@@ -183,6 +186,10 @@ def findings(peer_records, own_records=()):
             beside = f" (curvebench's default evaluation: {lib.fmt(own[0]['error'])})" if own else ""
             out.append(f"{where}: error {lib.fmt(err)} eps(double) x size in its {what} against the exact curve of "
                        f"the same data{beside}.")
+        doc_tol, abs_err = r.get("documented_tolerance"), r.get("abs_error")
+        if isinstance(doc_tol, (int, float)) and isinstance(abs_err, (int, float)) and abs_err > doc_tol:
+            out.append(f"{where}: absolute error {lib.fmt(abs_err)} in its value, beyond the {lib.fmt(doc_tol)} it "
+                       f"documents as its solver's precision (the eval table has the error in eps x size).")
         if r.get("bounded") is False and isinstance(err, (int, float)) and isinstance(est, (int, float)):
             out.append(f"{where}: its error estimate {lib.fmt(est)} does not bound its true error {lib.fmt(err)} "
                        f"(under by {lib.fmt(err / est) if est > 0 else 'inf'}x; status "
@@ -237,7 +244,7 @@ def peers_section(acc, report_dir, bench_rows, vocab):
     md += ["Each peer runs on every case it can represent and is measured against the same 50-digit "
            "reference as curvebench's methods; curvebench's counterpart is the record of the same "
            "computation (the default evaluation of the case, adaptive_gk at the same relative tolerance).", ""]
-    md.append(lib.table(["peer library", "version", "ran by", "records"], versions))
+    md.append(lib.table(["peers and versions", "ran by", "records"], versions))
     missing = missing_drivers(peer_files)
     if missing:
         md += ["", "Optional peers that did not run (no reports/peers_<driver>.json; run scripts/peers.sh): "

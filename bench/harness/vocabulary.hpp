@@ -117,6 +117,25 @@ inline constexpr peer gsl_qag{"peer_gsl_qag", "GSL",
 inline constexpr peer gsl_qags{"peer_gsl_qags", "GSL",
                                "gsl_integration_qags (21-point Gauss-Kronrod with epsilon-algorithm "
                                "extrapolation) of the speed over the whole domain"};
+// SciPy (issue 15; optional: scripts/peers.sh runs scripts/peers/scipy_driver.py, curvebench check
+// measures it, the records come from reports/peers_scipy.json).
+inline constexpr peer scipy_cubic_spline{"peer_scipy_cubic_spline", "SciPy",
+                                         "scipy.interpolate.CubicSpline (natural, clamped, not-a-knot, periodic)"};
+inline constexpr peer scipy_make_interp_spline{"peer_scipy_make_interp_spline", "SciPy",
+                                               "scipy.interpolate.make_interp_spline, k = 3 (B-spline collocation)"};
+inline constexpr peer scipy_bspline{"peer_scipy_bspline", "SciPy", "scipy.interpolate.BSpline on the spec's knots"};
+inline constexpr peer scipy_quad{"peer_scipy_quad", "SciPy",
+                                 "scipy.integrate.quad (QUADPACK qags) of the speed of SciPy's own spline, "
+                                 "epsabs 0, epsrel = tol, limit 50"};
+// JavaScript easing evaluators (issue 15; optional: scripts/peers.sh runs
+// scripts/peers/easing_driver.mjs on the CSS cubic-bezier cases, npm versions pinned).
+inline constexpr peer bezier_easing_3{"peer_bezier_easing_3", "bezier-easing",
+                                      "bezier-easing 3.2.0: cubic-bezier easing, x(t) = x solved in closed form"};
+inline constexpr peer bezier_easing_2{"peer_bezier_easing_2", "bezier-easing",
+                                      "bezier-easing 2.1.0: cubic-bezier easing, sample table then Newton or "
+                                      "bisection"};
+inline constexpr peer mapbox_unitbezier{"peer_mapbox_unitbezier", "@mapbox/unitbezier",
+                                        "@mapbox/unitbezier 1.0.0: solve(x) with its default epsilon 1e-6"};
 }  // namespace peers
 
 inline constexpr const peer* all_peers[] = {
@@ -124,7 +143,9 @@ inline constexpr const peer* all_peers[] = {
     &peers::boost_tanh_sinh,   &peers::boost_catmull_rom,            &peers::boost_cubic_hermite,
     &peers::boost_cardinal_cubic_b_spline, &peers::eigen_spline_fixed_degree, &peers::eigen_spline_dynamic_degree,
     &peers::bisection_reintegration, &peers::gsl_cspline, &peers::gsl_cspline_periodic, &peers::gsl_akima,
-    &peers::gsl_steffen, &peers::gsl_qag, &peers::gsl_qags};
+    &peers::gsl_steffen, &peers::gsl_qag, &peers::gsl_qags, &peers::scipy_cubic_spline,
+    &peers::scipy_make_interp_spline, &peers::scipy_bspline, &peers::scipy_quad, &peers::bezier_easing_3,
+    &peers::bezier_easing_2, &peers::mapbox_unitbezier};
 
 /// What one item of a benchmark is: the unit of its time per operation.
 struct operation {

@@ -49,6 +49,8 @@ import scipy
 from scipy.integrate import IntegrationWarning, quad
 from scipy.interpolate import BSpline, CubicSpline, PchipInterpolator, make_interp_spline
 
+# The peer ids this driver writes (each declared in bench/harness/vocabulary.hpp).
+PEERS = ("peer_scipy_cubic_spline", "peer_scipy_make_interp_spline", "peer_scipy_bspline", "peer_scipy_quad")
 INV_PHI = 0.6180339887498949  # 1 / golden ratio, as harness/sweeps.hpp
 QUICK_TOLS = (1e-6, 1e-10, 1e-14)
 FULL_TOLS = (1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14)

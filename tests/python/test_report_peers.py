@@ -102,9 +102,10 @@ class Joins(unittest.TestCase):
         acc = load("accuracy_gsl.json")
         rows = rp.version_rows(acc, [("/r/peers_scipy.json", {"driver": "scipy", "versions": {"SciPy": "1.10.1"},
                                                                "peer_records": [{}, {}]})])
-        self.assertEqual(rows[0], ["GSL", "2.7.1", "accuracy runner (always)", 14])
-        self.assertEqual(rows[1], ["SciPy", "1.10.1", "peers_scipy.json (scripts/peers.sh)", 2])
-        self.assertEqual(rp.missing_drivers([]), ["SciPy (scripts/peers/scipy_driver.py)"])
+        self.assertEqual(rows[0], ["GSL 2.7.1", "accuracy runner (always)", 14])
+        self.assertEqual(rows[1], ["SciPy 1.10.1", "peers_scipy.json (scripts/peers.sh)", 2])
+        self.assertEqual(rp.missing_drivers([("p", {"driver": "scipy"})]),
+                         ["bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)"])
 
     def test_malformed_peer_file_names_the_file(self):
         d = tempfile.mkdtemp()
@@ -206,6 +207,88 @@ class ScipyRecorded(unittest.TestCase):
                          "not_guaranteed")
 
 
+EASING = os.path.join(DATA, "easing")
+
+
+@unittest.skipUnless(importlib.util.find_spec("mpmath"), "the easing truth needs python3-mpmath")
+class EasingRecorded(unittest.TestCase):
+    """Recorded: scripts/peers.sh --quick with Node 20.20.2 (bezier-easing 3.2.0 and 2.1.0,
+    @mapbox/unitbezier 1.0.0), cases css_vertical_start and css_wild_overshoot, and curvebench
+    sample's values of the same cases at the same times (exact and table_newton solvers)."""
+
+    def setUp(self):
+        import easing_results
+        self.er = easing_results
+
+    def doc(self):
+        driver = load(os.path.join("easing", "easing_driver.json"))
+        specs = {}
+        for case in {r["case"] for r in driver["runs"]}:
+            with open(os.path.join(HERE, "..", "..", "bench", "cases", case + ".json"), encoding="utf-8") as f:
+                specs[case] = json.load(f)
+
+        def reader(suffix):
+            return lambda case, times: self.er.read_curvebench(os.path.join(EASING, case + suffix), times)
+        return self.er.assemble(driver, specs, reader(".csv"), reader(".table_newton.csv"))
+
+    def test_truth_of_the_definition(self):
+        # cubic-bezier(0, 0, 1, 1) has x(u) = y(u): the value is the progress itself.
+        for t in (0.0, 0.1, 0.37, 0.5, 0.999, 1.0):
+            self.assertLess(abs(float(self.er.cubic_bezier_truth([0, 0, 1, 1], t)) - t), 1e-45)
+        # A point-symmetric easing (x1, y1, x2, y2) = (a, b, 1 - a, 1 - b) passes through (0.5, 0.5),
+        # and y(1 - t) = 1 - y(t).
+        p = [0.25, 1.5, 0.75, -0.5]  # exact in binary, so the symmetry is exact
+        self.assertLess(abs(self.er.cubic_bezier_truth(p, 0.5) - 0.5), 1e-45)
+        self.assertLess(abs(self.er.cubic_bezier_truth(p, 0.25) + self.er.cubic_bezier_truth(p, 0.75) - 1), 1e-45)
+
+    def test_recorded_errors(self):
+        recs = {(r["case"], r["method"]): r for r in self.doc()["peer_records"]}
+        self.assertEqual(len(recs), 6)
+        # bezier-easing 3.2.0 solves x(t) = x in closed form: a few eps; 2.1.0's Newton / bisection
+        # stops 1.2e-9 away on the wild overshoot; unitbezier's epsilon 1e-6 shows as ~1e-5 there.
+        self.assertLess(recs[("css_wild_overshoot", "peer_bezier_easing_3")]["error"], 64)
+        self.assertGreater(recs[("css_wild_overshoot", "peer_bezier_easing_2")]["abs_error"], 1e-10)
+        unit = recs[("css_wild_overshoot", "peer_mapbox_unitbezier")]
+        self.assertGreater(unit["abs_error"], unit["documented_tolerance"])
+        for r in recs.values():
+            self.assertLess(r["counterpart_error"], 64)  # curvebench with the exact solver
+            self.assertEqual(r["library"].split(" ")[1], {"peer_bezier_easing_3": "3.2.0", "peer_bezier_easing_2": "2.1.0",
+                                                          "peer_mapbox_unitbezier": "1.0.0"}[r["method"]])
+
+    def test_findings_and_table(self):
+        doc = self.doc()
+        f = rp.findings(doc["peer_records"])
+        self.assertTrue(any(x.startswith("peer_mapbox_unitbezier on css_wild_overshoot: absolute error") for x in f), f)
+        self.assertFalse(any(x.startswith("peer_bezier_easing_3") for x in f), f)
+        rows = rp.eval_rows([], doc["peer_records"])
+        self.assertTrue(all(r[3] == "curvebench css channel, solver exact" and r[4] < 64 for r in rows), rows)
+        self.assertTrue(any("table_newton" in n for n in doc["notes"]))
+
+    def test_curvebench_values_at_other_times_are_refused(self):
+        times = load(os.path.join("easing", "easing_driver.json"))["runs"][0]["times"]
+        with self.assertRaises(self.er.EasingResultError):
+            self.er.read_curvebench(os.path.join(EASING, "css_vertical_start.csv"), times[:-1])
+        with self.assertRaises(self.er.EasingResultError):
+            self.er.read_curvebench(os.path.join(EASING, "css_vertical_start.csv"), [t + 1e-9 for t in times])
+
+
+class PeerIdsInTheVocabulary(unittest.TestCase):
+    def test_every_peer_id_written_is_declared(self):
+        import re
+        with open(os.path.join(HERE, "..", "..", "bench", "harness", "vocabulary.hpp"), encoding="utf-8") as f:
+            declared = set(re.findall(r'"(peer_[a-z0-9_]+)"', f.read()))
+        written = {r["method"] for r in load("accuracy_gsl.json")["peer_records"]}
+        written |= {r["method"] for r in scipy_doc()["peer_records"]}
+        with open(os.path.join(SCRIPTS, "peers", "scipy_driver.py"), encoding="utf-8") as f:
+            peers_line = next(line for line in f if line.startswith("PEERS = "))
+        written |= set(re.findall(r'"(peer_[a-z0-9_]+)"', peers_line))
+        with open(os.path.join(SCRIPTS, "peers", "easing_driver.mjs"), encoding="utf-8") as f:
+            written |= set(re.findall(r"^\s*(peer_[a-z0-9_]+):", f.read(), re.M))
+        written |= {r["peer"] for r in load(os.path.join("easing", "easing_driver.json"))["runs"]}
+        self.assertTrue(written)
+        self.assertEqual(written - declared, set())
+
+
 @unittest.skipUnless(importlib.util.find_spec("scipy"), "the SciPy driver needs python3-scipy")
 class ScipyDriver(unittest.TestCase):
     def setUp(self):
@@ -250,14 +333,15 @@ class ReportWithAndWithoutPeers(unittest.TestCase):
     def test_with_peer_records(self):
         report = self.run_report(load("accuracy_gsl.json"))
         self.assertIn("## Peers: the libraries users would pick instead", report)
-        self.assertIn("| GSL | 2.7.1 | accuracy runner (always) | 14 |", report)
+        self.assertIn("| GSL 2.7.1 | accuracy runner (always) | 14 |", report)
         self.assertIn("| natural_cubic_2d | peer_gsl_cspline | 0.438 | default | 0.343 |", report)
         self.assertIn("reported success, but its true relative error 5.35e-09", report)
 
     def test_with_the_scipy_driver_joined(self):
         report = self.run_report(load("accuracy_gsl.json"), [("peers_scipy.json", scipy_doc())])
-        self.assertIn("| SciPy | 1.10.1 | peers_scipy.json (scripts/peers.sh) | 14 |", report)
-        self.assertNotIn("Optional peers that did not run", report)
+        self.assertIn("| SciPy 1.10.1, NumPy 1.24.2, Python 3.11.2 | peers_scipy.json (scripts/peers.sh) | 14 |", report)
+        self.assertIn("Optional peers that did not run (no reports/peers_<driver>.json; run scripts/peers.sh): "
+                      "bezier-easing", report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | peer_scipy_make_interp_spline | 661 | default | 0.813 |", report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | tol=1e-10 | peer_scipy_quad | 5.35e-09 |", report)
 
