@@ -179,17 +179,21 @@ def findings(peer_records, own_records=()):
             if r.get("status") == "converged" and err > tol:
                 out.append(f"{where}: reported success, but its true relative error {lib.fmt(err)} is "
                            f"{lib.fmt(err / tol)} times the requested tolerance {lib.fmt(tol)}.")
-        if r["quantity"] == "eval" and isinstance(err, (int, float)) and err >= EVAL_FINDING_ULPS:
+        doc_tol, abs_err = r.get("documented_tolerance"), r.get("abs_error")
+        if (r["quantity"] == "eval" and isinstance(err, (int, float)) and err >= EVAL_FINDING_ULPS
+                and doc_tol is None):  # a peer with a documented precision is held to that instead
             what = f"derivative of order {r['setting'].split('=')[-1]}" if r.get("setting") else "values"
-            own = [o for o in own_records
-                   if o["case"] == r["case"] and o["quantity"] == "eval" and o["method"] == "default"]
-            beside = f" (curvebench's default evaluation: {lib.fmt(own[0]['error'])})" if own else ""
+            if isinstance(r.get("counterpart_error"), (int, float)):
+                beside = f" ({r['counterpart']['method']}: {lib.fmt(r['counterpart_error'])})"
+            else:  # curvebench's eval records are of values only: no figure beside a derivative
+                own = [o for o in own_records if not r.get("setting") and o["case"] == r["case"]
+                       and o["quantity"] == "eval" and o["method"] == "default"]
+                beside = f" (curvebench's default evaluation: {lib.fmt(own[0]['error'])})" if own else ""
             out.append(f"{where}: error {lib.fmt(err)} eps(double) x size in its {what} against the exact curve of "
                        f"the same data{beside}.")
-        doc_tol, abs_err = r.get("documented_tolerance"), r.get("abs_error")
         if isinstance(doc_tol, (int, float)) and isinstance(abs_err, (int, float)) and abs_err > doc_tol:
-            out.append(f"{where}: absolute error {lib.fmt(abs_err)} in its value, beyond the {lib.fmt(doc_tol)} it "
-                       f"documents as its solver's precision (the eval table has the error in eps x size).")
+            out.append(f"{where}: absolute error {lib.fmt(abs_err)} in its value ({lib.fmt(err)} eps(double) x size), "
+                       f"beyond the {lib.fmt(doc_tol)} it documents as its solver's precision.")
         if r.get("bounded") is False and isinstance(err, (int, float)) and isinstance(est, (int, float)):
             out.append(f"{where}: its error estimate {lib.fmt(est)} does not bound its true error {lib.fmt(err)} "
                        f"(under by {lib.fmt(err / est) if est > 0 else 'inf'}x; status "
@@ -219,12 +223,14 @@ def honesty_rows(peer_records):
     return [[m, q, n, b, f"{100.0 * b / n:.1f}%"] for (m, q), (n, b) in sorted(stats.items())]
 
 
-def speed_rows(bench_rows, vocab, peer_ids):
-    """Headline ratios (report_lib.headline_ratios) of the benchmark rows whose peer is one of
-    peer_ids: [family, data, ours, peer, ours ns per op, peer ns per op, ours / peer]."""
+def speed_rows(bench_rows, vocab, libraries):
+    """Headline ratios (report_lib.headline_ratios) of the benchmark rows whose peer belongs to one
+    of `libraries` (the vocabulary's library names, "GSL"): [family, data, ours, peer, ours ns per
+    op, peer ns per op, ours / peer]. Peers timed without an accuracy record (GSL's akima and
+    steffen, which no curvebench family equals) are listed too."""
     rows = []
     for o, p, ratio in lib.headline_ratios(bench_rows, vocab):
-        if p["algorithm"] in peer_ids:
+        if vocab.peers.get(p["algorithm"], {}).get("library") in libraries:
             rows.append([o["family"], lib.args_text(lib.data_args(o, vocab)) or "-", lib.display_algorithm(o, vocab),
                          lib.display_algorithm(p, vocab), o["ns_per_op"], p["ns_per_op"], ratio])
     return rows
@@ -276,8 +282,8 @@ def peers_section(acc, report_dir, bench_rows, vocab):
         md += ["", "Do the peers' error estimates bound their errors?", ""]
         md.append(lib.table(["peer", "quantity", "results with estimate", "estimate >= true error", "honest"], hon))
 
-    peer_ids = {r["method"] for r in peer_records}
-    sp = speed_rows(bench_rows, vocab, peer_ids)
+    libraries = {vocab.peers[r["method"]]["library"] for r in peer_records if r["method"] in vocab.peers}
+    sp = speed_rows(bench_rows, vocab, libraries)
     if sp:
         md += ["", "### Speed in the benchmarks (same run, same data)", ""]
         md.append(lib.table(["family", "data", "curvebench", "peer", "curvebench ns/op", "peer ns/op",
