@@ -131,7 +131,8 @@ def eval_rows(records, peer_records):
             ours_ns = timed.get((r["case"], "eval", k["method"], k.get("setting") or ""))
         label = f"{r['method']} {r.get('setting') or ''}".strip()
         if c is None and r.get("counterpart") and "counterpart_error" in r:  # measured by the driver's join
-            c = {"method": r["counterpart"]["method"], "error": r["counterpart_error"]}
+            k = r["counterpart"]
+            c = {"method": f"{k['method']} {k.get('setting') or ''}".strip(), "error": r["counterpart_error"]}
         rows.append([r["case"], label, r.get("error"), c["method"] if c else "-", c.get("error") if c else None,
                      r.get("ns_per_op"), ours_ns, _ratio(ours_ns, r.get("ns_per_op"))])
     return rows

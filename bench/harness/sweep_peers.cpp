@@ -5,7 +5,9 @@
 // GSL (the Debian libgsl-dev the build requires):
 //   eval    gsl_spline with gsl_interp_cspline (end "natural") or gsl_interp_cspline_periodic (end
 //           "periodic"), one spline per coordinate on the spec's knots, at the eval sweep's
-//           parameters; error in eps(double) x the curve's size like curvebench's eval records.
+//           parameters; error in eps(double) x the curve's size like curvebench's eval records,
+//           and the first derivative (gsl_spline_eval_deriv, setting "derivative=1") in eps x the
+//           exact derivative's size beside curvebench's own derivative ("counterpart_error").
 //           Only natural_cubic cases with those two ends are the same mathematical curve; GSL has
 //           no clamped or not-a-knot end, and its akima and steffen interpolants are no curvebench
 //           family, so they have no 50-digit reference here (bench_gsl times them).
@@ -32,6 +34,7 @@
 #include <gsl/gsl_spline.h>
 #include <gsl/gsl_version.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -91,7 +94,10 @@ struct peer_record {
   double counterpart_ns_per_op;
 };
 
-json to_json(const case_info& info, const peer_record& r) {
+/// counterpart_error: curvebench's error measured here beside the peer's, where curvebench's own
+/// sweeps keep no record of the same quantity (the first derivative); NaN: none, left out.
+json to_json(const case_info& info, const peer_record& r,
+             double counterpart_error = std::numeric_limits<double>::quiet_NaN()) {
   json j{{"case", info.name},
          {"group", info.group},
          {"quantity", std::string(r.quantity->id)},
@@ -108,6 +114,7 @@ json to_json(const case_info& info, const peer_record& r) {
          {"counterpart", {{"method", r.counterpart_algorithm}, {"setting", r.counterpart_setting}}},
          {"counterpart_ns_per_op", finite_or_null(r.counterpart_ns_per_op)}};
   j["bounded"] = std::isfinite(r.estimate) && std::isfinite(r.error) ? json(r.estimate >= r.error) : json();
+  if (std::isfinite(counterpart_error)) j["counterpart_error"] = counterpart_error;
   return j;
 }
 
@@ -158,18 +165,23 @@ struct gsl_coordinate_splines {
 
   [[nodiscard]] bool ready() const { return peer && peer_status == gsl_strerror(GSL_SUCCESS); }
 
-  /// P(u) and GSL's status (the first failing coordinate's).
-  point<double, Dim> operator()(double u, int& status) const {
+  /// P(u) (order 0) or P'(u) (order 1) and GSL's status (the first failing coordinate's).
+  point<double, Dim> operator()(double u, int order, int& status) const {
     point<double, Dim> out;
     status = GSL_SUCCESS;
     for (int d = 0; d < Dim; ++d) {
-      const int s = gsl_spline_eval_e(splines[d].get(), u, accels[d].get(), &out[d]);
+      const int s = order == 0 ? gsl_spline_eval_e(splines[d].get(), u, accels[d].get(), &out[d])
+                               : gsl_spline_eval_deriv_e(splines[d].get(), u, accels[d].get(), &out[d]);
       if (s != GSL_SUCCESS && status == GSL_SUCCESS) status = s;
     }
     return out;
   }
 };
 
+/// eval records of the GSL splines: the values (error in eps(double) x size, as curvebench's eval
+/// records) and the first derivative (setting "derivative=1", in eps(double) x the size of the
+/// exact derivative at the same parameters, as `curvebench check` measures a user's derivative),
+/// with curvebench's own derivative measured beside it.
 template <int Dim>
 void gsl_eval(const case_info& info, json& out, const any_curve<double, Dim>& c, case_reference<Dim>& ref,
               const sweep& w, const io::field& spec) {
@@ -177,49 +189,69 @@ void gsl_eval(const case_info& info, json& out, const any_curve<double, Dim>& c,
   if (!g.peer) return;
   const interval<double> d = c.domain();
   const std::vector<double> us = sample_parameters(d.lo, d.hi, w.eval_params);
-  peer_record r{&vocab::quantities::eval,
-                g.peer,
-                "",
-                std::numeric_limits<double>::quiet_NaN(),
-                std::numeric_limits<double>::quiet_NaN(),
-                static_cast<double>(us.size()),
-                std::string(arclength::to_string(arclength::result_status::not_guaranteed)),
-                g.peer_status,
-                std::numeric_limits<double>::quiet_NaN(),
-                std::string(vocab::methods::eval_default.id),
-                "",
-                std::numeric_limits<double>::quiet_NaN()};
-  if (g.ready()) {
-    std::vector<point<double, Dim>> values(us.size());
-    int failed = GSL_SUCCESS;
-    for (std::size_t j = 0; j < us.size(); ++j) {
-      int status = GSL_SUCCESS;
-      values[j] = g(us[j], status);
-      if (status != GSL_SUCCESS && failed == GSL_SUCCESS) failed = status;
+  const double n = static_cast<double>(us.size());
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (int order : {0, 1}) {
+    const std::string setting = order == 0 ? std::string() : "derivative=1";
+    peer_record r{&vocab::quantities::eval,
+                  g.peer,
+                  setting,
+                  nan,
+                  nan,
+                  n,
+                  std::string(arclength::to_string(arclength::result_status::not_guaranteed)),
+                  g.peer_status,
+                  nan,
+                  std::string(vocab::methods::eval_default.id),
+                  setting,
+                  nan};
+    double counterpart_error = nan;
+    const auto ours = [&](double u) { return order == 0 ? c(u) : c.derivative(u, 1); };
+    if (g.ready()) {
+      std::vector<point<double, Dim>> values(us.size());
+      int failed = GSL_SUCCESS;
+      for (std::size_t j = 0; j < us.size(); ++j) {
+        int status = GSL_SUCCESS;
+        values[j] = g(us[j], order, status);
+        if (status != GSL_SUCCESS && failed == GSL_SUCCESS) failed = status;
+      }
+      r.peer_status = gsl_strerror(failed);
+      if (failed == GSL_SUCCESS) {
+        if (order == 0) {
+          ref.set_eval_parameters(us);
+          r.error = ref.eval_error(values);
+        } else {
+          double size = 0;
+          for (double u : us) size = std::max(size, ref.exact(u, 1).cwiseAbs().maxCoeff());
+          if (!(size > 0)) size = 1;
+          double peer_max = 0, ours_max = 0;
+          for (std::size_t j = 0; j < us.size(); ++j) {
+            peer_max = std::max(peer_max, ref.difference(us[j], 1, values[j]));
+            ours_max = std::max(ours_max, ref.difference(us[j], 1, ours(us[j])));
+          }
+          r.error = peer_max / (eps * size);
+          counterpart_error = ours_max / (eps * size);
+        }
+        r.ns_per_op = ns_per_call([&] {
+                        int status = GSL_SUCCESS;
+                        for (double u : us) {
+                          const point<double, Dim> p = g(u, order, status);
+                          asm volatile("" : : "g"(&p) : "memory");  // keep p
+                        }
+                      }) /
+                      n;
+        r.counterpart_ns_per_op = ns_per_call([&] {
+                                    for (double u : us) {
+                                      const point<double, Dim> p = ours(u);
+                                      asm volatile("" : : "g"(&p) : "memory");
+                                    }
+                                  }) /
+                                  n;
+      }
     }
-    r.peer_status = gsl_strerror(failed);
-    if (failed == GSL_SUCCESS) {
-      ref.set_eval_parameters(us);
-      r.error = ref.eval_error(values);
-      const double n = static_cast<double>(us.size());
-      r.ns_per_op = ns_per_call([&] {
-                      int status = GSL_SUCCESS;
-                      for (double u : us) {
-                        const point<double, Dim> p = g(u, status);
-                        asm volatile("" : : "g"(&p) : "memory");  // keep p
-                      }
-                    }) /
-                    n;
-      r.counterpart_ns_per_op = ns_per_call([&] {
-                                  for (double u : us) {
-                                    const point<double, Dim> p = c(u);
-                                    asm volatile("" : : "g"(&p) : "memory");
-                                  }
-                                }) /
-                                n;
-    }
+    out.push_back(to_json(info, r, counterpart_error));
   }
-  out.push_back(to_json(info, r));
 }
 
 template <int Dim>

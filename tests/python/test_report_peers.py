@@ -1,6 +1,7 @@
 """Unit tests of scripts/report_peers.py (REPORT.md's "Peers" section) on outputs recorded from real
 runs and checked into tests/data/peers/: accuracy_gsl.json is two cases of a quick accuracy run
-(`curvebench accuracy --quick`, GSL 2.7.1), trimmed to the records the section joins. Run by ctest
+(`curvebench accuracy --quick` at d4b38f4 plus the derivative records, GSL 2.7.1), trimmed to
+the records the section joins. Run by ctest
 (report_py) with the other tests of tests/python."""
 import copy
 import importlib.util
@@ -77,11 +78,19 @@ class Joins(unittest.TestCase):
         acc = load("accuracy_gsl.json")
         rows = rp.eval_rows(acc["records"], acc["peer_records"])
         self.assertEqual([r[:2] for r in rows], [["natural_cubic_2d", "peer_gsl_cspline"],
-                                                 ["natural_cubic_knot_ratio_1e4", "peer_gsl_cspline"]])
+                                                 ["natural_cubic_2d", "peer_gsl_cspline derivative=1"],
+                                                 ["natural_cubic_knot_ratio_1e4", "peer_gsl_cspline"],
+                                                 ["natural_cubic_knot_ratio_1e4", "peer_gsl_cspline derivative=1"]])
         own = {r["case"]: r["error"] for r in acc["records"] if r["quantity"] == "eval"}
+        derivative = {r["case"]: r for r in acc["peer_records"] if r["setting"] == "derivative=1"}
         for r in rows:
-            self.assertEqual(r[3], "default")
-            self.assertEqual(r[4], own[r[0]])
+            if r[1].endswith("derivative=1"):
+                # curvebench keeps no derivative record: its error was measured beside GSL's.
+                self.assertEqual(r[3], "default derivative=1")
+                self.assertEqual(r[4], derivative[r[0]]["counterpart_error"])
+            else:
+                self.assertEqual(r[3], "default")
+                self.assertEqual(r[4], own[r[0]])
             self.assertAlmostEqual(r[7], r[6] / r[5])
 
     def test_length_rows_pair_each_tolerance_with_adaptive_gk_at_the_same_tolerance(self):
@@ -102,7 +111,7 @@ class Joins(unittest.TestCase):
         acc = load("accuracy_gsl.json")
         rows = rp.version_rows(acc, [("/r/peers_scipy.json", {"driver": "scipy", "versions": {"SciPy": "1.10.1"},
                                                                "peer_records": [{}, {}]})])
-        self.assertEqual(rows[0], ["GSL 2.7.1", "accuracy runner (always)", 14])
+        self.assertEqual(rows[0], ["GSL 2.7.1", "accuracy runner (always)", 16])
         self.assertEqual(rows[1], ["SciPy 1.10.1", "peers_scipy.json (scripts/peers.sh)", 2])
         self.assertEqual(rp.missing_drivers([("p", {"driver": "scipy"})]),
                          ["bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)"])
@@ -357,7 +366,7 @@ class ReportWithAndWithoutPeers(unittest.TestCase):
     def test_with_peer_records(self):
         report = self.run_report(load("accuracy_gsl.json"))
         self.assertIn("## Peers: the libraries users would pick instead", report)
-        self.assertIn("| GSL 2.7.1 | accuracy runner (always) | 14 |", report)
+        self.assertIn("| GSL 2.7.1 | accuracy runner (always) | 16 |", report)
         self.assertIn("| natural_cubic_2d | peer_gsl_cspline | 0.438 | default | 0.343 |", report)
         self.assertIn("reported success, but its true relative error 5.35e-09", report)
 
