@@ -27,6 +27,7 @@ from collections import defaultdict
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_lib as lib  # noqa: E402
 import report_peers  # noqa: E402
+import report_channel  # noqa: E402
 from report_lib import TARGETS, pareto_front  # noqa: E402
 
 import matplotlib  # noqa: E402
@@ -368,6 +369,8 @@ def main():
                         [[r["case"], family.get(r["case"], "-"), r["method"], r["error"]] for r in ev]))
     else:
         md.append("No results.")
+
+    md += report_channel.channel_section(acc, bench_rows, plot_dir, plt, atomic_savefig)
 
     if subjects:
         md += ["", "## Your implementations (subjects) beside curvebench's methods", ""]

@@ -148,10 +148,11 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
     EXPECT_EQ(keys, m->settings) << "every declared key, in order";
     EXPECT_TRUE(r["error"].is_number());
   }
-  // Every method of the vocabulary produced records for each of its quantities.
+  // Every method of the vocabulary produced records for each of its quantities (the channel
+  // quantities come from channel cases only: tests/test_channel_sweep.cpp checks those).
   for (const hv::method* m : hv::all_methods) {
     for (const hv::quantity* q : hv::all_quantities) {
-      if (hv::lists(m->quantities, q->id)) {
+      if (hv::lists(m->quantities, q->id) && !q->id.starts_with("channel_")) {
         EXPECT_TRUE(seen.count({std::string(q->id), std::string(m->id)})) << q->id << " " << m->id;
       }
     }

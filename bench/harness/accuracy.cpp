@@ -33,8 +33,9 @@ json run_dim(const case_info& info, bool quick) {
   sweep_s_of_u<Dim>(k, c, ref, w);
   sweep_u_of_s<Dim>(k, c, ref, w);
   sweep_eval<Dim>(k, c, ref, w, info.spec);
-  json properties;
+  json properties, channel;
   if constexpr (Dim == 2) properties = sweep_audit(info);
+  if (info.spec.value("type", "") == "channel") channel = sweep_channel(k, info, w);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return {{"records", k.records()},
           {"orders", k.orders()},
@@ -50,6 +51,7 @@ json run_dim(const case_info& info, bool quick) {
             {"reference_error", ref.length_error()},
             {"speed_minima", ref.speed_minima()},
             {"properties", properties},
+            {"channel", channel},
             {"seconds", seconds}}}};
 }
 

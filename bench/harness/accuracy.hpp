@@ -8,6 +8,11 @@
 //   u_of_s   max over targets s_j of |s(u_method(s_j)) - s_j| / L   (the |ds| measure of issue 4)
 //   eval     max over parameters of |P_method(u) - P(u)|_inf / (eps(double) * scale), the
 //            evaluation error of each algorithm in units of double's epsilon times the curve's size
+//   channel_value, channel_keys, channel_monotone, channel_time   (cases of type "channel" only) a
+//            keyframe channel's value error per time solver in float and double, in ulps of its
+//            value range, at the key times, its monotonicity violations and the solver's time
+//            residual (sweeps.hpp, sweep_channel; the case's "channel" summary holds the value range,
+//            a picture, and for tool "exact" the tools' models of the same keys and their disagreement)
 // (vocab::quantities; the methods, settings and theory orders are those of harness/vocabulary.hpp.
 // Eval records name the evaluation algorithm, have the setting "" and the status "not_guaranteed":
 // an evaluation gives no error estimate of its own.)
@@ -22,8 +27,8 @@
 // apart from "records" so that the gate judges curvebench's methods only, and the versions to
 // context.peers.
 // Implementation: the curvebench_harness library (bench/harness/): one unit per sweep
-// (sweep_length, sweep_s_of_u, sweep_u_of_s, sweep_eval, sweep_audit), the 50-digit reference and
-// u(s) anchors (reference.cpp, the one unit with 50-digit families), the record sink and order fit
+// (sweep_length, sweep_s_of_u, sweep_u_of_s, sweep_eval, sweep_audit, sweep_channel), the 50-digit
+// reference and u(s) anchors (reference.cpp; sweep_channel also builds the channel at 50 digits), the record sink and order fit
 // (records, order_fit), the worker pool (pool), the writers (writers) and run_case/run_accuracy
 // composing them (accuracy.cpp).
 #pragma once

@@ -3,6 +3,7 @@
 #include "harness/order_fit.hpp"
 
 #include "curvebench/arclength/result.hpp"
+#include "curvebench/core/error.hpp"
 
 #include <cmath>
 #include <limits>
@@ -37,6 +38,11 @@ void record_sink::add(const vocab::quantity& q, const vocab::method& m, const st
 void record_sink::add_eval(std::string_view algorithm, double error, double evaluations) {
   push(vocab::quantities::eval.id, algorithm, std::string(), error, std::numeric_limits<double>::quiet_NaN(),
        evaluations, arclength::to_string(arclength::result_status::not_guaranteed));
+}
+
+void record_sink::annotate(const nlohmann::json& fields) {
+  if (records_.empty()) throw invalid_input("record_sink::annotate: no record yet");
+  for (const auto& [key, value] : fields.items()) records_.back()[key] = value.is_number() ? finite_or_null(value.get<double>()) : value;
 }
 
 void record_sink::end(const vocab::quantity& q, const vocab::method& m) {

@@ -29,6 +29,9 @@ class record_sink {
   /// One eval record of an evaluation algorithm (vocab::methods::eval_default.id or a family's).
   void add_eval(std::string_view algorithm, double error, double evaluations);
 
+  /// Adds fields to the last record (a quantity's extra figures, named in its vocabulary doc).
+  void annotate(const nlohmann::json& fields);
+
   /// Opens a series: forgets the (cost, error) points added so far.
   void begin() { series_.clear(); }
   /// Closes the series of method m: when m.theory > 0, records the order fitted over it (when at

@@ -30,12 +30,13 @@ struct sweep {
   std::size_t params;       ///< s(u), u(s) sample count
   std::size_t eval_params;  ///< evaluation-accuracy sample count
   double max_table_evals;   ///< skip forward-difference settings above this many evaluations
+  std::size_t channel_times;  ///< keyframe-channel sample times (sorted; monotonicity is checked between them)
 };
 
 inline sweep settings(bool quick) {
   if (quick)
     return {{2, 4, 8, 16}, {1, 2, 4, 8, 16}, {1e-6, 1e-10, 1e-14}, {8, 16, 32, 64, 128, 256}, {1e-4, 1e-6, 1e-8},
-            {16, 64, 256, 1024}, {1e-8, 1e-12}, 9, 65, 2e5};
+            {16, 64, 256, 1024}, {1e-8, 1e-12}, 9, 65, 2e5, 600};
   return {{1, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20},
           {1, 2, 4, 8, 16, 32, 64},
           {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14},
@@ -45,7 +46,8 @@ inline sweep settings(bool quick) {
           {1e-6, 1e-9, 1e-12, 1e-14},
           33,
           257,
-          4e6};
+          4e6,
+          4000};
 }
 
 /// Calls f(method, setting, run) for every length method (a vocab::method; its `theory` is the

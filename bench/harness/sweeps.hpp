@@ -68,6 +68,16 @@ nlohmann::json sweep_peers(const case_info& info, const any_curve<double, Dim>& 
 /// The GSL version the harness was built against ("2.7.1").
 std::string gsl_version();
 
+/// channel (cases of type "channel"): per time solver (vocab::time_solver_methods) in float and
+/// double (setting bits=32 / bits=64), records of channel_value, channel_keys, channel_monotone and
+/// channel_time against the same spec evaluated at real50 with the exact inversion, at
+/// w.channel_times sorted times over the keyed range widened by a quarter on each side. Returns
+/// the case's channel summary: tool, keys, value_range, window, samples, refused (solvers whose
+/// float model refuses the rounded keys, with the message), picture (values and handles), and for
+/// tool "exact" models (each tool's rules applied to the same keys and the largest difference per
+/// pair over the keyed range, in value ranges).
+nlohmann::json sweep_channel(record_sink& k, const case_info& info, const sweep& w);
+
 /// Seed 001's properties measured on a 2D case: the markdown row, or null when not audited.
 nlohmann::json sweep_audit(const case_info& info);
 

@@ -32,10 +32,27 @@ inline constexpr quantity length{"length", "|L_method - L| / L for the whole cur
 inline constexpr quantity s_of_u{"s_of_u", "max over parameters u_j of |s_method(u_j) - s(u_j)| / L"};
 inline constexpr quantity u_of_s{"u_of_s", "max over targets s_j of |s(u_method(s_j)) - s_j| / L"};
 inline constexpr quantity eval{"eval", "max |P_method(u) - P(u)|_inf / (eps(double) x the curve's size)"};
+// Keyframe channels (cases of type "channel"); bits=32 / bits=64 is the precision of the model
+// (float: its keys rounded to float as a float runtime holds them; the query times are rounded too,
+// and the truth is taken at the rounded time).
+inline constexpr quantity channel_value{"channel_value",
+                                        "max over sample times of |v_model(t) - v(t)| / (eps x the channel's value "
+                                        "range): ulps of the range (record field rms: the RMS in the same unit)"};
+inline constexpr quantity channel_keys{"channel_keys",
+                                       "max over the key times of |v_model(t_k) - v(t_k)| / (eps x the value range)"};
+inline constexpr quantity channel_monotone{"channel_monotone",
+                                           "consecutive sorted sample pairs where the model's value moves against "
+                                           "the exact value's direction (monotonicity violations)"};
+inline constexpr quantity channel_time{"channel_time",
+                                       "max over samples in bezier segments of |x(u_solver) - t| / (eps x the "
+                                       "segment's duration), the time solver's residual (record fields "
+                                       "iterations_mean, iterations_max, not_converged)"};
 }  // namespace quantities
 
-inline constexpr const quantity* all_quantities[] = {&quantities::length, &quantities::s_of_u, &quantities::u_of_s,
-                                                     &quantities::eval};
+inline constexpr const quantity* all_quantities[] = {&quantities::length,        &quantities::s_of_u,
+                                                     &quantities::u_of_s,        &quantities::eval,
+                                                     &quantities::channel_value, &quantities::channel_keys,
+                                                     &quantities::channel_monotone, &quantities::channel_time};
 
 /// A method of the library, as the CLI, the records and the benchmarks name it.
 struct method {
@@ -72,13 +89,47 @@ inline constexpr method newton{"newton", "u_of_s", "tol", 0,
 inline constexpr method eval_default{"default", "eval", "", 0,
                                      "the family's default evaluation; the other eval methods are the algorithms "
                                      "each family offers in the family registry"};
+// The time solvers of a channel's bezier segments (channel/time_solver.hpp), ids as the library
+// and the channel spec's "solver" field name them; setting bits=32 or bits=64.
+#define CURVEBENCH_CHANNEL_QUANTITIES "channel_value channel_keys channel_monotone channel_time"
+inline constexpr method solver_closed_form{"closed_form", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
+                                           "time solver: Cardano / trigonometric roots of the time cubic (Blender, USD)"};
+inline constexpr method solver_table_newton{"table_newton", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
+                                            "time solver: 11-sample table, at most 4 Newton steps, then bisection "
+                                            "(WebKit / Chromium, epsilon 1e-7)"};
+inline constexpr method solver_newton_bisection{"newton_bisection", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
+                                                "time solver: Newton from u = x for at most 8 steps, then bisection "
+                                                "(Servo, unitbezier)"};
+inline constexpr method solver_bisection12{"bisection12", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
+                                           "time solver: 12 bisection steps"};
+inline constexpr method solver_bisection30{"bisection30", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
+                                           "time solver: 30 bisection steps"};
+inline constexpr method solver_isolate_brent{"isolate_brent", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
+                                             "time solver: roots of x'(u) isolate a monotone bracket, then Brent "
+                                             "(Maya's published evaluator)"};
+inline constexpr method solver_curvebench{"curvebench", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
+                                          "time solver: curvebench's own (Halley on the power form in a bracket, "
+                                          "handing over to exact's safeguarded Newton near a vertical tangent)"};
+inline constexpr method solver_exact{"exact", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
+                                     "time solver: safeguarded Newton-bisection on the de Casteljau residual "
+                                     "to the precision's last bit"};
+#undef CURVEBENCH_CHANNEL_QUANTITIES
 }  // namespace methods
+
+/// The time-solver methods, in channel::all_time_solvers' order.
+inline constexpr const method* time_solver_methods[] = {
+    &methods::solver_closed_form, &methods::solver_table_newton, &methods::solver_newton_bisection,
+    &methods::solver_bisection12, &methods::solver_bisection30,  &methods::solver_isolate_brent,
+    &methods::solver_curvebench,  &methods::solver_exact};
 
 inline constexpr const method* all_methods[] = {
     &methods::gauss,         &methods::composite_gauss,   &methods::adaptive_gk,
     &methods::forward_difference, &methods::richardson,   &methods::subdivision,
     &methods::segments_adaptive,  &methods::linear_table, &methods::hermite_table,
-    &methods::hermite_table_polished, &methods::newton,   &methods::eval_default};
+    &methods::hermite_table_polished, &methods::newton,   &methods::eval_default,
+    &methods::solver_closed_form, &methods::solver_table_newton, &methods::solver_newton_bisection,
+    &methods::solver_bisection12, &methods::solver_bisection30,  &methods::solver_isolate_brent,
+    &methods::solver_curvebench,  &methods::solver_exact};
 
 /// A library users would pick instead, timed (and measured) on the same data.
 struct peer {
@@ -160,11 +211,15 @@ inline constexpr operation length{"length", "one arc length of the whole curve (
 inline constexpr operation query{"query", "one u(s) or s(u) query (tables built beforehand)"};
 inline constexpr operation frame{"frame", "one frame of a motion path: P(U(L S(t)))"};
 inline constexpr operation ease{"ease", "one ease value and its velocity"};
+inline constexpr operation channel_value{"channel_value",
+                                         "one keyframe channel's value at one time (segment search and time "
+                                         "inversion included)"};
 }  // namespace operations
 
 inline constexpr const operation* all_operations[] = {&operations::evaluation, &operations::basis,
                                                       &operations::length,     &operations::query,
-                                                      &operations::frame,      &operations::ease};
+                                                      &operations::frame,      &operations::ease,
+                                                      &operations::channel_value};
 
 /// An algorithm a benchmark times that is not a method above: the evaluation algorithms each
 /// family offers (and the ease functions), as the benchmark names spell them.
@@ -204,6 +259,15 @@ inline constexpr algorithm ease_distance_keys{"distance_keys", "",
                                               "ease: monotone interpolation of (time, distance) keys"};
 inline constexpr algorithm ease_speed_curve{"speed_curve", "interpolation",
                                             "ease: the integral of an interpolated speed curve"};
+inline constexpr algorithm maya_animcurve{"maya_animcurve", "bits",
+                                          "channel: Maya's model of the keys (weighted fixed tangents, "
+                                          "isolate_brent; harness/channel_models.hpp)"};
+inline constexpr algorithm usd_spline{"usd_spline", "bits",
+                                      "channel: OpenUSD Ts model of the keys (keep_ratio, closed-form solver)"};
+inline constexpr algorithm blender_fcurve{"blender_fcurve", "bits",
+                                          "channel: Blender's F-curve model of the keys (free handles, float32)"};
+inline constexpr algorithm gltf_sampler{"gltf_sampler", "bits",
+                                        "channel: a glTF cubicspline sampler with the keys' handle slopes"};
 inline constexpr algorithm monotone_cubic{"monotone_cubic", "",
                                           "motion::monotone_cubic: C1 shape-preserving cubic (Fritsch-Butland "
                                           "slopes), binary search and Horner"};
@@ -227,6 +291,10 @@ inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
                                                       &algorithms::ease_smootherstep,
                                                       &algorithms::ease_distance_keys,
                                                       &algorithms::ease_speed_curve,
+                                                      &algorithms::maya_animcurve,
+                                                      &algorithms::usd_spline,
+                                                      &algorithms::blender_fcurve,
+                                                      &algorithms::gltf_sampler,
                                                       &algorithms::monotone_cubic};
 
 /// A benchmark-name key whose value picks a variant of how the algorithm is called, not the data
@@ -267,13 +335,15 @@ inline constexpr counter table_intervals{"table_intervals", "setting", "interval
 inline constexpr counter rel_error{"rel_error", "error", "|value - reference| / reference (a length)"};
 inline constexpr counter max_ds_rel{"max_ds_rel", "error", "max |s(u_j) - s_j| / L over the query set (u(s), frames)"};
 inline constexpr counter max_err_eps{"max_err_eps", "error", "max evaluation error in eps(double) x the curve's size"};
+inline constexpr counter max_err_range_eps{"max_err_range_eps", "error",
+                                           "max channel value error in eps(Real) x the channel's value range"};
 inline constexpr counter estimate_rel{"estimate_rel", "estimate", "the method's own error estimate / L"};
 }  // namespace counters
 
 inline constexpr const counter* all_counters[] = {&counters::evaluations, &counters::iterations,
                                                   &counters::table_intervals, &counters::rel_error,
                                                   &counters::max_ds_rel,      &counters::max_err_eps,
-                                                  &counters::estimate_rel};
+                                                  &counters::max_err_range_eps, &counters::estimate_rel};
 
 /// The method with this id, or nullptr.
 [[nodiscard]] constexpr const method* find_method(std::string_view id) {

@@ -1,0 +1,82 @@
+"""Unit tests of report_channel (the keyframe-channel section of REPORT.md): the corpus' worst
+figures per solver and precision, the goal line of curvebench's solver, the tools' disagreement
+table and the join with the channel benchmarks. Run by ctest (report_py)."""
+import os
+import sys
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
+import report_channel as rc  # noqa: E402
+
+
+def rec(case, quantity, method, bits, error, **extra):
+    r = {"case": case, "group": "channel", "quantity": quantity, "method": method, "setting": f"bits={bits}",
+         "error": error, "estimate": None, "bounded": None, "evaluations": 600, "status": "not_guaranteed"}
+    r.update(extra)
+    return r
+
+
+RECORDS = [
+    rec("s", "channel_value", "closed_form", 64, 17.0, rms=3.0),
+    rec("s", "channel_value", "closed_form", 32, 40.0, rms=5.0),
+    rec("s", "channel_value", "curvebench", 64, 1.0, rms=0.4),
+    rec("s", "channel_value", "curvebench", 32, 2.0, rms=0.5),
+    rec("t", "channel_value", "curvebench", 64, 3.5, rms=0.2),
+    rec("t", "channel_value", "exact", 64, 2.0, rms=0.3),
+    rec("s", "channel_monotone", "curvebench", 64, 0),
+    rec("s", "channel_monotone", "closed_form", 64, 2),
+    rec("t", "channel_monotone", "closed_form", 64, 1),
+    rec("s", "channel_time", "curvebench", 64, 1.5, iterations_mean=3.0, iterations_max=5, not_converged=0),
+    rec("s", "eval", "default", 64, 1.0),  # not a channel record: ignored
+]
+
+
+class ChannelSection(unittest.TestCase):
+    def test_worst_is_over_cases_per_precision(self):
+        recs = rc.channel_records(RECORDS)
+        self.assertEqual(rc.worst(recs, "channel_value", "curvebench", 64), (3.5, "t"))
+        self.assertEqual(rc.worst(recs, "channel_value", "curvebench", 32), (2.0, "s"))
+        self.assertEqual(rc.worst(recs, "channel_value", "curvebench", 64, "rms"), (0.4, "s"))
+        self.assertEqual(rc.worst(recs, "channel_value", "bisection12", 64), (None, None))
+        self.assertEqual(rc.total(recs, "channel_monotone", "closed_form", 64), 3)
+
+    def test_goal_line_names_the_other_accurate_solvers(self):
+        v, case, mono, accurate = rc.goal_line(rc.channel_records(RECORDS))
+        self.assertEqual((v, case, mono), (3.5, "t", 0))
+        self.assertEqual(accurate, ["exact"])  # closed_form's 17 ulps miss the 4-ulp goal
+
+    def test_solver_rows_join_the_benchmark_times(self):
+        bench = [{"family": "channel_value", "algorithm": "curvebench", "ns_per_op": 70.0,
+                  "args": [("keys", "64"), ("bits", "64"), ("calls", "single")]},
+                 {"family": "channel_value", "algorithm": "curvebench", "ns_per_op": 60.0,
+                  "args": [("keys", "64"), ("bits", "32"), ("calls", "single")]},
+                 {"family": "other", "algorithm": "curvebench", "ns_per_op": 1.0, "args": []}]
+        times = rc.bench_times(bench)
+        rows = {r[0]: r for r in rc.solver_rows(rc.channel_records(RECORDS), times)}
+        self.assertEqual(set(rows), {"closed_form", "curvebench", "exact"})
+        cb = rows["curvebench"]
+        self.assertEqual(cb[1:4], [3.5, "t", 0.4])
+        self.assertEqual(cb[7], "0 / 0")
+        self.assertEqual(cb[8], 3.0)
+        self.assertEqual((cb[10], cb[12]), (70.0, 60.0))
+        self.assertIsNone(cb[11])  # no sorted benchmark given
+
+    def test_case_matrix_has_a_column_per_solver(self):
+        solvers, rows = rc.case_matrix(rc.channel_records(RECORDS))
+        self.assertEqual(solvers, ["closed_form", "curvebench", "exact"])
+        self.assertEqual(rows, [["s", 17.0, 1.0, None], ["t", None, 3.5, 2.0]])
+
+    def test_disagreement_rows(self):
+        cases = [{"name": "s", "channel": {"models": {
+            "disagreement": [{"a": "exact", "b": "maya", "max": 0.2}, {"a": "exact", "b": "usd", "max": 1e-16},
+                             {"a": "maya", "b": "usd", "max": 0.2}, {"a": "maya", "b": "blender", "max": 0.3}],
+            "skipped": {"gltf": "a vertical handle"}}}},
+            {"name": "css", "channel": {"tool": "css"}}]
+        rows, notes = rc.disagreement_rows(cases)
+        self.assertEqual(rows, [["s", 0.2, 1e-16, "n/a", "n/a", "maya vs blender: 0.3"]])
+        self.assertEqual(notes, ["s, gltf: a vertical handle"])
+
+
+if __name__ == "__main__":
+    unittest.main()
