@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <utility>
 
 namespace curvebench::harness {
 
@@ -36,10 +37,11 @@ json run_dim(const case_info& info, bool quick) {
   json properties, channel;
   if constexpr (Dim == 2) properties = sweep_audit(info);
   if (info.spec.value("type", "") == "channel") channel = sweep_channel(k, info, w);
+  json peers = sweep_peers<Dim>(info, c, ref, w);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return {{"records", k.records()},
           {"orders", k.orders()},
-          {"peer_records", sweep_peers<Dim>(info, c, ref, w)},
+          {"peer_records", std::move(peers)},
           {"case",
            {{"name", info.name},
             {"group", info.group},
