@@ -60,6 +60,13 @@ accuracy_args=(accuracy --out "$reports/accuracy.json")
 [[ $quick -eq 1 ]] && accuracy_args+=(--quick)
 "$build/bench/curvebench" "${accuracy_args[@]}"
 
+# The optional peers (scripts/peers.sh installs them) when installed: reports/peers_*.json, which
+# the report joins; the C++ peers (GSL) ran inside the accuracy sweep above.
+peers_args=(--no-install)
+[[ $quick -eq 1 ]] && peers_args+=(--quick)
+CURVEBENCH_TOOL="$build/bench/curvebench" bash "$root/scripts/peers.sh" "${peers_args[@]}" ||
+  echo "bench.sh: an optional peer driver failed (above); REPORT.md goes without it" >&2
+
 if [[ $quick -eq 1 ]]; then
   bench_args=(--benchmark_min_time=0.05)
   # ~900 (case, method, setting) timings, each joined with its error: short runs, the quick suite.

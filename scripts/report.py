@@ -8,7 +8,9 @@ Inputs (all in the reports directory, all produced by scripts):
                    the operation it times and sets items processed: times are shown per operation)
   accuracy.json    the accuracy runner's output: context, records, orders, properties; records
                    marked "subject": true (a user's implementation: `curvebench check`, the subject
-                   API) are shown in their own section beside curvebench's methods
+                   API) are shown in their own section beside curvebench's methods; its
+                   "peer_records" (GSL, always run) and any peers_*.json of scripts/peers.sh make
+                   the Peers section (report_peers.py; an accuracy.json without them is accepted)
 Exits 1, naming the benchmark, on a benchmark the vocabulary does not describe. Every file is
 written under a temporary name and renamed, so an interrupted run never leaves a half-written
 report. Uses Debian's python3-matplotlib (run with /usr/bin/python3); the pure helpers are in
@@ -24,6 +26,7 @@ from collections import defaultdict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_lib as lib  # noqa: E402
+import report_peers  # noqa: E402
 import report_channel  # noqa: E402
 from report_lib import TARGETS, pareto_front  # noqa: E402
 
@@ -409,6 +412,8 @@ def main():
         md.append(table(["case", "quantity", "subject", "error", "curvebench's most accurate", "its error",
                          "curvebench's cheapest at least as accurate"],
                         lib.subject_rows(records, subjects)))
+
+    md += report_peers.peers_section(acc, report_dir, bench_rows, vocab)
 
     md += ["", "## Convergence orders", ""]
     if orders:

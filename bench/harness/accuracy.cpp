@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <utility>
 
 namespace curvebench::harness {
 
@@ -36,9 +37,11 @@ json run_dim(const case_info& info, bool quick) {
   json properties, channel;
   if constexpr (Dim == 2) properties = sweep_audit(info);
   if (info.spec.value("type", "") == "channel") channel = sweep_channel(k, info, w);
+  json peers = sweep_peers<Dim>(info, c, ref, w);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return {{"records", k.records()},
           {"orders", k.orders()},
+          {"peer_records", std::move(peers)},
           {"case",
            {{"name", info.name},
             {"group", info.group},
@@ -119,11 +122,13 @@ int run_accuracy(const accuracy_options& opt) {
            {"suite", {{"name", suite_name}, {"version", suite_version}, {"cases", cases.size()}}},
            {"records", json::array()},
            {"orders", json::array()},
+           {"peer_records", json::array()},
            {"cases", json::array()}};
   for (std::size_t i = 0; i < cases.size(); ++i) {
     if (!failures[i].empty()) continue;
     for (auto& r : results[i]["records"]) out["records"].push_back(std::move(r));
     for (auto& o : results[i]["orders"]) out["orders"].push_back(std::move(o));
+    for (auto& p : results[i]["peer_records"]) out["peer_records"].push_back(std::move(p));
     out["cases"].push_back(results[i]["case"]);
   }
   const char* revision = std::getenv("CURVEBENCH_REVISION");
@@ -132,6 +137,7 @@ int run_accuracy(const accuracy_options& opt) {
                     {"flags", CURVEBENCH_FLAGS},
                     {"quick", opt.quick},
                     {"threads", threads},
+                    {"peers", {{"GSL", gsl_version()}}},
                     {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
   write_results(out, opt.out);
   std::size_t failed = 0;

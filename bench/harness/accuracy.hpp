@@ -20,6 +20,12 @@
 // query plus the set-up (tables, segment lengths) amortized over `amortized_queries` queries.
 // The reference is the same spec instantiated on real50 (exact twin of the double data) and
 // integrated by reference::reference_arc_length (Boost.Math, ~1e-45).
+// Peers (issue 15): the libraries users would pick instead (GSL's splines and QUADPACK, today) are
+// run on every case they can represent by harness/sweep_peers.cpp and measured against the same
+// reference; their records go to "peer_records" (the record format plus "peer": true, "library",
+// "peer_status", the time per operation of the peer and of its curvebench "counterpart"), kept
+// apart from "records" so that the gate judges curvebench's methods only, and the versions to
+// context.peers.
 // Implementation: the curvebench_harness library (bench/harness/): one unit per sweep
 // (sweep_length, sweep_s_of_u, sweep_u_of_s, sweep_eval, sweep_audit, sweep_channel), the 50-digit
 // reference and u(s) anchors (reference.cpp; sweep_channel also builds the channel at 50 digits), the record sink and order fit

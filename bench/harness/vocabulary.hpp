@@ -155,13 +155,48 @@ inline constexpr peer eigen_spline_dynamic_degree{"peer_eigen_spline_dynamic_deg
                                                   "Spline<double, 3, Dynamic>"};
 inline constexpr peer bisection_reintegration{"peer_bisection_full_reintegration", "common practice",
                                               "u(s) by bisection on s(u) re-integrated from u0 (16-point Gauss)"};
+// GSL (issue 15): gsl_spline per coordinate on the spline's knots, and QUADPACK's adaptive
+// Gauss-Kronrod integrating the speed |P'(u)| over the whole domain (epsabs 0, epsrel = tol).
+inline constexpr peer gsl_cspline{"peer_gsl_cspline", "GSL", "gsl_spline, gsl_interp_cspline (natural cubic spline)"};
+inline constexpr peer gsl_cspline_periodic{"peer_gsl_cspline_periodic", "GSL",
+                                           "gsl_spline, gsl_interp_cspline_periodic (periodic cubic spline)"};
+inline constexpr peer gsl_akima{"peer_gsl_akima", "GSL", "gsl_spline, gsl_interp_akima (Akima's local cubic)"};
+inline constexpr peer gsl_steffen{"peer_gsl_steffen", "GSL",
+                                  "gsl_spline, gsl_interp_steffen (Steffen's monotone cubic)"};
+inline constexpr peer gsl_qag{"peer_gsl_qag", "GSL",
+                              "gsl_integration_qag, 15-point Gauss-Kronrod, of the speed over the whole domain"};
+inline constexpr peer gsl_qags{"peer_gsl_qags", "GSL",
+                               "gsl_integration_qags (21-point Gauss-Kronrod with epsilon-algorithm "
+                               "extrapolation) of the speed over the whole domain"};
+// SciPy (issue 15; optional: scripts/peers.sh runs scripts/peers/scipy_driver.py, curvebench check
+// measures it, the records come from reports/peers_scipy.json).
+inline constexpr peer scipy_cubic_spline{"peer_scipy_cubic_spline", "SciPy",
+                                         "scipy.interpolate.CubicSpline (natural, clamped, not-a-knot, periodic)"};
+inline constexpr peer scipy_make_interp_spline{"peer_scipy_make_interp_spline", "SciPy",
+                                               "scipy.interpolate.make_interp_spline, k = 3 (B-spline collocation)"};
+inline constexpr peer scipy_bspline{"peer_scipy_bspline", "SciPy", "scipy.interpolate.BSpline on the spec's knots"};
+inline constexpr peer scipy_quad{"peer_scipy_quad", "SciPy",
+                                 "scipy.integrate.quad (QUADPACK qags) of the speed of SciPy's own spline, "
+                                 "epsabs 0, epsrel = tol, limit 50"};
+// JavaScript easing evaluators (issue 15; optional: scripts/peers.sh runs
+// scripts/peers/easing_driver.mjs on the CSS cubic-bezier cases, npm versions pinned).
+inline constexpr peer bezier_easing_3{"peer_bezier_easing_3", "bezier-easing",
+                                      "bezier-easing 3.2.0: cubic-bezier easing, x(t) = x solved in closed form"};
+inline constexpr peer bezier_easing_2{"peer_bezier_easing_2", "bezier-easing",
+                                      "bezier-easing 2.1.0: cubic-bezier easing, sample table then Newton or "
+                                      "bisection"};
+inline constexpr peer mapbox_unitbezier{"peer_mapbox_unitbezier", "@mapbox/unitbezier",
+                                        "@mapbox/unitbezier 1.0.0: solve(x) with its default epsilon 1e-6"};
 }  // namespace peers
 
 inline constexpr const peer* all_peers[] = {
     &peers::boost_gauss,       &peers::boost_gauss_kronrod15,        &peers::boost_gauss_kronrod31,
     &peers::boost_tanh_sinh,   &peers::boost_catmull_rom,            &peers::boost_cubic_hermite,
     &peers::boost_cardinal_cubic_b_spline, &peers::eigen_spline_fixed_degree, &peers::eigen_spline_dynamic_degree,
-    &peers::bisection_reintegration};
+    &peers::bisection_reintegration, &peers::gsl_cspline, &peers::gsl_cspline_periodic, &peers::gsl_akima,
+    &peers::gsl_steffen, &peers::gsl_qag, &peers::gsl_qags, &peers::scipy_cubic_spline,
+    &peers::scipy_make_interp_spline, &peers::scipy_bspline, &peers::scipy_quad, &peers::bezier_easing_3,
+    &peers::bezier_easing_2, &peers::mapbox_unitbezier};
 
 /// What one item of a benchmark is: the unit of its time per operation.
 struct operation {
@@ -245,6 +280,9 @@ inline constexpr algorithm floor_soa_sorted{"floor_soa_sorted", "",
 inline constexpr algorithm floor_store_stream{"floor_store_stream", "",
                                               "floor: a store-only stream of the batch's output bytes (the memory "
                                               "bound of a batch that does not fit in cache)"};
+inline constexpr algorithm monotone_cubic{"monotone_cubic", "",
+                                          "motion::monotone_cubic: C1 shape-preserving cubic (Fritsch-Butland "
+                                          "slopes), binary search and Horner"};
 }  // namespace algorithms
 
 inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
@@ -271,7 +309,8 @@ inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
                                                       &algorithms::gltf_sampler,
                                                       &algorithms::floor_horner,
                                                       &algorithms::floor_soa_sorted,
-                                                      &algorithms::floor_store_stream};
+                                                      &algorithms::floor_store_stream,
+                                                      &algorithms::monotone_cubic};
 
 /// A benchmark-name key whose value picks a variant of how the algorithm is called, not the data
 /// or the method's setting: the report ranks rows that differ only in these keys and in settings

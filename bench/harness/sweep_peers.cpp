@@ -1,0 +1,358 @@
+// The peer sweep (issue 15): the libraries users would pick instead of curvebench, run on the
+// case's own data and measured against the same 50-digit reference (case_reference) as
+// curvebench's methods, so that their records and ours compare directly.
+//
+// GSL (the Debian libgsl-dev the build requires):
+//   eval    gsl_spline with gsl_interp_cspline (end "natural") or gsl_interp_cspline_periodic (end
+//           "periodic"), one spline per coordinate on the spec's knots, at the eval sweep's
+//           parameters; error in eps(double) x the curve's size like curvebench's eval records,
+//           and the first derivative (gsl_spline_eval_deriv, setting "derivative=1") in eps x the
+//           exact derivative's size beside curvebench's own derivative ("counterpart_error").
+//           Only natural_cubic cases with those two ends are the same mathematical curve; GSL has
+//           no clamped or not-a-knot end, and its akima and steffen interpolants are no curvebench
+//           family, so they have no 50-digit reference here (bench_gsl times them).
+//   length  gsl_integration_qag (GSL_INTEG_GAUSS15, the rule of curvebench's adaptive_gk) and
+//           gsl_integration_qags of the speed |P'(u)| (the same arclength::speed curvebench
+//           integrates) over the whole domain, as arc-length code commonly calls them: epsabs 0,
+//           epsrel = each adaptive_gk tolerance of the sweep, a workspace of 1000 intervals. The
+//           estimate is the abserr GSL returns (relative to L), so "bounded" says whether it
+//           bounds the true error. GSL's own status is kept as "peer_status" (gsl_strerror).
+// Every peer record also carries the time per operation of the peer and of its curvebench
+// counterpart, measured back to back on the same thread (best of three batches; the runner's
+// other threads share the machine, so compare the ratio, not the absolute times), and the
+// counterpart's method and setting so the report joins its error record.
+#include "harness/sweeps.hpp"
+
+#include "harness/setting.hpp"
+
+#include "curvebench/arclength/length.hpp"
+#include "curvebench/arclength/result.hpp"
+#include "curvebench/io/family.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_spline.h>
+#include <gsl/gsl_version.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace curvebench::harness {
+
+namespace {
+
+using json = nlohmann::json;
+
+json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(); }
+
+/// Best of three batches of the time per call of f, each batch repeating f until 2 ms have passed.
+template <class F>
+double ns_per_call(F&& f) {
+  using clock = std::chrono::steady_clock;
+  double best = std::numeric_limits<double>::infinity();
+  for (int batch = 0; batch < 3; ++batch) {
+    std::size_t calls = 0;
+    const auto t0 = clock::now();
+    double elapsed = 0;
+    do {
+      f();
+      ++calls;
+      elapsed = std::chrono::duration<double, std::nano>(clock::now() - t0).count();
+    } while (elapsed < 2e6);
+    best = std::min(best, elapsed / static_cast<double>(calls));
+  }
+  return best;
+}
+
+/// GSL's default error handler aborts the process; the peers' failures are data here. The
+/// handler is global in GSL, so it is switched off once, before any thread calls GSL.
+void gsl_errors_are_statuses() {
+  static std::once_flag once;
+  std::call_once(once, [] { gsl_set_error_handler_off(); });
+}
+
+struct peer_record {
+  const vocab::quantity* quantity;
+  const vocab::peer* peer;
+  std::string setting;
+  double error;
+  double estimate;
+  double evaluations;
+  std::string status;       ///< a result_status name
+  std::string peer_status;  ///< the library's own words for its status
+  double ns_per_op;
+  std::string counterpart_algorithm;  ///< eval: the family's algorithm; otherwise the method id
+  std::string counterpart_setting;
+  double counterpart_ns_per_op;
+};
+
+/// counterpart_error: curvebench's error measured here beside the peer's, where curvebench's own
+/// sweeps keep no record of the same quantity (the first derivative); NaN: none, left out.
+json to_json(const case_info& info, const peer_record& r,
+             double counterpart_error = std::numeric_limits<double>::quiet_NaN()) {
+  json j{{"case", info.name},
+         {"group", info.group},
+         {"quantity", std::string(r.quantity->id)},
+         {"method", std::string(r.peer->id)},
+         {"library", std::string(r.peer->library) + " " + GSL_VERSION},
+         {"peer", true},
+         {"setting", r.setting},
+         {"error", finite_or_null(r.error)},
+         {"estimate", finite_or_null(r.estimate)},
+         {"evaluations", r.evaluations},
+         {"status", r.status},
+         {"peer_status", r.peer_status},
+         {"ns_per_op", finite_or_null(r.ns_per_op)},
+         {"counterpart", {{"method", r.counterpart_algorithm}, {"setting", r.counterpart_setting}}},
+         {"counterpart_ns_per_op", finite_or_null(r.counterpart_ns_per_op)}};
+  j["bounded"] = std::isfinite(r.estimate) && std::isfinite(r.error) ? json(r.estimate >= r.error) : json();
+  if (std::isfinite(counterpart_error)) j["counterpart_error"] = counterpart_error;
+  return j;
+}
+
+struct spline_deleter {
+  void operator()(gsl_spline* s) const { gsl_spline_free(s); }
+};
+struct accel_deleter {
+  void operator()(gsl_interp_accel* a) const { gsl_interp_accel_free(a); }
+};
+
+/// One GSL spline per coordinate of a natural_cubic spec, or nothing when GSL cannot represent it.
+template <int Dim>
+struct gsl_coordinate_splines {
+  const vocab::peer* peer = nullptr;
+  std::string peer_status;
+  std::array<std::unique_ptr<gsl_spline, spline_deleter>, Dim> splines;
+  std::array<std::unique_ptr<gsl_interp_accel, accel_deleter>, Dim> accels;
+
+  explicit gsl_coordinate_splines(const io::field& spec) {
+    if (spec.member("type").string() != "natural_cubic") return;
+    const std::string end = spec.has("end") ? spec.member("end").string() : "natural";
+    const gsl_interp_type* type = nullptr;
+    if (end == "natural") {
+      type = gsl_interp_cspline;
+      peer = &vocab::peers::gsl_cspline;
+    } else if (end == "periodic") {
+      type = gsl_interp_cspline_periodic;
+      peer = &vocab::peers::gsl_cspline_periodic;
+    } else {
+      return;  // clamped, not_a_knot: GSL has neither end condition
+    }
+    const point_list<double, Dim> p = io::detail::spec_points<double, Dim>(spec);
+    const std::vector<double> x = io::detail::knots_or_uniform<double>(spec, p.size());
+    std::vector<double> y(p.size());
+    for (int d = 0; d < Dim; ++d) {
+      for (std::size_t i = 0; i < p.size(); ++i) y[i] = p[i][d];
+      splines[d].reset(gsl_spline_alloc(type, x.size()));
+      accels[d].reset(gsl_interp_accel_alloc());
+      if (!splines[d] || !accels[d]) throw std::bad_alloc();
+      const int status = gsl_spline_init(splines[d].get(), x.data(), y.data(), x.size());
+      if (status != GSL_SUCCESS) {
+        peer_status = gsl_strerror(status);
+        return;
+      }
+    }
+    peer_status = gsl_strerror(GSL_SUCCESS);
+  }
+
+  [[nodiscard]] bool ready() const { return peer && peer_status == gsl_strerror(GSL_SUCCESS); }
+
+  /// P(u) (order 0) or P'(u) (order 1) and GSL's status (the first failing coordinate's).
+  point<double, Dim> operator()(double u, int order, int& status) const {
+    point<double, Dim> out;
+    status = GSL_SUCCESS;
+    for (int d = 0; d < Dim; ++d) {
+      const int s = order == 0 ? gsl_spline_eval_e(splines[d].get(), u, accels[d].get(), &out[d])
+                               : gsl_spline_eval_deriv_e(splines[d].get(), u, accels[d].get(), &out[d]);
+      if (s != GSL_SUCCESS && status == GSL_SUCCESS) status = s;
+    }
+    return out;
+  }
+};
+
+/// eval records of the GSL splines: the values (error in eps(double) x size, as curvebench's eval
+/// records) and the first derivative (setting "derivative=1", in eps(double) x the size of the
+/// exact derivative at the same parameters, as `curvebench check` measures a user's derivative),
+/// with curvebench's own derivative measured beside it.
+template <int Dim>
+void gsl_eval(const case_info& info, json& out, const any_curve<double, Dim>& c, case_reference<Dim>& ref,
+              const sweep& w, const io::field& spec) {
+  const gsl_coordinate_splines<Dim> g(spec);
+  if (!g.peer) return;
+  const interval<double> d = c.domain();
+  const std::vector<double> us = sample_parameters(d.lo, d.hi, w.eval_params);
+  const double n = static_cast<double>(us.size());
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (int order : {0, 1}) {
+    const std::string setting = order == 0 ? std::string() : "derivative=1";
+    peer_record r{&vocab::quantities::eval,
+                  g.peer,
+                  setting,
+                  nan,
+                  nan,
+                  n,
+                  std::string(arclength::to_string(arclength::result_status::not_guaranteed)),
+                  g.peer_status,
+                  nan,
+                  std::string(vocab::methods::eval_default.id),
+                  setting,
+                  nan};
+    double counterpart_error = nan;
+    const auto ours = [&](double u) { return order == 0 ? c(u) : c.derivative(u, 1); };
+    if (g.ready()) {
+      std::vector<point<double, Dim>> values(us.size());
+      int failed = GSL_SUCCESS;
+      for (std::size_t j = 0; j < us.size(); ++j) {
+        int status = GSL_SUCCESS;
+        values[j] = g(us[j], order, status);
+        if (status != GSL_SUCCESS && failed == GSL_SUCCESS) failed = status;
+      }
+      r.peer_status = gsl_strerror(failed);
+      if (failed == GSL_SUCCESS) {
+        if (order == 0) {
+          ref.set_eval_parameters(us);
+          r.error = ref.eval_error(values);
+        } else {
+          double size = 0;
+          for (double u : us) size = std::max(size, ref.exact(u, 1).cwiseAbs().maxCoeff());
+          if (!(size > 0)) size = 1;
+          double peer_max = 0, ours_max = 0;
+          for (std::size_t j = 0; j < us.size(); ++j) {
+            peer_max = std::max(peer_max, ref.difference(us[j], 1, values[j]));
+            ours_max = std::max(ours_max, ref.difference(us[j], 1, ours(us[j])));
+          }
+          r.error = peer_max / (eps * size);
+          counterpart_error = ours_max / (eps * size);
+        }
+        r.ns_per_op = ns_per_call([&] {
+                        int status = GSL_SUCCESS;
+                        for (double u : us) {
+                          const point<double, Dim> p = g(u, order, status);
+                          asm volatile("" : : "g"(&p) : "memory");  // keep p
+                        }
+                      }) /
+                      n;
+        r.counterpart_ns_per_op = ns_per_call([&] {
+                                    for (double u : us) {
+                                      const point<double, Dim> p = ours(u);
+                                      asm volatile("" : : "g"(&p) : "memory");
+                                    }
+                                  }) /
+                                  n;
+      }
+    }
+    out.push_back(to_json(info, r, counterpart_error));
+  }
+}
+
+template <int Dim>
+struct speed_integrand {
+  const any_curve<double, Dim>* c;
+  std::size_t calls = 0;
+  static double call(double u, void* self) {
+    auto* s = static_cast<speed_integrand*>(self);
+    ++s->calls;
+    return arclength::speed(*s->c, u);
+  }
+};
+
+/// QUADPACK's statuses as result_status names: converged, or the reason it stopped.
+std::string status_name(int status) {
+  using arclength::result_status;
+  switch (status) {
+    case GSL_SUCCESS: return std::string(arclength::to_string(result_status::converged));
+    case GSL_EMAXITER: return std::string(arclength::to_string(result_status::cap_hit));
+    case GSL_EROUND: return std::string(arclength::to_string(result_status::rounding_limited));
+    default: return std::string(arclength::to_string(result_status::not_guaranteed));
+  }
+}
+
+template <int Dim>
+void gsl_length(const case_info& info, json& out, const any_curve<double, Dim>& c, const case_reference<Dim>& ref,
+                const sweep& w) {
+  constexpr std::size_t limit = 1000;  // the workspace size of GSL's own examples
+  const std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> ws(
+      gsl_integration_workspace_alloc(limit), gsl_integration_workspace_free);
+  if (!ws) throw std::bad_alloc();
+  const interval<double> d = c.domain();
+  const double L = ref.length();
+  namespace m = vocab::methods;
+  // adaptive_gk's time per tolerance, measured once for qag and qags (it costs 0.2 s a call on the
+  // 1e5-segment case).
+  std::map<double, double> counterpart_ns;
+  for (const vocab::peer* peer : {&vocab::peers::gsl_qag, &vocab::peers::gsl_qags}) {
+    const bool qags = peer == &vocab::peers::gsl_qags;
+    for (double tol : w.adaptive_tol) {
+      speed_integrand<Dim> f{&c};
+      gsl_function F{&speed_integrand<Dim>::call, &f};
+      double value = 0, abserr = 0;
+      const auto integrate = [&] {
+        return qags ? gsl_integration_qags(&F, d.lo, d.hi, 0.0, tol, limit, ws.get(), &value, &abserr)
+                    : gsl_integration_qag(&F, d.lo, d.hi, 0.0, tol, limit, GSL_INTEG_GAUSS15, ws.get(), &value,
+                                          &abserr);
+      };
+      const int status = integrate();
+      const std::size_t calls = f.calls;
+      // GSL_EBADTOL and the like return before integrating: no value to measure.
+      const bool has_value = status == GSL_SUCCESS || status == GSL_EMAXITER || status == GSL_EROUND ||
+                             status == GSL_ESING || status == GSL_EDIVERGE;
+      const std::string s = setting(m::adaptive_gk, {{"tol", tol}});
+      peer_record r{&vocab::quantities::length,
+                    peer,
+                    s,
+                    has_value ? ref.length_error_of(value) : std::numeric_limits<double>::quiet_NaN(),
+                    has_value ? abserr / L : std::numeric_limits<double>::quiet_NaN(),
+                    static_cast<double>(calls),
+                    status_name(status),
+                    gsl_strerror(status),
+                    std::numeric_limits<double>::quiet_NaN(),
+                    std::string(m::adaptive_gk.id),
+                    s,
+                    std::numeric_limits<double>::quiet_NaN()};
+      if (has_value) {
+        r.ns_per_op = ns_per_call([&] {
+          integrate();
+          asm volatile("" : : "g"(&value) : "memory");
+        });
+        if (!counterpart_ns.count(tol)) {
+          arclength::adaptive_options<double> o;
+          o.relative_tolerance = tol;
+          counterpart_ns[tol] = ns_per_call([&] {
+            const auto q = arclength::adaptive_length(c, o);
+            asm volatile("" : : "g"(&q) : "memory");
+          });
+        }
+        r.counterpart_ns_per_op = counterpart_ns[tol];
+      }
+      out.push_back(to_json(info, r));
+    }
+  }
+}
+
+}  // namespace
+
+std::string gsl_version() { return GSL_VERSION; }
+
+template <int Dim>
+json sweep_peers(const case_info& info, const any_curve<double, Dim>& c, case_reference<Dim>& ref, const sweep& w) {
+  gsl_errors_are_statuses();
+  json out = json::array();
+  const io::field spec = io::root(info.spec, info.name);
+  gsl_eval<Dim>(info, out, c, ref, w, spec);
+  gsl_length<Dim>(info, out, c, ref, w);
+  return out;
+}
+
+template json sweep_peers<2>(const case_info&, const any_curve<double, 2>&, case_reference<2>&, const sweep&);
+template json sweep_peers<3>(const case_info&, const any_curve<double, 3>&, case_reference<3>&, const sweep&);
+
+}  // namespace curvebench::harness

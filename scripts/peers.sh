@@ -1,0 +1,163 @@
+#!/usr/bin/env bash
+# The optional peers (issue 15): installs what they need (apt, pinned versions, non-interactive)
+# and runs their drivers on the case suite, writing reports/peers_<driver>.json, which
+# scripts/report.py joins into REPORT.md's Peers section when present. The C++ peers (GSL) need
+# nothing from here: the accuracy runner runs them in every scripts/bench.sh.
+#   scripts/peers.sh               install, then run every driver (the full sweep's parameters)
+#   scripts/peers.sh --quick       the quick sweep's parameters and tolerances
+#   scripts/peers.sh --no-install  run only the drivers whose packages are already installed
+#                                  (scripts/bench.sh calls it so)
+# Drivers: scripts/peers/scipy_driver.py (SciPy: CubicSpline, make_interp_spline, BSpline, quad);
+# scripts/peers/easing_driver.mjs (Node: bezier-easing 3.2.0 and 2.1.0, @mapbox/unitbezier 1.0.0,
+# pinned in scripts/peers/node/package.json and installed into build-peers/node), measured by
+# scripts/peers/easing_results.py against a 50-digit truth of the CSS cubic-bezier definition.
+# Each driver's values are measured by `curvebench check` against the 50-digit reference of the
+# case's spec (scripts/peers/peer_results.py joins them), so the truth is never a double
+# evaluation of curvebench's own code. The tool is $CURVEBENCH_TOOL, or build-bench's (built here
+# with scripts/bench.sh's configuration when missing).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+quick=0
+install=1
+for arg in "$@"; do
+  case "$arg" in
+    --quick) quick=1 ;;
+    --no-install) install=0 ;;
+    -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
+    *) echo "peers.sh: unknown argument '$arg' (allowed: --quick, --no-install)" >&2; exit 2 ;;
+  esac
+done
+
+# Debian 12 (bookworm) versions, pinned: a peer's figures are only comparable at one version.
+apt_pins=("python3-scipy=1.10.1-2" "python3-numpy=1:1.24.2-1+deb12u1" "python3-mpmath=1.2.1-2")
+
+installed_at() {  # package=version -> 0 when exactly that version is installed (package: any version)
+  local name=${1%%=*} version=${1#*=}
+  if [[ "$1" != *=* ]]; then
+    [[ "$(dpkg-query -W -f='${Status}' "$name" 2>/dev/null || true)" == "install ok installed" ]]
+    return
+  fi
+  [[ "$(dpkg-query -W -f='${Status} ${Version}' "$name" 2>/dev/null || true)" == "install ok installed $version" ]]
+}
+
+node_dir="$root/build-peers/node"
+if [[ $install -eq 1 ]]; then
+  # Debian's nodejs and npm when absent (their version is recorded in REPORT.md); mpmath: the truth.
+  { command -v node && command -v npm; } >/dev/null || apt_pins+=(nodejs npm)
+  missing=()
+  for p in "${apt_pins[@]}"; do installed_at "$p" || missing+=("$p"); done
+  if [[ ${#missing[@]} -gt 0 ]]; then
+    echo "peers.sh: installing ${missing[*]}"
+    sudo=""
+    [[ $(id -u) -eq 0 ]] || sudo="sudo"
+    export DEBIAN_FRONTEND=noninteractive
+    $sudo apt-get update -qq
+    $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  fi
+  # The npm packages at the exact versions of package.json (no ranges), without install scripts.
+  mkdir -p "$node_dir"
+  cp "$root/scripts/peers/node/package.json" "$node_dir/package.json"
+  (cd "$node_dir" && npm install --no-audit --no-fund --ignore-scripts --loglevel=error >/dev/null)
+fi
+
+tool=${CURVEBENCH_TOOL:-$root/build-bench/bench/curvebench}
+if [[ ! -x "$tool" ]]; then
+  bash "$root/scripts/setup.sh"
+  export CCACHE_BASEDIR="$root"
+  build="$root/build-bench"
+  # scripts/bench.sh's configuration, so that its build reuses this one.
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O3 -march=native -fno-math-errno -DNDEBUG" \
+        -DCURVEBENCH_WERROR=OFF -DCURVEBENCH_BUILD_TESTS=OFF -DCURVEBENCH_BUILD_BENCH=ON >/dev/null
+  echo "peers.sh: building the curvebench tool"
+  cmake --build "$build" --parallel "$(nproc)" --target curvebench_tool >/dev/null
+  tool="$build/bench/curvebench"
+fi
+
+reports="$root/reports"
+mkdir -p "$reports"
+quick_args=()
+[[ $quick -eq 1 ]] && quick_args=(--quick)
+
+run_scipy() {
+  local work="$reports/peers/scipy"
+  rm -f "$reports/peers_scipy.json"  # no stale results when this run fails
+  rm -rf "$work"
+  mkdir -p "$work"
+  /usr/bin/python3 "$root/scripts/peers/scipy_driver.py" --cases "$root/bench/cases" --out "$work" "${quick_args[@]}"
+  # Measure every CSV the driver wrote against the 50-digit reference of its case.
+  /usr/bin/python3 - "$work/scipy_driver.json" "$tool" "$root/bench/cases" <<'EOF'
+import json, os, subprocess, sys
+driver_path, tool, cases = sys.argv[1:4]
+work = os.path.dirname(driver_path)
+with open(driver_path, encoding="utf-8") as f:
+    driver = json.load(f)
+for run in driver["runs"]:
+    if not run.get("csv"):
+        continue
+    csv = os.path.join(work, run["csv"])
+    option = "--values" if run["kind"] == "values" else "--lengths"
+    with open(csv + ".check.json", "w", encoding="utf-8") as out:
+        subprocess.run([tool, "check", os.path.join(cases, run["case"] + ".json"), option, csv,
+                        "--name", run["peer"], "--json", "--quiet"], stdout=out, check=True)
+EOF
+  /usr/bin/python3 "$root/scripts/peers/peer_results.py" --driver "$work/scipy_driver.json" \
+                   --out "$reports/peers_scipy.json"
+}
+
+run_easing() {
+  local work="$reports/peers/easing"
+  rm -f "$reports/peers_easing.json"
+  rm -rf "$work"
+  mkdir -p "$work/curvebench"
+  cp "$root/scripts/peers/easing_driver.mjs" "$node_dir/easing_driver.mjs"
+  (cd "$node_dir" && node easing_driver.mjs --cases "$root/bench/cases" --out "$work/easing_driver.json" "${quick_args[@]}")
+  # curvebench's own CSS evaluation at the driver's times: the case with the exact time solver
+  # (the peers' counterpart) and as written (the tool's table_newton model).
+  /usr/bin/python3 - "$work/easing_driver.json" "$tool" "$root/bench/cases" "$work/curvebench" <<'EOF'
+import json, os, subprocess, sys
+driver_path, tool, cases, out = sys.argv[1:5]
+with open(driver_path, encoding="utf-8") as f:
+    driver = json.load(f)
+done = set()
+for run in driver["runs"]:
+    if run["case"] in done or "times" not in run:
+        continue
+    done.add(run["case"])
+    times = os.path.join(out, run["case"] + ".times")
+    with open(times, "w", encoding="utf-8") as f:
+        f.write("".join(repr(t) + "\n" for t in run["times"]))
+    case_spec = os.path.join(cases, run["case"] + ".json")
+    with open(case_spec, encoding="utf-8") as f:
+        spec = json.load(f)
+    exact = os.path.join(out, run["case"] + ".exact.json")
+    with open(exact, "w", encoding="utf-8") as f:
+        json.dump(dict(spec, solver="exact"), f)
+    for spec_path, csv in ((exact, run["case"] + ".csv"), (case_spec, run["case"] + ".table_newton.csv")):
+        with open(os.path.join(out, csv), "w", encoding="utf-8") as f:
+            subprocess.run([tool, "sample", spec_path, "--at-file", times, "--derivatives", "0", "--quiet"],
+                           stdout=f, check=True)
+EOF
+  /usr/bin/python3 "$root/scripts/peers/easing_results.py" --driver "$work/easing_driver.json" \
+                   --cases "$root/bench/cases" --curvebench-dir "$work/curvebench" --out "$reports/peers_easing.json"
+}
+
+ran=0
+if /usr/bin/python3 -c "import scipy, numpy" 2>/dev/null; then
+  echo "peers.sh: SciPy"
+  run_scipy
+  ran=$((ran + 1))
+else
+  echo "peers.sh: SciPy not installed (python3-scipy); skipped" >&2
+  rm -f "$reports/peers_scipy.json"  # no stale results from another run
+fi
+if command -v node >/dev/null && [[ -d "$node_dir/node_modules/bezier-easing-3" ]] &&
+   /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
+  echo "peers.sh: easing (Node $(node --version))"
+  run_easing
+  ran=$((ran + 1))
+else
+  echo "peers.sh: the easing peers are not installed (node, build-peers/node, python3-mpmath); skipped" >&2
+  rm -f "$reports/peers_easing.json"
+fi
+echo "peers.sh: $ran optional peer driver(s) ran; results in $reports/peers_*.json"

@@ -1,0 +1,115 @@
+// The JavaScript easing evaluators as peers (issue 15): every CSS cubic-bezier() case of the suite
+// (bench/cases/*.json with "type": "channel", "tool": "css") evaluated by each package at the
+// query times, written as JSON for scripts/peers/easing_results.py to measure against a 50-digit
+// truth. scripts/peers.sh copies this file beside the pinned packages (build-peers/node, from
+// scripts/peers/node/package.json) and runs it there:
+//   node easing_driver.mjs --cases DIR --out FILE [--quick]
+// Peers: bezier-easing 3.2.0 (peer_bezier_easing_3), bezier-easing 2.1.0 (peer_bezier_easing_2)
+// and @mapbox/unitbezier 1.0.0 (peer_mapbox_unitbezier, solve(x) with its default epsilon).
+// Query times: the accuracy runner's sample fractions (0, 1 and frac(j / phi) in between; 65, or
+// 257 without --quick). Time per evaluation: one call per time, as an animation loop calls them,
+// the best of 200 passes over all the times (the first ones warm V8 up) divided by their number.
+import fs from "node:fs";
+import path from "node:path";
+import { createRequire } from "node:module";
+import bezier3 from "bezier-easing-3";
+import unitBezier from "@mapbox/unitbezier";
+
+const require = createRequire(import.meta.url);
+const bezier2 = require("bezier-easing");
+
+const INV_PHI = 0.6180339887498949;  // as bench/harness/sweeps.hpp
+
+function sampleFractions(n) {
+  const out = [];
+  for (let j = 0; j < n; ++j) out.push(j === 0 ? 0 : j + 1 === n ? 1 : (j * INV_PHI) % 1);
+  return out;
+}
+
+function args(argv) {
+  const a = { quick: false };
+  for (let i = 0; i < argv.length; ++i) {
+    if (argv[i] === "--cases") a.cases = argv[++i];
+    else if (argv[i] === "--out") a.out = argv[++i];
+    else if (argv[i] === "--quick") a.quick = true;
+    else throw new Error(`easing_driver: unknown argument ${argv[i]}`);
+  }
+  if (!a.cases || !a.out) throw new Error("easing_driver: --cases DIR and --out FILE are required");
+  return a;
+}
+
+function version(pkg) {
+  return JSON.parse(fs.readFileSync(path.join("node_modules", pkg, "package.json"), "utf8")).version;
+}
+
+function cubicBezier(easing) {
+  const m = /^\s*cubic-bezier\(([^)]*)\)\s*$/.exec(easing);
+  if (!m) return null;
+  const v = m[1].split(",").map(Number);
+  return v.length === 4 && v.every(Number.isFinite) ? v : null;
+}
+
+function bestNs(fn, times) {
+  let best = Infinity;
+  // 200 passes: the first ones run before V8 has compiled the peer; the best pass is compiled code.
+  for (let pass = 0; pass < 200; ++pass) {
+    let sink = 0;
+    const t0 = process.hrtime.bigint();
+    for (const t of times) sink += fn(t);
+    const ns = Number(process.hrtime.bigint() - t0);
+    if (Number.isNaN(sink)) throw new Error("easing_driver: NaN from a peer");
+    best = Math.min(best, ns);
+  }
+  return best / times.length;
+}
+
+const a = args(process.argv.slice(2));
+const times = sampleFractions(a.quick ? 65 : 257);
+const peers = {
+  peer_bezier_easing_3: (p) => bezier3(...p),
+  peer_bezier_easing_2: (p) => bezier2(...p),
+  peer_mapbox_unitbezier: (p) => {
+    const solve = unitBezier(...p);
+    return (t) => solve(t);
+  },
+};
+const runs = [];
+const notes = [];
+for (const file of fs.readdirSync(a.cases).filter((f) => f.endsWith(".json")).sort()) {
+  const spec = JSON.parse(fs.readFileSync(path.join(a.cases, file), "utf8"));
+  if (spec.type !== "channel" || spec.tool !== "css") continue;
+  const name = path.basename(file, ".json");
+  const p = cubicBezier(spec.easing || "");
+  if (!p) {
+    notes.push(`${name}: easing ${JSON.stringify(spec.easing)} is not cubic-bezier(); these peers evaluate only that`);
+    continue;
+  }
+  for (const [peer, make] of Object.entries(peers)) {
+    let f;
+    try {
+      f = make(p);
+    } catch (e) {
+      runs.push({ case: name, peer, easing: p, refused: String(e.message || e) });
+      continue;
+    }
+    const run = { case: name, peer, easing: p, times, values: times.map(f), ns_per_op: bestNs(f, times) };
+    // @mapbox/unitbezier documents solve(x, epsilon) with epsilon 1e-6 by default: its precision.
+    if (peer === "peer_mapbox_unitbezier") run.documented_tolerance = 1e-6;
+    runs.push(run);
+  }
+}
+const doc = {
+  driver: "easing",
+  quick: a.quick,
+  versions: {
+    Node: process.version.replace(/^v/, ""),
+    "bezier-easing 3": version("bezier-easing-3"),
+    "bezier-easing 2": version("bezier-easing"),
+    "@mapbox/unitbezier": version("@mapbox/unitbezier"),
+  },
+  notes,
+  runs,
+};
+fs.writeFileSync(a.out + ".tmp", JSON.stringify(doc, null, 1));
+fs.renameSync(a.out + ".tmp", a.out);
+console.log(`easing_driver: ${runs.length} runs on ${new Set(runs.map((r) => r.case)).size} cases -> ${a.out}`);

@@ -1,0 +1,176 @@
+#!/usr/bin/python3
+"""Measures the easing driver's values (scripts/peers/easing_driver.mjs) and curvebench's own CSS
+evaluation of the same cases at the same times against a 50-digit truth, into the peer records
+REPORT.md reads (reports/peers_easing.json, scripts/report_peers.py).
+
+  easing_results.py --driver easing_driver.json --cases bench/cases --curvebench-dir DIR --out FILE
+
+The truth of CSS cubic-bezier(x1, y1, x2, y2) at progress t in [0, 1] is its definition: the
+Bezier curve from (0, 0) to (1, 1) with inner points (x1, y1), (x2, y2); x(u) = t is solved for u
+in [0, 1] (x is non-decreasing there since CSS requires x1, x2 in [0, 1]) by bisection in mpmath at
+60 significant digits to |du| < 2^-200, and y(u) is the value. The query time is the double the
+driver evaluated at, taken exactly. curvebench's own values come from `curvebench sample CASE
+--at-file TIMES --derivatives 0` (DIR/<case>.csv, written by scripts/peers.sh), the tool's CSS
+channel in double with the time solver "exact" (curvebench's most accurate; the case spec with
+"solver": "exact" added), measured against the same truth as the peers' counterpart; and, when
+DIR/<case>.table_newton.csv exists, the case as written (the CSS tool's default table_newton
+solver, the WebKit / Chromium scheme curvebench models), reported in the notes.
+Errors: max over the times of |v - y(t)| / (eps(double) x size), size = max |y(t)| over the times
+(the unit of curvebench's eval records), and the absolute max |v - y(t)| as "abs_error"; a peer
+that documents its solver's precision (@mapbox/unitbezier: epsilon 1e-6) carries it as
+"documented_tolerance".
+"""
+import argparse
+import csv
+import json
+import os
+import sys
+
+import mpmath
+
+EPS = 2.0 ** -52
+
+
+class EasingResultError(Exception):
+    pass
+
+
+def cubic_bezier_truth(p, t):
+    """y at progress t of cubic-bezier(p) (mpf, 60 digits); t a double in [0, 1]."""
+    with mpmath.workdps(60):
+        x1, y1, x2, y2 = (mpmath.mpf(v) for v in p)
+        t = mpmath.mpf(t)
+        if t <= 0:
+            return mpmath.mpf(0)
+        if t >= 1:
+            return mpmath.mpf(1)
+
+        def bez(a, b, u):
+            v = 1 - u
+            return 3 * v * v * u * a + 3 * v * u * u * b + u ** 3
+
+        lo, hi = mpmath.mpf(0), mpmath.mpf(1)
+        for _ in range(200):
+            mid = (lo + hi) / 2
+            if bez(x1, x2, mid) < t:
+                lo = mid
+            else:
+                hi = mid
+        return bez(y1, y2, (lo + hi) / 2)
+
+
+def measure(values, truths):
+    """(error in eps x size, absolute error) of doubles against the truths."""
+    with mpmath.workdps(60):
+        size = max((abs(y) for y in truths), default=mpmath.mpf(0))
+        if size == 0:
+            size = mpmath.mpf(1)
+        worst = max(abs(mpmath.mpf(v) - y) for v, y in zip(values, truths))
+        return float(worst / (EPS * size)), float(worst)
+
+
+def read_curvebench(path, times):
+    """curvebench sample's values at `times` (its CSV: t,value), checked to be those times."""
+    with open(path, encoding="utf-8") as f:
+        rows = list(csv.reader(f))
+    if not rows or rows[0] != ["t", "value"]:
+        raise EasingResultError(f"{path}: expected the header t,value")
+    body = [r for r in rows[1:] if r]
+    if len(body) != len(times):
+        raise EasingResultError(f"{path}: {len(body)} rows for {len(times)} times")
+    for i, (r, t) in enumerate(zip(body, times)):
+        if float(r[0]) != t:
+            raise EasingResultError(f"{path}: row {i + 2} is at t = {r[0]}, the driver's time is {t!r}")
+    return [float(r[1]) for r in body]
+
+
+def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, times: None):
+    """The peers_easing.json document. specs: {case: spec}; curvebench_values(case, times) -> the
+    tool's values at those times (solver exact), or None when absent; tool_model_values likewise
+    with the case's own (table_newton) solver."""
+    for key in ("driver", "versions", "runs"):
+        if key not in driver:
+            raise EasingResultError(f"driver output: no \"{key}\"")
+    records, truths, ours = [], {}, {}
+    notes = list(driver.get("notes", []))
+    for run in driver["runs"]:
+        case = run["case"]
+        spec = specs.get(case)
+        if spec is None:
+            raise EasingResultError(f"driver output: case {case} is not in the cases")
+        rec = {"case": case, "group": spec.get("group", ""), "quantity": "eval", "method": run["peer"], "setting": "",
+               "estimate": None, "bounded": None, "status": "not_guaranteed", "peer": True,
+               "library": _library(run["peer"], driver["versions"]),
+               "counterpart": {"method": "curvebench css channel, solver exact", "setting": ""},
+               "counterpart_ns_per_op": None}
+        if "refused" in run:
+            rec.update({"error": None, "evaluations": 0, "peer_status": run["refused"], "ns_per_op": None})
+            records.append(rec)
+            continue
+        times = run["times"]
+        if len(run["values"]) != len(times):
+            raise EasingResultError(f"driver output: {case} {run['peer']}: {len(run['values'])} values for "
+                                    f"{len(times)} times")
+        key = (case, tuple(times))
+        if key not in truths:
+            truths[key] = [cubic_bezier_truth(run["easing"], t) for t in times]
+            vals = curvebench_values(case, times)
+            ours[key] = measure(vals, truths[key]) if vals is not None else (None, None)
+            model = tool_model_values(case, times)
+            if model is not None:
+                e, ae = measure(model, truths[key])
+                notes.append(f"{case}: curvebench's CSS model with its default table_newton solver (the WebKit / "
+                             f"Chromium scheme) is {e:.3g} eps x size ({ae:.3g} absolute) from the truth; with the "
+                             f"exact solver {ours[key][0]:.3g}" if ours[key][0] is not None else
+                             f"{case}: curvebench table_newton {e:.3g} eps x size")
+        err, abs_err = measure(run["values"], truths[key])
+        rec.update({"error": err, "abs_error": abs_err, "evaluations": len(times), "peer_status": "success",
+                    "ns_per_op": run.get("ns_per_op"), "counterpart_error": ours[key][0],
+                    "counterpart_abs_error": ours[key][1]})
+        if "documented_tolerance" in run:
+            rec["documented_tolerance"] = run["documented_tolerance"]
+        records.append(rec)
+    return {"driver": driver["driver"], "versions": driver["versions"], "notes": notes,
+            "quick": driver.get("quick"), "peer_records": records}
+
+
+def _library(peer, versions):
+    names = {"peer_bezier_easing_3": "bezier-easing 3", "peer_bezier_easing_2": "bezier-easing 2",
+             "peer_mapbox_unitbezier": "@mapbox/unitbezier"}
+    name = names.get(peer, peer)
+    return f"{name.split(' ')[0]} {versions.get(name, '?')}"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--driver", required=True)
+    ap.add_argument("--cases", required=True)
+    ap.add_argument("--curvebench-dir", required=True, help="DIR/<case>.csv: curvebench sample at the driver's times")
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    try:
+        with open(a.driver, encoding="utf-8") as f:
+            driver = json.load(f)
+        specs = {}
+        for run in driver.get("runs", []):
+            with open(os.path.join(a.cases, run["case"] + ".json"), encoding="utf-8") as f:
+                specs[run["case"]] = json.load(f)
+
+        def reader(suffix):
+            def read(case, times):
+                path = os.path.join(a.curvebench_dir, case + suffix)
+                return read_curvebench(path, times) if os.path.exists(path) else None
+            return read
+        doc = assemble(driver, specs, reader(".csv"), reader(".table_newton.csv"))
+    except (OSError, json.JSONDecodeError, EasingResultError) as e:
+        print(f"easing_results: {e}", file=sys.stderr)
+        return 1
+    with open(a.out + ".tmp", "w", encoding="utf-8") as f:
+        json.dump(doc, f, indent=1)
+    os.replace(a.out + ".tmp", a.out)
+    print(f"easing_results: {len(doc['peer_records'])} peer records -> {a.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,301 @@
+"""The "Peers" section of REPORT.md (issue 15): the libraries users would pick instead of
+curvebench, measured on the same cases against the same 50-digit references, error and time
+beside curvebench's own, and the findings where a peer does not do what its documentation says.
+
+Inputs:
+  accuracy.json      "peer_records" (the C++ peers the accuracy runner always runs: GSL, by
+                     bench/harness/sweep_peers.cpp) and context.peers (their versions); an
+                     accuracy.json without peer records (older runs) gives a section saying so
+  peers_*.json       one per optional peer driver (scripts/peers.sh): {"driver", "versions":
+                     {library: version}, "notes": [text], "peer_records": [...]}, built by
+                     scripts/peers/peer_results.py from the driver's output and `curvebench check`
+  bench_*.json rows  Google Benchmark rows (report_lib.load_benchmark_files): the peers' speed
+                     ratios measured in the same benchmark run as curvebench's
+A peer record has the accuracy record's fields (case, group, quantity, method = the peer id,
+setting, error, estimate, bounded, evaluations, status) plus "peer": true, "library",
+"peer_status" (the library's own word for how it ended), "ns_per_op" and, where measured,
+"counterpart" {"method", "setting"} (curvebench's record of the same computation) and
+"counterpart_ns_per_op" (timed back to back with the peer). Pure functions but peers_section's
+file reading; no plotting, so tests/python runs them with Debian's python3 alone.
+"""
+import glob
+import json
+import os
+import re
+from collections import defaultdict
+
+import report_lib as lib
+
+# An evaluation finding: a peer interpolating the case's own data in double whose values (or
+# derivatives) are this many eps(double) x size away from the exact curve has lost digits to its
+# algorithm, not to rounding: curvebench's default evaluation and GSL's cspline stay below 1 on
+# every case of the suite (quick run of issue 15), and SciPy's CubicSpline below 6.
+EVAL_FINDING_ULPS = 100.0
+
+# The optional peers scripts/peers.sh runs, by the driver name their peers_<driver>.json carries.
+OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
+                    "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)"}
+
+
+def load_peer_files(report_dir):
+    """[(path, data)] of every reports/peers_*.json, sorted by name. A file that is not a JSON
+    object with a "peer_records" array raises lib.ReportError naming it."""
+    out = []
+    for path in sorted(glob.glob(os.path.join(report_dir, "peers_*.json"))):
+        with open(path, encoding="utf-8") as f:
+            try:
+                data = json.load(f)
+            except json.JSONDecodeError as e:
+                raise lib.ReportError(f"{path}: not JSON ({e})") from e
+        if not isinstance(data, dict) or not isinstance(data.get("peer_records"), list):
+            raise lib.ReportError(f"{path}: expected an object with a \"peer_records\" array")
+        for i, r in enumerate(data["peer_records"]):
+            for key in ("case", "quantity", "method"):
+                if not isinstance(r, dict) or not isinstance(r.get(key), str):
+                    raise lib.ReportError(f"{path}: peer_records[{i}].{key}: expected a string")
+        out.append((path, data))
+    return out
+
+
+def all_peer_records(acc, peer_files):
+    """The accuracy runner's peer records followed by those of every peers_*.json."""
+    records = list(acc.get("peer_records", []))
+    for _, data in peer_files:
+        records += data["peer_records"]
+    return records
+
+
+def version_rows(acc, peer_files):
+    """[[libraries with versions, where they ran, records]]: one row per peer library the runner
+    ran, one per driver file (its versions in the driver's order: the peers first)."""
+    counts = defaultdict(int)
+    for r in acc.get("peer_records", []):
+        counts[r.get("library", "").split(" ")[0]] += 1
+    rows = [[f"{lib_name} {version}", "accuracy runner (always)", counts.get(lib_name, 0)]
+            for lib_name, version in sorted(acc.get("context", {}).get("peers", {}).items())]
+    for path, data in peer_files:
+        versions = ", ".join(f"{k} {v}" for k, v in data.get("versions", {}).items())
+        rows.append([versions, f"{os.path.basename(path)} (scripts/peers.sh)", len(data["peer_records"])])
+    return rows
+
+
+def missing_drivers(peer_files):
+    """The optional drivers with no peers_<driver>.json."""
+    ran = {data.get("driver") for _, data in peer_files}
+    return [doc for name, doc in sorted(OPTIONAL_DRIVERS.items()) if name not in ran]
+
+
+def _key(r):
+    return (r["case"], r["quantity"], r["method"], r.get("setting") or "")
+
+
+def _counterpart(r, own):
+    c = r.get("counterpart")
+    if not c:
+        return None
+    return own.get((r["case"], r["quantity"], c["method"], c.get("setting") or ""))
+
+
+def _own_index(records):
+    return {_key(r): r for r in records if not r.get("subject")}
+
+
+def _ratio(ours, theirs):
+    if isinstance(ours, (int, float)) and isinstance(theirs, (int, float)) and theirs > 0:
+        return ours / theirs
+    return None
+
+
+def _ns_of_counterparts(peer_records):
+    """{(case, quantity, method, setting): ns} of curvebench's counterparts timed by any peer record
+    (the accuracy runner times them back to back with its peers), for peers timed elsewhere."""
+    out = {}
+    for r in peer_records:
+        c = r.get("counterpart")
+        if c and isinstance(r.get("counterpart_ns_per_op"), (int, float)):
+            out.setdefault((r["case"], r["quantity"], c["method"], c.get("setting") or ""), r["counterpart_ns_per_op"])
+    return out
+
+
+def eval_rows(records, peer_records):
+    """[case, peer (setting), peer's error, curvebench's counterpart, its error, peer ns, ours ns,
+    ours / peer] for every eval peer record; errors in eps(double) x the curve's size."""
+    own = _own_index(records)
+    timed = _ns_of_counterparts(peer_records)
+    rows = []
+    for r in sorted((r for r in peer_records if r["quantity"] == "eval"), key=_key):
+        c = _counterpart(r, own)
+        ours_ns = r.get("counterpart_ns_per_op")
+        if not isinstance(ours_ns, (int, float)) and r.get("counterpart"):
+            k = r["counterpart"]
+            ours_ns = timed.get((r["case"], "eval", k["method"], k.get("setting") or ""))
+        label = f"{r['method']} {r.get('setting') or ''}".strip()
+        if c is None and r.get("counterpart") and "counterpart_error" in r:  # measured by the driver's join
+            k = r["counterpart"]
+            c = {"method": f"{k['method']} {k.get('setting') or ''}".strip(), "error": r["counterpart_error"]}
+        rows.append([r["case"], label, r.get("error"), c["method"] if c else "-", c.get("error") if c else None,
+                     r.get("ns_per_op"), ours_ns, _ratio(ours_ns, r.get("ns_per_op"))])
+    return rows
+
+
+def length_rows(records, peer_records):
+    """[case, setting, peer, its error, estimate, bounded, evaluations, status (library's words),
+    curvebench's counterpart error, its evaluations, peer ns, ours ns, ours / peer] per length
+    peer record with a value (refused settings are listed by refusals); errors relative to the
+    reference length."""
+    own = _own_index(records)
+    rows = []
+    for r in sorted((r for r in peer_records if r["quantity"] == "length" and r.get("error") is not None),
+                    key=lambda r: (r["case"], r["method"], _tol(r) or 0)):
+        c = _counterpart(r, own)
+        rows.append([r["case"], r.get("setting") or "-", r["method"], r.get("error"), r.get("estimate"),
+                     r.get("bounded"), r.get("evaluations"), r.get("peer_status") or r.get("status"),
+                     c.get("error") if c else None, c.get("evaluations") if c else None,
+                     r.get("ns_per_op"), r.get("counterpart_ns_per_op"),
+                     _ratio(r.get("counterpart_ns_per_op"), r.get("ns_per_op"))])
+    return rows
+
+
+def _tol(r):
+    m = re.search(r"(?:^|,)tol=([^,]+)", r.get("setting") or "")
+    try:
+        return float(m.group(1)) if m else None
+    except ValueError:
+        return None
+
+
+def findings(peer_records, own_records=()):
+    """Where a peer disagrees with its documentation, one sentence each with the case and figure:
+    a length reported as successful (status converged) whose true error exceeds the relative
+    tolerance it was asked for (QUADPACK's documented target |result - L| <= epsrel L with
+    epsabs 0); an error estimate that does not bound the true error; an evaluation (value or
+    derivative) at least EVAL_FINDING_ULPS eps(double) x size from the exact curve, with
+    curvebench's default evaluation of the same case beside it when own_records has it. Sorted
+    by case."""
+    out = []
+    for r in sorted(peer_records, key=_key):
+        where = f"{r['method']} on {r['case']}" + (f" ({r['setting']})" if r.get("setting") else "")
+        err, est, tol = r.get("error"), r.get("estimate"), _tol(r)
+        if r["quantity"] == "length" and tol is not None and isinstance(err, (int, float)):
+            if r.get("status") == "converged" and err > tol:
+                out.append(f"{where}: reported success, but its true relative error {lib.fmt(err)} is "
+                           f"{lib.fmt(err / tol)} times the requested tolerance {lib.fmt(tol)}.")
+        doc_tol, abs_err = r.get("documented_tolerance"), r.get("abs_error")
+        if (r["quantity"] == "eval" and isinstance(err, (int, float)) and err >= EVAL_FINDING_ULPS
+                and doc_tol is None):  # a peer with a documented precision is held to that instead
+            what = f"derivative of order {r['setting'].split('=')[-1]}" if r.get("setting") else "values"
+            if isinstance(r.get("counterpart_error"), (int, float)):
+                beside = f" ({r['counterpart']['method']}: {lib.fmt(r['counterpart_error'])})"
+            else:  # curvebench's eval records are of values only: no figure beside a derivative
+                own = [o for o in own_records if not r.get("setting") and o["case"] == r["case"]
+                       and o["quantity"] == "eval" and o["method"] == "default"]
+                beside = f" (curvebench's default evaluation: {lib.fmt(own[0]['error'])})" if own else ""
+            out.append(f"{where}: error {lib.fmt(err)} eps(double) x size in its {what} against the exact curve of "
+                       f"the same data{beside}.")
+        if isinstance(doc_tol, (int, float)) and isinstance(abs_err, (int, float)) and abs_err > doc_tol:
+            out.append(f"{where}: absolute error {lib.fmt(abs_err)} in its value ({lib.fmt(err)} eps(double) x size), "
+                       f"beyond the {lib.fmt(doc_tol)} it documents as its solver's precision.")
+        if r.get("bounded") is False and isinstance(err, (int, float)) and isinstance(est, (int, float)):
+            out.append(f"{where}: its error estimate {lib.fmt(est)} does not bound its true error {lib.fmt(err)} "
+                       f"(under by {lib.fmt(err / est) if est > 0 else 'inf'}x; status "
+                       f"\"{r.get('peer_status') or r.get('status')}\").")
+    return out
+
+
+def refusals(peer_records):
+    """Settings a peer refused to compute (no value, the library's status kept), one line per peer
+    and status with the cases: documented behaviour, listed so that a missing row is explained."""
+    by = defaultdict(set)
+    for r in peer_records:
+        if r.get("error") is None and r.get("peer_status"):
+            by[(r["method"], r.get("setting") or "", r["peer_status"])].add(r["case"])
+    return [f"{m}{' ' + st if st else ''}: \"{status}\" on {len(cases)} case(s)"
+            for (m, st, status), cases in sorted(by.items())]
+
+
+def honesty_rows(peer_records):
+    """[peer, quantity, results with an estimate, estimates >= true error, share] per peer."""
+    stats = defaultdict(lambda: [0, 0])
+    for r in peer_records:
+        if isinstance(r.get("bounded"), bool):
+            s = stats[(r["method"], r["quantity"])]
+            s[0] += 1
+            s[1] += 1 if r["bounded"] else 0
+    return [[m, q, n, b, f"{100.0 * b / n:.1f}%"] for (m, q), (n, b) in sorted(stats.items())]
+
+
+def speed_rows(bench_rows, vocab, libraries):
+    """Headline ratios (report_lib.headline_ratios) of the benchmark rows whose peer belongs to one
+    of `libraries` (the vocabulary's library names, "GSL"): [family, data, ours, peer, ours ns per
+    op, peer ns per op, ours / peer]. Peers timed without an accuracy record (GSL's akima and
+    steffen, which no curvebench family equals) are listed too."""
+    rows = []
+    for o, p, ratio in lib.headline_ratios(bench_rows, vocab):
+        if vocab.peers.get(p["algorithm"], {}).get("library") in libraries:
+            rows.append([o["family"], lib.args_text(lib.data_args(o, vocab)) or "-", lib.display_algorithm(o, vocab),
+                         lib.display_algorithm(p, vocab), o["ns_per_op"], p["ns_per_op"], ratio])
+    return rows
+
+
+def peers_section(acc, report_dir, bench_rows, vocab):
+    """The markdown lines of the "Peers" section."""
+    md = ["", "## Peers: the libraries users would pick instead", ""]
+    try:
+        peer_files = load_peer_files(report_dir)
+    except (OSError, lib.ReportError) as e:
+        return md + [f"The optional peers' results could not be read: {e}", ""]
+    peer_records = all_peer_records(acc, peer_files)
+    versions = version_rows(acc, peer_files)
+    if not peer_records and not versions:
+        return md + ["No peer results (this accuracy.json has no peer_records: it predates the peer sweep).", ""]
+    md += ["Each peer runs on every case it can represent and is measured against the same 50-digit "
+           "reference as curvebench's methods; curvebench's counterpart is the record of the same "
+           "computation (the default evaluation of the case, adaptive_gk at the same relative tolerance).", ""]
+    md.append(lib.table(["peers and versions", "ran by", "records"], versions))
+    missing = missing_drivers(peer_files)
+    if missing:
+        md += ["", "Optional peers that did not run (no reports/peers_<driver>.json; run scripts/peers.sh): "
+               + ", ".join(missing) + "."]
+    for _, data in peer_files:
+        for note in data.get("notes", []):
+            md += ["", f"- {data.get('driver', '?')}: {note}"]
+    records = [r for r in acc.get("records", []) if not r.get("subject")]
+
+    md += ["", "### Evaluation", "",
+           "Error in eps(double) x the curve's size (as curvebench's eval records). Times per evaluation: "
+           "the accuracy runner's (each peer and curvebench's counterpart timed back to back on one thread, "
+           "curvebench through its type-erased any_curve; compare the ratio), or the driver's for the "
+           "optional peers (SciPy: one vectorised call over all the parameters, divided by their number).", ""]
+    ev = eval_rows(records, peer_records)
+    md.append(lib.table(["case", "peer", "peer error", "curvebench", "curvebench error", "peer ns/eval",
+                         "curvebench ns/eval", "curvebench / peer"], ev) if ev else "No evaluation peer records.")
+
+    md += ["", "### Arc length", "",
+           "Relative error |L_peer - L| / L, the peer's own estimate / L and whether it bounds the error, the "
+           "integrand evaluations, the library's status in its own words, beside curvebench's adaptive_gk at the "
+           "same relative tolerance; times per length as above.", ""]
+    lr = length_rows(records, peer_records)
+    md.append(lib.table(["case", "setting", "peer", "peer error", "peer estimate", "bounds?", "evals", "peer status",
+                         "adaptive_gk error", "adaptive_gk evals", "peer ns", "curvebench ns", "curvebench / peer"], lr)
+              if lr else "No arc-length peer records.")
+    hon = honesty_rows(peer_records)
+    if hon:
+        md += ["", "Do the peers' error estimates bound their errors?", ""]
+        md.append(lib.table(["peer", "quantity", "results with estimate", "estimate >= true error", "honest"], hon))
+
+    libraries = {vocab.peers[r["method"]]["library"] for r in peer_records if r["method"] in vocab.peers}
+    sp = speed_rows(bench_rows, vocab, libraries)
+    if sp:
+        md += ["", "### Speed in the benchmarks (same run, same data)", ""]
+        md.append(lib.table(["family", "data", "curvebench", "peer", "curvebench ns/op", "peer ns/op",
+                             "curvebench / peer"], sp))
+
+    md += ["", "### Findings: where a peer does less than its documentation says or the same data allow", ""]
+    fs = findings(peer_records, records)
+    md += [f"- {f}" for f in fs] if fs else ["None in this run."]
+    rf = refusals(peer_records)
+    if rf:
+        md += ["", "Settings the peers refused (as documented; no value to measure):", ""]
+        md += [f"- {x}" for x in rf]
+    md.append("")
+    return md
