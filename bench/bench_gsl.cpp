@@ -30,7 +30,6 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -58,12 +57,7 @@ void keep(T& x) {
 
 /// Query parameters in [lo, hi]: random (fixed seed) or sorted.
 std::vector<double> parameters(double lo, double hi, bool sorted) {
-  std::mt19937_64 rng(12345);
-  std::uniform_real_distribution<double> dist(lo, hi);
-  std::vector<double> u(queries);
-  for (double& x : u) x = dist(rng);
-  if (sorted) std::sort(u.begin(), u.end());
-  return u;
+  return curvebench::bench::query_parameters(lo, hi, queries, sorted);
 }
 
 template <class F>

@@ -28,7 +28,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <random>
 #include <vector>
 
 namespace cb = curvebench;
@@ -49,12 +48,7 @@ cb::point_list<double, 3> keys(std::size_t n) {
 
 /// Query parameters in [lo, hi]: random (fixed seed) or sorted.
 std::vector<double> parameters(double lo, double hi, bool sorted) {
-  std::mt19937_64 rng(12345);
-  std::uniform_real_distribution<double> dist(lo, hi);
-  std::vector<double> u(queries);
-  for (double& x : u) x = dist(rng);
-  if (sorted) std::sort(u.begin(), u.end());
-  return u;
+  return curvebench::bench::query_parameters(lo, hi, queries, sorted);
 }
 
 template <class F>

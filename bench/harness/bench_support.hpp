@@ -13,12 +13,16 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace curvebench::bench {
 
@@ -81,6 +85,17 @@ class benchmark_name {
   }
   std::string s_;
 };
+
+/// n query parameters in [lo, hi], uniformly random with a fixed seed (the same in every run and
+/// every program, so that ours and a peer's rows query the same points), or the same ones sorted.
+inline std::vector<double> query_parameters(double lo, double hi, std::size_t n, bool sorted) {
+  std::mt19937_64 rng(12345);
+  std::uniform_real_distribution<double> dist(lo, hi);
+  std::vector<double> u(n);
+  for (double& x : u) x = dist(rng);
+  if (sorted) std::sort(u.begin(), u.end());
+  return u;
+}
 
 /// Registers fn(state) under name (Google Benchmark copies the name).
 template <class F>
