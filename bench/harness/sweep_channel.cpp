@@ -50,15 +50,10 @@ std::vector<double> sample_times(double first, double last, std::size_t n) {
 // The truth at the times a Real model is asked (times rounded to Real first, so that the time's
 // own rounding is not counted as the evaluator's error).
 template <class Real>
-std::vector<double> truth_at(const io::channel_model<real50>& truth, const std::vector<double>& ts,
-                             std::vector<real50>& exact) {
-  exact.resize(ts.size());
-  std::vector<double> rounded(ts.size());
-  for (std::size_t j = 0; j < ts.size(); ++j) {
-    rounded[j] = static_cast<double>(static_cast<Real>(ts[j]));
-    exact[j] = truth.at(real50(rounded[j]), 0);
-  }
-  return rounded;
+std::vector<real50> truth_at(const io::channel_model<real50>& truth, const std::vector<double>& ts) {
+  std::vector<real50> exact(ts.size());
+  for (std::size_t j = 0; j < ts.size(); ++j) exact[j] = truth.at(real50(static_cast<Real>(ts[j])), 0);
+  return exact;
 }
 
 // |x(u) - t| at 50 digits, x the time of segment [k0, k1] from the keys' exact data (so that a
@@ -182,11 +177,8 @@ json sweep_channel(record_sink& k, const case_info& info, const sweep& w) {
   for (const auto& key : keys) key_ts.push_back(key.time);
 
   // Truth at the double times and at the float-rounded ones (and at the key times).
-  std::vector<real50> truth64, truth32, key64, key32;
-  (void)truth_at<double>(truth, ts, truth64);
-  (void)truth_at<float>(truth, ts, truth32);
-  (void)truth_at<double>(truth, key_ts, key64);
-  (void)truth_at<float>(truth, key_ts, key32);
+  const std::vector<real50> truth64 = truth_at<double>(truth, ts), truth32 = truth_at<float>(truth, ts);
+  const std::vector<real50> key64 = truth_at<double>(truth, key_ts), key32 = truth_at<float>(truth, key_ts);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const real50& v : truth64) lo = std::min(lo, static_cast<double>(v)), hi = std::max(hi, static_cast<double>(v));
   for (const real50& v : key64) lo = std::min(lo, static_cast<double>(v)), hi = std::max(hi, static_cast<double>(v));
