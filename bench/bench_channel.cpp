@@ -105,9 +105,7 @@ void solver_benchmark(benchmark::State& state, const std::vector<cbc::key<double
     for (std::size_t j = 0; j < ts.size(); ++j) {
       using std::abs;
       worst = std::max(worst, static_cast<double>(abs(cb::real50(c.value(ts[j])) - truth[j])) / unit);
-      const auto ks = c.keys();
-      const auto it = std::upper_bound(ks.begin(), ks.end(), ts[j], [](const Real& x, const auto& k) { return x < k.time; });
-      const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - ks.begin()), ks.size() - 1) - 1;
+      const std::size_t i = c.segment_at(ts[j]);
       if (ts[j] >= c.keys()[i + 1].time) continue;  // the segment's end: no inversion
       iterations += cbc::solve_time(solver, c.segment_time_cubic(i), Real(ts[j] - c.keys()[i].time)).iterations;
     }

@@ -284,6 +284,25 @@ TYPED_TEST(channel_test, linear_constant_and_step_next) {
   EXPECT_EQ(c.value(Real(5)), Real(2));  // the last key
 }
 
+// segment_at: the segment starting at the last key time <= t, the last key in the last segment;
+// times outside the keys and a one-key channel are refused naming t.
+TYPED_TEST(channel_test, segment_at_is_the_segment_holding_t) {
+  using Real = TypeParam;
+  using I = ch::interpolation;
+  const ch::channel<Real> c(keys_of<Real>({{0, 1, 0, 0, 0, 0, I::linear},
+                                           {2, -3, 0, 0, 0, 0, I::constant},
+                                           {3, 5, 0, 0, 0, 0, I::linear}}));
+  EXPECT_EQ(c.segment_at(Real(0)), 0u);
+  EXPECT_EQ(c.segment_at(boost::math::float_prior(Real(2))), 0u);
+  EXPECT_EQ(c.segment_at(Real(2)), 1u);
+  EXPECT_EQ(c.segment_at(Real(2.5)), 1u);
+  EXPECT_EQ(c.segment_at(Real(3)), 1u);  // the last key: the last segment
+  EXPECT_THAT(cbt::message_of([&] { (void)c.segment_at(Real(-0.5)); }), HasSubstr("t = -0.5: outside the keys"));
+  EXPECT_THAT(cbt::message_of([&] { (void)c.segment_at(Real(3.5)); }), HasSubstr("t = 3.5"));
+  const ch::channel<Real> one({ch::key<Real>{Real(2), Real(-1.5), {}, {}, I::bezier}});
+  EXPECT_THAT(cbt::message_of([&] { (void)one.segment_at(Real(2)); }), HasSubstr("one key and no segment"));
+}
+
 // ---------------------------------------------------------------------------------------------
 // Extrapolation, each mode against its closed form. The keyed range [1, 3] (T = 2) holds a linear
 // and a hermite segment; every time below is dyadic, so t + k T and the wrap are exact.

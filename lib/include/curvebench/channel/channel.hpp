@@ -249,6 +249,18 @@ class channel {
   [[nodiscard]] extrapolation after() const { return data_->after; }
   [[nodiscard]] time_solver solver() const { return data_->solver; }
   [[nodiscard]] std::size_t segment_count() const { return data_->segments.size(); }
+  /// The segment that evaluates time t in [keys().front().time, keys().back().time]: the one starting
+  /// at the last key time <= t (the last key's time belongs to the last segment). Binary search,
+  /// O(log n). invalid_input for a channel of one key (no segment) or t outside the keys or not
+  /// finite (extrapolation, not a segment, answers there).
+  [[nodiscard]] std::size_t segment_at(const Real& t) const {
+    const auto& d = *data_;
+    if (d.segments.empty()) validate::fail("segment_at: the channel has one key and no segment");
+    if (!(t >= d.times.front() && t <= d.times.back()))
+      validate::fail("t = " + to_text(t) + ": outside the keys [" + to_text(d.times.front()) + ", " +
+                     to_text(d.times.back()) + "], where no segment holds it");
+    return locate(t);
+  }
   /// The time cubic that segment i (a bezier segment) inverts: its control times relative to
   /// keys()[i].time, {0, out.dt, (t_{i+1} - t_i) + in.dt, t_{i+1} - t_i}; a time t in the segment is
   /// solved as t - keys()[i].time. invalid_input for an index out of range or another interpolation.
@@ -269,6 +281,12 @@ class channel {
 
   [[nodiscard]] Real eval(const Real& t, int order) const;
   [[nodiscard]] Real inside(const Real& t, int order) const;
+  // segment_at without the checks (t within the keys, at least one segment).
+  [[nodiscard]] std::size_t locate(const Real& t) const {
+    const auto& d = *data_;
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(d.times.begin(), d.times.end(), t) - d.times.begin());
+    return std::min(i == 0 ? std::size_t(0) : i - 1, d.segments.size() - 1);
+  }
   [[nodiscard]] Real extrapolate(extrapolation mode, bool before, const Real& t, int order) const;
 };
 
@@ -446,11 +464,7 @@ Real channel<Real>::eval(const Real& t, int order) const {
 template <class Real>
 Real channel<Real>::inside(const Real& t, int order) const {
   const auto& d = *data_;
-  // The segment starting at the last key time <= t; the last key's time belongs to the last segment.
-  std::size_t i = static_cast<std::size_t>(std::upper_bound(d.times.begin(), d.times.end(), t) - d.times.begin());
-  i = i == 0 ? 0 : i - 1;
-  if (i >= d.segments.size()) i = d.segments.size() - 1;
-  const auto& s = d.segments[i];
+  const auto& s = d.segments[locate(t)];
   const Real w = t >= s.t[3] ? Real(1) : s.local(t, d.solver);
   if (order == 0) return t >= s.t[3] ? s.v[3] : s.value_at(w, 0);
   if (order == 1) return s.slope_at(w);
