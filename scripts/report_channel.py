@@ -118,6 +118,20 @@ def disagreement_rows(cases):
     return rows, notes
 
 
+def rotation_rows(records):
+    """Per glTF rotation case and method (rotation_step, _slerp, _nlerp, _cubicspline): the angle
+    error in double and float (eps radians), its RMS and the largest departure from unit length."""
+    cells = defaultdict(dict)
+    for r in records:
+        if r.get("quantity") == "channel_rotation":
+            cells[(r["case"], r["method"])][bits_of(r["setting"])] = r
+    rows = []
+    for (case, method), by_bits in sorted(cells.items()):
+        d, f = by_bits.get(64, {}), by_bits.get(32, {})
+        rows.append([case, method, d.get("error"), d.get("rms"), d.get("norm"), f.get("error"), f.get("norm")])
+    return rows
+
+
 def goal_line(records):
     """The curvebench solver's goal (issue 12): <= 4 ulps of the value range in double on the whole
     corpus, no monotonicity violation, faster than every other solver reaching that accuracy."""
@@ -225,6 +239,15 @@ def channel_section(acc, bench_rows, plot_dir, plt, save):
     if refused:
         md += ["", "Refused in float (the keys rounded to float are no longer valid):", ""]
         md.append(lib.table(["case", "solver", "message"], [list(x) for x in refused]))
+    rotations = rotation_rows(acc.get("records", []))
+    if rotations:
+        md += ["", "### glTF rotation channels", ""]
+        md += ["Each rotation case (`\"path\": \"rotation\"`) under its interpolation's methods (linear both "
+               "as the specification's slerp and as the nlerp players use), in double and in float, against the "
+               "same formula at 50 digits at the same (rounded) times; the error is the rotation angle between "
+               "the two quaternions in eps of the precision (radians), unit: the largest | |q| - 1 | in eps.", ""]
+        md.append(lib.table(["case", "method", "max angle error, double", "RMS, double", "unit, double",
+                             "max angle error, float", "unit, float"], rotations))
     md += ["", "### Where the tools disagree on the same keys", ""]
     md += ["The keys of each `exact` case imported into each tool's model (bench/harness/channel_models.hpp: "
            "Maya's weighted fixed tangents with its handle shortening, USD's keep_ratio anti-regression, "

@@ -50,7 +50,44 @@ std::map<std::string, json> channel_records(const json& out) {
   return m;
 }
 
+json run_spec(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "curvebench_channel_sweep";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / (name + ".json")) << text;
+  const auto cases = curvebench::harness::load_cases(dir.string());
+  const json out = curvebench::harness::run_case(cases.at(0), true);
+  fs::remove_all(dir);
+  return out;
+}
+
 }  // namespace
+
+// A glTF rotation case: channel_rotation records only (it has no curve view), slerp and nlerp for a
+// linear sampler, in both precisions, within the 16 eps that tests/test_gltf.cpp derives for a
+// segment; the summary's largest segment angle is the keys' 120 degrees about z.
+TEST(channel_sweep, rotation_cases_are_measured_as_angles) {
+  const json out = run_spec("rot", R"({"name": "rot", "group": "channel", "reason": "test", "type": "channel",
+    "tool": "gltf", "path": "rotation", "interpolation": "linear", "times": [0, 1, 2],
+    "values": [0, 0, 0, 1, 0, 0, 0.8660254037844386, 0.5, 0, 0, 0.7071067811865476, -0.7071067811865476]})");
+  std::map<std::string, double> err;
+  for (const auto& r : out["records"]) {
+    ASSERT_EQ(r["quantity"], "channel_rotation");
+    err[r["method"].get<std::string>() + "/" + r["setting"].get<std::string>()] = r["error"].get<double>();
+    EXPECT_LE(r["norm"].get<double>(), 4.0);  // a unit result: the keys' rounding and the normalization
+  }
+  EXPECT_EQ(err.size(), 4u);
+  for (const char* k : {"rotation_slerp/bits=64", "rotation_slerp/bits=32", "rotation_nlerp/bits=64", "rotation_nlerp/bits=32"}) {
+    ASSERT_EQ(err.count(k), 1u) << k;
+    EXPECT_LE(err[k], 16.0) << k;
+  }
+  const json& c = out["case"]["channel"];
+  EXPECT_EQ(c["path"], "rotation");
+  EXPECT_EQ(c["keys"], 3);
+  // Key 1 -> key 2: 120 degrees about z, then 270 degrees stored, whose short path is 150 degrees.
+  EXPECT_NEAR(c["largest_segment_angle"].get<double>(), 150 * M_PI / 180, 1e-14);
+  EXPECT_EQ(out["case"]["dimension"], 4);
+}
 
 TEST(channel_sweep, every_solver_in_both_precisions_with_vocabulary_ids) {
   const json out = run_bold_s();

@@ -28,6 +28,8 @@
 #include "curvebench/io/spec.hpp"
 #include "curvebench/reference/multiprecision.hpp"
 
+#include <boost/math/constants/constants.hpp>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -105,6 +107,69 @@ TEST(io_channel, gltf_matches_the_sampler) {
       }
     }
   }
+}
+
+// glTF rotation channels ("path": "rotation"): the spec builds the same rotation sampler as the
+// quaternions given directly (bit-identical: the same code on the same numbers), and a slerp about
+// one axis is the closed form: 90 degrees about z in one second is, at t, the rotation by t pi/2,
+// (0, 0, sin(t pi/4), cos(t pi/4)); tolerance 16 eps absolute in angle (test_gltf's segment bound).
+TEST(io_channel, gltf_rotation_matches_the_sampler_and_the_closed_form) {
+  for (const char* name : {"gltf_rotation_linear", "gltf_rotation_cubicspline", "gltf_rotation_step"})
+    for (const char* blend : {"slerp", "nlerp"}) {
+      SCOPED_TRACE(std::string(name) + " " + blend);
+      nlohmann::json j = read_case(name);
+      j["blend"] = blend;
+      const auto r = cb::io::rotation_of_spec<double>(spec_of(j));
+      const std::vector<double> times = j["times"].get<std::vector<double>>(), v = j["values"].get<std::vector<double>>();
+      std::vector<cb::point<double, 4>> q;
+      for (std::size_t i = 0; i < v.size(); i += 4) q.emplace_back(v[i], v[i + 1], v[i + 2], v[i + 3]);
+      const ch::gltf::rotation_sampler<double> s(times, q, ch::gltf::from_string<ch::gltf::interpolation>(j["interpolation"].get<std::string>()),
+                                                 ch::gltf::from_string<ch::gltf::rotation_blend>(blend));
+      for (double t : grid(times.front() - 0.5, times.back() + 0.5, 997)) EXPECT_EQ(r(t), s(t)) << "t = " << t;
+      EXPECT_EQ(cb::io::spec_dimension(spec_of(j)), 4);
+    }
+  const nlohmann::json quarter = nlohmann::json::parse(
+      R"({"type": "channel", "tool": "gltf", "path": "rotation", "interpolation": "linear", "times": [0, 1],
+          "values": [0, 0, 0, 1, 0, 0, 0.70710678118654752440084436210484903928483593768847, 0.70710678118654752440084436210484903928483593768847]})");
+  const auto r50 = cb::io::rotation_of_spec<R>(spec_of(quarter));
+  const auto r64 = cb::io::rotation_of_spec<double>(spec_of(quarter));
+  const R pi = boost::math::constants::pi<R>();
+  for (int i = 0; i <= 64; ++i) {
+    const R t = R(i) / 64;
+    const cb::point<R, 4> exact(R(0), R(0), sin(t * pi / 4), cos(t * pi / 4));
+    // JSON numbers are doubles, so even the real50 sampler holds the key rounded to double:
+    // (0, 0, c, c) with c = 1/sqrt(2) (1 + d), |d| <= eps/2, an exact 90-degree rotation whose length
+    // is 1 + d; slerp of keys off unit length by d turns its result by O(d): 1 eps allows it.
+    EXPECT_LT(ch::gltf::angular_distance<R>(r50(t), exact), R(cb::epsilon<double>())) << "t = " << t;
+    cb::point<R, 4> q;
+    for (int d = 0; d < 4; ++d) q[d] = R(r64(static_cast<double>(t))[d]);
+    EXPECT_LE(ch::gltf::angular_distance<R>(q, exact), R(16 * cb::epsilon<double>())) << "t = " << t;
+  }
+}
+
+TEST(io_channel, gltf_rotation_bad_specs_name_the_field) {
+  auto message = [](const std::string& text, bool scalar = false) {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    return cbt::message_of([&] {
+      if (scalar) (void)cb::io::channel_model_of_spec<double>(spec_of(j));
+      else (void)cb::io::rotation_of_spec<double>(spec_of(j));
+    });
+  };
+  const std::string head = R"({"type": "channel", "tool": "gltf", "path": "rotation", "interpolation": "linear", "times": [0, 1], )";
+  EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 0.8, 0.8]})"),
+              ::testing::AllOf(::testing::HasSubstr("output[1] (key 1 value)"), ::testing::HasSubstr("unit quaternions")));
+  EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 1]})"), ::testing::HasSubstr("7 numbers given"));
+  EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 0, 1], "blend": "squad"})"),
+              ::testing::AllOf(::testing::HasSubstr("spec.json.blend"), ::testing::HasSubstr("slerp")));
+  std::string euler = head;
+  euler.replace(euler.find("\"rotation\""), 10, "\"euler\"");
+  EXPECT_THAT(message(euler + R"("values": [0, 0, 0, 1, 0, 0, 0, 1]})"),
+              ::testing::AllOf(::testing::HasSubstr("spec.json.path"), ::testing::HasSubstr("rotation")));
+  EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 0, 1]})", true),
+              ::testing::AllOf(::testing::HasSubstr("spec.json.path"), ::testing::HasSubstr("unit quaternion")));
+  const nlohmann::json ok = nlohmann::json::parse(head + R"("values": [0, 0, 0, 1, 0, 0, 0, 1]})");
+  EXPECT_THAT(cbt::message_of([&] { (void)cb::io::curve_from_spec<double, 4>(spec_of(ok)); }),
+              ::testing::HasSubstr("no planar curve view"));
 }
 
 TEST(io_channel, maya_matches_the_model) {

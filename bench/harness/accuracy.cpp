@@ -7,6 +7,7 @@
 #include "harness/sweeps.hpp"
 #include "harness/writers.hpp"
 
+#include "curvebench/io/families/channel.hpp"
 #include "curvebench/io/spec.hpp"
 
 #include <algorithm>
@@ -73,7 +74,34 @@ std::string compiler_id() {
 #endif
 }
 
+namespace {
+
+// A glTF rotation case: a quaternion over time, which has no curve view (so no length, s(u), u(s)
+// or eval records), measured by sweep_rotation alone.
+json run_rotation(const case_info& info, bool quick) {
+  const auto t0 = std::chrono::steady_clock::now();
+  record_sink k(info);
+  json channel = sweep_rotation(k, info, settings(quick));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return {{"records", k.records()},
+          {"orders", k.orders()},
+          {"peer_records", json::array()},
+          {"case",
+           {{"name", info.name},
+            {"group", info.group},
+            {"reason", info.reason},
+            {"family", "channel"},
+            {"dimension", info.dimension},
+            {"segments", channel["keys"].get<std::size_t>() - 1},
+            {"channel", channel},
+            {"seconds", seconds}}}};
+}
+
+}  // namespace
+
 json run_case(const case_info& c, bool quick) {
+  if (c.spec.value("type", "") == "channel" && io::detail::is_gltf_rotation(io::root(c.spec, c.name)))
+    return run_rotation(c, quick);
   switch (c.dimension) {
     case 2: return run_dim<2>(c, quick);
     case 3: return run_dim<3>(c, quick);

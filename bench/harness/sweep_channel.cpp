@@ -104,8 +104,7 @@ solver_figures measure_solver(const io::channel_model<Real>& m, const std::vecto
   for (double td : ts) {
     const Real t = static_cast<Real>(td);
     if (keys.size() < 2 || t < keys.front().time || t > keys.back().time) continue;
-    const auto it = std::upper_bound(keys.begin(), keys.end(), t, [](const Real& x, const auto& k) { return x < k.time; });
-    const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(it - keys.begin()), keys.size() - 1) - 1;
+    const std::size_t i = m.source.segment_at(t);
     if (keys[i].interp != channel::interpolation::bezier) continue;
     if (t == keys[i + 1].time) continue;  // the segment's end: the key, no inversion
     // The cubic the channel inverts (control times relative to the segment's start).
@@ -164,7 +163,80 @@ json picture(const io::channel_model<double>& m, double lo, double hi) {
   return p;
 }
 
+// A rotation model in one precision against the truth at the same (rounded) times: the angle
+// between the quaternions, and how far the model's quaternion is from unit length.
+struct rotation_figures {
+  double max_eps = 0, rms_eps = 0, norm_eps = 0;
+};
+
+template <class Real>
+rotation_figures measure_rotation(const channel::gltf::rotation_sampler<Real>& m,
+                                  const channel::gltf::rotation_sampler<real50>& truth, const std::vector<double>& ts) {
+  const double eps = static_cast<double>(std::numeric_limits<Real>::epsilon());
+  rotation_figures f;
+  double sum2 = 0;
+  for (double td : ts) {
+    const Real t = static_cast<Real>(td);
+    const point<Real, 4> q = m(t);
+    point<real50, 4> q50;
+    for (int d = 0; d < 4; ++d) q50[d] = real50(q[d]);
+    const double e = static_cast<double>(channel::gltf::angular_distance<real50>(q50, truth(real50(t)))) / eps;
+    f.max_eps = std::max(f.max_eps, e);
+    sum2 += e * e;
+    f.norm_eps = std::max(f.norm_eps, static_cast<double>(abs(sqrt(q50.dot(q50)) - real50(1))) / eps);
+  }
+  f.rms_eps = std::sqrt(sum2 / static_cast<double>(ts.size()));
+  return f;
+}
+
 }  // namespace
+
+json sweep_rotation(record_sink& k, const case_info& info, const sweep& w) {
+  namespace g = channel::gltf;
+  const io::field root = io::root(info.spec, info.name);
+  const g::rotation_sampler<double> plain = io::rotation_of_spec<double>(root);
+  const auto times = plain.input();
+  const std::vector<double> ts = sample_times(times.front(), times.back(), w.channel_times);
+  // Linear rotations are measured both ways the players blend them; the spec's blend is the default.
+  std::vector<std::pair<const vocab::method*, std::string>> runs;
+  switch (plain.mode()) {
+    case g::interpolation::step: runs.push_back({&vocab::methods::rotation_step, "slerp"}); break;
+    case g::interpolation::linear:
+      runs.push_back({&vocab::methods::rotation_slerp, "slerp"});
+      runs.push_back({&vocab::methods::rotation_nlerp, "nlerp"});
+      break;
+    case g::interpolation::cubicspline: runs.push_back({&vocab::methods::rotation_cubicspline, "slerp"}); break;
+  }
+  json refused = json::object();
+  double largest = 0;
+  for (std::size_t i = 0; i + 1 < plain.key_count(); ++i) largest = std::max(largest, plain.segment_angle(i));
+  for (const auto& [method, blend] : runs) {
+    json spec = info.spec;
+    spec["blend"] = blend;
+    const io::field r = io::root(spec, info.name);
+    const g::rotation_sampler<real50> truth = io::rotation_of_spec<real50>(r);
+    const double samples = static_cast<double>(ts.size());
+    const auto add = [&](int bits, const rotation_figures& f) {
+      k.add(vocab::quantities::channel_rotation, *method, setting(*method, {{"bits", bits}}), f.max_eps,
+            std::numeric_limits<double>::quiet_NaN(), samples, "not_guaranteed");
+      k.annotate({{"rms", f.rms_eps}, {"norm", f.norm_eps}});
+    };
+    add(64, measure_rotation(io::rotation_of_spec<double>(r), truth, ts));
+    try {
+      add(32, measure_rotation(io::rotation_of_spec<float>(r), truth, ts));
+    } catch (const invalid_input& x) {
+      refused[std::string(method->id)] = std::string("float: ") + x.what();
+    }
+  }
+  return {{"tool", "gltf"},
+          {"path", "rotation"},
+          {"interpolation", g::to_string(plain.mode())},
+          {"keys", plain.key_count()},
+          {"largest_segment_angle", largest},
+          {"window", {ts.front(), ts.back()}},
+          {"samples", ts.size()},
+          {"refused", refused}};
+}
 
 json sweep_channel(record_sink& k, const case_info& info, const sweep& w) {
   const json& spec = info.spec;

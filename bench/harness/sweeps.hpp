@@ -78,6 +78,14 @@ std::string gsl_version();
 /// pair over the keyed range, in value ranges).
 nlohmann::json sweep_channel(record_sink& k, const case_info& info, const sweep& w);
 
+/// glTF rotation channels (gltf cases with "path": "rotation"): per rotation method of the case's
+/// interpolation (step; linear: slerp and nlerp; cubicspline) in float and double, a
+/// channel_rotation record (the angle to the same sampler at real50, in eps radians; fields rms
+/// and norm) at w.channel_times times over the keys widened by a quarter on each side. Returns the
+/// case's channel summary: tool, path, interpolation, keys, largest_segment_angle (radians),
+/// window, samples, refused.
+nlohmann::json sweep_rotation(record_sink& k, const case_info& info, const sweep& w);
+
 /// Seed 001's properties measured on a 2D case: the markdown row, or null when not audited.
 nlohmann::json sweep_audit(const case_info& info);
 

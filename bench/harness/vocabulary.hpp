@@ -47,12 +47,19 @@ inline constexpr quantity channel_time{"channel_time",
                                        "max over samples in bezier segments of |x(u_solver) - t| / (eps x the "
                                        "segment's duration), the time solver's residual (record fields "
                                        "iterations_mean, iterations_max, not_converged)"};
+// glTF rotation channels (gltf cases with "path": "rotation"): the model's quaternion against the
+// same sampler's formula at 50 digits, as a rotation angle (unit quaternions: the angle of q_a q_b^-1).
+inline constexpr quantity channel_rotation{"channel_rotation",
+                                           "max over sample times of the rotation angle between q_model(t) and "
+                                           "q(t), in eps(Real) radians (record fields rms, and norm: the max "
+                                           "| |q_model| - 1 | in eps(Real))"};
 }  // namespace quantities
 
 inline constexpr const quantity* all_quantities[] = {&quantities::length,        &quantities::s_of_u,
                                                      &quantities::u_of_s,        &quantities::eval,
                                                      &quantities::channel_value, &quantities::channel_keys,
-                                                     &quantities::channel_monotone, &quantities::channel_time};
+                                                     &quantities::channel_monotone, &quantities::channel_time,
+                                                     &quantities::channel_rotation};
 
 /// A method of the library, as the CLI, the records and the benchmarks name it.
 struct method {
@@ -114,6 +121,17 @@ inline constexpr method solver_exact{"exact", CURVEBENCH_CHANNEL_QUANTITIES, "bi
                                      "time solver: safeguarded Newton-bisection on the de Casteljau residual "
                                      "to the precision's last bit"};
 #undef CURVEBENCH_CHANNEL_QUANTITIES
+// The glTF rotation samplers (channel/gltf.hpp rotation_sampler); setting bits=32 or bits=64.
+inline constexpr method rotation_step{"rotation_step", "channel_rotation", "bits", 0,
+                                      "glTF rotation, STEP: the key at or before t"};
+inline constexpr method rotation_slerp{"rotation_slerp", "channel_rotation", "bits", 0,
+                                       "glTF rotation, LINEAR: slerp on the short path (the spec's formula; angle "
+                                       "by Kahan's atan2 of two norms)"};
+inline constexpr method rotation_nlerp{"rotation_nlerp", "channel_rotation", "bits", 0,
+                                       "glTF rotation, LINEAR as players approximate it: normalize((1 - s) v + s w)"};
+inline constexpr method rotation_cubicspline{"rotation_cubicspline", "channel_rotation", "bits", 0,
+                                             "glTF rotation, CUBICSPLINE: the Hermite on the 4 components, "
+                                             "normalized"};
 }  // namespace methods
 
 /// The time-solver methods, in channel::all_time_solvers' order.
@@ -129,7 +147,12 @@ inline constexpr const method* all_methods[] = {
     &methods::hermite_table_polished, &methods::newton,   &methods::eval_default,
     &methods::solver_closed_form, &methods::solver_table_newton, &methods::solver_newton_bisection,
     &methods::solver_bisection12, &methods::solver_bisection30,  &methods::solver_isolate_brent,
-    &methods::solver_curvebench,  &methods::solver_exact};
+    &methods::solver_curvebench,  &methods::solver_exact,       &methods::rotation_step,
+    &methods::rotation_slerp,     &methods::rotation_nlerp,     &methods::rotation_cubicspline};
+
+/// The glTF rotation methods, by interpolation: step, linear (slerp and nlerp), cubicspline.
+inline constexpr const method* rotation_methods[] = {&methods::rotation_step, &methods::rotation_slerp,
+                                                     &methods::rotation_nlerp, &methods::rotation_cubicspline};
 
 /// A library users would pick instead, timed (and measured) on the same data.
 struct peer {

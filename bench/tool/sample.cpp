@@ -259,6 +259,38 @@ void sample(const io::field& spec, const sample_args& a) {
   }
 }
 
+/// A glTF rotation channel at given times: t, the quaternion x, y, z, w and its time derivatives
+/// (orders 1..K, K <= 2: nlerp and cubicspline rotations have no third; io::rotation_of_spec).
+void sample_rotation(const io::field& spec, const sample_args& a, const std::vector<parameter>& given) {
+  const auto r = io::rotation_of_spec<double>(spec);
+  const char* names[] = {"x", "y", "z", "w"};
+  std::cout << "t";
+  for (int k = 0; k <= a.derivatives; ++k)
+    for (const char* n : names) std::cout << "," << (k == 0 ? "" : k == 1 ? "d" : "d2") << n;
+  std::cout << "\n" << std::setprecision(17);
+  progress shown("sample", given.size(), a.quiet);
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    shown.update(i);
+    const double t = given[i].u;
+    std::cout << t;
+    for (int k = 0; k <= a.derivatives; ++k) {
+      point<double, 4> q;
+      try {
+        q = r.derivative(t, k);
+      } catch (const std::domain_error& e) {  // a cubicspline quaternion that vanishes
+        throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): " + e.what());
+      }
+      for (int d = 0; d < 4; ++d) {
+        if (!std::isfinite(q[d]))
+          throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): " +
+                              (k == 0 ? "" : k == 1 ? "d" : "d2") + names[d] + " is " + to_text(q[d]));
+        std::cout << "," << q[d];
+      }
+    }
+    std::cout << "\n";
+  }
+}
+
 /// A channel spec at given times: t, the value and its time derivatives (orders 1..min(K, 2)) under
 /// the spec's tool (io/families/channel.hpp). A vertical tangent's slope is printed as inf or -inf.
 void sample_times(const io::field& spec, const sample_args& a) {
@@ -269,6 +301,7 @@ void sample_times(const io::field& spec, const sample_args& a) {
   if (a.derivatives > 2)
     throw invalid_input("--derivatives " + std::to_string(a.derivatives) +
                         ": a channel's time derivatives go to order 2 (d2value)");
+  if (io::detail::is_gltf_rotation(spec)) return sample_rotation(spec, a, given);
   const io::channel_model<double> ch = io::channel_model_of_spec<double>(spec);
   std::cout << "t,value";
   for (int k = 1; k <= a.derivatives; ++k) std::cout << (k == 1 ? ",dvalue" : ",d2value");

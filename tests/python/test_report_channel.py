@@ -77,6 +77,18 @@ class ChannelSection(unittest.TestCase):
         self.assertEqual(rows, [["s", 0.2, 1e-16, "n/a", "n/a", "maya vs blender: 0.3"]])
         self.assertEqual(notes, ["s, gltf: a vertical handle"])
 
+    def test_rotation_rows_pair_the_precisions_per_case_and_method(self):
+        records = RECORDS + [
+            rec("r", "channel_rotation", "rotation_slerp", 64, 3.0, rms=1.0, norm=0.5),
+            rec("r", "channel_rotation", "rotation_slerp", 32, 2.5, rms=0.7, norm=1.5),
+            rec("r", "channel_rotation", "rotation_nlerp", 64, 4.0, rms=2.0, norm=1.0),
+        ]
+        self.assertEqual(rc.rotation_rows(records), [["r", "rotation_nlerp", 4.0, 2.0, 1.0, None, None],
+                                                     ["r", "rotation_slerp", 3.0, 1.0, 0.5, 2.5, 1.5]])
+        self.assertEqual(rc.rotation_rows(RECORDS), [])
+        # Rotation records are not time-solver records: the solver tables do not list them.
+        self.assertNotIn("rotation_slerp", rc.solver_order(rc.channel_records(records)))
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -6,6 +6,7 @@ from, every subcommand's --help ends with an example, and an installed layout fi
 Needs the tool: CURVEBENCH_TOOL=path/to/curvebench (the `tool_cli` ctest sets it); skipped without,
 as under `report_py`'s unittest discover."""
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -239,6 +240,28 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(u.returncode, 0, u.stderr)
         self.assertTrue(u.stdout.startswith("u,s,x,y"))
         self.assert_error(run("sample", spec, "--at", "1", "--derivatives", "3"), "--derivatives 3", "order 2")
+
+    def test_gltf_rotation_samples_quaternions_at_times(self):
+        # A rotation channel prints t, x, y, z, w (and their time derivatives); 90 degrees about z in
+        # one second, so at t = 0.5 slerp is 45 degrees: (0, 0, sin(pi/8), cos(pi/8)).
+        spec = self.write("rot.json", '{"type": "channel", "tool": "gltf", "path": "rotation", '
+                                      '"interpolation": "linear", "times": [0, 1], '
+                                      '"values": [0, 0, 0, 1, 0, 0, 0.7071067811865476, 0.7071067811865476]}')
+        p = run("sample", spec, "--at", "0.5,2", "--derivatives", "1")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        rows = p.stdout.splitlines()
+        self.assertEqual(rows[0], "t,x,y,z,w,dx,dy,dz,dw")
+        half = [float(x) for x in rows[1].split(",")]
+        self.assertAlmostEqual(half[3], math.sin(math.pi / 8), places=15)
+        self.assertAlmostEqual(half[4], math.cos(math.pi / 8), places=15)
+        # dq/dt = (pi/4) (0, 0, cos(pi/8), -sin(pi/8)) per second (half the rotation rate pi/2).
+        self.assertAlmostEqual(half[7], math.pi / 4 * math.cos(math.pi / 8), places=14)
+        self.assertEqual(rows[2].split(",")[1:5], ["0", "0", "0.70710678118654757", "0.70710678118654757"])  # clamped
+        # No curve view: sampling by u says how to evaluate it; a key off unit length names its index.
+        self.assert_error(run("sample", spec, "--count", "3"), "path", "unit quaternion", "--at")
+        bad = self.write("bad.json", '{"type": "channel", "tool": "gltf", "path": "rotation", '
+                                     '"interpolation": "linear", "times": [0, 1], "values": [0, 0, 0, 1, 0, 0, 0.8, 0.8]}')
+        self.assert_error(run("sample", bad, "--at", "0.5"), "output[1] (key 1 value)", "unit quaternions")
 
     def test_sample_count_has_a_documented_limit(self):
         p = run("sample", ARCH, "--count", "1000001")

@@ -12,9 +12,15 @@
 //          Chromium scheme). Outside [0, 1] the value holds (constant extrapolation);
 //   maya   a Maya animCurve (channel/maya.hpp): keys with in/out tangent types and fixed tangent
 //          vectors, weighted or not, pre and post infinity; solver default isolate_brent;
-//   gltf   a scalar glTF 2.0 sampler ("interpolation": step, linear or cubicspline, "times" and
+//   gltf   a glTF 2.0 sampler ("interpolation": step, linear or cubicspline, "times" and
 //          "values" as glTF stores them: one value per key, or in-tangent, value, out-tangent per
-//          key for cubicspline), clamped outside the keys (channel/gltf.hpp has the sampler itself);
+//          key for cubicspline), clamped outside the keys (channel/gltf.hpp has the sampler itself).
+//          "path": "weights" (the default: a scalar channel, one morph weight) or "rotation": the
+//          values are unit quaternions x y z w, four numbers each, interpolated by "blend": slerp
+//          (the default, the spec's) or nlerp for linear, normalized Hermite for cubicspline. A
+//          rotation's value is a quaternion, not a number over time: rotation_of_spec gives the
+//          sampler, `curvebench sample SPEC --at` prints t, x, y, z, w, and the curve view and
+//          channel_model_of_spec refuse it naming the path;
 //   blender  a Blender F-curve (channel/blender.hpp): keys with absolute handle_left / handle_right,
 //          handle types, interpolation (constant, linear, bezier or a Penner family) with easing
 //          and back / amplitude / period; extrapolation constant or linear, auto-handle smoothing,
@@ -177,6 +183,18 @@ std::vector<channel::key<Real>> css_keys(const field& spec) {
     }
   }
   return keys;
+}
+
+// A gltf spec's "path": weights (scalar, the default) or rotation.
+inline bool is_gltf_rotation(const field& spec) {
+  if (!spec.has("tool") || spec.member("tool").string() != "gltf" || !spec.has("path")) return false;
+  return spec.member("path").one_of({"weights", "rotation"}) == "rotation";
+}
+
+// The refusal of a scalar view (the channel, its curve) of a rotation spec.
+[[noreturn]] inline void refuse_rotation(const field& spec, std::string_view what) {
+  spec.member("path").fail("a rotation channel's value is a unit quaternion, so it has no " + std::string(what) +
+                           "; `curvebench sample SPEC --at T1,T2` evaluates it (t, x, y, z, w)");
 }
 
 // The keys of a scalar glTF sampler (see the header).
@@ -430,6 +448,30 @@ struct channel_model {
 template <class Real>
 channel_model<Real> channel_model_of_spec(const field& spec);
 
+/// The rotation sampler of a gltf spec with "path": "rotation" (see the header): its times, its
+/// quaternions (x y z w; in-tangent, value, out-tangent per key for cubicspline) and its blend.
+/// The sampler validates them as glTF does, naming output[i] and the key's role (unit values,
+/// | |q| - 1 | <= 0.00769). invalid_input for another tool or path.
+template <class Real>
+channel::gltf::rotation_sampler<Real> rotation_of_spec(const field& spec) {
+  if (!detail::is_gltf_rotation(spec))
+    spec.fail("a rotation sampler needs \"tool\": \"gltf\" and \"path\": \"rotation\"");
+  namespace g = channel::gltf;
+  const g::interpolation mode = g::from_string<g::interpolation>(
+      spec.member("interpolation", "tool \"gltf\" takes an interpolation").one_of({"step", "linear", "cubicspline"}));
+  const g::rotation_blend blend =
+      spec.has("blend") ? g::from_string<g::rotation_blend>(spec.member("blend").one_of({"slerp", "nlerp"}))
+                        : g::rotation_blend::slerp;
+  std::vector<Real> t = spec.member("times", "tool \"gltf\" takes times").reals<Real>();
+  const field vf = spec.member("values", "tool \"gltf\" takes values");
+  const std::vector<Real> v = vf.reals<Real>();
+  if (v.size() % 4 != 0)
+    vf.fail(std::to_string(v.size()) + " numbers given: a rotation's values are quaternions, 4 numbers (x y z w) each");
+  std::vector<point<Real, 4>> q(v.size() / 4);
+  for (std::size_t i = 0; i < q.size(); ++i) q[i] = point<Real, 4>(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
+  return g::rotation_sampler<Real>(std::move(t), std::span<const point<Real, 4>>(q), mode, blend);
+}
+
 /// The channel a "channel" spec describes, under its tool's rules, in Real (see the header).
 template <class Real>
 channel::channel<Real> channel_of_spec(const field& spec) {
@@ -459,6 +501,7 @@ template <class Real>
 channel_model<Real> channel_model_of_spec(const field& spec) {
   const std::string tool = spec.member("tool", "a channel names the tool whose rules evaluate it")
                                .one_of({"exact", "css", "gltf", "maya", "blender", "usd"});
+  if (detail::is_gltf_rotation(spec)) detail::refuse_rotation(spec, "scalar value v(t)");
   if (tool == "blender") {
     const channel::blender_evaluator<Real> b(detail::blender_fcurve_of<Real>(spec),
                                              detail::solver_of(spec, channel::time_solver::exact));
@@ -517,21 +560,28 @@ struct channel_family : family_defaults {
                  "linear(...) or a keyword"},
       {"interpolation", "gltf: step, linear or cubicspline"},
       {"times", "gltf: the key times (the sampler's input)"},
-      {"values", "gltf: the sampler's output (cubicspline: in-tangent, value, out-tangent per key)"},
+      {"values", "gltf: the sampler's output (cubicspline: in-tangent, value, out-tangent per key; rotation: "
+                 "4 numbers x y z w per quaternion)"},
+      {"path", "gltf: weights (a scalar channel, the default) or rotation (unit quaternion keys)"},
+      {"blend", "gltf rotation: slerp (the default) or nlerp for linear interpolation"},
   };
   static constexpr std::string_view examples[] = {
       R"({"type": "channel", "tool": "exact", "keys": [{"time": 0, "value": 0, "out": [0.5, 0]}, {"time": 2, "value": 1, "in": [-0.5, 0.4]}], "after": "cycle_offset"})",
       R"j({"type": "channel", "tool": "css", "easing": "cubic-bezier(0.25, 0.1, 0.25, 1)"})j",
       R"({"type": "channel", "tool": "gltf", "interpolation": "cubicspline", "times": [0, 1, 3], "values": [0, 0, 1, 1, 2, 0, 0, 1, 0]})",
+      R"({"type": "channel", "tool": "gltf", "path": "rotation", "interpolation": "linear", "times": [0, 1], "values": [0, 0, 0, 1, 0, 0, 0.7071067811865476, 0.7071067811865476], "blend": "slerp"})",
       R"({"type": "channel", "tool": "maya", "keys": [{"time": 0, "value": 0}, {"time": 10, "value": 4, "in_type": "clamped", "out_type": "clamped"}, {"time": 20, "value": 4}], "post": "oscillate"})",
       R"({"type": "channel", "tool": "blender", "keys": [{"time": 1, "value": 0}, {"time": 11, "value": 5}, {"time": 21, "value": 2}], "extrapolation": "linear"})",
       R"({"type": "channel", "tool": "usd", "knots": [{"time": 0, "value": 0, "post_width": 4, "post_slope": 1}, {"time": 6, "value": 3, "pre_width": 4, "pre_slope": 0}], "anti_regression": "keep_ratio", "after": "loop_repeat"})",
   };
 
-  static int dimension(const field&) { return 2; }
+  // A rotation is 4 numbers over time, not the planar (t, v): 4D, so that the runners that take 2D
+  // and 3D curves pass it by; build refuses its curve view whatever the dimension asked.
+  static int dimension(const field& spec) { return detail::is_gltf_rotation(spec) ? 4 : 2; }
 
   template <class Real, int Dim>
   static any_curve<Real, Dim> build(const field& spec) {
+    if (detail::is_gltf_rotation(spec)) detail::refuse_rotation(spec, "planar curve view (t(u), v(u))");
     if constexpr (Dim == 2) {
       // Blender's eased segments are Penner's functions of time, not (t(u), v(u)) cubics: the
       // channel under them holds their chords, which is not their graph.
