@@ -23,6 +23,7 @@ import sys
 from collections import defaultdict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import report_channel as rc  # noqa: E402
 import report_lib as lib  # noqa: E402
 
 MAX_PLOTS = 12
@@ -122,6 +123,31 @@ def pareto_fastest(records, times):
     return out
 
 
+def channel_summary(records, bench_rows):
+    """The keyframe-channel figures (issue 12): per time solver its worst value error over the corpus
+    in double (ulps of the value range, and the case) and float, monotonicity violations, ns per
+    value (64 keys, random and sorted, double); curvebench's goal line; per glTF rotation method the
+    worst angle error in double. None when the run has no channel records."""
+    records_c = rc.channel_records(records)
+    if not records_c:
+        return None
+    times = rc.bench_times(bench_rows)
+    solvers = []
+    for s in rc.solver_order(records_c):
+        v64, case = rc.worst(records_c, "channel_value", s, 64)
+        solvers.append({"solver": s, "max64": v64, "case": case, "max32": rc.worst(records_c, "channel_value", s, 32)[0],
+                        "monotone": rc.total(records_c, "channel_monotone", s, 64) + rc.total(records_c, "channel_monotone", s, 32),
+                        "ns": times.get((s, "64", 64, "single")), "ns_sorted": times.get((s, "64", 64, "sorted"))})
+    goal = rc.goal_line(records_c)
+    rotation = {}
+    for row in rc.rotation_rows(records):
+        if row[2] is not None and row[2] > rotation.get(row[1], -1.0):
+            rotation[row[1]] = row[2]
+    return {"solvers": solvers, "rotation": rotation,
+            "goal": None if goal is None else {"max64": goal[0], "case": goal[1], "monotone": goal[2],
+                                               "accurate_others": goal[3]}}
+
+
 def headline(acc, bench_context, bench_rows, vocab, run):
     """Everything the published pages say, as plain data (JSON-serialisable)."""
     ctx = acc.get("context", {})
@@ -144,6 +170,7 @@ def headline(acc, bench_context, bench_rows, vocab, run):
         "pareto": pareto_fastest(records, times),
         "orders": orders_summary(acc.get("orders", [])),
         "honesty": honesty(records),
+        "channel": channel_summary(records, bench_rows),
     }
 
 
@@ -206,6 +233,17 @@ def render_readme(h):
         lines.append("- **Observed convergence orders** (median over cases, theory in brackets): " + ", ".join(
             f"{o['quantity']} {o['method']} {fmt(o['median'])}" + (f" [{fmt(o['theory'])}]" if o["theory"] else "")
             for o in h["orders"]) + ".")
+    ch = h.get("channel")
+    if ch and ch.get("goal"):
+        g = ch["goal"]
+        by = {x["solver"]: x for x in ch["solvers"]}
+        own = by.get("curvebench", {})
+        others = ", ".join(f"`{x['solver']}` {fmt(x['max64'])} ulps" + (f" {fmt(x['ns'])} ns" if x["ns"] else "")
+                           for x in ch["solvers"] if x["solver"] != "curvebench")
+        lines.append(f"- **Keyframe channels** (time solvers on the stress corpus, double, max error in ulps of the "
+                     f"value range against the 50-digit inversion): curvebench's solver {fmt(g['max64'])} ulps "
+                     f"(goal <= 4), {g['monotone']:g} monotonicity violations"
+                     + (f", {fmt(own['ns'])} ns per value" if own.get("ns") else "") + f"; {others}.")
     ho = h["honesty"]
     lines.append(f"- **Honest estimates**: {ho['bounded']} of the {ho['with_estimate']} records that carry an "
                  f"error estimate bound their true error ({len(ho['dishonest'])} do not"
@@ -252,6 +290,19 @@ def render_results(h, plots):
                     [[o["quantity"], o["method"], o["median"], o["min"], o["max"], o["cases"], o["theory"]]
                      for o in h["orders"]]))
     ho = h["honesty"]
+    ch = h.get("channel")
+    if ch:
+        md += ["", "## Keyframe channels", "", "Each time solver on the channel stress corpus against the 50-digit "
+               "inversion: max value error in ulps of the channel's value range (double, its worst case, float), "
+               "monotonicity violations (double and float), ns per value on 64 keys (random and sorted times, "
+               "double). The complete tables are in REPORT.md's section \"Keyframe channels\".", ""]
+        md.append(table(["solver", "max error, double", "worst case", "max error, float", "monotonicity violations",
+                         "ns/value", "ns/value sorted"],
+                        [[x["solver"], x["max64"], x["case"] or "-", x["max32"], f"{x['monotone']:g}", x["ns"], x["ns_sorted"]]
+                         for x in ch["solvers"]]))
+        if ch.get("rotation"):
+            md += ["", "glTF rotation channels, max angle error in eps(double) radians: " +
+                   ", ".join(f"`{m}` {fmt(v)}" for m, v in sorted(ch["rotation"].items())) + "."]
     md += ["", "## Error-estimate honesty", "",
            f"{ho['bounded']} of {ho['with_estimate']} records with an estimate bound their error "
            f"({ho['records']} records in all).", ""]

@@ -96,6 +96,41 @@ class Headline(unittest.TestCase):
         self.assertIn("1 of the 2 records", text)
 
 
+class ChannelHeadline(unittest.TestCase):
+    """The keyframe-channel figures come from the channel records and the channel benchmarks."""
+
+    def test_channel_summary_and_its_lines(self):
+        def ch(case, quantity, method, bits, error, **extra):
+            r = record(case, quantity, method, error, f"bits={bits}")
+            r.update(extra)
+            return r
+        records = [ch("s", "channel_value", "curvebench", 64, 3.0), ch("t", "channel_value", "curvebench", 64, 1.0),
+                   ch("s", "channel_value", "curvebench", 32, 2.0), ch("s", "channel_value", "closed_form", 64, 19.0),
+                   ch("s", "channel_monotone", "curvebench", 64, 0), ch("s", "channel_monotone", "closed_form", 32, 2),
+                   ch("r", "channel_rotation", "rotation_slerp", 64, 5.0, rms=1.0, norm=1.0),
+                   ch("q", "channel_rotation", "rotation_slerp", 64, 7.0, rms=1.0, norm=1.0)]
+        rows = [{"family": "channel_value", "algorithm": "curvebench", "args": [["keys", "64"], ["bits", "64"], ["calls", "single"]],
+                 "ns_per_op": 80.0}]
+        c = publish.channel_summary(records, rows)
+        self.assertEqual(c["goal"], {"max64": 3.0, "case": "s", "monotone": 0, "accurate_others": []})
+        self.assertEqual(c["solvers"][0], {"solver": "curvebench", "max64": 3.0, "case": "s", "max32": 2.0,
+                                           "monotone": 0, "ns": 80.0, "ns_sorted": None})
+        self.assertEqual(c["solvers"][1]["monotone"], 2)
+        self.assertEqual(c["rotation"], {"rotation_slerp": 7.0})
+        self.assertIsNone(publish.channel_summary([record("a", "eval", "default", 1.0)], rows))
+        h = {"run": {"revision": "r", "date": "2026-01-01", "host": "h", "cpus": 2, "mhz": 1, "compiler": "c",
+                     "flags": "-O3", "suite": "s", "suite_version": 1, "cases": 1, "records": 1, "quick": False,
+                     "seconds_after_build": 1, "accuracy_seconds": 1},
+             "eval": [], "peers": [], "targets": [], "pareto": [], "orders": [],
+             "honesty": {"bounded": 0, "with_estimate": 0, "dishonest": [], "records": 0}, "channel": c}
+        readme = publish.render_readme(h)
+        self.assertIn("curvebench's solver 3 ulps (goal <= 4), 0 monotonicity violations, 80 ns per value", readme)
+        self.assertIn("`closed_form` 19 ulps", readme)
+        page = publish.render_results(h, [])
+        self.assertIn("## Keyframe channels", page)
+        self.assertIn("`rotation_slerp` 7", page)
+
+
 class Publish(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.mkdtemp()
