@@ -34,7 +34,8 @@ EVAL_FINDING_ULPS = 100.0
 
 # The optional peers scripts/peers.sh runs, by the driver name their peers_<driver>.json carries.
 OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
-                    "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)"}
+                    "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)",
+                    "chromium": "headless Chromium, CSS easing through the Web Animations API (scripts/peers/chromium_driver.py)"}
 
 
 def load_peer_files(report_dir):
