@@ -12,7 +12,10 @@
 # pinned in scripts/peers/node/package.json and installed into build-peers/node), measured by
 # scripts/peers/easing_results.py against a 50-digit truth of the CSS cubic-bezier definition;
 # scripts/peers/chromium_driver.py (headless Chromium, Debian's chromium pinned below: Blink's CSS
-# cubic-bezier() and steps() through the Web Animations API), measured the same way.
+# cubic-bezier() and steps() through the Web Animations API), measured the same way;
+# scripts/peers/penner_driver.mjs (Node: d3-ease 3.0.2, pinned in the same package.json), measured
+# by scripts/peers/penner_results.py against the Penner definitions d3 documents, at 50 digits,
+# beside curvebench's Blender model of the same equations.
 # Each driver's values are measured by `curvebench check` against the 50-digit reference of the
 # case's spec (scripts/peers/peer_results.py joins them), so the truth is never a double
 # evaluation of curvebench's own code. The tool is $CURVEBENCH_TOOL, or build-bench's (built here
@@ -123,6 +126,17 @@ run_easing() {
                    --cases "$root/bench/cases" --curvebench-dir "$work/curvebench" --out "$reports/peers_easing.json"
 }
 
+run_penner() {
+  local work="$reports/peers/penner"
+  rm -f "$reports/peers_penner.json"
+  rm -rf "$work"
+  mkdir -p "$work"
+  cp "$root/scripts/peers/penner_driver.mjs" "$node_dir/penner_driver.mjs"
+  (cd "$node_dir" && node penner_driver.mjs --out "$work/penner_driver.json" "${quick_args[@]}")
+  /usr/bin/python3 "$root/scripts/peers/penner_results.py" --driver "$work/penner_driver.json" \
+                   --tool "$tool" --work "$work/blender_model" --out "$reports/peers_penner.json"
+}
+
 run_chromium() {
   local work="$reports/peers/chromium"
   rm -f "$reports/peers_chromium.json"
@@ -154,6 +168,15 @@ if command -v node >/dev/null && [[ -d "$node_dir/node_modules/bezier-easing-3" 
 else
   echo "peers.sh: the easing peers are not installed (node, build-peers/node, python3-mpmath); skipped" >&2
   rm -f "$reports/peers_easing.json"
+fi
+if command -v node >/dev/null && [[ -d "$node_dir/node_modules/d3-ease" ]] &&
+   /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
+  echo "peers.sh: d3-ease (Node $(node --version))"
+  run_penner
+  ran=$((ran + 1))
+else
+  echo "peers.sh: d3-ease is not installed (node, build-peers/node, python3-mpmath); skipped" >&2
+  rm -f "$reports/peers_penner.json"
 fi
 if command -v chromium >/dev/null && /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
   echo "peers.sh: $(chromium --version 2>/dev/null | head -n 1)"

@@ -35,7 +35,8 @@ EVAL_FINDING_ULPS = 100.0
 # The optional peers scripts/peers.sh runs, by the driver name their peers_<driver>.json carries.
 OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
                     "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)",
-                    "chromium": "headless Chromium, CSS easing through the Web Animations API (scripts/peers/chromium_driver.py)"}
+                    "chromium": "headless Chromium, CSS easing through the Web Animations API (scripts/peers/chromium_driver.py)",
+                    "penner": "d3-ease's Penner easings (scripts/peers/penner_driver.mjs)"}
 
 
 def load_peer_files(report_dir):
@@ -185,14 +186,17 @@ def findings(peer_records, own_records=()):
         if (r["quantity"] == "eval" and isinstance(err, (int, float)) and err >= EVAL_FINDING_ULPS
                 and doc_tol is None):  # a peer with a documented precision is held to that instead
             what = f"derivative of order {r['setting'].split('=')[-1]}" if r.get("setting") else "values"
+            against = (f"its documented definition ({r['definition']}, at 50 digits)" if r.get("definition")
+                       else "the exact curve of the same data")
             if isinstance(r.get("counterpart_error"), (int, float)):
                 beside = f" ({r['counterpart']['method']}: {lib.fmt(r['counterpart_error'])})"
             else:  # curvebench's eval records are of values only: no figure beside a derivative
                 own = [o for o in own_records if not r.get("setting") and o["case"] == r["case"]
                        and o["quantity"] == "eval" and o["method"] == "default"]
                 beside = f" (curvebench's default evaluation: {lib.fmt(own[0]['error'])})" if own else ""
-            out.append(f"{where}: error {lib.fmt(err)} eps(double) x size in its {what} against the exact curve of "
-                       f"the same data{beside}.")
+            absolute = f", {lib.fmt(abs_err)} absolute" if isinstance(abs_err, (int, float)) else ""
+            out.append(f"{where}: error {lib.fmt(err)} eps(double) x size{absolute} in its {what} against "
+                       f"{against}{beside}.")
         if isinstance(doc_tol, (int, float)) and isinstance(abs_err, (int, float)) and abs_err > doc_tol:
             out.append(f"{where}: absolute error {lib.fmt(abs_err)} in its value ({lib.fmt(err)} eps(double) x size), "
                        f"beyond the {lib.fmt(doc_tol)} it documents as its solver's precision.")
