@@ -15,7 +15,10 @@
 # cubic-bezier() and steps() through the Web Animations API), measured the same way;
 # scripts/peers/penner_driver.mjs (Node: d3-ease 3.0.2, pinned in the same package.json), measured
 # by scripts/peers/penner_results.py against the Penner definitions d3 documents, at 50 digits,
-# beside curvebench's Blender model of the same equations.
+# beside curvebench's Blender model of the same equations; real Blender when `blender` is on PATH
+# (never installed here: Debian's blender is about 770 MB): scripts/peers/blender_channels.py turns
+# the channel cases an F-curve can hold into a request for scripts/peers/blender_fcurves.py, run
+# by `blender -b`, and compares Blender's values with curvebench's Blender model and the exact keys.
 # Each driver's values are measured by `curvebench check` against the 50-digit reference of the
 # case's spec (scripts/peers/peer_results.py joins them), so the truth is never a double
 # evaluation of curvebench's own code. The tool is $CURVEBENCH_TOOL, or build-bench's (built here
@@ -137,6 +140,24 @@ run_penner() {
                    --tool "$tool" --work "$work/blender_model" --out "$reports/peers_penner.json"
 }
 
+run_blender() {
+  local work="$reports/peers/blender"
+  rm -f "$reports/peers_blender.json"
+  rm -rf "$work"
+  mkdir -p "$work"
+  /usr/bin/python3 "$root/scripts/peers/blender_channels.py" request --cases "$root/bench/cases" \
+                   --out "$work/request.json" --model-dir "$work/model" "${quick_args[@]}"
+  blender -b --factory-startup --python "$root/scripts/peers/blender_fcurves.py" -- \
+          "$work/request.json" "$work/blender.json" >"$work/blender.log" 2>&1 ||
+    { echo "peers.sh: Blender failed; see $work/blender.log" >&2; return 1; }
+  local spec
+  for spec in "$work"/model/*.json; do
+    "$tool" sample "$spec" --at-file "${spec%.json}.times" --derivatives 0 --quiet >"${spec%.json}.csv"
+  done
+  /usr/bin/python3 "$root/scripts/peers/blender_channels.py" results --cases "$root/bench/cases" \
+                   --blender "$work/blender.json" --model-dir "$work/model" --out "$reports/peers_blender.json"
+}
+
 run_chromium() {
   local work="$reports/peers/chromium"
   rm -f "$reports/peers_chromium.json"
@@ -177,6 +198,14 @@ if command -v node >/dev/null && [[ -d "$node_dir/node_modules/d3-ease" ]] &&
 else
   echo "peers.sh: d3-ease is not installed (node, build-peers/node, python3-mpmath); skipped" >&2
   rm -f "$reports/peers_penner.json"
+fi
+if command -v blender >/dev/null && /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
+  echo "peers.sh: real Blender ($(blender --version 2>/dev/null | head -n 1))"
+  run_blender
+  ran=$((ran + 1))
+else
+  echo "peers.sh: blender is not on PATH (or python3-mpmath is missing); the real-Blender comparison is not run" >&2
+  rm -f "$reports/peers_blender.json"
 fi
 if command -v chromium >/dev/null && /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
   echo "peers.sh: $(chromium --version 2>/dev/null | head -n 1)"
