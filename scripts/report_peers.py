@@ -189,8 +189,7 @@ def findings(peer_records, own_records=()):
         if (r["quantity"] == "eval" and isinstance(err, (int, float)) and own_ulps >= EVAL_FINDING_ULPS
                 and doc_tol is None):  # a peer with a documented precision is held to that instead
             what = f"derivative of order {r['setting'].split('=')[-1]}" if r.get("setting") else "values"
-            against = (f"its documented definition ({r['definition']}, at 50 digits)" if r.get("definition")
-                       else "the exact curve of the same data")
+            against = f"{r['definition']} at 50 digits" if r.get("definition") else "the exact curve of the same data"
             if isinstance(r.get("counterpart_error"), (int, float)):
                 beside = f" ({r['counterpart']['method']}: {lib.fmt(r['counterpart_error'])})"
             else:  # curvebench's eval records are of values only: no figure beside a derivative

@@ -190,7 +190,7 @@ def assemble(blender, model_values, notes=()):
         rec = {"case": case, "group": "channel", "quantity": "eval", "method": PEER, "setting": "", "estimate": None,
                "bounded": None, "status": "not_guaranteed", "peer": True, "peer_status": "success",
                "library": f"Blender {blender['blender_version']}", "evaluations": len(times), "ns_per_op": None,
-               "counterpart_ns_per_op": None, "definition": "the keys Blender holds, Bezier segments at 50 digits",
+               "counterpart_ns_per_op": None, "definition": "the keys Blender holds, evaluated",
                "unit_eps": 2.0 ** -23}  # Blender evaluates in float: findings count its own ulps
         if inside:
             with mpmath.workdps(60):

@@ -153,6 +153,7 @@ def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, ti
                              f"{case}: curvebench table_newton {e:.3g} eps x size")
         if "steps" in run:
             notes += _steps_notes(run)
+            rec["definition"] = f"CSS steps({run['steps'][0]}, {run['steps'][1]}) as CSS Easing defines it,"
         err, abs_err = measure(run["values"], truths[key])
         rec.update({"error": err, "abs_error": abs_err, "evaluations": len(times), "peer_status": "success",
                     "ns_per_op": run.get("ns_per_op"), "counterpart_error": ours[key][0],

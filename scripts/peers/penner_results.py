@@ -164,7 +164,7 @@ def assemble(driver, blender_values=lambda run: None):
                "error": err, "abs_error": abs_err, "estimate": None, "bounded": None, "status": "not_guaranteed",
                "peer": True, "peer_status": "success", "library": f"d3-ease {driver['versions'].get('d3-ease', '?')}",
                "evaluations": len(times), "ns_per_op": run.get("ns_per_op"), "counterpart_ns_per_op": None,
-               "definition": f"{_family_key(run)} {run['mode']}"}
+               "definition": f"d3's documented {_family_key(run)} {run['mode']}"}
         model = blender_values(run)
         if model is not None:
             if len(model) != len(times):
