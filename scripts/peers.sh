@@ -10,7 +10,15 @@
 # Drivers: scripts/peers/scipy_driver.py (SciPy: CubicSpline, make_interp_spline, BSpline, quad);
 # scripts/peers/easing_driver.mjs (Node: bezier-easing 3.2.0 and 2.1.0, @mapbox/unitbezier 1.0.0,
 # pinned in scripts/peers/node/package.json and installed into build-peers/node), measured by
-# scripts/peers/easing_results.py against a 50-digit truth of the CSS cubic-bezier definition.
+# scripts/peers/easing_results.py against a 50-digit truth of the CSS cubic-bezier definition;
+# scripts/peers/chromium_driver.py (headless Chromium, Debian's chromium pinned below: Blink's CSS
+# cubic-bezier() and steps() through the Web Animations API), measured the same way;
+# scripts/peers/penner_driver.mjs (Node: d3-ease 3.0.2, pinned in the same package.json), measured
+# by scripts/peers/penner_results.py against the Penner definitions d3 documents, at 50 digits,
+# beside curvebench's Blender model of the same equations; real Blender when `blender` is on PATH
+# (never installed here: Debian's blender is about 770 MB): scripts/peers/blender_channels.py turns
+# the channel cases an F-curve can hold into a request for scripts/peers/blender_fcurves.py, run
+# by `blender -b`, and compares Blender's values with curvebench's Blender model and the exact keys.
 # Each driver's values are measured by `curvebench check` against the 50-digit reference of the
 # case's spec (scripts/peers/peer_results.py joins them), so the truth is never a double
 # evaluation of curvebench's own code. The tool is $CURVEBENCH_TOOL, or build-bench's (built here
@@ -30,7 +38,8 @@ for arg in "$@"; do
 done
 
 # Debian 12 (bookworm) versions, pinned: a peer's figures are only comparable at one version.
-apt_pins=("python3-scipy=1.10.1-2" "python3-numpy=1:1.24.2-1+deb12u1" "python3-mpmath=1.2.1-2")
+apt_pins=("python3-scipy=1.10.1-2" "python3-numpy=1:1.24.2-1+deb12u1" "python3-mpmath=1.2.1-2"
+          "chromium=156.0.8078.79-1~deb12u1" "chromium-common=156.0.8078.79-1~deb12u1")
 
 installed_at() {  # package=version -> 0 when exactly that version is installed (package: any version)
   local name=${1%%=*} version=${1#*=}
@@ -114,32 +123,53 @@ run_easing() {
   (cd "$node_dir" && node easing_driver.mjs --cases "$root/bench/cases" --out "$work/easing_driver.json" "${quick_args[@]}")
   # curvebench's own CSS evaluation at the driver's times: the case with the exact time solver
   # (the peers' counterpart) and as written (the tool's table_newton model).
-  /usr/bin/python3 - "$work/easing_driver.json" "$tool" "$root/bench/cases" "$work/curvebench" <<'EOF'
-import json, os, subprocess, sys
-driver_path, tool, cases, out = sys.argv[1:5]
-with open(driver_path, encoding="utf-8") as f:
-    driver = json.load(f)
-done = set()
-for run in driver["runs"]:
-    if run["case"] in done or "times" not in run:
-        continue
-    done.add(run["case"])
-    times = os.path.join(out, run["case"] + ".times")
-    with open(times, "w", encoding="utf-8") as f:
-        f.write("".join(repr(t) + "\n" for t in run["times"]))
-    case_spec = os.path.join(cases, run["case"] + ".json")
-    with open(case_spec, encoding="utf-8") as f:
-        spec = json.load(f)
-    exact = os.path.join(out, run["case"] + ".exact.json")
-    with open(exact, "w", encoding="utf-8") as f:
-        json.dump(dict(spec, solver="exact"), f)
-    for spec_path, csv in ((exact, run["case"] + ".csv"), (case_spec, run["case"] + ".table_newton.csv")):
-        with open(os.path.join(out, csv), "w", encoding="utf-8") as f:
-            subprocess.run([tool, "sample", spec_path, "--at-file", times, "--derivatives", "0", "--quiet"],
-                           stdout=f, check=True)
-EOF
+  /usr/bin/python3 "$root/scripts/peers/sample_css_runs.py" --driver "$work/easing_driver.json" \
+                   --cases "$root/bench/cases" --tool "$tool" --out "$work/curvebench"
   /usr/bin/python3 "$root/scripts/peers/easing_results.py" --driver "$work/easing_driver.json" \
                    --cases "$root/bench/cases" --curvebench-dir "$work/curvebench" --out "$reports/peers_easing.json"
+}
+
+run_penner() {
+  local work="$reports/peers/penner"
+  rm -f "$reports/peers_penner.json"
+  rm -rf "$work"
+  mkdir -p "$work"
+  cp "$root/scripts/peers/penner_driver.mjs" "$node_dir/penner_driver.mjs"
+  (cd "$node_dir" && node penner_driver.mjs --out "$work/penner_driver.json" "${quick_args[@]}")
+  /usr/bin/python3 "$root/scripts/peers/penner_results.py" --driver "$work/penner_driver.json" \
+                   --tool "$tool" --work "$work/blender_model" --out "$reports/peers_penner.json"
+}
+
+run_blender() {
+  local work="$reports/peers/blender"
+  rm -f "$reports/peers_blender.json"
+  rm -rf "$work"
+  mkdir -p "$work"
+  /usr/bin/python3 "$root/scripts/peers/blender_channels.py" request --cases "$root/bench/cases" \
+                   --out "$work/request.json" --model-dir "$work/model" "${quick_args[@]}"
+  blender -b --factory-startup --python "$root/scripts/peers/blender_fcurves.py" -- \
+          "$work/request.json" "$work/blender.json" >"$work/blender.log" 2>&1 ||
+    { echo "peers.sh: Blender failed; see $work/blender.log" >&2; return 1; }
+  local spec
+  for spec in "$work"/model/*.json; do
+    "$tool" sample "$spec" --at-file "${spec%.json}.times" --derivatives 0 --quiet >"${spec%.json}.csv"
+  done
+  /usr/bin/python3 "$root/scripts/peers/blender_channels.py" results --cases "$root/bench/cases" \
+                   --blender "$work/blender.json" --model-dir "$work/model" --out "$reports/peers_blender.json"
+}
+
+run_chromium() {
+  local work="$reports/peers/chromium"
+  rm -f "$reports/peers_chromium.json"
+  rm -rf "$work"
+  mkdir -p "$work/curvebench"
+  /usr/bin/python3 "$root/scripts/peers/chromium_driver.py" --cases "$root/bench/cases" \
+                   --out "$work/chromium_driver.json" --work "$work/page" "${quick_args[@]}"
+  rm -rf "$work/page/profile"  # the browser profile of the run: nothing to keep
+  /usr/bin/python3 "$root/scripts/peers/sample_css_runs.py" --driver "$work/chromium_driver.json" \
+                   --cases "$root/bench/cases" --tool "$tool" --out "$work/curvebench"
+  /usr/bin/python3 "$root/scripts/peers/easing_results.py" --driver "$work/chromium_driver.json" \
+                   --cases "$root/bench/cases" --curvebench-dir "$work/curvebench" --out "$reports/peers_chromium.json"
 }
 
 ran=0
@@ -159,5 +189,30 @@ if command -v node >/dev/null && [[ -d "$node_dir/node_modules/bezier-easing-3" 
 else
   echo "peers.sh: the easing peers are not installed (node, build-peers/node, python3-mpmath); skipped" >&2
   rm -f "$reports/peers_easing.json"
+fi
+if command -v node >/dev/null && [[ -d "$node_dir/node_modules/d3-ease" ]] &&
+   /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
+  echo "peers.sh: d3-ease (Node $(node --version))"
+  run_penner
+  ran=$((ran + 1))
+else
+  echo "peers.sh: d3-ease is not installed (node, build-peers/node, python3-mpmath); skipped" >&2
+  rm -f "$reports/peers_penner.json"
+fi
+if command -v blender >/dev/null && /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
+  echo "peers.sh: real Blender ($(blender --version 2>/dev/null | head -n 1))"
+  run_blender
+  ran=$((ran + 1))
+else
+  echo "peers.sh: blender is not on PATH (or python3-mpmath is missing); the real-Blender comparison is not run" >&2
+  rm -f "$reports/peers_blender.json"
+fi
+if command -v chromium >/dev/null && /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
+  echo "peers.sh: $(chromium --version 2>/dev/null | head -n 1)"
+  run_chromium
+  ran=$((ran + 1))
+else
+  echo "peers.sh: Chromium is not installed (chromium, python3-mpmath); skipped" >&2
+  rm -f "$reports/peers_chromium.json"
 fi
 echo "peers.sh: $ran optional peer driver(s) ran; results in $reports/peers_*.json"

@@ -34,7 +34,10 @@ EVAL_FINDING_ULPS = 100.0
 
 # The optional peers scripts/peers.sh runs, by the driver name their peers_<driver>.json carries.
 OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
-                    "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)"}
+                    "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)",
+                    "chromium": "headless Chromium, CSS easing through the Web Animations API (scripts/peers/chromium_driver.py)",
+                    "penner": "d3-ease's Penner easings (scripts/peers/penner_driver.mjs)",
+                    "blender": "real Blender F-curves (scripts/peers/blender_channels.py; needs blender on PATH)"}
 
 
 def load_peer_files(report_dir):
@@ -181,17 +184,21 @@ def findings(peer_records, own_records=()):
                 out.append(f"{where}: reported success, but its true relative error {lib.fmt(err)} is "
                            f"{lib.fmt(err / tol)} times the requested tolerance {lib.fmt(tol)}.")
         doc_tol, abs_err = r.get("documented_tolerance"), r.get("abs_error")
-        if (r["quantity"] == "eval" and isinstance(err, (int, float)) and err >= EVAL_FINDING_ULPS
+        # a peer evaluating in float ("unit_eps": 2^-23) is held to as many of its own ulps
+        own_ulps = err * 2.0 ** -52 / r["unit_eps"] if isinstance(err, (int, float)) and r.get("unit_eps") else err
+        if (r["quantity"] == "eval" and isinstance(err, (int, float)) and own_ulps >= EVAL_FINDING_ULPS
                 and doc_tol is None):  # a peer with a documented precision is held to that instead
             what = f"derivative of order {r['setting'].split('=')[-1]}" if r.get("setting") else "values"
+            against = f"{r['definition']} at 50 digits" if r.get("definition") else "the exact curve of the same data"
             if isinstance(r.get("counterpart_error"), (int, float)):
                 beside = f" ({r['counterpart']['method']}: {lib.fmt(r['counterpart_error'])})"
             else:  # curvebench's eval records are of values only: no figure beside a derivative
                 own = [o for o in own_records if not r.get("setting") and o["case"] == r["case"]
                        and o["quantity"] == "eval" and o["method"] == "default"]
                 beside = f" (curvebench's default evaluation: {lib.fmt(own[0]['error'])})" if own else ""
-            out.append(f"{where}: error {lib.fmt(err)} eps(double) x size in its {what} against the exact curve of "
-                       f"the same data{beside}.")
+            absolute = f", {lib.fmt(abs_err)} absolute" if isinstance(abs_err, (int, float)) else ""
+            out.append(f"{where}: error {lib.fmt(err)} eps(double) x size{absolute} in its {what} against "
+                       f"{against}{beside}.")
         if isinstance(doc_tol, (int, float)) and isinstance(abs_err, (int, float)) and abs_err > doc_tol:
             out.append(f"{where}: absolute error {lib.fmt(abs_err)} in its value ({lib.fmt(err)} eps(double) x size), "
                        f"beyond the {lib.fmt(doc_tol)} it documents as its solver's precision.")
@@ -235,6 +242,31 @@ def speed_rows(bench_rows, vocab, libraries):
             rows.append([o["family"], lib.args_text(lib.data_args(o, vocab)) or "-", lib.display_algorithm(o, vocab),
                          lib.display_algorithm(p, vocab), o["ns_per_op"], p["ns_per_op"], ratio])
     return rows
+
+
+def blender_rows(data):
+    """[case, Blender version, times, of them compared with the exact keys, max |Blender - model|,
+    max |Blender - exact keys|] per channel of a peers_blender.json (scripts/peers/blender_channels.py)."""
+    version = data.get("versions", {}).get("Blender", "?")
+    return [[c["case"], version, c.get("times"), c.get("compared_with_exact"), c.get("vs_model"), c.get("vs_exact")]
+            for c in data.get("channels", [])]
+
+
+def blender_lines(peer_files):
+    """The "Real Blender" subsection: per channel case, real Blender against curvebench's Blender
+    model and against the 50-digit evaluation of the same keys; "not run" without the file."""
+    md = ["", "### Real Blender F-curves", ""]
+    data = next((d for _, d in peer_files if d.get("driver") == "blender"), None)
+    if data is None:
+        return md + ["Not run: no reports/peers_blender.json (scripts/peers.sh runs Blender when `blender` is on PATH)."]
+    md += ["The channel cases a Blender F-curve can hold, evaluated by Blender itself (fcurve.evaluate, float) at the "
+           "same times as curvebench's Blender model (float, `curvebench sample`); the exact keys are the keys and "
+           "handles Blender reports, their Bezier segments evaluated at 50 digits inside the key range (Blender corrects "
+           "overreaching handles before it evaluates; the exact keys do not, so a correction shows there). Absolute "
+           "value differences.", ""]
+    md.append(lib.table(["case", "Blender", "times", "compared with exact keys", "max |Blender - curvebench model|",
+                         "max |Blender - exact keys|"], blender_rows(data)))
+    return md
 
 
 def peers_section(acc, report_dir, bench_rows, vocab):
@@ -289,6 +321,8 @@ def peers_section(acc, report_dir, bench_rows, vocab):
         md += ["", "### Speed in the benchmarks (same run, same data)", ""]
         md.append(lib.table(["family", "data", "curvebench", "peer", "curvebench ns/op", "peer ns/op",
                              "curvebench / peer"], sp))
+
+    md += blender_lines(peer_files)
 
     md += ["", "### Findings: where a peer does less than its documentation says or the same data allow", ""]
     fs = findings(peer_records, records)

@@ -210,6 +210,18 @@ inline constexpr peer bezier_easing_2{"peer_bezier_easing_2", "bezier-easing",
                                       "bisection"};
 inline constexpr peer mapbox_unitbezier{"peer_mapbox_unitbezier", "@mapbox/unitbezier",
                                         "@mapbox/unitbezier 1.0.0: solve(x) with its default epsilon 1e-6"};
+// d3-ease (optional: scripts/peers/penner_driver.mjs, npm version pinned): Penner's easing
+// equations as functions of normalized time, against their documented definitions.
+inline constexpr peer d3_ease{"peer_d3_ease", "d3-ease", "d3-ease 3.0.2: Penner's easing equations on [0, 1]"};
+// Headless Chromium (optional: scripts/peers/chromium_driver.py, Debian's chromium pinned): Blink's
+// own CSS easing through the Web Animations API.
+inline constexpr peer chromium_waapi{"peer_chromium_waapi", "Chromium",
+                                     "Chromium (Debian): CSS cubic-bezier() and steps() as "
+                                     "effect.getComputedTiming().progress of a paused animation"};
+// Real Blender (optional: scripts/peers/blender_channels.py, when blender is on PATH): the channel
+// cases' keys as F-curves, fcurve.evaluate at the query times.
+inline constexpr peer blender_fcurve{"peer_blender_fcurve", "Blender",
+                                     "Blender (Debian, headless): fcurve.evaluate of an F-curve built from the keys"};
 }  // namespace peers
 
 inline constexpr const peer* all_peers[] = {
@@ -219,7 +231,8 @@ inline constexpr const peer* all_peers[] = {
     &peers::bisection_reintegration, &peers::gsl_cspline, &peers::gsl_cspline_periodic, &peers::gsl_akima,
     &peers::gsl_steffen, &peers::gsl_qag, &peers::gsl_qags, &peers::scipy_cubic_spline,
     &peers::scipy_make_interp_spline, &peers::scipy_bspline, &peers::scipy_quad, &peers::bezier_easing_3,
-    &peers::bezier_easing_2, &peers::mapbox_unitbezier};
+    &peers::bezier_easing_2, &peers::mapbox_unitbezier, &peers::d3_ease, &peers::chromium_waapi,
+    &peers::blender_fcurve};
 
 /// What one item of a benchmark is: the unit of its time per operation.
 struct operation {

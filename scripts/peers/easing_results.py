@@ -15,6 +15,11 @@ channel in double with the time solver "exact" (curvebench's most accurate; the 
 "solver": "exact" added), measured against the same truth as the peers' counterpart; and, when
 DIR/<case>.table_newton.csv exists, the case as written (the CSS tool's default table_newton
 solver, the WebKit / Chromium scheme curvebench models), reported in the notes.
+A run with "steps": [n, position] instead of "easing" (scripts/peers/chromium_driver.py's steps()
+easings, which need no case file) is measured against CSS steps() as CSS Easing Functions Level 1
+defines it (before flag unset: the active phase): step = floor(x n), plus 1 for jump-start and
+jump-both; at least 0 for x >= 0; at most the number of jumps (n + 1 for jump-both, n - 1 for
+jump-none, else n); the value is step / jumps, computed in exact rationals from the double x.
 Errors: max over the times of |v - y(t)| / (eps(double) x size), size = max |y(t)| over the times
 (the unit of curvebench's eval records), and the absolute max |v - y(t)| as "abs_error"; a peer
 that documents its solver's precision (@mapbox/unitbezier: epsilon 1e-6) carries it as
@@ -22,6 +27,8 @@ that documents its solver's precision (@mapbox/unitbezier: epsilon 1e-6) carries
 """
 import argparse
 import csv
+import fractions
+import math
 import json
 import os
 import sys
@@ -57,6 +64,22 @@ def cubic_bezier_truth(p, t):
             else:
                 hi = mid
         return bez(y1, y2, (lo + hi) / 2)
+
+
+def steps_truth(n, position, x):
+    """CSS steps(n, position) at progress x (a double in [0, 1]), exactly (a Fraction)."""
+    if position not in ("jump-start", "jump-end", "jump-none", "jump-both"):
+        raise EasingResultError(f"steps(): unknown position {position!r}")
+    jumps = {"jump-both": n + 1, "jump-none": n - 1}.get(position, n)
+    if n < 1 or jumps < 1:
+        raise EasingResultError(f"steps({n}, {position}): not a valid CSS easing")
+    x = fractions.Fraction(x)
+    step = math.floor(x * n) + (1 if position in ("jump-start", "jump-both") else 0)
+    if x >= 0 and step < 0:
+        step = 0
+    if x <= 1 and step > jumps:
+        step = jumps
+    return fractions.Fraction(step, jumps)
 
 
 def measure(values, truths):
@@ -96,9 +119,9 @@ def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, ti
     for run in driver["runs"]:
         case = run["case"]
         spec = specs.get(case)
-        if spec is None:
+        if spec is None and "steps" not in run:
             raise EasingResultError(f"driver output: case {case} is not in the cases")
-        rec = {"case": case, "group": spec.get("group", ""), "quantity": "eval", "method": run["peer"], "setting": "",
+        rec = {"case": case, "group": spec.get("group", "") if spec else "css steps", "quantity": "eval", "method": run["peer"], "setting": "",
                "estimate": None, "bounded": None, "status": "not_guaranteed", "peer": True,
                "library": _library(run["peer"], driver["versions"]),
                "counterpart": {"method": "curvebench css channel, solver exact", "setting": ""},
@@ -113,7 +136,12 @@ def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, ti
                                     f"{len(times)} times")
         key = (case, tuple(times))
         if key not in truths:
-            truths[key] = [cubic_bezier_truth(run["easing"], t) for t in times]
+            if "steps" in run:
+                with mpmath.workdps(60):
+                    truths[key] = [mpmath.mpf(steps_truth(run["steps"][0], run["steps"][1], t).numerator) /
+                                   steps_truth(run["steps"][0], run["steps"][1], t).denominator for t in times]
+            else:
+                truths[key] = [cubic_bezier_truth(run["easing"], t) for t in times]
             vals = curvebench_values(case, times)
             ours[key] = measure(vals, truths[key]) if vals is not None else (None, None)
             model = tool_model_values(case, times)
@@ -123,6 +151,9 @@ def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, ti
                              f"Chromium scheme) is {e:.3g} eps x size ({ae:.3g} absolute) from the truth; with the "
                              f"exact solver {ours[key][0]:.3g}" if ours[key][0] is not None else
                              f"{case}: curvebench table_newton {e:.3g} eps x size")
+        if "steps" in run:
+            notes += _steps_notes(run)
+            rec["definition"] = f"CSS steps({run['steps'][0]}, {run['steps'][1]}) as CSS Easing defines it,"
         err, abs_err = measure(run["values"], truths[key])
         rec.update({"error": err, "abs_error": abs_err, "evaluations": len(times), "peer_status": "success",
                     "ns_per_op": run.get("ns_per_op"), "counterpart_error": ours[key][0],
@@ -134,9 +165,22 @@ def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, ti
             "quick": driver.get("quick"), "peer_records": records}
 
 
+def _steps_notes(run):
+    """A sentence naming the fractions where a steps() run is not the definition's value: the
+    doubles just below a step boundary k / n whose product x n rounds up to k are the usual ones."""
+    n, pos = run["steps"]
+    bad = [(x, v, steps_truth(n, pos, x)) for x, v in zip(run["times"], run["values"]) if v != float(steps_truth(n, pos, x))]
+    if not bad:
+        return []
+    shown = "; ".join(f"x = {x!r} (x n = {fractions.Fraction(x) * n} exactly, {x * n!r} in double): {v!r} where "
+                      f"the definition gives {float(t)!r}" for x, v, t in bad[:3])
+    return [f"{run['case']} ({run['peer']}): {len(bad)} of {len(run['times'])} fractions off the steps({n}, {pos}) "
+            f"definition by a whole step: {shown}" + ("; ..." if len(bad) > 3 else "")]
+
+
 def _library(peer, versions):
     names = {"peer_bezier_easing_3": "bezier-easing 3", "peer_bezier_easing_2": "bezier-easing 2",
-             "peer_mapbox_unitbezier": "@mapbox/unitbezier"}
+             "peer_mapbox_unitbezier": "@mapbox/unitbezier", "peer_chromium_waapi": "Chromium"}
     name = names.get(peer, peer)
     return f"{name.split(' ')[0]} {versions.get(name, '?')}"
 
@@ -153,6 +197,8 @@ def main():
             driver = json.load(f)
         specs = {}
         for run in driver.get("runs", []):
+            if "steps" in run and not os.path.exists(os.path.join(a.cases, run["case"] + ".json")):
+                continue  # a steps() easing of the driver's own, no case file
             with open(os.path.join(a.cases, run["case"] + ".json"), encoding="utf-8") as f:
                 specs[run["case"]] = json.load(f)
 

@@ -113,7 +113,8 @@ class Joins(unittest.TestCase):
                                                                "peer_records": [{}, {}]})])
         self.assertEqual(rows[0], ["GSL 2.7.1", "accuracy runner (always)", 16])
         self.assertEqual(rows[1], ["SciPy 1.10.1", "peers_scipy.json (scripts/peers.sh)", 2])
-        self.assertEqual(rp.missing_drivers([("p", {"driver": "scipy"})]),
+        self.assertEqual(rp.missing_drivers([("p", {"driver": "scipy"}), ("q", {"driver": "chromium"}),
+                                             ("r", {"driver": "penner"}), ("s", {"driver": "blender"})]),
                          ["bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)"])
 
     def test_malformed_peer_file_names_the_file(self):
@@ -374,7 +375,9 @@ class ReportWithAndWithoutPeers(unittest.TestCase):
         report = self.run_report(load("accuracy_gsl.json"), [("peers_scipy.json", scipy_doc())])
         self.assertIn("| SciPy 1.10.1, NumPy 1.24.2, Python 3.11.2 | peers_scipy.json (scripts/peers.sh) | 14 |", report)
         self.assertIn("Optional peers that did not run (no reports/peers_<driver>.json; run scripts/peers.sh): "
-                      "bezier-easing", report)
+                      "real Blender F-curves", report)
+        self.assertIn("### Real Blender F-curves\n\nNot run: no reports/peers_blender.json", report)
+        self.assertIn("bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs), ", report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | peer_scipy_make_interp_spline | 661 | default | 0.813 |", report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | tol=1e-10 | peer_scipy_quad | 5.35e-09 |", report)
 
