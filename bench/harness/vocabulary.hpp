@@ -150,10 +150,6 @@ inline constexpr const method* all_methods[] = {
     &methods::solver_curvebench,  &methods::solver_exact,       &methods::rotation_step,
     &methods::rotation_slerp,     &methods::rotation_nlerp,     &methods::rotation_cubicspline};
 
-/// The glTF rotation methods, by interpolation: step, linear (slerp and nlerp), cubicspline.
-inline constexpr const method* rotation_methods[] = {&methods::rotation_step, &methods::rotation_slerp,
-                                                     &methods::rotation_nlerp, &methods::rotation_cubicspline};
-
 /// A library users would pick instead, timed (and measured) on the same data.
 struct peer {
   std::string_view id;  ///< the benchmark algorithm id, always "peer_..."
