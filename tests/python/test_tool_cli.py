@@ -74,10 +74,14 @@ class ToolCli(unittest.TestCase):
         for name in sorted(os.listdir(CASES)):
             spec = os.path.join(CASES, name)
             with open(spec) as f:
-                if json.load(f)["type"] == "channel":  # --at gives times: t, value, dvalue, d2value
+                j = json.load(f)
+                if j["type"] == "channel":  # --at gives times: t, value, dvalue, d2value
                     p = run("sample", spec, "--at", "-1,0.37,1e300", "--derivatives", "2")  # off the vertical tangents
                     self.assertEqual(p.returncode, 0, name + ": " + p.stderr)
-                    self.assertEqual(p.stdout.splitlines()[0], "t,value,dvalue,d2value", name)
+                    # A glTF rotation's value is a quaternion: t, x, y, z, w and their derivatives.
+                    header = ("t,x,y,z,w,dx,dy,dz,dw,d2x,d2y,d2z,d2w" if j.get("path") == "rotation"
+                              else "t,value,dvalue,d2value")
+                    self.assertEqual(p.stdout.splitlines()[0], header, name)
                     self.assertEqual(len(p.stdout.splitlines()), 4, name)
                     continue
             # The domain, from the error of a parameter outside it (sample --count builds a u(s)

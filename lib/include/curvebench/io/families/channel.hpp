@@ -569,7 +569,6 @@ struct channel_family : family_defaults {
       R"({"type": "channel", "tool": "exact", "keys": [{"time": 0, "value": 0, "out": [0.5, 0]}, {"time": 2, "value": 1, "in": [-0.5, 0.4]}], "after": "cycle_offset"})",
       R"j({"type": "channel", "tool": "css", "easing": "cubic-bezier(0.25, 0.1, 0.25, 1)"})j",
       R"({"type": "channel", "tool": "gltf", "interpolation": "cubicspline", "times": [0, 1, 3], "values": [0, 0, 1, 1, 2, 0, 0, 1, 0]})",
-      R"({"type": "channel", "tool": "gltf", "path": "rotation", "interpolation": "linear", "times": [0, 1], "values": [0, 0, 0, 1, 0, 0, 0.7071067811865476, 0.7071067811865476], "blend": "slerp"})",
       R"({"type": "channel", "tool": "maya", "keys": [{"time": 0, "value": 0}, {"time": 10, "value": 4, "in_type": "clamped", "out_type": "clamped"}, {"time": 20, "value": 4}], "post": "oscillate"})",
       R"({"type": "channel", "tool": "blender", "keys": [{"time": 1, "value": 0}, {"time": 11, "value": 5}, {"time": 21, "value": 2}], "extrapolation": "linear"})",
       R"({"type": "channel", "tool": "usd", "knots": [{"time": 0, "value": 0, "post_width": 4, "post_slope": 1}, {"time": 6, "value": 3, "pre_width": 4, "pre_slope": 0}], "anti_regression": "keep_ratio", "after": "loop_repeat"})",
