@@ -238,6 +238,69 @@ TEST(Maya, NonWeightedSegmentsAreCubicHermite) {
   }
 }
 
+// The auto tangent as Autodesk AnimX (Apache-2.0), src/animx.cpp, computes it (plateau uses the
+// same rule in this model), against hand-derived slopes: the spline slope (v_n - v_p) / (t_n - t_p)
+// unless the chords differ in sign (then 0) or it exceeds 3 x the smaller chord (then that bound).
+// Tolerance: the slope is one chord and at most one product, 2 roundings: 2 eps of its magnitude.
+constexpr double auto_slope_ulps = 2;
+
+TEST(Maya, AutoSlopeClosedFormsAtAndBesideAnExtremum) {
+  for (maya_tangent type : {maya_tangent::auto_, maya_tangent::plateau}) {
+    const auto slopes = [&](const std::vector<double>& t, const std::vector<double>& v, bool weighted = false) {
+      std::vector<ch::maya_key<double>> keys;
+      for (std::size_t i = 0; i < t.size(); ++i) keys.push_back(key(t[i], v[i], type));
+      return ch::maya_channel_keys(curve_of(keys, weighted));
+    };
+    // Rising, the spline slope inside the bound: (0,0), (1,1), (3,4): chords 1 and 3/2, spline 4/3.
+    const auto rising = slopes({0, 1, 3}, {0, 1, 4});
+    EXPECT_TRUE(cbt::within_scaled_ulps(out_slope(rising, 1), real50(4) / 3, real50(4) / 3, auto_slope_ulps));
+    EXPECT_EQ(in_slope(rising, 1), out_slope(rising, 1));  // one slope on both sides
+    EXPECT_EQ(out_slope(rising, 0), 0.0);                   // flat at the ends
+    EXPECT_EQ(in_slope(rising, 2), 0.0);
+    // Beside a maximum: (0,0), (1,3), (1.5,3.1), (2.5,0). Key 2 is the maximum: 0. Key 1: chords 3
+    // and 0.2, spline 3.1 / 1.5 ~ 2.07 > 3 x 0.2, so the bound 3 (3.1 - 3) / 0.5 (3.1 as a double).
+    const auto beside = slopes({0, 1, 1.5, 2.5}, {0, 3, 3.1, 0});
+    const real50 bound = 3 * (real50(3.1) - 3) / real50(0.5);
+    EXPECT_TRUE(cbt::within_scaled_ulps(out_slope(beside, 1), bound, bound, auto_slope_ulps)) << ch::to_string(type);
+    EXPECT_EQ(out_slope(beside, 2), 0.0);
+    EXPECT_EQ(in_slope(beside, 2), 0.0);
+    // Mirrored in value: falling, the bound with its sign.
+    const auto falling = slopes({0, 1, 1.5, 2.5}, {0, -3, -3.1, 0});
+    EXPECT_TRUE(cbt::within_scaled_ulps(out_slope(falling, 1), -bound, bound, auto_slope_ulps));
+    // An equal neighbour counts as an extremum: (0,0), (1,1), (2,1): key 1 is flat.
+    const auto equal = slopes({0, 1, 2}, {0, 1, 1});
+    EXPECT_EQ(out_slope(equal, 1), 0.0);
+    EXPECT_EQ(in_slope(equal, 1), 0.0);
+    // Weighted: the handle at a third of the adjacent segment (AnimX's tangent x is its duration).
+    const auto w = slopes({0, 1, 3}, {0, 1, 4}, true);
+    EXPECT_EQ(w[1].in.dt, -1.0 / 3);
+    EXPECT_EQ(w[1].out.dt, 2.0 / 3);
+  }
+}
+
+TEST(Maya, ClampedThreeKeysClosedForm) {
+  // (0,0), (1,2), (3,2), clamped: key 0's only chord, 2; key 1's in side the spline slope
+  // (2 - 0) / (3 - 0) = 2/3 (its previous neighbour differs), its out side the chord to the equal
+  // neighbour, 0; key 2's in side 0. The first segment is then the Hermite with slopes 2 and 2/3.
+  std::vector<ch::maya_key<double>> keys{key(0, 0, maya_tangent::clamped), key(1, 2, maya_tangent::clamped),
+                                         key(3, 2, maya_tangent::clamped)};
+  const auto k = ch::maya_channel_keys(curve_of(keys));
+  EXPECT_EQ(out_slope(k, 0), 2.0);
+  EXPECT_TRUE(cbt::within_scaled_ulps(in_slope(k, 1), real50(2) / 3, real50(2) / 3, auto_slope_ulps));
+  EXPECT_EQ(out_slope(k, 1), 0.0);
+  EXPECT_EQ(in_slope(k, 2), 0.0);
+  // Values against the real50 Hermite: the segment's de Casteljau in double, a few eps of
+  // V + S H = 2 + 2: 8 (as same_curve).
+  const auto model = ch::maya_model(curve_of(keys));
+  const auto exact = ch::maya_exact<real50>(curve_of(keys));
+  for (int j = 0; j <= 30; ++j) {
+    const real50 t = real50(3) * j / 30;
+    const real50 ref = t <= 1 ? hermite(0, 1, 0, 2, 2, real50(2) / 3, t) : hermite(1, 3, 2, 2, 0, 0, t);
+    EXPECT_LT(abs(exact.value(t) - ref), real50(1e-45)) << j;
+    EXPECT_TRUE(cbt::within_scaled_ulps(model.value(static_cast<double>(t)), ref, real50(4), same_curve)) << j;
+  }
+}
+
 TEST(Maya, WeightedHandlesAtThirdsEqualTheNonWeightedCurve) {
   const std::vector<double> t{0, 1.5, 2, 5}, v{0, 2, -1, 3}, m{1, -2, 0.5, 3};
   std::vector<ch::maya_key<double>> keys;
