@@ -255,7 +255,7 @@ TEST(Maya, AutoSlopeClosedFormsAtAndBesideAnExtremum) {
     const auto rising = slopes({0, 1, 3}, {0, 1, 4});
     EXPECT_TRUE(cbt::within_scaled_ulps(out_slope(rising, 1), real50(4) / 3, real50(4) / 3, auto_slope_ulps));
     EXPECT_EQ(in_slope(rising, 1), out_slope(rising, 1));  // one slope on both sides
-    EXPECT_EQ(out_slope(rising, 0), 0.0);                   // flat at the ends
+    EXPECT_EQ(out_slope(rising, 0), 0.0);                  // flat at the ends
     EXPECT_EQ(in_slope(rising, 2), 0.0);
     // Beside a maximum: (0,0), (1,3), (1.5,3.1), (2.5,0). Key 2 is the maximum: 0. Key 1: chords 3
     // and 0.2, spline 3.1 / 1.5 ~ 2.07 > 3 x 0.2, so the bound 3 (3.1 - 3) / 0.5 (3.1 as a double).
@@ -428,8 +428,8 @@ TEST(Maya, RegressionKeepsTheOutHandleAndPullsTheInHandleToTheEllipse) {
   const real50 t_mid = (0 + 3 * real50(1.5) + 3 * (3 + in_dt) + 3) / 8;
   const real50 v_mid = (0 + 3 * real50(0.5) + 3 * (1 + in_dv) + 1) / 8;
   EXPECT_LT(abs(ch::maya_exact<real50>(c).value(t_mid) - v_mid), real50(1e-40));
-  EXPECT_TRUE(cbt::within_scaled_ulps(ch::maya_model(c).value(static_cast<double>(t_mid)), v_mid, real50(13),
-                                      model_vs_exact));
+  EXPECT_TRUE(
+      cbt::within_scaled_ulps(ch::maya_model(c).value(static_cast<double>(t_mid)), v_mid, real50(13), model_vs_exact));
   expect_time_monotone(c);
 }
 

@@ -59,7 +59,8 @@
 // slopes (the handles' lengths ignored; channel hermite, handles at thirds). A weighted curve's
 // segment is the cubic Bezier with the handles above (computed tangent types put their handles at
 // thirds of the adjacent segment, so only fixed tangents carry a weight). Regressive handles
-// (Maya's rule as AnimX applies it when it evaluates a weighted segment, src/animx.cpp): with h
+// (Maya's rule as AnimX applies it when it evaluates a weighted segment: src/animx.cpp calls the
+// Bezier evaluation of src/internal/Tbezier.h, which corrects the handles first): with h
 // the duration, a = out handle time / h and c = in handle time / h (both > 0), time along the
 // segment is monotone exactly when a + c <= 1 or (a, c) lies in the ellipse
 // E(a, c) = a^2 + a c + c^2 - 2 a - 2 c + 1 <= 0. Nothing changes unless a > 1 or c > 1 (a handle
@@ -83,13 +84,14 @@
 // mode (the channel's rule; AnimX's code returns 0 outside a one-key curve's key under any
 // non-constant infinity, which this model does not follow: not settled).
 // Evaluation: maya_model(curve) builds the evaluator in double with the isolate_brent time solver
-// (the zeros of x'(u) isolate monotone pieces, Brent on the bracketing piece: the approach of
-// Autodesk's AnimX description). Not modelled from AnimX's evaluator: its shortcuts (a weighted
-// segment whose handles lie within 1e-6 of the thirds in time is solved as u = (t - t0) / h; a
-// non-weighted segment whose two slopes are within 2e-7 relative of the chord is the chord), the
-// rounding of Bezier span times to float unless built with 64-bit time, and the float storage of
-// tangents. maya_exact<High>(curve) builds the same keys converted exactly to
-// High (real50) with the exact solver; the tangent rules are then applied in High too.
+// (the zeros of x'(u) isolate monotone pieces, Brent on the bracketing piece: AnimX's approach,
+// which isolates the roots of x(u) - t between the zeros of its derivative and refines with
+// Brent-Dekker). Not modelled from AnimX's evaluator: its shortcuts (a weighted segment whose
+// handles lie within 1e-6 of the thirds in time is solved as u = (t - t0) / h; a non-weighted
+// segment whose two slopes are within 2e-7 relative of the chord is the chord), the rounding of
+// Bezier span times to float unless built with 64-bit time, and the float storage of tangents.
+// maya_exact<High>(curve) builds the same keys converted exactly to High (real50) with the exact
+// solver; the tangent rules are then applied in High too.
 // Validation (invalid_input naming the key index and field with the value): no keys, non-finite
 // numbers, unknown enum values, fixed tangents with x <= 0, a non-finite slope y / x, negative
 // clamp_tolerance; the channel's own checks (time order, duplicate times) follow.
@@ -97,9 +99,9 @@
 // segments). Accuracy: the channel's plus the slopes' rounding (a few eps relative);
 // tests/test_maya.cpp measures the double model against the real50 truth.
 // Sources: Autodesk Maya Help (Graph Editor Tangents menu, Graph Editor Curves menu); Autodesk
-// AnimX (Apache-2.0), src/animx.cpp (the auto tangent, the flat tangent's handle, the regression
-// correction and its margin, step / step next / linear spans, the infinity modes); Fritsch and
-// Carlson (1980). Facts only, no code.
+// AnimX (Apache-2.0), src/animx.cpp (the auto tangent, the flat tangent's handle, step / step
+// next / linear spans, the infinity modes) and src/internal/Tbezier.h (the regression correction
+// and its margin); Fritsch and Carlson (1980). Facts only, no code.
 #pragma once
 
 #include "curvebench/channel/channel.hpp"
