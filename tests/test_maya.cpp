@@ -527,6 +527,16 @@ std::vector<curve_d> stress_curves() {
       c.post = ch::all_maya_infinities[(shift + 2) % 5];
       out.push_back(c);
     }
+  // The three branches of the regression correction (the closed-form tests above), with every
+  // infinity mode, so that the model and the truth apply it alike.
+  const std::vector<curve_d> corrected{weighted_segment(2, 3, 1, -3, 2), weighted_segment(3, 1.5, 0.5, -4.5, 3),
+                                       weighted_segment(4, 5, 1, -0.25, 0.5)};
+  for (std::size_t i = 0; i < corrected.size(); ++i) {
+    curve_d c = corrected[i];
+    c.pre = ch::all_maya_infinities[(i + 2) % 5];
+    c.post = ch::all_maya_infinities[(i + 4) % 5];
+    out.push_back(c);
+  }
   return out;
 }
 

@@ -64,14 +64,15 @@
 // the duration, a = out handle time / h and c = in handle time / h (both > 0), time along the
 // segment is monotone exactly when a + c <= 1 or (a, c) lies in the ellipse
 // E(a, c) = a^2 + a c + c^2 - 2 a - 2 c + 1 <= 0. Nothing changes unless a > 1 or c > 1 (a handle
-// reaching past the other key) and E(a, c) > -m, with AnimX's margin m = 1e-10 (in float, where
-// 1e-10 is below rounding, 16 eps instead). Then the start key's out handle is kept and only c
-// moves, when a < 4/3 - m: to the upper edge of E at this a, c = (2 - a + sqrt(a (4 - 3 a))) / 2,
-// less m, if c lies above it, else to the lower edge (the same with -sqrt), plus m, if c lies
-// below that; when a >= 4/3 - m (past E's widest point a = 4/3, c = 1/3) both go to that point:
-// a = 4/3 - m, c = 1/3 - m. A moved handle keeps its direction (its value offset is scaled by
-// new / old reach), except one whose old reach was within m of 0, whose value offset is kept.
-// Segments whose handles overlap in time but stay monotone (a + c > 1 inside E) are not touched.
+// reaching past the other key) and E(a, c) > -m, with AnimX's margin m = 1e-10 (in every Real;
+// in float it is below rounding, and the channel accepts the result as monotone). Then the start
+// key's out handle is kept and only c moves, when a < 4/3 - m: to the upper edge of E at this a,
+// c = (2 - a + sqrt(a (4 - 3 a))) / 2, less m, if c lies above it, else to the lower edge (the
+// same with -sqrt), plus m, if c lies below that; when a >= 4/3 - m (past E's widest point
+// a = 4/3, c = 1/3) both go to that point: a = 4/3 - m, c = 1/3 - m. A moved handle keeps its
+// direction (its value offset is scaled by new / old reach), except one whose old reach was within
+// m of 0, whose value offset is kept. Segments whose handles overlap in time but stay monotone
+// (a + c > 1 inside E) are not touched.
 // Infinity (pre before the first key, post after the last; Maya Help "Pre and Post Infinity"):
 // constant (the end key's value), linear (the end key's tangent facing out of the keyed range: the
 // first key's in tangent, the last key's out tangent: the Help says linear infinity continues
@@ -310,14 +311,12 @@ Real maya_slope(const maya_curve<Real>& c, std::size_t i, bool out) {
   return Real(0);
 }
 
-/// AnimX's margin for the regression correction (an absolute amount of the normalized handle
-/// times a and c): 1e-10 in double; in a type whose eps makes that vanish (float), 16 eps, so the
-/// corrected handles stay inside the monotone region after rounding.
+/// AnimX's margin for the regression correction, an absolute amount of the normalized handle
+/// reaches a and c: 1e-10 in every Real (in float it is below the rounding of a and c, and the
+/// corrected handles lie on the ellipse to rounding, which the channel accepts as monotone).
 template <class Real>
 Real maya_regression_margin() {
-  const Real animx = static_cast<Real>(1e-10);
-  const Real floor = Real(16) * epsilon<Real>();
-  return animx > floor ? animx : floor;
+  return static_cast<Real>(1e-10);
 }
 
 /// Maya's correction of a weighted segment's handles (out: the start key's, dt > 0; in: the end
