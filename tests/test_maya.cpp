@@ -238,6 +238,69 @@ TEST(Maya, NonWeightedSegmentsAreCubicHermite) {
   }
 }
 
+// The auto tangent as Autodesk AnimX (Apache-2.0), src/animx.cpp, computes it (plateau uses the
+// same rule in this model), against hand-derived slopes: the spline slope (v_n - v_p) / (t_n - t_p)
+// unless the chords differ in sign (then 0) or it exceeds 3 x the smaller chord (then that bound).
+// Tolerance: the slope is one chord and at most one product, 2 roundings: 2 eps of its magnitude.
+constexpr double auto_slope_ulps = 2;
+
+TEST(Maya, AutoSlopeClosedFormsAtAndBesideAnExtremum) {
+  for (maya_tangent type : {maya_tangent::auto_, maya_tangent::plateau}) {
+    const auto slopes = [&](const std::vector<double>& t, const std::vector<double>& v, bool weighted = false) {
+      std::vector<ch::maya_key<double>> keys;
+      for (std::size_t i = 0; i < t.size(); ++i) keys.push_back(key(t[i], v[i], type));
+      return ch::maya_channel_keys(curve_of(keys, weighted));
+    };
+    // Rising, the spline slope inside the bound: (0,0), (1,1), (3,4): chords 1 and 3/2, spline 4/3.
+    const auto rising = slopes({0, 1, 3}, {0, 1, 4});
+    EXPECT_TRUE(cbt::within_scaled_ulps(out_slope(rising, 1), real50(4) / 3, real50(4) / 3, auto_slope_ulps));
+    EXPECT_EQ(in_slope(rising, 1), out_slope(rising, 1));  // one slope on both sides
+    EXPECT_EQ(out_slope(rising, 0), 0.0);                  // flat at the ends
+    EXPECT_EQ(in_slope(rising, 2), 0.0);
+    // Beside a maximum: (0,0), (1,3), (1.5,3.1), (2.5,0). Key 2 is the maximum: 0. Key 1: chords 3
+    // and 0.2, spline 3.1 / 1.5 ~ 2.07 > 3 x 0.2, so the bound 3 (3.1 - 3) / 0.5 (3.1 as a double).
+    const auto beside = slopes({0, 1, 1.5, 2.5}, {0, 3, 3.1, 0});
+    const real50 bound = 3 * (real50(3.1) - 3) / real50(0.5);
+    EXPECT_TRUE(cbt::within_scaled_ulps(out_slope(beside, 1), bound, bound, auto_slope_ulps)) << ch::to_string(type);
+    EXPECT_EQ(out_slope(beside, 2), 0.0);
+    EXPECT_EQ(in_slope(beside, 2), 0.0);
+    // Mirrored in value: falling, the bound with its sign.
+    const auto falling = slopes({0, 1, 1.5, 2.5}, {0, -3, -3.1, 0});
+    EXPECT_TRUE(cbt::within_scaled_ulps(out_slope(falling, 1), -bound, bound, auto_slope_ulps));
+    // An equal neighbour counts as an extremum: (0,0), (1,1), (2,1): key 1 is flat.
+    const auto equal = slopes({0, 1, 2}, {0, 1, 1});
+    EXPECT_EQ(out_slope(equal, 1), 0.0);
+    EXPECT_EQ(in_slope(equal, 1), 0.0);
+    // Weighted: the handle at a third of the adjacent segment (AnimX's tangent x is its duration).
+    const auto w = slopes({0, 1, 3}, {0, 1, 4}, true);
+    EXPECT_EQ(w[1].in.dt, -1.0 / 3);
+    EXPECT_EQ(w[1].out.dt, 2.0 / 3);
+  }
+}
+
+TEST(Maya, ClampedThreeKeysClosedForm) {
+  // (0,0), (1,2), (3,2), clamped: key 0's only chord, 2; key 1's in side the spline slope
+  // (2 - 0) / (3 - 0) = 2/3 (its previous neighbour differs), its out side the chord to the equal
+  // neighbour, 0; key 2's in side 0. The first segment is then the Hermite with slopes 2 and 2/3.
+  std::vector<ch::maya_key<double>> keys{key(0, 0, maya_tangent::clamped), key(1, 2, maya_tangent::clamped),
+                                         key(3, 2, maya_tangent::clamped)};
+  const auto k = ch::maya_channel_keys(curve_of(keys));
+  EXPECT_EQ(out_slope(k, 0), 2.0);
+  EXPECT_TRUE(cbt::within_scaled_ulps(in_slope(k, 1), real50(2) / 3, real50(2) / 3, auto_slope_ulps));
+  EXPECT_EQ(out_slope(k, 1), 0.0);
+  EXPECT_EQ(in_slope(k, 2), 0.0);
+  // Values against the real50 Hermite: the segment's de Casteljau in double, a few eps of
+  // V + S H = 2 + 2: 8 (as same_curve).
+  const auto model = ch::maya_model(curve_of(keys));
+  const auto exact = ch::maya_exact<real50>(curve_of(keys));
+  for (int j = 0; j <= 30; ++j) {
+    const real50 t = real50(3) * j / 30;
+    const real50 ref = t <= 1 ? hermite(0, 1, 0, 2, 2, real50(2) / 3, t) : hermite(1, 3, 2, 2, 0, 0, t);
+    EXPECT_LT(abs(exact.value(t) - ref), real50(1e-45)) << j;
+    EXPECT_TRUE(cbt::within_scaled_ulps(model.value(static_cast<double>(t)), ref, real50(4), same_curve)) << j;
+  }
+}
+
 TEST(Maya, WeightedHandlesAtThirdsEqualTheNonWeightedCurve) {
   const std::vector<double> t{0, 1.5, 2, 5}, v{0, 2, -1, 3}, m{1, -2, 0.5, 3};
   std::vector<ch::maya_key<double>> keys;
@@ -286,26 +349,25 @@ TEST(Maya, WeightedFixedTangentsAreBezierHandlesAtAThirdOfTheVector) {
   EXPECT_NEAR(y, 3.6, 1e-15);
 }
 
-TEST(Maya, RegressiveHandlesAreShortenedSoTimeStaysMonotone) {
-  // Handles 1.5 segment durations long on both sides (a = c = 1.5): (1 - a - c)^2 = 4 > a c = 2.25,
-  // time would run backwards; the channel refuses such handles as they are.
-  std::vector<ch::maya_key<double>> keys{key(0, 0, maya_tangent::fixed), key(2, 1, maya_tangent::fixed)};
-  keys[0].out_x = 9, keys[0].out_y = 3;  // handle (3, 1): slope 1/3, 1.5 h
-  keys[1].in_x = 9, keys[1].in_y = -6;   // handle (-3, 2): slope -2/3
-  std::vector<ch::key<double>> raw(2);
-  raw[0] = {0, 0, {}, {3, 1}, ch::interpolation::bezier};
-  raw[1] = {2, 1, {-3, 2}, {}, ch::interpolation::bezier};
-  EXPECT_THROW((void)ch::channel<double>(raw), cb::invalid_input);
-  const auto k = ch::maya_channel_keys(curve_of(keys, true));
-  // The documented result of the rule: both scaled by 1 / (a + c) = 1/3, directions kept, their
-  // time extents sum to the duration.
-  EXPECT_DOUBLE_EQ(k[0].out.dt, 1.0);
-  EXPECT_DOUBLE_EQ(k[0].out.dv, 1.0 / 3);
-  EXPECT_DOUBLE_EQ(k[1].in.dt, -1.0);
-  EXPECT_DOUBLE_EQ(k[1].in.dv, 2.0 / 3);
-  EXPECT_DOUBLE_EQ(k[0].out.dt - k[1].in.dt, 2.0);
-  // Time is monotone along the corrected segment's curve.
-  const auto eval = ch::maya_model(curve_of(keys, true));
+// The regression correction (maya.hpp, from Autodesk AnimX (Apache-2.0), src/animx.cpp), checked
+// against hand-derived closed forms. With a = out handle time / h, c = in handle time / h, time is
+// monotone iff a + c <= 1 or E(a, c) = a^2 + a c + c^2 - 2a - 2c + 1 <= 0. Solving E = 0 for c at a
+// given a: c = (2 - a +- sqrt(a (4 - 3 a))) / 2. m = AnimX's margin, 1e-10 as a double.
+const real50 animx_margin = real50(1e-10);
+
+real50 ellipse(const real50& a, const real50& c) { return a * a + a * c + c * c - 2 * a - 2 * c + 1; }
+
+// A two-key weighted segment [0, h] with fixed handles given as (dt, dv) (vectors 3 x the handle).
+curve_d weighted_segment(double h, double out_dt, double out_dv, double in_dt, double in_dv) {
+  std::vector<ch::maya_key<double>> keys{key(0, 0, maya_tangent::fixed), key(h, 1, maya_tangent::fixed)};
+  keys[0].out_x = 3 * out_dt, keys[0].out_y = 3 * out_dv;
+  keys[1].in_x = -3 * in_dt, keys[1].in_y = -3 * in_dv;  // in_dt < 0: the vector points forwards
+  return curve_of(keys, true);
+}
+
+// Time along the double model's corrected segment never runs backwards.
+void expect_time_monotone(const curve_d& c) {
+  const auto eval = ch::maya_model(c);  // the channel itself refuses regressive handles
   const auto curve = eval.underlying().curve();
   double previous = -1;
   for (int j = 0; j <= 1000; ++j) {
@@ -313,12 +375,92 @@ TEST(Maya, RegressiveHandlesAreShortenedSoTimeStaysMonotone) {
     EXPECT_GE(time, previous) << j;
     previous = time;
   }
-  // Handles within the interval are left alone.
-  keys[0].out_x = 1.5, keys[0].out_y = 0.5;
-  keys[1].in_x = 1.5, keys[1].in_y = -1;
-  const auto kept = ch::maya_channel_keys(curve_of(keys, true));
-  EXPECT_DOUBLE_EQ(kept[0].out.dt, 0.5);
-  EXPECT_DOUBLE_EQ(kept[1].in.dt, -0.5);
+}
+
+// Tolerances for the corrected handles of the double model against the closed forms, in eps of
+// the reference's magnitude: the corrected reach takes a square root, a sum, a halving and the
+// margin (about 2 eps), times h (exact here: h a power of 2 or 3 with exact reaches), and the value
+// offset its ratio new / old (2 more): 4. Where the lower edge is taken, 2 - a - sqrt(.) cancels
+// (0.75 - 0.56 here, a factor 4 on the sum's roundings): 8.
+constexpr double handle_ulps = 4;
+constexpr double handle_ulps_cancelling = 8;
+
+TEST(Maya, RegressionPastTheEllipseTipMovesBothHandlesToTheTip) {
+  // a = c = 1.5 on [0, 2]: E = 1.75 > 0 and a >= 4/3, so a -> 4/3 - m, c -> 1/3 - m, directions kept.
+  const curve_d c = weighted_segment(2, 3, 1, -3, 2);
+  std::vector<ch::key<double>> raw(2);  // as they are, the channel refuses them
+  raw[0] = {0, 0, {}, {3, 1}, ch::interpolation::bezier};
+  raw[1] = {2, 1, {-3, 2}, {}, ch::interpolation::bezier};
+  EXPECT_THROW((void)ch::channel<double>(raw), cb::invalid_input);
+  const real50 a = real50(4) / 3 - animx_margin, cc = real50(1) / 3 - animx_margin;
+  const real50 out_dt = 2 * a, out_dv = a / real50(1.5), in_dt = -2 * cc, in_dv = 2 * cc / real50(1.5);
+  const auto k = ch::maya_channel_keys(c);
+  EXPECT_TRUE(cbt::within_scaled_ulps(k[0].out.dt, out_dt, abs(out_dt), handle_ulps));
+  EXPECT_TRUE(cbt::within_scaled_ulps(k[0].out.dv, out_dv, abs(out_dv), handle_ulps));
+  EXPECT_TRUE(cbt::within_scaled_ulps(k[1].in.dt, in_dt, abs(in_dt), handle_ulps));
+  EXPECT_TRUE(cbt::within_scaled_ulps(k[1].in.dv, in_dv, abs(in_dv), handle_ulps));
+  // The rule in real50 lands on the same closed form (the same arithmetic, 50 digits).
+  const auto k50 = ch::maya_channel_keys(ch::convert<real50>(c));
+  EXPECT_LT(abs(k50[0].out.dv - out_dv) + abs(k50[1].in.dt - in_dt), real50(1e-45));
+  // Just inside the monotone region: E(a, c) < 0 by about the margin.
+  EXPECT_LT(ellipse(a, cc), 0);
+  EXPECT_GT(ellipse(a, cc), -10 * animx_margin);
+  expect_time_monotone(c);
+}
+
+TEST(Maya, RegressionKeepsTheOutHandleAndPullsTheInHandleToTheEllipse) {
+  // h = 3, out handle (1.5, 0.5): a = 1/2; in handle (-4.5, 3): c = 3/2 > 1. E = 1/4 > 0. At a = 1/2
+  // the upper edge is c = (3/2 + sqrt(5/4)) / 2 = (3 + sqrt 5) / 4 ~ 1.309 < c: c -> that - m.
+  const curve_d c = weighted_segment(3, 1.5, 0.5, -4.5, 3);
+  const real50 cc = (3 + sqrt(real50(5))) / 4 - animx_margin;
+  const real50 in_dt = -3 * cc, in_dv = 3 * cc / real50(1.5);
+  const auto k = ch::maya_channel_keys(c);
+  EXPECT_EQ(k[0].out.dt, 1.5);  // the out handle is kept as it is
+  EXPECT_EQ(k[0].out.dv, 0.5);
+  EXPECT_TRUE(cbt::within_scaled_ulps(k[1].in.dt, in_dt, abs(in_dt), handle_ulps));
+  EXPECT_TRUE(cbt::within_scaled_ulps(k[1].in.dv, in_dv, abs(in_dv), handle_ulps));
+  EXPECT_LT(ellipse(real50(0.5), cc), 0);
+  EXPECT_GT(ellipse(real50(0.5), cc), -10 * animx_margin);
+  // The evaluated curve is the Bezier of the corrected handles: at u = 1/2, time
+  // (t0 + 3 t1 + 3 t2 + t3) / 8 and value (v0 + 3 v1 + 3 v2 + v3) / 8. real50 within 1e-40 (the
+  // exact solver); the double model within the channel's bound, 16 eps of V + S (T + H) (slope S
+  // <= 2 here, V = 1, T = H = 3: 16 eps x 13).
+  const real50 t_mid = (0 + 3 * real50(1.5) + 3 * (3 + in_dt) + 3) / 8;
+  const real50 v_mid = (0 + 3 * real50(0.5) + 3 * (1 + in_dv) + 1) / 8;
+  EXPECT_LT(abs(ch::maya_exact<real50>(c).value(t_mid) - v_mid), real50(1e-40));
+  EXPECT_TRUE(
+      cbt::within_scaled_ulps(ch::maya_model(c).value(static_cast<double>(t_mid)), v_mid, real50(13), model_vs_exact));
+  expect_time_monotone(c);
+}
+
+TEST(Maya, RegressionBelowTheEllipseLengthensTheInHandle) {
+  // h = 4, out handle (5, 1): a = 5/4 > 1; in handle (-0.25, 0.5): c = 1/16. E = 0.01953125 > 0. At
+  // a = 5/4 the lower edge is c = (3/4 - sqrt(5/16)) / 2 = (3 - sqrt 5) / 8 ~ 0.0955 > c: c -> that + m.
+  const curve_d c = weighted_segment(4, 5, 1, -0.25, 0.5);
+  const real50 cc = (3 - sqrt(real50(5))) / 8 + animx_margin;
+  const real50 in_dt = -4 * cc, in_dv = real50(0.5) * cc * 16;
+  const auto k = ch::maya_channel_keys(c);
+  EXPECT_EQ(k[0].out.dt, 5.0);
+  EXPECT_EQ(k[0].out.dv, 1.0);
+  EXPECT_TRUE(cbt::within_scaled_ulps(k[1].in.dt, in_dt, abs(in_dt), handle_ulps_cancelling));
+  EXPECT_TRUE(cbt::within_scaled_ulps(k[1].in.dv, in_dv, abs(in_dv), handle_ulps_cancelling));
+  EXPECT_LT(ellipse(real50(1.25), cc), 0);
+  EXPECT_GT(ellipse(real50(1.25), cc), -10 * animx_margin);
+  expect_time_monotone(c);
+}
+
+TEST(Maya, OverlappingButMonotoneHandlesAreLeftAlone) {
+  // a = 1.1, c = 0.3 (h = 2): a + c > 1 but E = -0.17 < 0, time is monotone; a = c = 0.9: neither
+  // handle passes the other key. (A rule scaling by 1 / (a + c) would shorten both.)
+  for (const auto& [a, cc] : {std::pair{1.1, 0.3}, std::pair{0.9, 0.9}, std::pair{0.75, 0.25}}) {
+    const curve_d c = weighted_segment(2, 2 * a, 0.5, -2 * cc, -0.25);
+    const auto k = ch::maya_channel_keys(c);
+    EXPECT_EQ(k[0].out.dt, c.keys[0].out_x / 3) << a;
+    EXPECT_EQ(k[0].out.dv, c.keys[0].out_y / 3) << a;
+    EXPECT_EQ(k[1].in.dt, -c.keys[1].in_x / 3) << a;
+    EXPECT_EQ(k[1].in.dv, -c.keys[1].in_y / 3) << a;
+    expect_time_monotone(c);
+  }
 }
 
 TEST(Maya, InfinityModesMatchTheirClosedForms) {
@@ -385,6 +527,16 @@ std::vector<curve_d> stress_curves() {
       c.post = ch::all_maya_infinities[(shift + 2) % 5];
       out.push_back(c);
     }
+  // The three branches of the regression correction (the closed-form tests above), with every
+  // infinity mode, so that the model and the truth apply it alike.
+  const std::vector<curve_d> corrected{weighted_segment(2, 3, 1, -3, 2), weighted_segment(3, 1.5, 0.5, -4.5, 3),
+                                       weighted_segment(4, 5, 1, -0.25, 0.5)};
+  for (std::size_t i = 0; i < corrected.size(); ++i) {
+    curve_d c = corrected[i];
+    c.pre = ch::all_maya_infinities[(i + 2) % 5];
+    c.post = ch::all_maya_infinities[(i + 4) % 5];
+    out.push_back(c);
+  }
   return out;
 }
 

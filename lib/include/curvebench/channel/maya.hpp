@@ -14,15 +14,24 @@
 // (x, y) = 3 weight (cos angle, sin angle) from Maya's angle (radians) and weight (the handle's
 // length in the (time, value) plane).
 // Tangent rules (slopes dv/dt; Maya Help, "Graph Editor Tangents menu" and "Graph Editor Curves
-// menu", docs/references.md). n = the number of keys, d_l and d_r = the chord slopes to the
-// previous and the next key (v_i - v_{i-1}) / (t_i - t_{i-1}) and (v_{i+1} - v_i) / (t_{i+1} - t_i):
+// menu", and Autodesk AnimX (Apache-2.0), src/animx.cpp, Maya's own animation-curve evaluator,
+// docs/references.md; facts only, no code or text taken). AnimX evaluates the tangents Maya
+// stores with each key; of the computed types it derives only flat and the auto family, so the
+// spline, linear, clamped and plateau slopes below rest on the Help alone. n = the number of keys,
+// d_l and d_r = the chord slopes to the previous and the next key, (v_i - v_{i-1}) / (t_i - t_{i-1})
+// and (v_{i+1} - v_i) / (t_{i+1} - t_i):
 // - fixed: y / x of the given vector.
-// - linear: the tangent lies along the straight line to the neighbouring key: in = d_l, out = d_r; an end key's missing side
-//   takes the other side's chord.
-// - flat: 0.
+// - linear: the tangent lies along the straight line to the neighbouring key: in = d_l, out = d_r;
+//   an end key's missing side takes the other side's chord. A segment linear on both sides is the
+//   straight line (AnimX interpolates such a span linearly; the Hermite / Bezier with chord slopes
+//   at thirds is that line).
+// - flat: 0 (AnimX: value offset 0, time offset the adjacent segment's duration, so a weighted
+//   handle sits at a third; an end key uses its only segment).
 // - step (out side): the key's value holds until the next key (channel constant); step_next (out
 //   side): the next key's value from just after the key (channel step_next). Only the segment's
-//   start key's out type makes a segment stepped; a step or step_next in tangent has slope 0.
+//   start key's out type makes a segment stepped (AnimX decides a span's method from its start
+//   key's out tangent); a step or step_next in tangent has slope 0 (AnimX leaves it to the stored
+//   tangent: not settled).
 // - spline: a smooth pass from the previous key to the next, both tangents co-linear: the slope
 //   of the chord through the two neighbours, (v_{i+1} - v_{i-1}) / (t_{i+1} - t_{i-1})
 //   (Catmull-Rom-like); an end key takes the chord to its only neighbour.
@@ -30,47 +39,70 @@
 //   tangents between them become linear (the Help describes it so): per side, when
 //   |v_i - v_j| <= clamp_tolerance * max(1, |v_i|, |v_j|) for the neighbour j on that side, that
 //   side's slope is the chord to j (0 for equal values), else the spline slope. Maya does not
-//   publish its tolerance; maya_curve::clamp_tolerance (default 0: equal values only) makes it an
-//   explicit input.
+//   publish its tolerance and AnimX does not compute clamped tangents; maya_curve::clamp_tolerance
+//   (default 0: equal values only) makes it an explicit input.
+// - auto (spelled auto_ in C++, "auto" in to_string): Maya's legacy auto tangent as AnimX computes
+//   it (src/animx.cpp): flat at the first and last key; at an interior key the spline slope above
+//   is the target, and it is bounded by three times each chord: 0 when the two chords d_l and d_r
+//   do not have the same strict sign (a local extremum, or an equal neighbour), else the target
+//   with its magnitude cut to 3 min(|d_l|, |d_r|) (so the Bezier control values stay within the
+//   neighbours' values, AnimX's stated aim). Both sides of the key take that slope; on a weighted
+//   curve the handle is at a third of the adjacent segment (AnimX's tangent x is the segment's
+//   duration). AnimX's Auto Mix and Auto Ease (other targets, same bound) are not modelled.
 // - plateau: described as keeping the curve from going beyond its keys' values, so that its
 //   maxima and minima do not overshoot the keys (the Plateau entry of the Tangents menu; its
-//   official wording was not retrieved, the rule follows that description): flat at the first and
-//   last key and at local extrema (v_i >= both neighbours or <= both); elsewhere the spline slope
-//   limited to 3 min(|d_l|, |d_r|), which by Fritsch and Carlson's condition keeps each Hermite
-//   segment between two such keys monotone, so the curve never overshoots its keys (Maya's exact
-//   limiter is not published).
-// - auto (spelled auto_ in C++, "auto" in to_string): Maya Help's (legacy) auto tangents: flat at
-//   the first and last key, and interior keys that never overshoot their neighbours' values; in
-//   this model the same rule as plateau. Auto Ease / Mix / Custom
-//   are not modelled.
+//   official wording was not retrieved). Maya does not publish its limiter and AnimX does not
+//   compute plateau tangents (it only names the type); this model uses the auto rule above, whose
+//   bound 3 min(|d_l|, |d_r|) is also Fritsch and Carlson's monotonicity condition, so each
+//   segment between two such keys is monotone and the curve never overshoots its keys.
 // Segments: a non-weighted curve's segment is the cubic Hermite polynomial in time with the two
 // slopes (the handles' lengths ignored; channel hermite, handles at thirds). A weighted curve's
 // segment is the cubic Bezier with the handles above (computed tangent types put their handles at
-// thirds of the adjacent segment, so only fixed tangents carry a weight). Regressive handles:
-// Maya's documented intent is that time stays monotone; the rule here (Maya's own is not
-// published): with h the duration, a = out handle time / h, c = in handle time / h, when
-// a + c > 1 both handles are scaled by 1 / (a + c) along their directions (then a + c = 1, the
-// middle Bernstein coefficient of x'(u) is 0 and time is monotone). Segments whose handles overlap
-// in time but are still monotone are corrected too (the rule looks at a + c only).
+// thirds of the adjacent segment, so only fixed tangents carry a weight). Regressive handles
+// (Maya's rule as AnimX applies it when it evaluates a weighted segment: src/animx.cpp calls the
+// Bezier evaluation of src/internal/Tbezier.h, which corrects the handles first): with h
+// the duration, a = out handle time / h and c = in handle time / h (both > 0), time along the
+// segment is monotone exactly when a + c <= 1 or (a, c) lies in the ellipse
+// E(a, c) = a^2 + a c + c^2 - 2 a - 2 c + 1 <= 0. Nothing changes unless a > 1 or c > 1 (a handle
+// reaching past the other key) and E(a, c) > -m, with AnimX's margin m = 1e-10 (in every Real;
+// in float it is below rounding, and the channel accepts the result as monotone). Then the start
+// key's out handle is kept and only c moves, when a < 4/3 - m: to the upper edge of E at this a,
+// c = (2 - a + sqrt(a (4 - 3 a))) / 2, less m, if c lies above it, else to the lower edge (the
+// same with -sqrt), plus m, if c lies below that; when a >= 4/3 - m (past E's widest point
+// a = 4/3, c = 1/3) both go to that point: a = 4/3 - m, c = 1/3 - m. A moved handle keeps its
+// direction (its value offset is scaled by new / old reach), except one whose old reach was within
+// m of 0, whose value offset is kept. Segments whose handles overlap in time but stay monotone
+// (a + c > 1 inside E) are not touched.
 // Infinity (pre before the first key, post after the last; Maya Help "Pre and Post Infinity"):
 // constant (the end key's value), linear (the end key's tangent facing out of the keyed range: the
 // first key's in tangent, the last key's out tangent: the Help says linear infinity continues
-// along the end key's tangent; a step type there is slope 0), cycle, cycle_relative (Cycle with Offset,
-// channel cycle_offset) and oscillate (channel oscillate). Linear infinity is evaluated here from
-// the end key's own tangent; the other modes are the channel's. A one-key curve is constant under
-// every mode (the channel's rule).
+// along the end key's tangent, and AnimX extends the line at the first key's in tangent's and the
+// last key's out tangent's angle; a step type there is slope 0, not settled by AnimX), cycle,
+// cycle_relative (Cycle with Offset, channel cycle_offset: each period shifted by
+// v_last - v_first) and oscillate (channel oscillate: the period next to the keyed range is the
+// mirrored one), which agree with AnimX's wrapping. Linear infinity is evaluated here from the end
+// key's own tangent; the other modes are the channel's. A one-key curve is constant under every
+// mode (the channel's rule; AnimX's code returns 0 outside a one-key curve's key under any
+// non-constant infinity, which this model does not follow: not settled).
 // Evaluation: maya_model(curve) builds the evaluator in double with the isolate_brent time solver
-// (the zeros of x'(u) isolate monotone pieces, Brent on the bracketing piece: the approach of
-// Autodesk's AnimX description); maya_exact<High>(curve) builds the same keys converted exactly to
-// High (real50) with the exact solver; the tangent rules are then applied in High too.
+// (the zeros of x'(u) isolate monotone pieces, Brent on the bracketing piece: AnimX's approach,
+// which isolates the roots of x(u) - t between the zeros of its derivative and refines with
+// Brent-Dekker). Not modelled from AnimX's evaluator: its shortcuts (a weighted segment whose
+// handles lie within 1e-6 of the thirds in time is solved as u = (t - t0) / h; a non-weighted
+// segment whose two slopes are within 2e-7 relative of the chord is the chord), the rounding of
+// Bezier span times to float unless built with 64-bit time, and the float storage of tangents.
+// maya_exact<High>(curve) builds the same keys converted exactly to High (real50) with the exact
+// solver; the tangent rules are then applied in High too.
 // Validation (invalid_input naming the key index and field with the value): no keys, non-finite
 // numbers, unknown enum values, fixed tangents with x <= 0, a non-finite slope y / x, negative
 // clamp_tolerance; the channel's own checks (time order, duplicate times) follow.
 // Cost: O(n) to build; evaluation as the channel (O(log n) search plus the solver on weighted
 // segments). Accuracy: the channel's plus the slopes' rounding (a few eps relative);
 // tests/test_maya.cpp measures the double model against the real50 truth.
-// Sources: Autodesk Maya Help (Graph Editor Tangents menu, Graph Editor Curves menu); Autodesk's
-// AnimX documentation (Maya's evaluator approach); Fritsch and Carlson (1980). Facts only, no code.
+// Sources: Autodesk Maya Help (Graph Editor Tangents menu, Graph Editor Curves menu); Autodesk
+// AnimX (Apache-2.0), src/animx.cpp (the auto tangent, the flat tangent's handle, step / step
+// next / linear spans, the infinity modes) and src/internal/Tbezier.h (the regression correction
+// and its margin); Fritsch and Carlson (1980). Facts only, no code.
 #pragma once
 
 #include "curvebench/channel/channel.hpp"
@@ -267,16 +299,65 @@ Real maya_slope(const maya_curve<Real>& c, std::size_t i, bool out) {
       }
       return spline;
     }
-    case maya_tangent::plateau:
+    case maya_tangent::plateau:  // the stand-in: the auto rule (the header comment)
     case maya_tangent::auto_: {
-      if (!has_prev || !has_next) return Real(0);
-      const Real vp = keys[i - 1].value, vn = keys[i + 1].value;
-      if ((k.value >= vp && k.value >= vn) || (k.value <= vp && k.value <= vn)) return Real(0);
-      const Real limit = Real(3) * min(abs(d_l), abs(d_r));
-      return std::clamp(spline, -limit, limit);
+      if (!has_prev || !has_next) return Real(0);  // flat at the ends
+      const bool rising = d_l > Real(0) && d_r > Real(0), falling = d_l < Real(0) && d_r < Real(0);
+      if (!rising && !falling) return Real(0);  // an extremum or an equal neighbour
+      const Real bound = Real(3) * min(abs(d_l), abs(d_r));
+      return std::clamp(spline, -bound, bound);
     }
   }
   return Real(0);
+}
+
+/// AnimX's margin for the regression correction, an absolute amount of the normalized handle
+/// reaches a and c: 1e-10 in every Real (in float it is below the rounding of a and c, and the
+/// corrected handles lie on the ellipse to rounding, which the channel accepts as monotone).
+template <class Real>
+Real maya_regression_margin() {
+  return static_cast<Real>(1e-10);
+}
+
+/// Maya's correction of a weighted segment's handles (out: the start key's, dt > 0; in: the end
+/// key's, dt < 0) over a duration h, in place. See the header comment, "Regressive handles".
+template <class Real>
+void maya_correct_regression(const Real& h, handle<Real>& out, handle<Real>& in) {
+  using std::abs;
+  using std::sqrt;
+  const Real m = maya_regression_margin<Real>();
+  const Real a = out.dt / h, c = -in.dt / h;  // the handles' time reach as fractions of h
+  if (!(a > Real(1) || c > Real(1))) return;  // neither handle passes the other key: monotone
+  // Outside the ellipse E(a, c) = a^2 + a c + c^2 - 2 a - 2 c + 1 <= 0, x'(u) changes sign.
+  const Real e = a * a + a * c + c * c - Real(2) * a - Real(2) * c + Real(1);
+  if (!(e > -m)) return;
+  Real a_new = a, c_new = c;
+  const Real four_thirds = Real(4) / Real(3);
+  if (a < four_thirds - m) {
+    // Keep the out handle; the in handle's reach c moves to the nearer edge of E at this a:
+    // c = (2 - a -/+ sqrt(a (4 - 3 a))) / 2, pulled inside by the margin.
+    const Real root = sqrt(a * (Real(4) - Real(3) * a));
+    const Real c_hi = (Real(2) - a + root) / Real(2), c_lo = (Real(2) - a - root) / Real(2);
+    if (c > c_hi - m) {
+      c_new = c_hi - m;
+    } else if (c < c_lo + m) {
+      c_new = c_lo + m;
+    }
+  } else {
+    // Past E's widest a (4/3, where c = 1/3): both go to that tip, less the margin.
+    a_new = four_thirds - m;
+    c_new = Real(1) / Real(3) - m;
+  }
+  // A moved handle keeps its direction (its value offset scales with its time), unless its old
+  // reach was within the margin of 0, where the value offset is kept as it was.
+  if (a_new != a) {
+    if (abs(a) > m) out.dv = out.dv * (a_new / a);
+    out.dt = a_new * h;
+  }
+  if (c_new != c) {
+    if (abs(c) > m) in.dv = in.dv * (c_new / c);
+    in.dt = -c_new * h;
+  }
 }
 
 }  // namespace detail
@@ -316,12 +397,7 @@ template <class Real>
     handle<Real> out{h / Real(3), m0 * h / Real(3)}, in{-h / Real(3), -m1 * h / Real(3)};
     if (mk[i].out_type == maya_tangent::fixed) out = {mk[i].out_x / Real(3), mk[i].out_y / Real(3)};
     if (mk[i + 1].in_type == maya_tangent::fixed) in = {-mk[i + 1].in_x / Real(3), -mk[i + 1].in_y / Real(3)};
-    const Real a = out.dt / h, cc = -in.dt / h;
-    if (a + cc > Real(1)) {  // regressive or overlapping handles: shorten both along their directions
-      const Real f = Real(1) / (a + cc);
-      out = {out.dt * f, out.dv * f};
-      in = {in.dt * f, in.dv * f};
-    }
+    detail::maya_correct_regression(h, out, in);
     k0.out = out;
     k1.in = in;
   }
