@@ -250,7 +250,7 @@ def channel_section(acc, bench_rows, plot_dir, plt, save):
                              "max angle error, float", "unit, float"], rotations))
     md += ["", "### Where the tools disagree on the same keys", ""]
     md += ["The keys of each `exact` case imported into each tool's model (bench/harness/channel_models.hpp: "
-           "Maya's weighted fixed tangents with its handle shortening, USD's keep_ratio anti-regression, "
+           "Maya's weighted fixed tangents with its correction of regressive handles, USD's keep_ratio anti-regression, "
            "Blender's float32 free handles with its per-handle limit, glTF's cubicspline slopes without the "
            "handle lengths), each evaluated by its own solver; the largest difference of each pair over "
            "the keyed range, in value ranges (exact is the 50-digit truth of the keys as given):", ""]

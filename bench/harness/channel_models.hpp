@@ -3,9 +3,9 @@
 // them, so that the accuracy runner can measure where the tools disagree on the same keys
 // (harness/sweep_channel.cpp) and the benchmarks can time each tool's evaluator on the same data
 // (bench/bench_channel.cpp). Keyed range only: the extrapolation is each tool's default.
-//   maya     weighted curve, fixed tangents (the tangent vector is 3 x the handle, maya.hpp); Maya
-//            shortens handles whose time lengths add up to more than the interval; double,
-//            isolate_brent;
+//   maya     weighted curve, fixed tangents (the tangent vector is 3 x the handle, maya.hpp); a
+//            handle that passes the other key on a segment whose time regresses is pulled back
+//            to the monotone region (AnimX's rule, maya.hpp); double, isolate_brent;
 //   usd      bezier knots with width and slope, keep_ratio anti-regression, closed-form solver, double;
 //   blender  free handles at absolute positions in float32, each handle limited to its segment's
 //            duration (blender.hpp), exact solver;
@@ -61,8 +61,8 @@ inline std::vector<tool_model> tool_models(const std::vector<channel::key<double
     for (const char* t : {"maya", "usd", "blender", "gltf"}) skipped[t] = *why;
     return out;
   }
-  // Maya: weighted fixed tangents, the tangent vector 3 x the handle (maya.hpp); Maya shortens
-  // handles whose time lengths add up to more than the interval.
+  // Maya: weighted fixed tangents, the tangent vector 3 x the handle (maya.hpp), which corrects
+  // regressive handles that pass the other key.
   try {
     channel::maya_curve<double> c;
     c.weighted = true;
@@ -85,7 +85,7 @@ inline std::vector<tool_model> tool_models(const std::vector<channel::key<double
       c.keys.push_back(m);
     }
     const channel::maya_evaluator<double> e = channel::maya_model(c);
-    out.push_back({"maya", "weighted fixed tangents; handles adding up to more than the interval shortened",
+    out.push_back({"maya", "weighted fixed tangents; regressive handles past the other key pulled back (AnimX)",
                    [e](double t) { return e.value(t); }});
   } catch (const std::exception& x) {
     skipped["maya"] = x.what();
