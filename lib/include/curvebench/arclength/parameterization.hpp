@@ -91,7 +91,10 @@ class parameterization {
     adaptive_options<Real> seg_opt = segment_lengths<Real>::default_options();
     seg_opt.gauss_points = opt_.newton.gauss_points;
     seg_opt.max_evaluations = std::min(seg_opt.max_evaluations, opt_.max_evaluations / 2);
-    segments_ = segment_lengths<Real>(curve_, seg_opt);
+    // The length prefix serves Newton's brackets; the table methods chain their nodes instead.
+    segments_ = segment_lengths<Real>(
+        curve_, seg_opt,
+        opt_.method == inversion_method::newton ? segment_lengths<Real>::newton_prefix_panels : std::size_t(0));
     if (!is_finite(segments_.length()))
       validate::fail("curve length = " + to_text(segments_.length()) +
                      ": not finite (the speed |P'| overflowed or is not a number somewhere on the curve); an "
@@ -210,7 +213,9 @@ class parameterization {
   /// The s-grid nodes u_j (size M + 1).
   [[nodiscard]] std::span<const Real> table_parameters() const { return nodes_u_; }
   /// Curve-derivative evaluations spent building segments and table.
-  [[nodiscard]] std::size_t construction_evaluations() const { return build_evaluations_ + segments_.total().evaluations; }
+  [[nodiscard]] std::size_t construction_evaluations() const {
+    return build_evaluations_ + segments_.total().evaluations + segments_.prefix_evaluations();
+  }
 
  private:
   struct cubic {
