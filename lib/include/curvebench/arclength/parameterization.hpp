@@ -518,26 +518,22 @@ class parameterization {
     for (std::size_t j = 0; j < m; ++j) {
       while (k < knots_.size() && !(knots_[k].s > ss[j] + gap)) ++k;
       Real s0 = ss[j], u0 = us[j], sp0 = sp[j];
-      piece* last = nullptr;  // the cell's last piece so far (cells[j] or in extra)
+      bool started = false;  // the cell's first piece is in cells
+      bool in_extra = false;  // the cell's last piece so far is extra[last_extra], not cells[j]
       std::size_t last_extra = 0;
-      bool in_extra = false;
-      auto append = [&](piece p) {
-        if (last == nullptr) {
+      auto append = [&](const piece& p) {
+        if (!started) {
           h.cells.push_back(p);
-        } else {
-          // chain: the previous piece ends where this one starts
-          if (in_extra) {
-            h.extra[last_extra].split = p.s0;
-            h.extra[last_extra].next = h.extra.size();
-          } else {
-            h.cells.back().split = p.s0;
-            h.cells.back().next = h.extra.size();
-          }
-          h.extra.push_back(p);
-          last_extra = h.extra.size() - 1;
-          in_extra = true;
+          started = true;
+          return;
         }
-        last = &h.cells.back();  // only its non-null state is used
+        // chain: the previous piece of the cell ends where this one starts
+        piece& prev = in_extra ? h.extra[last_extra] : h.cells.back();
+        prev.split = p.s0;
+        prev.next = h.extra.size();
+        h.extra.push_back(p);
+        last_extra = h.extra.size() - 1;
+        in_extra = true;
       };
       for (; k < knots_.size() && knots_[k].s < ss[j + 1] - gap; ++k) {
         append(make(s0, knots_[k].s, u0, knots_[k].u, sp0, knots_[k].speed_left));
