@@ -363,7 +363,8 @@ struct newton_options {
   int gauss_points{15};   ///< n of the inner G_n - K_{2n+1} pair for long steps (G15-K31: one panel
                           ///< is usually enough for half a polynomial segment)
   int max_depth{16};      ///< recursion cap of each inner adaptive integral
-  /// Inner integrals over less than 1/short_fraction of the bracket use detail::short_step_rule
+  /// Inner integrals over less than 1/short_fraction of the bracket's scale (its width, or the
+  /// segment's when the bracket is a sub-panel of the length prefix) use detail::short_step_rule
   /// (G7-K15, 15 evaluations instead of 31): near convergence the steps are tiny and 15 points are
   /// exact to rounding there. 0 disables.
   int short_fraction{32};
@@ -380,7 +381,7 @@ struct newton_options {
 namespace detail {
 
 /// The Gauss-Kronrod pair of every short arc-length step: Newton's steps shorter than
-/// 1/short_fraction of the bracket and the table polish of parameterization.hpp. G7-K15, because
+/// 1/short_fraction of the bracket's scale and the table polish of parameterization.hpp. G7-K15, because
 /// the |G - K| estimate of G3-K7 can be fooled by a feature narrower than the step that both rules
 /// miss alike (tests: arclength_honesty's Runge cases).
 template <class Real>
