@@ -33,10 +33,20 @@
 
 namespace curvebench::arclength {
 
+// speed() is forced inline into the quadrature loops that call it (left to its heuristics GCC
+// calls it out of line once per node, and the call costs as much as a cubic's derivative).
+#if defined(__GNUC__)
+#define CURVEBENCH_SPEED_INLINE [[gnu::always_inline]] inline
+#define CURVEBENCH_LAMBDA_INLINE __attribute__((always_inline))
+#else
+#define CURVEBENCH_SPEED_INLINE inline
+#define CURVEBENCH_LAMBDA_INLINE
+#endif
+
 /// |P'(u)|, the speed of the curve at u (one derivative evaluation), without overflow or underflow
 /// of the squares (safe_norm): finite for every finite P'(u).
 template <curve C>
-[[nodiscard]] typename C::real_type speed(const C& c, const typename C::real_type& u) {
+[[nodiscard]] CURVEBENCH_SPEED_INLINE typename C::real_type speed(const C& c, const typename C::real_type& u) {
   return safe_norm(typename C::point_type(c.derivative(u, 1)));
 }
 

@@ -1,22 +1,27 @@
 // Inversion of the arc length: u with s(u) = s*, by Newton's method inside a bracket.
 //
 // The segment lengths are computed once (segment_lengths: adaptive Gauss-Kronrod with estimates);
-// a query finds its segment by binary search on the cumulative lengths, the first bracket. The
-// first guess inverts a monotone cubic Hermite model of s(u) from the segment's end lengths and
-// speeds. Each iteration integrates from the nearest known point (a bracket end) by recursive
-// Gauss-Kronrod (G15-K31, or the G7-K15 short-step rule for steps under 1/32 of the bracket),
-// shrinks the bracket and steps u <- u - (s(u) - s*) / |P'(u)|, bisecting when the step leaves
-// the bracket or |P'| = 0. Stops when |s(u) - s*| + its error bound <= tolerance (converged), at
-// the iteration cap or the evaluation budget (cap_hit: the best iterate, its bound still reported)
-// or when the bracket cannot shrink in Real (rounding_limited). Every error bound (segment lengths,
-// |s(u) - s*|) includes the curve's own rounding over the stretch integrated, rounding_bound(c, 1)
-// |u - u_known| (length.hpp); a curve without a bound is solved all the same and its answers say
-// not_guaranteed (+inf).
+// a query finds its segment by binary search on the cumulative lengths, the first bracket. Optional
+// length prefix (this is a small table of s(u), not of u(s)): P equal sub-panels in u per segment,
+// each integrated once by adaptive Gauss-Kronrod with its estimate, so s and a bound of its error
+// are known at P - 1 interior points; the bracket is then the sub-panel holding s* (found in O(1)
+// expected from the constant-speed estimate). parameterization's newton method builds it with
+// P = 32; plain segment_lengths(c) does not. The first guess inverts a monotone cubic Hermite model
+// of s(u) from the bracket's end lengths and speeds. Each iteration integrates from the nearest
+// known point (a bracket end) by recursive Gauss-Kronrod (G15-K31, or the G7-K15 short-step rule
+// for steps under 1/32 of the segment), shrinks the bracket and steps u <- u - (s(u) - s*) / |P'(u)|,
+// bisecting when the step leaves the bracket or |P'| = 0. Stops when |s(u) - s*| + its error bound
+// <= tolerance (converged), at the iteration cap or the evaluation budget (cap_hit: the best
+// iterate, its bound still reported) or when the bracket cannot shrink in Real (rounding_limited).
+// Every error bound (segment lengths, prefix points, |s(u) - s*|) includes the curve's own rounding
+// over the stretch integrated, rounding_bound(c, 1) |u - u_known| (length.hpp); a curve without a
+// bound is solved all the same and its answers say not_guaranteed (+inf).
 // Sources: seed 002 (find u2 with arclength(u1, u2) = s); Guenter & Parent (1990); Eberly (2008).
-// Cost: O(log segments) + 32 evaluations per long and 16 per short iteration, typically one long
-// and two or three short, at most max_evaluations (2^16) per query; no allocation per query.
-// segment_lengths: at most adaptive_options::max_evaluations (2^24) over the whole curve, plus a
-// few per segment.
+// Cost: O(log segments) + 32 evaluations per long and 16 per short iteration; without the prefix
+// typically one long and two or three short, with it two short (one step and its check); at most
+// max_evaluations (2^16) per query; no allocation per query. segment_lengths: at most
+// adaptive_options::max_evaluations (2^24) over the whole curve, plus a few per segment; the
+// prefix at most as many again (P panels of 2n + 1 evaluations per smooth segment).
 // Accuracy: quadratic convergence in u where |P'| > 0; linear (bisection) where it vanishes.
 #pragma once
 
@@ -35,13 +40,32 @@
 
 namespace curvebench::arclength {
 
+namespace detail {
+template <class Real>
+[[noreturn]] void throw_outside_arc_length(const Real& s, const Real& length) {
+  throw std::domain_error("s = " + to_text(s) + " is outside the arc-length range [0, " + to_text(length) + "]");
+}
+}  // namespace detail
+
 /// Throws std::domain_error unless 0 <= s <= length (NaN fails too):
 /// "s = 2 is outside the arc-length range [0, 1.5]".
 template <class Real>
-void check_arc_length(const Real& s, const Real& length) {
-  if (s >= Real(0) && s <= length) return;
-  throw std::domain_error("s = " + to_text(s) + " is outside the arc-length range [0, " + to_text(length) + "]");
+inline void check_arc_length(const Real& s, const Real& length) {
+  if (s >= Real(0) && s <= length) [[likely]]
+    return;
+  detail::throw_outside_arc_length(s, length);  // out of line: the check inlines into every query
 }
+
+/// A bracket with known arc lengths at its ends (and their error bounds), and a first guess.
+template <class Real>
+struct newton_bracket {
+  Real u_lo, s_lo, s_lo_error;
+  Real u_hi, s_hi, s_hi_error;
+  Real guess;  ///< used when strictly inside (u_lo, u_hi); otherwise the linear guess in s
+  /// The width that short steps are measured against (newton_options::short_fraction): the
+  /// segment's when the bracket is a sub-panel of it; 0: the bracket's own width.
+  Real scale{0};
+};
 
 /// Cumulative lengths of a curve's segments (between consecutive breakpoints), computed once by
 /// adaptive Gauss-Kronrod with their error estimates. Copyable; holds no reference to the curve.
@@ -55,7 +79,18 @@ class segment_lengths {
   /// curve (cap_hit in total() when a segment ran out). Throws invalid_input for bad tolerances.
   template <curve C>
     requires std::same_as<typename C::real_type, Real>
-  explicit segment_lengths(const C& c, const adaptive_options<Real>& opt = default_options()) {
+  explicit segment_lengths(const C& c, const adaptive_options<Real>& opt = default_options())
+      : segment_lengths(c, opt, 0) {}
+
+  /// The same, with prefix_panels sub-panels per segment for the length prefix (0 or 1: none).
+  /// Throws invalid_input above max_prefix_panels.
+  template <curve C>
+    requires std::same_as<typename C::real_type, Real>
+  segment_lengths(const C& c, const adaptive_options<Real>& opt, std::size_t prefix_panels) {
+    if (prefix_panels > max_prefix_panels)
+      validate::fail("prefix_panels = " + std::to_string(prefix_panels) + ": must be <= " +
+                     std::to_string(max_prefix_panels));
+    prefix_panels_ = prefix_panels > 1 ? prefix_panels : 0;
     const std::span<const Real> bp = c.breakpoints();
     validate::count_at_least("breakpoints", bp.size(), 2, "a curve has at least one segment");
     params_.assign(bp.begin(), bp.end());
@@ -74,10 +109,10 @@ class segment_lengths {
     const std::size_t segments = bp.size() - 1;
     for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
       quadrature_result<Real> r;
+      std::vector<Real> ends;
       if (bp[i + 1] > bp[i]) {
         std::size_t extra = 0;
-        const std::vector<Real> ends =
-            detail::with_speed_minima(c, std::vector<Real>{bp[i], bp[i + 1]}, opt.speed_minimum_samples, extra);
+        ends = detail::with_speed_minima(c, std::vector<Real>{bp[i], bp[i + 1]}, opt.speed_minimum_samples, extra);
         adaptive_options<Real> seg_opt = opt;
         const std::size_t reserve = (segments - 1 - i) * least, spent = total_.evaluations + extra;
         seg_opt.max_evaluations = opt.max_evaluations > spent + reserve ? opt.max_evaluations - spent - reserve : 0;
@@ -103,7 +138,11 @@ class segment_lengths {
       start_speed_.push_back(w > Real(2) * d ? speed(c, Real(bp[i] + d)) : Real(0));
       end_speed_.push_back(w > Real(2) * d ? speed(c, Real(bp[i + 1] - d)) : Real(0));
       total_.evaluations += 2;
+      prefix_first_.push_back(prefix_u_.size());
+      if (prefix_panels_ > 0 && bp[i + 1] > bp[i] && r.value > Real(0) && is_finite(r.value))
+        add_prefix(c, opt, i, ends);
     }
+    prefix_first_.push_back(prefix_u_.size());
     total_.value = cumulative_.back();
     total_.error_estimate = cumulative_error_.back();
     if (!is_finite(rounding_bound(c, 1))) {
@@ -135,11 +174,83 @@ class segment_lengths {
   /// A first guess of u(s) in segment i from the monotone cubic Hermite model of s(u) with the
   /// segment's end lengths and end speeds (no curve evaluation).
   [[nodiscard]] Real guess(std::size_t i, const Real& s) const {
+    return hermite_guess(params_[i], params_[i + 1], cumulative_[i], cumulative_[i + 1], start_speed_[i],
+                         end_speed_[i], s, 8, Real(0));
+  }
+
+  /// The Newton bracket of s (0 <= s <= length()): the segment holding s, narrowed to the
+  /// sub-panel of the length prefix holding it when the segment has a prefix, with the arc lengths
+  /// and error bounds at its ends and the first guess of the Hermite model over it (no curve
+  /// evaluation). The bracket's scale is the segment's width.
+  [[nodiscard]] newton_bracket<Real> bracket(const Real& s) const {
+    const std::size_t i = segment_for_s(s);
+    const std::size_t first = prefix_first_.empty() ? 0 : prefix_first_[i];
+    const std::size_t n = prefix_first_.empty() ? 0 : prefix_first_[i + 1] - first;
+    const Real w = params_[i + 1] - params_[i];
+    if (n == 0)
+      return {params_[i], cumulative_[i], cumulative_error_[i], params_[i + 1], cumulative_[i + 1],
+              cumulative_error_[i + 1], guess(i, s), w};
+    // j = the number of prefix points with s_k <= s (upper bound), found from the estimate of a
+    // constant speed and corrected by steps: O(1) where the speed varies by a bounded factor.
+    const Real* ps = prefix_s_.data() + first;
+    const Real x = (s - cumulative_[i]) / (cumulative_[i + 1] - cumulative_[i]) * Real(static_cast<long long>(n + 1));
+    std::size_t j = x > Real(0) ? std::min(static_cast<std::size_t>(static_cast<long long>(x)), n) : 0;
+    while (j > 0 && ps[j - 1] > s) --j;
+    while (j < n && !(ps[j] > s)) ++j;
+    newton_bracket<Real> br;
+    if (j == 0) {
+      br.u_lo = params_[i], br.s_lo = cumulative_[i], br.s_lo_error = cumulative_error_[i];
+    } else {
+      br.u_lo = prefix_u_[first + j - 1], br.s_lo = ps[j - 1], br.s_lo_error = prefix_error_[first + j - 1];
+    }
+    if (j == n) {
+      br.u_hi = params_[i + 1], br.s_hi = cumulative_[i + 1], br.s_hi_error = cumulative_error_[i + 1];
+    } else {
+      br.u_hi = prefix_u_[first + j], br.s_hi = ps[j], br.s_hi_error = prefix_error_[first + j];
+    }
+    const Real sp0 = j == 0 ? start_speed_[i] : prefix_speed_[first + j - 1];
+    const Real sp1 = j == n ? end_speed_[i] : prefix_speed_[first + j];
+    // Within a sub-panel the model is close to linear: its Newton iteration converges in a few
+    // steps, stopped once the step is below eps^(1/3) of the sub-panel (what is left, ~ the step
+    // squared, eps^(2/3), is far below the model's own error there).
+    using std::cbrt;
+    br.guess = hermite_guess(br.u_lo, br.u_hi, br.s_lo, br.s_hi, sp0, sp1, s, 8, Real(cbrt(epsilon<Real>())));
+    br.scale = w;
+    return br;
+  }
+
+  /// Sub-panels per segment of the length prefix that parameterization's newton method builds:
+  /// the cubic Hermite model of s(u) over 1/32 of a segment puts the first guess within ~1e-7 of
+  /// the segment's length on smooth segments, so one Newton step and its check usually converge.
+  static constexpr std::size_t newton_prefix_panels = 32;
+  /// The most sub-panels per segment accepted.
+  static constexpr std::size_t max_prefix_panels = 1024;
+  /// Sub-panels per segment of the length prefix (0: none).
+  [[nodiscard]] std::size_t prefix_panels() const { return prefix_panels_; }
+  /// Curve-derivative evaluations spent on the length prefix (not part of total()).
+  [[nodiscard]] std::size_t prefix_evaluations() const { return prefix_evaluations_; }
+  /// The prefix points (u, s, bound of s) of segment i: empty when it has no prefix.
+  [[nodiscard]] std::span<const Real> prefix_parameters(std::size_t i) const { return prefix_of(prefix_u_, i); }
+  [[nodiscard]] std::span<const Real> prefix_lengths(std::size_t i) const { return prefix_of(prefix_s_, i); }
+  [[nodiscard]] std::span<const Real> prefix_errors(std::size_t i) const { return prefix_of(prefix_error_, i); }
+
+ private:
+  [[nodiscard]] std::span<const Real> prefix_of(const std::vector<Real>& v, std::size_t i) const {
+    if (i + 1 >= prefix_first_.size()) return {};
+    return std::span<const Real>(v).subspan(prefix_first_[i], prefix_first_[i + 1] - prefix_first_[i]);
+  }
+
+  // u in [u0, u1] where the monotone cubic Hermite model of s(u) from (u0, s0, speed sp0) to
+  // (u1, s1, sp1) reaches s, by at most `iterations` safeguarded Newton steps on the model, stopped
+  // early once a step in the model's variable t is below `stop`.
+  [[nodiscard]] static Real hermite_guess(const Real& u0, const Real& u1, const Real& s0, const Real& s1,
+                                          const Real& sp0, const Real& sp1, const Real& s, int iterations,
+                                          const Real& stop) {
+    using std::abs;
     using std::sqrt;
-    const Real u0 = params_[i], w = params_[i + 1] - params_[i];
-    const Real s0 = cumulative_[i], ds = cumulative_[i + 1] - cumulative_[i];
+    const Real w = u1 - u0, ds = s1 - s0;
     if (!(ds > Real(0))) return u0;
-    Real d0 = w * start_speed_[i], d1 = w * end_speed_[i];
+    Real d0 = w * sp0, d1 = w * sp1;
     const Real a = d0 / ds, b = d1 / ds, r2 = a * a + b * b;
     if (r2 > Real(9)) {  // Fritsch-Carlson: keep the model monotone
       const Real tau = Real(3) / sqrt(r2);
@@ -149,16 +260,24 @@ class segment_lengths {
     const Real c2 = Real(3) * ds - Real(2) * d0 - d1, c3 = d0 + d1 - Real(2) * ds;
     const Real target = s - s0;
     Real lo(0), hi(1), t = target / ds;
-    for (int it = 0; it < 8; ++it) {
+    for (int it = 0; it < iterations; ++it) {
       const Real h = ((c3 * t + c2) * t + d0) * t - target;
       const Real dh = (Real(3) * c3 * t + Real(2) * c2) * t + d0;
+      // Converged to rounding: a step below a few eps would land on the bracket end just set and
+      // the safeguard below would bisect away from the root (it did: the guess ended up to 5e-5
+      // of the bracket off after the remaining iterations bisected, instead of ~1e-7).
+      if (dh > Real(0) && abs(h) <= Real(4) * epsilon<Real>() * dh) break;
       if (h < Real(0)) lo = t; else hi = t;
       Real next = dh > Real(0) ? t - h / dh : (lo + hi) / Real(2);
       if (!(next > lo && next < hi)) next = (lo + hi) / Real(2);
+      const bool done = abs(next - t) <= stop;
       t = next;
+      if (done) break;
     }
     return u0 + t * w;
   }
+
+ public:
 
   /// The segment i with parameters[i] <= u <= parameters[i + 1].
   [[nodiscard]] std::size_t segment_for_u(const Real& u) const {
@@ -173,6 +292,64 @@ class segment_lengths {
   std::vector<Real> cumulative_error_;
   std::vector<Real> start_speed_, end_speed_;
   quadrature_result<Real> total_;
+  // The length prefix: interior points of each segment, prefix_first_[i] .. prefix_first_[i + 1] - 1.
+  std::size_t prefix_panels_{0}, prefix_evaluations_{0};
+  std::vector<std::size_t> prefix_first_;
+  std::vector<Real> prefix_u_, prefix_s_, prefix_error_, prefix_speed_;
+
+  // The prefix of segment i (its cumulative values already stored): prefix_panels_ equal
+  // sub-panels in u, each integrated by adaptive Gauss-Kronrod (split at the segment's speed minima
+  // and graded points `ends` inside it) to the segment's tolerance divided among them. s at each
+  // interior point is the segment start's value plus the sub-panels' sum; its bound is the start's
+  // bound, the sub-panels' estimates, the curve's rounding over [u_i, x] and the sums' rounding.
+  // All or nothing: a sub-panel that ran out of budget (cap_hit), has no bound, or does not leave
+  // the points strictly inside the segment's lengths leaves the segment without a prefix.
+  template <curve C>
+  void add_prefix(const C& c, const adaptive_options<Real>& opt, std::size_t i, const std::vector<Real>& ends) {
+    using std::abs;
+    using std::max;
+    const Real a = params_[i], b = params_[i + 1], w = b - a;
+    const Real s_start = cumulative_[i], s_end = cumulative_[i + 1];
+    const Real seg_len = s_end - s_start;
+    if (!(seg_len > Real(0))) return;
+    const Real m = Real(static_cast<long long>(prefix_panels_));
+    adaptive_options<Real> o = opt;
+    o.relative_tolerance = Real(0);
+    o.absolute_tolerance = max(Real(opt.relative_tolerance * seg_len), opt.absolute_tolerance) / m;
+    if (!(o.absolute_tolerance > Real(0))) return;
+    auto f = [&c](const Real& u) { return speed(c, u); };
+    std::vector<Real> us, ss, es, sp, splits;
+    Real s = s_start, quad_error(0), x0 = a;
+    std::size_t next_end = 1;  // ends[0] = a, ends.back() = b
+    for (std::size_t k = 1; k < prefix_panels_; ++k) {
+      const Real x1 = a + w * Real(static_cast<long long>(k)) / m;
+      if (!(x1 > x0 && x1 < b)) return;  // the segment is too narrow to hold the sub-panels in Real
+      splits.assign(1, x0);
+      for (; next_end + 1 < ends.size() && ends[next_end] < x1; ++next_end)
+        if (ends[next_end] > x0) splits.push_back(ends[next_end]);
+      splits.push_back(x1);
+      o.max_evaluations = opt.max_evaluations > prefix_evaluations_ ? opt.max_evaluations - prefix_evaluations_ : 0;
+      if (o.max_evaluations == 0) return;
+      const quadrature_result<Real> q = integrate_adaptive(f, std::span<const Real>(splits), o);
+      prefix_evaluations_ += q.evaluations + 1;
+      if (q.status == result_status::cap_hit || q.status == result_status::not_guaranteed) return;
+      if (!is_finite(q.error_estimate) || !(q.value > Real(0)) || !is_finite(q.value)) return;
+      s += q.value;
+      quad_error += q.error_estimate;
+      if (!(s < s_end)) return;
+      const Real ev = evaluation_error(c, a, x1);
+      us.push_back(x1);
+      ss.push_back(s);
+      es.push_back(cumulative_error_[i] + quad_error + (is_finite(ev) ? ev : Real(0)) +
+                   Real(static_cast<long long>(k + 4)) * epsilon<Real>() * abs(s));
+      sp.push_back(speed(c, x1));
+      x0 = x1;
+    }
+    prefix_u_.insert(prefix_u_.end(), us.begin(), us.end());
+    prefix_s_.insert(prefix_s_.end(), ss.begin(), ss.end());
+    prefix_error_.insert(prefix_error_.end(), es.begin(), es.end());
+    prefix_speed_.insert(prefix_speed_.end(), sp.begin(), sp.end());
+  }
 };
 
 /// Options of Newton inversion.
@@ -186,7 +363,8 @@ struct newton_options {
   int gauss_points{15};   ///< n of the inner G_n - K_{2n+1} pair for long steps (G15-K31: one panel
                           ///< is usually enough for half a polynomial segment)
   int max_depth{16};      ///< recursion cap of each inner adaptive integral
-  /// Inner integrals over less than 1/short_fraction of the bracket use detail::short_step_rule
+  /// Inner integrals over less than 1/short_fraction of the bracket's scale (its width, or the
+  /// segment's when the bracket is a sub-panel of the length prefix) use detail::short_step_rule
   /// (G7-K15, 15 evaluations instead of 31): near convergence the steps are tiny and 15 points are
   /// exact to rounding there. 0 disables.
   int short_fraction{32};
@@ -199,18 +377,11 @@ struct newton_options {
   std::size_t max_evaluations{std::size_t(1) << 16};
 };
 
-/// A bracket with known arc lengths at its ends (and their error bounds), and a first guess.
-template <class Real>
-struct newton_bracket {
-  Real u_lo, s_lo, s_lo_error;
-  Real u_hi, s_hi, s_hi_error;
-  Real guess;  ///< used when strictly inside (u_lo, u_hi); otherwise the linear guess in s
-};
 
 namespace detail {
 
 /// The Gauss-Kronrod pair of every short arc-length step: Newton's steps shorter than
-/// 1/short_fraction of the bracket and the table polish of parameterization.hpp. G7-K15, because
+/// 1/short_fraction of the bracket's scale and the table polish of parameterization.hpp. G7-K15, because
 /// the |G - K| estimate of G3-K7 can be fooled by a feature narrower than the step that both rules
 /// miss alike (tests: arclength_honesty's Runge cases).
 template <class Real>
@@ -241,8 +412,10 @@ template <curve C>
   using std::abs;
   const gauss_kronrod_rule<Real>& rule = gauss_kronrod<Real>(opt.gauss_points);
   const gauss_kronrod_rule<Real>& short_rule = detail::short_step_rule<Real>();
-  auto f = [&c](const Real& u) { return speed(c, u); };
-  const Real width = br.u_hi - br.u_lo;
+  // Inlined into the panels' loops (CURVEBENCH_LAMBDA_INLINE): out of line, each node's call waited
+  // on its square root before the next could start.
+  auto f = [&c](const Real& u) CURVEBENCH_LAMBDA_INLINE { return speed(c, u); };
+  const Real width = br.scale > Real(0) ? br.scale : Real(br.u_hi - br.u_lo);
   auto pick = [&](const Real& len) -> const gauss_kronrod_rule<Real>& {
     return opt.short_fraction > 0 && len * Real(opt.short_fraction) < width ? short_rule : rule;
   };
@@ -351,15 +524,9 @@ template <curve C>
 [[nodiscard]] inversion_result<typename C::real_type> newton_invert(
     const C& c, const segment_lengths<typename C::real_type>& segments, const typename C::real_type& s,
     const newton_options<typename C::real_type>& opt = {}) {
-  using Real = typename C::real_type;
   detail::check_newton_options(opt);
   check_arc_length(s, segments.length());
-  const std::size_t i = segments.segment_for_s(s);
-  const auto p = segments.parameters();
-  const auto cum = segments.cumulative();
-  const auto err = segments.cumulative_error();
-  const newton_bracket<Real> br{p[i], cum[i], err[i], p[i + 1], cum[i + 1], err[i + 1], segments.guess(i, s)};
-  return newton_invert(c, s, br, opt.relative_tolerance * segments.length(), opt);
+  return newton_invert(c, s, segments.bracket(s), opt.relative_tolerance * segments.length(), opt);
 }
 
 }  // namespace curvebench::arclength

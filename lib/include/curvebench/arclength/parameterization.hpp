@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <limits>
 #include <cstddef>
 #include <span>
 #include <stdexcept>
@@ -91,7 +92,10 @@ class parameterization {
     adaptive_options<Real> seg_opt = segment_lengths<Real>::default_options();
     seg_opt.gauss_points = opt_.newton.gauss_points;
     seg_opt.max_evaluations = std::min(seg_opt.max_evaluations, opt_.max_evaluations / 2);
-    segments_ = segment_lengths<Real>(curve_, seg_opt);
+    // The length prefix serves Newton's brackets; the table methods chain their nodes instead.
+    segments_ = segment_lengths<Real>(
+        curve_, seg_opt,
+        opt_.method == inversion_method::newton ? segment_lengths<Real>::newton_prefix_panels : std::size_t(0));
     if (!is_finite(segments_.length()))
       validate::fail("curve length = " + to_text(segments_.length()) +
                      ": not finite (the speed |P'| overflowed or is not a number somewhere on the curve); an "
@@ -210,7 +214,9 @@ class parameterization {
   /// The s-grid nodes u_j (size M + 1).
   [[nodiscard]] std::span<const Real> table_parameters() const { return nodes_u_; }
   /// Curve-derivative evaluations spent building segments and table.
-  [[nodiscard]] std::size_t construction_evaluations() const { return build_evaluations_ + segments_.total().evaluations; }
+  [[nodiscard]] std::size_t construction_evaluations() const {
+    return build_evaluations_ + segments_.total().evaluations + segments_.prefix_evaluations();
+  }
 
  private:
   struct cubic {
@@ -218,31 +224,36 @@ class parameterization {
     [[nodiscard]] Real eval(const Real& t) const { return c0 + t * (c1 + t * (c2 + t * c3)); }
   };
 
-  // One Hermite piece of u(s) on [s0, s0 + 1/inv_w]: u = c(t), t = (s - s0) inv_w.
-  struct piece {
+  // One Hermite piece of u(s) on [s0, s0 + 1/inv_w]: u = c(t), t = (s - s0) inv_w. `split` is the
+  // start of the next piece of the same cell (+inf for a cell's last piece), `next` its index in
+  // hermite_table::extra. 64 bytes in double: one cache line per query.
+  struct alignas(64) piece {
     Real s0, inv_w;
     cubic c;
+    Real split;
+    std::size_t next;
   };
   // A knot (interior breakpoint) at arc length s, parameter u, with the speeds just left and right
   // of it (they differ where the curve is only C0).
   struct knot {
     Real s, u, speed_left, speed_right;
   };
-  // The Hermite table: cell j owns pieces first[j] .. first[j + 1] - 1, one per cell unless the
-  // arc-length position of a knot falls inside the cell; then the cell is split there, so that no
-  // piece straddles a knot, where u(s) has a jump in u'' (C1 curves) or in u' (C0 curves).
+  // The Hermite table: cell j's first piece is cells[j], one per cell unless the arc-length
+  // position of a knot falls inside the cell; then the cell is split there, so that no piece
+  // straddles a knot, where u(s) has a jump in u'' (C1 curves) or in u' (C0 curves), and the
+  // further pieces are chained in `extra`. A query reads one record (O(1), no search) unless its
+  // cell is split.
   struct hermite_table {
-    std::vector<std::size_t> first;
-    std::vector<piece> pieces;
+    std::vector<piece> cells;
+    std::vector<piece> extra;
     [[nodiscard]] Real eval(const Real& s, std::size_t j) const {
-      std::size_t k = first[j];
-      const std::size_t end = first[j + 1];
-      while (k + 1 < end && !(s < pieces[k + 1].s0)) ++k;
-      const piece& p = pieces[k];
-      Real t = (s - p.s0) * p.inv_w;
+      const piece* p = &cells[j];
+      while (!(s < p->split)) [[unlikely]]
+        p = &extra[p->next];
+      Real t = (s - p->s0) * p->inv_w;
       if (t < Real(0)) t = Real(0);  // floor(s / ds) rounded up across a node
       if (t > Real(1)) t = Real(1);
-      return p.c.eval(t);
+      return p->c.eval(t);
     }
   };
 
@@ -266,8 +277,12 @@ class parameterization {
   }
 
   void require_length() const {
-    if (degenerate())
-      validate::fail("curve length = " + to_text(length()) +
+    if (degenerate()) [[unlikely]]
+      fail_degenerate();
+  }
+
+  [[noreturn]] void fail_degenerate() const {
+    validate::fail("curve length = " + to_text(length()) +
                      (length() == Real(0) ? std::string()
                                           : " is rounding noise (at most " + std::to_string(degenerate_length_eps) +
                                                 " eps of the curve's size " + to_text(size_) + ")") +
@@ -492,27 +507,42 @@ class parameterization {
                                            const std::vector<Real>& sp) const {
     const std::size_t m = us.size() - 1;
     const Real gap = Real(detail::knot_gap_eps) * epsilon<Real>() * length();
+    const Real none = std::numeric_limits<Real>::infinity();
     hermite_table h;
-    h.first.reserve(m + 1);
-    h.pieces.reserve(m + knots_.size());
-    auto add = [&h](const Real& s0, const Real& s1, const Real& u0, const Real& u1, const Real& sp0, const Real& sp1) {
+    h.cells.reserve(m);
+    auto make = [&](const Real& s0, const Real& s1, const Real& u0, const Real& u1, const Real& sp0, const Real& sp1) {
       const Real w = s1 - s0;
-      h.pieces.push_back({s0, Real(1) / w, hermite_cubic(u0, u1, sp0, sp1, w)});
+      return piece{s0, Real(1) / w, hermite_cubic(u0, u1, sp0, sp1, w), none, 0};
     };
     std::size_t k = 0;  // next knot
     for (std::size_t j = 0; j < m; ++j) {
-      h.first.push_back(h.pieces.size());
       while (k < knots_.size() && !(knots_[k].s > ss[j] + gap)) ++k;
       Real s0 = ss[j], u0 = us[j], sp0 = sp[j];
+      bool started = false;  // the cell's first piece is in cells
+      bool in_extra = false;  // the cell's last piece so far is extra[last_extra], not cells[j]
+      std::size_t last_extra = 0;
+      auto append = [&](const piece& p) {
+        if (!started) {
+          h.cells.push_back(p);
+          started = true;
+          return;
+        }
+        // chain: the previous piece of the cell ends where this one starts
+        piece& prev = in_extra ? h.extra[last_extra] : h.cells.back();
+        prev.split = p.s0;
+        prev.next = h.extra.size();
+        h.extra.push_back(p);
+        last_extra = h.extra.size() - 1;
+        in_extra = true;
+      };
       for (; k < knots_.size() && knots_[k].s < ss[j + 1] - gap; ++k) {
-        add(s0, knots_[k].s, u0, knots_[k].u, sp0, knots_[k].speed_left);
+        append(make(s0, knots_[k].s, u0, knots_[k].u, sp0, knots_[k].speed_left));
         s0 = knots_[k].s;
         u0 = knots_[k].u;
         sp0 = knots_[k].speed_right;
       }
-      add(s0, ss[j + 1], u0, us[j + 1], sp0, sp[j + 1]);
+      append(make(s0, ss[j + 1], u0, us[j + 1], sp0, sp[j + 1]));
     }
-    h.first.push_back(h.pieces.size());
     return h;
   }
 

@@ -46,14 +46,32 @@ template <class Real, int Dim>
 /// the scale is a power of two. Cost: one squaredNorm and two comparisons on the fast path.
 /// Accuracy: within (Dim/2 + 2) eps of |v| relative on both paths. inf or NaN in v give inf / NaN.
 template <class Real, int Dim>
-[[nodiscard]] Real safe_norm(const point<Real, Dim>& v) {
-  using std::abs;
+[[nodiscard]] Real safe_norm_scaled(const point<Real, Dim>& v);
+
+// The fast path of safe_norm is forced inline: it runs once per quadrature node, and GCC left it
+// out of line behind a call that cost as much as the square root.
+#if defined(__GNUC__)
+#define CURVEBENCH_NORM_INLINE [[gnu::always_inline]] inline
+#else
+#define CURVEBENCH_NORM_INLINE inline
+#endif
+
+template <class Real, int Dim>
+[[nodiscard]] CURVEBENCH_NORM_INLINE Real safe_norm(const point<Real, Dim>& v) {
   using std::sqrt;
   const Real s = v.squaredNorm();
   // Squares below min / eps may have lost bits in the subnormals; above max / 2^Dim they may be near inf.
   const Real lo = std::numeric_limits<Real>::min() / std::numeric_limits<Real>::epsilon();
   const Real hi = std::numeric_limits<Real>::max() / Real(16);
   if (s >= lo && s <= hi) return sqrt(s);
+  return safe_norm_scaled(v);  // out of line: the fast path above inlines into every speed
+}
+
+/// The scaled path of safe_norm (any v; used when v . v is not safely normal).
+template <class Real, int Dim>
+[[nodiscard]] Real safe_norm_scaled(const point<Real, Dim>& v) {
+  using std::abs;
+  using std::sqrt;
   Real m(0);
   for (int d = 0; d < Dim; ++d) {
     const Real a = abs(v[d]);

@@ -181,7 +181,21 @@ class piecewise_cubic {
     const lookup_record& r = lookup_[i];
     return horner(power_[i], (u - r.knot) / r.h);
   }
-  [[nodiscard]] point_type derivative(const Real& u, int order) const {
+  [[nodiscard]] CURVEBENCH_PC_HOT point_type derivative(const Real& u, int order) const {
+    // P'(u), the speed of every arc-length method, inline like operator(): the same operations as
+    // the general path (t by the division by h, the power-form derivative, the chain rule's
+    // fl(1 / h)), so the same rounding bound; where FMA is enabled (-march=native) the compiler
+    // may contract them differently in the two contexts, a difference of an ulp or so.
+    if (order == 1) {
+      if (!(lo_ <= u && u <= hi_)) out_of_domain(u);
+      const std::size_t i = locate(u);
+      const lookup_record& r = lookup_[i];
+      const Real t = (u - r.knot) / r.h;
+      const std::array<point_type, 4>& a = power_[i];
+      // inv_h_[i] is fl(1 / h_i), the chain rule's factor computed once: one division per call
+      // instead of two (the divider, shared with the speed's square root, is what limits it).
+      return point_type((a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]))) * inv_h_[i]);
+    }
     return evaluate(u, order, cubic_algorithm::power);
   }
 
@@ -294,6 +308,7 @@ class piecewise_cubic {
                            ") = " + to_text(basis_[i](r, c)) + ": basis matrix must be finite");
     }
     h_.resize(n);
+    inv_h_.resize(n);
     power_.resize(n);
     bezier_.resize(n);
     // 3 M_bezier^{-1}: Bezier points from power coefficients are b = M_bezier^{-1} a; the integer
@@ -302,6 +317,7 @@ class piecewise_cubic {
     const matrix_type binv3 = basis::detail::integer_matrix<Real>(bezier_inverse3, Real(1));
     for (std::size_t i = 0; i < n; ++i) {
       h_[i] = knots_[i + 1] - knots_[i];
+      inv_h_[i] = Real(1) / h_[i];
       const geometry_type a = basis_[i] * geometry_[i];
       const matrix_type c = (binv3 * basis_[i]) / Real(3);
       const geometry_type b = c * geometry_[i];
@@ -612,6 +628,7 @@ class piecewise_cubic {
   std::vector<geometry_type> geometry_;
   std::vector<matrix_type> basis_;
   std::vector<Real> h_;
+  std::vector<Real> inv_h_;  // fl(1 / h_i): the first derivative's chain-rule factor
   std::vector<std::array<point_type, 4>> power_;
   std::vector<std::array<point_type, 4>> bezier_;
   bool uniform_ = false;
