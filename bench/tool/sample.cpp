@@ -264,9 +264,10 @@ void sample(const io::field& spec, const sample_args& a) {
 void sample_rotation(const io::field& spec, const sample_args& a, const std::vector<parameter>& given) {
   const auto r = io::rotation_of_spec<double>(spec);
   const char* names[] = {"x", "y", "z", "w"};
+  const char* orders[] = {"", "d", "d2"};  // the column prefix of each derivative order
   std::cout << "t";
   for (int k = 0; k <= a.derivatives; ++k)
-    for (const char* n : names) std::cout << "," << (k == 0 ? "" : k == 1 ? "d" : "d2") << n;
+    for (const char* n : names) std::cout << "," << orders[k] << n;
   std::cout << "\n" << std::setprecision(17);
   progress shown("sample", given.size(), a.quiet);
   for (std::size_t i = 0; i < given.size(); ++i) {
@@ -274,16 +275,15 @@ void sample_rotation(const io::field& spec, const sample_args& a, const std::vec
     const double t = given[i].u;
     std::cout << t;
     for (int k = 0; k <= a.derivatives; ++k) {
+      const auto row = [&] { return spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): "; };
       point<double, 4> q;
       try {
         q = r.derivative(t, k);
       } catch (const std::domain_error& e) {  // a cubicspline quaternion that vanishes
-        throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): " + e.what());
+        throw invalid_input(row() + e.what());
       }
       for (int d = 0; d < 4; ++d) {
-        if (!std::isfinite(q[d]))
-          throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): " +
-                              (k == 0 ? "" : k == 1 ? "d" : "d2") + names[d] + " is " + to_text(q[d]));
+        if (!std::isfinite(q[d])) throw invalid_input(row() + orders[k] + names[d] + " is " + to_text(q[d]));
         std::cout << "," << q[d];
       }
     }
