@@ -144,6 +144,28 @@ def goal_line(records):
     return v, case, mono, accurate
 
 
+# The benchmark configurations the speed goal is judged on: (keys, calls, what they are).
+SPEED_CONFIGS = (("64", "single", "64 keys, random times"), ("64", "sorted", "64 keys, sorted times"),
+                 ("2", "single", "CSS ease"))
+
+
+def speed_goal(times, accurate):
+    """The speed half of the goal: [(configuration, curvebench ns, [(solver, ns, curvebench / solver)])]
+    in double for every configuration bench_channel timed, and whether curvebench is faster than
+    every accurate solver in all of them (None when a time is missing)."""
+    out, met = [], True
+    for keys, calls, what in SPEED_CONFIGS:
+        ours = times.get(("curvebench", keys, 64, calls))
+        theirs = [(s, times.get((s, keys, 64, calls))) for s in accurate]
+        if ours is None or any(ns is None for _, ns in theirs):
+            met = None if met is not False else met
+            continue
+        ratios = [(s, ns, ours / ns) for s, ns in theirs]
+        met = met if all(r < 1 for _, _, r in ratios) else False
+        out.append((what, ours, ratios))
+    return out, (met if out else None)
+
+
 def error_time_plot(records, times, plot_dir, plt, save):
     """Error vs time per solver (max over the corpus against ns per value on keys:64, single calls)."""
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
@@ -223,6 +245,16 @@ def channel_section(acc, bench_rows, plot_dir, plt, save):
                   f"(worst {case}), {mono:g} monotonicity violations: the goal (<= 4 ulps, none) is "
                   f"{'met' if ok else 'missed'}. Other solvers within 4 ulps on the whole corpus: "
                   f"{', '.join(accurate) if accurate else 'none'}.")
+        configs, fast = speed_goal(times, accurate)
+        if configs:
+            parts = [f"{what}: {lib.fmt(ours)} ns per value"
+                     + "".join(f", {s} {lib.fmt(ns)} (ratio {r:.2f})" for s, ns, r in ratios)
+                     for what, ours, ratios in configs]
+            verdict = {True: "faster than every other solver within 4 ulps: the speed goal is met",
+                       False: "not faster than every other solver within 4 ulps: the speed goal is missed",
+                       None: "some times are missing: the speed goal is not judged"}[fast]
+            md.append(f"Speed in double (bench_channel, same run; ratio curvebench / solver): {'; '.join(parts)}; "
+                      f"{verdict}.")
         md.append("")
     md.append(lib.table(["solver", "max value error, double", "worst case", "max RMS, double",
                          "max value error, float", "key error, double", "time residual, double",

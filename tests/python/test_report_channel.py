@@ -46,6 +46,22 @@ class ChannelSection(unittest.TestCase):
         self.assertEqual((v, case, mono), (3.5, "t", 0))
         self.assertEqual(accurate, ["exact"])  # closed_form's 17 ulps miss the 4-ulp goal
 
+    def test_speed_goal_compares_each_configuration_with_the_accurate_solvers(self):
+        t = {("curvebench", "64", 64, "single"): 70.0, ("exact", "64", 64, "single"): 80.0,
+             ("curvebench", "64", 64, "sorted"): 72.0, ("exact", "64", 64, "sorted"): 78.0,
+             ("curvebench", "2", 64, "single"): 71.0, ("exact", "2", 64, "single"): 85.0}
+        configs, met = rc.speed_goal(t, ["exact"])
+        self.assertTrue(met)
+        self.assertEqual([c[0] for c in configs], ["64 keys, random times", "64 keys, sorted times", "CSS ease"])
+        self.assertAlmostEqual(configs[0][2][0][2], 70.0 / 80.0)
+        t[("exact", "64", 64, "sorted")] = 71.0  # slower than exact in one configuration: missed
+        self.assertFalse(rc.speed_goal(t, ["exact"])[1])
+        del t[("exact", "2", 64, "single")]
+        self.assertFalse(rc.speed_goal(t, ["exact"])[1])  # a missing time does not hide a miss
+        t[("exact", "64", 64, "sorted")] = 78.0
+        self.assertIsNone(rc.speed_goal(t, ["exact"])[1])  # nor passes unjudged
+        self.assertIsNone(rc.speed_goal({}, ["exact"])[1])
+
     def test_solver_rows_join_the_benchmark_times(self):
         bench = [{"family": "channel_value", "algorithm": "curvebench", "ns_per_op": 70.0,
                   "args": [("keys", "64"), ("bits", "64"), ("calls", "single")]},
