@@ -105,7 +105,7 @@ for run in driver["runs"]:
     if not run.get("csv"):
         continue
     csv = os.path.join(work, run["csv"])
-    option = "--values" if run["kind"] == "values" else "--lengths"
+    option = {"values": "--values", "lengths": "--lengths", "inverse": "--inverse"}[run["kind"]]
     with open(csv + ".check.json", "w", encoding="utf-8") as out:
         subprocess.run([tool, "check", os.path.join(cases, run["case"] + ".json"), option, csv,
                         "--name", run["peer"], "--json", "--quiet"], stdout=out, check=True)

@@ -141,21 +141,25 @@ def eval_rows(records, peer_records):
     return rows
 
 
-def length_rows(records, peer_records):
+def length_rows(records, peer_records, quantity="length"):
     """[case, setting, peer, its error, estimate, bounded, evaluations, status (library's words),
-    curvebench's counterpart error, its evaluations, peer ns, ours ns, ours / peer] per length
-    peer record with a value (refused settings are listed by refusals); errors relative to the
-    reference length."""
+    curvebench's counterpart error, its evaluations, peer ns, ours ns, ours / peer] per peer record
+    of `quantity` ("length", or "u_of_s": the same columns) with a value (refused settings are
+    listed by refusals); errors relative to the reference length."""
     own = _own_index(records)
+    timed = _ns_of_counterparts(peer_records)
     rows = []
-    for r in sorted((r for r in peer_records if r["quantity"] == "length" and r.get("error") is not None),
+    for r in sorted((r for r in peer_records if r["quantity"] == quantity and r.get("error") is not None),
                     key=lambda r: (r["case"], r["method"], _tol(r) or 0)):
         c = _counterpart(r, own)
+        ours_ns = r.get("counterpart_ns_per_op")
+        if not isinstance(ours_ns, (int, float)) and r.get("counterpart"):  # a driver's peer: the runner's time
+            k = r["counterpart"]
+            ours_ns = timed.get((r["case"], quantity, k["method"], k.get("setting") or ""))
         rows.append([r["case"], r.get("setting") or "-", r["method"], r.get("error"), r.get("estimate"),
                      r.get("bounded"), r.get("evaluations"), r.get("peer_status") or r.get("status"),
                      c.get("error") if c else None, c.get("evaluations") if c else None,
-                     r.get("ns_per_op"), r.get("counterpart_ns_per_op"),
-                     _ratio(r.get("counterpart_ns_per_op"), r.get("ns_per_op"))])
+                     r.get("ns_per_op"), ours_ns, _ratio(ours_ns, r.get("ns_per_op"))])
     return rows
 
 
@@ -179,7 +183,7 @@ def findings(peer_records, own_records=()):
     for r in sorted(peer_records, key=_key):
         where = f"{r['method']} on {r['case']}" + (f" ({r['setting']})" if r.get("setting") else "")
         err, est, tol = r.get("error"), r.get("estimate"), _tol(r)
-        if r["quantity"] == "length" and tol is not None and isinstance(err, (int, float)):
+        if r["quantity"] in ("length", "u_of_s") and tol is not None and isinstance(err, (int, float)):
             if r.get("status") == "converged" and err > tol:
                 out.append(f"{where}: reported success, but its true relative error {lib.fmt(err)} is "
                            f"{lib.fmt(err / tol)} times the requested tolerance {lib.fmt(tol)}.")
@@ -310,6 +314,14 @@ def peers_section(acc, report_dir, bench_rows, vocab):
     md.append(lib.table(["case", "setting", "peer", "peer error", "peer estimate", "bounds?", "evals", "peer status",
                          "adaptive_gk error", "adaptive_gk evals", "peer ns", "curvebench ns", "curvebench / peer"], lr)
               if lr else "No arc-length peer records.")
+    md += ["", "### Arc-length inversion u(s)", "",
+           "The anchored |s(u) - s| / L of the peer's u over the sweep's targets (as curvebench's u(s) records), "
+           "the peer's own account of it / L and whether it bounds the error, integrand evaluations per query, "
+           "beside curvebench's Newton u(s) at the same relative tolerance; times per query.", ""]
+    ur = length_rows(records, peer_records, "u_of_s")
+    md.append(lib.table(["case", "setting", "peer", "peer error", "peer estimate", "bounds?", "evals", "peer status",
+                         "newton error", "newton evals", "peer ns", "curvebench ns", "curvebench / peer"], ur)
+              if ur else "No u(s) peer records.")
     hon = honesty_rows(peer_records)
     if hon:
         md += ["", "Do the peers' error estimates bound their errors?", ""]

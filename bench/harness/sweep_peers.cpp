@@ -17,6 +17,15 @@
 //           epsrel = each adaptive_gk tolerance of the sweep, a workspace of 1000 intervals. The
 //           estimate is the abserr GSL returns (relative to L), so "bounded" says whether it
 //           bounds the true error. GSL's own status is kept as "peer_status" (gsl_strerror).
+//   u_of_s  what arc-length code built on GSL does for u(s): the total length by qag first (the
+//           ends: s <= 0 gives the domain's start, s >= that length its end), then
+//           gsl_root_fsolver_brent on g(u) = s(u) - s over the domain, each s(u) a qag from the
+//           domain's start (GAUSS15, epsabs 0, epsrel = tol), stopping when |g(u)| <= tol L
+//           (gsl_root_test_residual) or after 100 iterations (cap_hit); tol = each Newton
+//           tolerance of the sweep, whose curvebench counterpart is Newton u(s) at the same tol.
+//           Error: the anchored |s(u) - s| / L of case_reference::ds, like curvebench's u(s)
+//           records; estimate: |g(u)| + the last qag's abserr, relative to L (what the two GSL
+//           calls say about |s(u) - s|).
 // Every peer record also carries the time per operation of the peer and of its curvebench
 // counterpart, measured back to back on the same thread (best of three batches; the runner's
 // other threads share the machine, so compare the ratio, not the absolute times), and the
@@ -26,11 +35,13 @@
 #include "harness/setting.hpp"
 
 #include "curvebench/arclength/length.hpp"
+#include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/io/family.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
+#include <gsl/gsl_roots.h>
 #include <gsl/gsl_spline.h>
 #include <gsl/gsl_version.h>
 
@@ -338,6 +349,130 @@ void gsl_length(const case_info& info, json& out, const any_curve<double, Dim>& 
   }
 }
 
+
+/// gsl_u_of_s's root function: g(u) = qag(speed, lo, u) - target, remembering the last point it
+/// was called at (Brent's root after an iteration is the point it evaluated last).
+template <int Dim>
+struct s_of_u_root {
+  speed_integrand<Dim>* speed;
+  gsl_integration_workspace* ws;
+  std::size_t limit;
+  double lo, tol, target;
+  double last_u = 0, last_g = 0, last_abserr = 0;
+  int worst_status = GSL_SUCCESS;
+  static double call(double u, void* self) {
+    auto* r = static_cast<s_of_u_root*>(self);
+    gsl_function F{&speed_integrand<Dim>::call, r->speed};
+    double s = 0, abserr = 0;
+    const int status = u > r->lo ? gsl_integration_qag(&F, r->lo, u, 0.0, r->tol, r->limit, GSL_INTEG_GAUSS15, r->ws,
+                                                       &s, &abserr)
+                                 : GSL_SUCCESS;
+    if (status != GSL_SUCCESS && r->worst_status == GSL_SUCCESS) r->worst_status = status;
+    r->last_u = u;
+    r->last_g = s - r->target;
+    r->last_abserr = abserr;
+    return r->last_g;
+  }
+};
+
+template <int Dim>
+void gsl_u_of_s(const case_info& info, json& out, const any_curve<double, Dim>& c, case_reference<Dim>& ref,
+                const sweep& w) {
+  constexpr std::size_t limit = 1000;
+  constexpr int max_iterations = 100;
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> ws(
+      gsl_integration_workspace_alloc(limit), gsl_integration_workspace_free);
+  const std::unique_ptr<gsl_root_fsolver, void (*)(gsl_root_fsolver*)> brent(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
+  if (!ws || !brent) throw std::bad_alloc();
+  const interval<double> d = c.domain();
+  const double L = ref.length();
+  std::vector<double> targets = sample_fractions(w.params);
+  for (double& t : targets) t = std::min(L * t, L);
+  namespace m = vocab::methods;
+  for (double tol : w.newton_tol) {
+    speed_integrand<Dim> speed{&c};
+    s_of_u_root<Dim> root{&speed, ws.get(), limit, d.lo, tol, 0.0};
+    gsl_function G{&s_of_u_root<Dim>::call, &root};
+    int status = GSL_SUCCESS;  // the first failure over the targets
+    bool capped = false;
+    double estimate = 0;  // max over the targets, relative to L
+    // The curve's length by qag, once: the targets at or beyond it map to the domain's end.
+    root.target = 0;
+    const double total = s_of_u_root<Dim>::call(d.hi, &root), total_abserr = root.last_abserr;
+    status = root.worst_status;
+    // One query: u with |s(u) - s| <= tol L by GSL's account, or the status of why not.
+    const auto solve = [&](double target) {
+      root.target = target;
+      root.worst_status = GSL_SUCCESS;
+      double u = d.hi, residual = 0, abserr = total_abserr;
+      if (!(target > 0)) {
+        u = d.lo;
+        abserr = 0;
+      } else if (target < total) {
+        int st = gsl_root_fsolver_set(brent.get(), &G, d.lo, d.hi);
+        int iter = 0;
+        while (st == GSL_SUCCESS) {
+          st = gsl_root_fsolver_iterate(brent.get());
+          u = gsl_root_fsolver_root(brent.get());
+          if (root.last_u != u) s_of_u_root<Dim>::call(u, &root);
+          residual = std::abs(root.last_g);
+          abserr = root.last_abserr;
+          if (st != GSL_SUCCESS || gsl_root_test_residual(root.last_g, tol * L) == GSL_SUCCESS) break;
+          if (++iter == max_iterations) {
+            capped = true;
+            break;
+          }
+        }
+        if (st != GSL_SUCCESS && status == GSL_SUCCESS) status = st;
+      } else {
+        residual = std::abs(total - target);
+      }
+      if (root.worst_status != GSL_SUCCESS && status == GSL_SUCCESS) status = root.worst_status;
+      estimate = std::max(estimate, (residual + abserr) / L);
+      return u;
+    };
+    double err = 0;
+    for (double target : targets) err = std::max(err, ref.ds(std::clamp(solve(target), d.lo, d.hi), target));
+    const double calls = static_cast<double>(speed.calls) / static_cast<double>(targets.size());
+    const std::string s = setting(m::newton, {{"tol", tol}});
+    peer_record r{&vocab::quantities::u_of_s,
+                  &vocab::peers::gsl_qag_brent,
+                  s,
+                  err,
+                  estimate,
+                  calls,
+                  status_name(capped && status == GSL_SUCCESS ? GSL_EMAXITER : status),
+                  capped && status == GSL_SUCCESS ? "gsl_root_fsolver_brent: 100 iterations without the residual test"
+                                                  : gsl_strerror(status),
+                  nan,
+                  std::string(m::newton.id),
+                  s,
+                  nan};
+    const double n = static_cast<double>(targets.size());
+    r.ns_per_op = ns_per_call([&] {
+                    for (double target : targets) {
+                      const double u = solve(target);
+                      asm volatile("" : : "g"(&u) : "memory");
+                    }
+                  }) /
+                  n;
+    arclength::parameterization_options<double> o;
+    o.method = arclength::inversion_method::newton;
+    o.newton.relative_tolerance = tol;
+    const arclength::parameterization<any_curve<double, Dim>> p(c, o);
+    r.counterpart_ns_per_op = ns_per_call([&] {
+                                for (double target : targets) {
+                                  const auto q = p.invert(std::min(target, p.length()), arclength::inversion_method::newton);
+                                  asm volatile("" : : "g"(&q) : "memory");
+                                }
+                              }) /
+                              n;
+    out.push_back(to_json(info, r));
+  }
+}
+
 }  // namespace
 
 std::string gsl_version() { return GSL_VERSION; }
@@ -349,6 +484,7 @@ json sweep_peers(const case_info& info, const any_curve<double, Dim>& c, case_re
   const io::field spec = io::root(info.spec, info.name);
   gsl_eval<Dim>(info, out, c, ref, w, spec);
   gsl_length<Dim>(info, out, c, ref, w);
+  gsl_u_of_s<Dim>(info, out, c, ref, w);
   return out;
 }
 

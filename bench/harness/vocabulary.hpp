@@ -187,6 +187,10 @@ inline constexpr peer gsl_qag{"peer_gsl_qag", "GSL",
 inline constexpr peer gsl_qags{"peer_gsl_qags", "GSL",
                                "gsl_integration_qags (21-point Gauss-Kronrod with epsilon-algorithm "
                                "extrapolation) of the speed over the whole domain"};
+inline constexpr peer gsl_qag_brent{"peer_gsl_qag_brent", "GSL",
+                                    "u(s): gsl_root_fsolver_brent on s(u) - s, each s(u) a gsl_integration_qag "
+                                    "(15-point Gauss-Kronrod) from the domain's start, epsrel = tol, until "
+                                    "|s(u) - s| <= tol L"};
 // SciPy (issue 15; optional: scripts/peers.sh runs scripts/peers/scipy_driver.py, curvebench check
 // measures it, the records come from reports/peers_scipy.json).
 inline constexpr peer scipy_cubic_spline{"peer_scipy_cubic_spline", "SciPy",
@@ -197,6 +201,9 @@ inline constexpr peer scipy_bspline{"peer_scipy_bspline", "SciPy", "scipy.interp
 inline constexpr peer scipy_quad{"peer_scipy_quad", "SciPy",
                                  "scipy.integrate.quad (QUADPACK qags) of the speed of SciPy's own spline, "
                                  "epsabs 0, epsrel = tol, limit 50"};
+inline constexpr peer scipy_quad_brentq{"peer_scipy_quad_brentq", "SciPy",
+                                        "u(s): scipy.optimize.brentq on s(u) - s, each s(u) a scipy.integrate.quad "
+                                        "from the domain's start (epsabs 0, epsrel = tol), xtol = tol x the domain"};
 // JavaScript easing evaluators (issue 15; optional: scripts/peers.sh runs
 // scripts/peers/easing_driver.mjs on the CSS cubic-bezier cases, npm versions pinned).
 inline constexpr peer bezier_easing_3{"peer_bezier_easing_3", "bezier-easing",
@@ -225,8 +232,8 @@ inline constexpr const peer* all_peers[] = {
     &peers::boost_tanh_sinh,   &peers::boost_catmull_rom,            &peers::boost_cubic_hermite,
     &peers::boost_cardinal_cubic_b_spline, &peers::eigen_spline_fixed_degree, &peers::eigen_spline_dynamic_degree,
     &peers::bisection_reintegration, &peers::gsl_cspline, &peers::gsl_cspline_periodic, &peers::gsl_akima,
-    &peers::gsl_steffen, &peers::gsl_qag, &peers::gsl_qags, &peers::scipy_cubic_spline,
-    &peers::scipy_make_interp_spline, &peers::scipy_bspline, &peers::scipy_quad, &peers::bezier_easing_3,
+    &peers::gsl_steffen, &peers::gsl_qag, &peers::gsl_qags, &peers::gsl_qag_brent, &peers::scipy_cubic_spline,
+    &peers::scipy_make_interp_spline, &peers::scipy_bspline, &peers::scipy_quad, &peers::scipy_quad_brentq, &peers::bezier_easing_3,
     &peers::bezier_easing_2, &peers::mapbox_unitbezier, &peers::d3_ease, &peers::chromium_waapi,
     &peers::blender_fcurve};
 

@@ -17,6 +17,11 @@ pair into records of the accuracy format with "peer": true (see report_peers.py)
            neval, status from quad's message (success: converged; the subdivision limit: cap_hit;
            roundoff: rounding_limited; other warnings: not_guaranteed), and a refused tolerance as
            a record without a value whose peer_status is the library's message
+  inverse  one u_of_s record per run (a tolerance): error = the check's worst |s(u) - s| / L,
+           estimate = the driver's own account (max over the targets of quad's residual plus its
+           abserr) / L, evaluations = speed evaluations per query, status from the warnings as
+           for lengths, counterpart curvebench's Newton u(s) at the same tolerance; a run brentq
+           or quad refused is a record without a value
 Errors name the file and the field.
 """
 import argparse
@@ -112,6 +117,31 @@ def lengths_records(run, check, library, group):
     return out
 
 
+def inverse_record(run, check, library, group):
+    """The u_of_s peer record of an inverse run (one tolerance)."""
+    r = {"case": run["case"], "group": group, "quantity": "u_of_s", "method": run["peer"],
+         "setting": run["setting"], "peer": True, "library": library, "counterpart": run["counterpart"]}
+    if "refused" in run:
+        r.update({"error": None, "estimate": None, "bounded": None, "evaluations": 0,
+                  "status": "not_guaranteed", "peer_status": run["refused"], "ns_per_op": None})
+        return r
+    checks = check.get("checks") if check else None
+    if not isinstance(checks, list) or len(checks) != 1 or checks[0].get("kind") != "inverse":
+        raise PeerResultError(f"{run['csv']}.check.json: expected one check of kind inverse")
+    recs = [x for x in checks[0].get("records", []) if x.get("quantity") == "u_of_s"]
+    length = checks[0].get("length")
+    if len(recs) != 1 or not isinstance(recs[0].get("error"), (int, float)):
+        raise PeerResultError(f"{run['csv']}.check.json: expected one u_of_s record with an error")
+    if not isinstance(length, (int, float)) or length <= 0:
+        raise PeerResultError(f"{run['csv']}.check.json: length {length!r} is not a positive number")
+    err = recs[0]["error"]
+    est = run["estimate_abs"] / length
+    r.update({"error": err, "estimate": est, "bounded": est >= err, "evaluations": run["evaluations_per_query"],
+              "status": quad_status(run["message"], run.get("warned", False)), "peer_status": run["message"],
+              "ns_per_op": run.get("ns_per_op")})
+    return r
+
+
 def assemble(driver, read_check, library_name="SciPy"):
     """The peers_<driver>.json document. read_check(csv) returns the check JSON of a CSV."""
     for key in ("driver", "versions", "runs"):
@@ -131,8 +161,10 @@ def assemble(driver, read_check, library_name="SciPy"):
             if check and check.get("records"):
                 group = check["records"][0].get("group", group)
             records += lengths_records(run, check, library, group)
+        elif run["kind"] == "inverse":
+            records.append(inverse_record(run, check, library, groups.get(run["case"], "")))
         else:
-            raise PeerResultError(f"driver output: run kind {run['kind']!r} is neither values nor lengths")
+            raise PeerResultError(f"driver output: run kind {run['kind']!r} is not values, lengths or inverse")
     return {"driver": driver["driver"], "versions": driver["versions"], "notes": driver.get("notes", []),
             "quick": driver.get("quick"), "peer_records": records}
 

@@ -19,6 +19,14 @@ Curves SciPy represents (one coordinate array per point, as the spec gives them)
                                      derivative of the spline above (CubicSpline / BSpline), at the
                                      accuracy runner's adaptive_gk tolerances; quad's other
                                      arguments at their defaults (limit=50), as users call it
+      peer_scipy_quad_brentq         u(s) as arc-length code built on SciPy computes it: the length
+                                     L by quad first, then brentq(s(u) - s, lo, hi) with each s(u)
+                                     a quad from lo (epsabs=0, epsrel=tol), xtol = tol (hi - lo)
+                                     (the tolerance scaled to the domain), at the accuracy runner's
+                                     Newton u(s) tolerances and its interior u(s) targets (the
+                                     fractions of harness/sweeps.hpp sample_fractions strictly
+                                     between 0 and 1, times SciPy's L); the s, u pairs go to
+                                     `curvebench check --inverse`
 PchipInterpolator has no curvebench spec type (curvebench's monotone cubic is a scalar helper of
 motion/, not a curve family), so no 50-digit reference: it is timed only, on the natural_cubic
 cases' x coordinates, and says so in the notes.
@@ -29,9 +37,10 @@ vectorised call over all the parameters (best of 5, divided by their number), si
 per point would measure the interpreter; per length from one quad call (best of 3).
 
 Output in DIR: <case>.<peer>.values.csv (u, x[, y[, z]], dx[, dy[, dz]]) and <case>.<peer>.lengths.csv
-(u0, u1, length; one row per tolerance, in the order of the run's "rows"), and scipy_driver.json:
+(u0, u1, length; one row per tolerance, in the order of the run's "rows"),
+<case>.peer_scipy_quad_brentq.tol=<tol>.inverse.csv (s, u) and scipy_driver.json:
 {"driver": "scipy", "versions": {...}, "notes": [...], "runs": [{"case", "spec", "peer", "kind":
-"values" | "lengths", "csv", "ns_per_op", "counterpart": {"method", "setting"}, "rows": [...]}]}.
+"values" | "lengths" | "inverse", "csv", "ns_per_op", "counterpart": {"method", "setting"}, "rows": [...]}]}.
 scripts/peers.sh measures each CSV with `curvebench check` and scripts/peers/peer_results.py
 joins the two into reports/peers_scipy.json.
 """
@@ -47,22 +56,29 @@ import warnings
 import numpy as np
 import scipy
 from scipy.integrate import IntegrationWarning, quad
+from scipy.optimize import brentq
 from scipy.interpolate import BSpline, CubicSpline, PchipInterpolator, make_interp_spline
 
 # The peer ids this driver writes (each declared in bench/harness/vocabulary.hpp).
-PEERS = ("peer_scipy_cubic_spline", "peer_scipy_make_interp_spline", "peer_scipy_bspline", "peer_scipy_quad")
+PEERS = ("peer_scipy_cubic_spline", "peer_scipy_make_interp_spline", "peer_scipy_bspline", "peer_scipy_quad",
+         "peer_scipy_quad_brentq")
 INV_PHI = 0.6180339887498949  # 1 / golden ratio, as harness/sweeps.hpp
 QUICK_TOLS = (1e-6, 1e-10, 1e-14)
 FULL_TOLS = (1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14)
+# u(s): the accuracy runner's Newton tolerances and target counts (harness/sweep.hpp).
+QUICK_INVERSE = ((1e-8, 1e-12), 9)
+FULL_INVERSE = ((1e-6, 1e-9, 1e-12, 1e-14), 33)
+BRENTQ_MAXITER = 100
+
+
+def sample_fractions(n):
+    """harness/sweeps.hpp sample_fractions: 0, 1 and frac(j / phi) in between."""
+    return [0.0 if j == 0 else 1.0 if j + 1 == n else math.fmod(j * INV_PHI, 1.0) for j in range(n)]
 
 
 def sample_parameters(lo, hi, n):
     """The accuracy runner's eval parameters (harness/sweeps.hpp), the same doubles."""
-    out = []
-    for j in range(n):
-        f = 0.0 if j == 0 else 1.0 if j + 1 == n else math.fmod(j * INV_PHI, 1.0)
-        out.append(hi if f == 1.0 else lo + (hi - lo) * f)
-    return np.array(out)
+    return np.array([hi if f == 1.0 else lo + (hi - lo) * f for f in sample_fractions(n)])
 
 
 def best_ns(fn, repeats):
@@ -129,7 +145,7 @@ def write_csv(path, header, rows):
             f.write(",".join(repr(float(v)) for v in r) + "\n")
 
 
-def run_case(name, spec, out_dir, n_params, tols, runs, notes):
+def run_case(name, spec, out_dir, n_params, tols, runs, notes, inverse=((), 0)):
     built, reason = curves(spec)
     if reason:
         notes.append(f"{name}: {reason}")
@@ -175,6 +191,53 @@ def run_case(name, spec, out_dir, n_params, tols, runs, notes):
         runs.append({"case": name, "peer": "peer_scipy_quad", "kind": "lengths",
                      "csv": os.path.basename(csv) if lengths else None, "rows": rows,
                      "counterpart": {"method": "adaptive_gk"}, "curve": peer})
+        for tol in inverse[0]:
+            runs.append(inverse_run(name, peer, dp, float(lo), float(hi), tol, inverse[1], out_dir))
+
+
+def inverse_run(name, curve_peer, dp, lo, hi, tol, n_targets, out_dir):
+    """u(s) by quad + brentq at tol (see the module's doc): one run, its CSV of (s, u)."""
+    calls = [0]
+
+    def speed(u):
+        calls[0] += 1
+        return float(np.linalg.norm(dp(u)))
+
+    def s_of(u):
+        return quad(speed, lo, u, epsabs=0, epsrel=tol, full_output=1) if u > lo else (0.0, 0.0, {"neval": 0})
+
+    def solve(s, total):
+        if not s > 0:
+            return lo
+        if s >= total:
+            return hi
+        return brentq(lambda u: s_of(u)[0] - s, lo, hi, xtol=tol * (hi - lo), maxiter=BRENTQ_MAXITER)
+
+    setting = f"tol={tol:g}"
+    run = {"case": name, "peer": "peer_scipy_quad_brentq", "kind": "inverse", "curve": curve_peer,
+           "setting": setting, "counterpart": {"method": "newton", "setting": setting}}
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", IntegrationWarning)
+        try:
+            total = s_of(hi)[0]
+            # The interior targets: the ends are u = lo and u = hi by definition, and s = L by SciPy's
+            # own L may lie beyond the true L, which `curvebench check` refuses.
+            targets = [total * f for f in sample_fractions(n_targets) if 0 < f < 1]
+            calls[0] = 0
+            us = [solve(s, total) for s in targets]
+            evals = calls[0] / len(targets)
+            # The user's own account of |s(u) - s|: the residual by quad plus quad's abserr.
+            estimate = max(abs(v - s) + e for s, (v, e) in zip(targets, (s_of(u)[:2] for u in us)))
+        except (ValueError, RuntimeError) as e:  # quad's refusals; brentq's maxiter
+            run.update({"csv": None, "refused": str(e).splitlines()[0]})
+            return run
+    csv = os.path.join(out_dir, f"{name}.peer_scipy_quad_brentq.{setting}.inverse.csv")
+    write_csv(csv, ["s", "u"], list(zip(targets, us)))
+    run.update({"csv": os.path.basename(csv), "total_length": total, "estimate_abs": estimate,
+                "evaluations_per_query": evals, "warned": bool(caught),
+                "message": str(caught[0].message).strip().splitlines()[0] if caught else "success",
+                "ns_per_op": best_ns(lambda: [solve(s, total) for s in targets], 1) / len(targets)})
+    return run
 
 
 def pchip_timing(specs, n_params):
@@ -200,6 +263,7 @@ def main():
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     n_params, tols = (65, QUICK_TOLS) if a.quick else (257, FULL_TOLS)
+    inverse = QUICK_INVERSE if a.quick else FULL_INVERSE
     specs = []
     for path in sorted(glob.glob(os.path.join(a.cases, "*.json"))):
         with open(path, encoding="utf-8") as f:
@@ -208,10 +272,12 @@ def main():
     for name, spec in specs:
         if spec.get("quick") is False and a.quick:
             continue
-        run_case(name, spec, a.out, n_params, tols, runs, notes)
+        run_case(name, spec, a.out, n_params, tols, runs, notes, inverse)
     notes += pchip_timing(specs, n_params)
     notes.append("quad is called as users call it: epsabs=0, epsrel=tol, limit=50 (its default), over the whole "
                  "domain without the breakpoints")
+    notes.append(f"u(s) by brentq over quad: xtol = tol x the domain's width, maxiter {BRENTQ_MAXITER}, its other "
+                 "arguments at their defaults; times per query include no length (L is computed once per tolerance)")
     doc = {"driver": "scipy", "quick": a.quick, "cases_dir": os.path.abspath(a.cases),
            "versions": {"SciPy": scipy.__version__, "NumPy": np.__version__,
                         "Python": sys.version.split()[0]},

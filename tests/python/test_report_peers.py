@@ -1,7 +1,8 @@
 """Unit tests of scripts/report_peers.py (REPORT.md's "Peers" section) on outputs recorded from real
 runs and checked into tests/data/peers/: accuracy_gsl.json is two cases of a quick accuracy run
-(`curvebench accuracy --quick` at d4b38f4 plus the derivative records, GSL 2.7.1), trimmed to
-the records the section joins. Run by ctest
+(`curvebench accuracy --quick --only natural_cubic`, GSL 2.7.1, with the u(s) peer), trimmed to
+the records the section joins; scipy/ is scripts/peers/scipy_driver.py --quick on the same two
+cases with the `curvebench check` output of each CSV. Run by ctest
 (report_py) with the other tests of tests/python."""
 import copy
 import importlib.util
@@ -107,11 +108,34 @@ class Joins(unittest.TestCase):
         self.assertFalse(any(r[1] == "tol=1e-14" for r in rows))
         self.assertTrue(rp.refusals(acc["peer_records"]))
 
+    def test_u_of_s_rows_pair_each_tolerance_with_newton_at_the_same_tolerance(self):
+        acc = load("accuracy_gsl.json")
+        rows = rp.length_rows(acc["records"], acc["peer_records"], "u_of_s")
+        own = {(r["case"], r["setting"]): r for r in acc["records"] if r["method"] == "newton"}
+        self.assertEqual(sorted((r[0], r[1]) for r in rows), sorted(own))
+        for case, setting, method, err, est, bounded, evals, status, own_err, own_evals, ns, ours_ns, ratio in rows:
+            self.assertEqual(method, "peer_gsl_qag_brent")
+            self.assertEqual(own_err, own[(case, setting)]["error"])
+            self.assertEqual(bounded, est >= err)
+            self.assertGreater(evals, own_evals)  # a quadrature per root-finding step
+            self.assertAlmostEqual(ratio, ours_ns / ns)
+
+    def test_recorded_u_of_s_finding(self):
+        # Recorded: Brent over qag at tol=1e-12 on natural_cubic_knot_ratio_1e4 reports success with
+        # its own account 8.2e-13 L while |s(u) - s| = 5.35e-9 L (qag from the domain's start
+        # steps over the 1e-4-wide segments, as it does for the whole length).
+        acc = load("accuracy_gsl.json")
+        f = rp.findings(acc["peer_records"])
+        hit = [x for x in f if x.startswith("peer_gsl_qag_brent on natural_cubic_knot_ratio_1e4 (tol=1e-12)")]
+        self.assertEqual(len(hit), 2, f)  # success beyond the tolerance, and an estimate that does not bound
+        self.assertTrue(any("reported success" in x for x in hit))
+        self.assertTrue(any("does not bound" in x for x in hit))
+
     def test_versions_from_the_runner_and_the_driver_files(self):
         acc = load("accuracy_gsl.json")
         rows = rp.version_rows(acc, [("/r/peers_scipy.json", {"driver": "scipy", "versions": {"SciPy": "1.10.1"},
                                                                "peer_records": [{}, {}]})])
-        self.assertEqual(rows[0], ["GSL 2.7.1", "accuracy runner (always)", 16])
+        self.assertEqual(rows[0], ["GSL 2.7.1", "accuracy runner (always)", 20])
         self.assertEqual(rows[1], ["SciPy 1.10.1", "peers_scipy.json (scripts/peers.sh)", 2])
         self.assertEqual(rp.missing_drivers([("p", {"driver": "scipy"}), ("q", {"driver": "chromium"}),
                                              ("r", {"driver": "penner"}), ("s", {"driver": "blender"})]),
@@ -151,8 +175,9 @@ class ScipyRecorded(unittest.TestCase):
         self.assertEqual(doc["driver"], "scipy")
         self.assertEqual(doc["versions"]["SciPy"], "1.10.1")
         recs = {(r["case"], r["method"], r["setting"]): r for r in doc["peer_records"]}
-        # Two value runs per case (points and first derivative each) and three quad tolerances.
-        self.assertEqual(len(doc["peer_records"]), 2 * (2 * 2 + 3))
+        # Two value runs per case (points and first derivative each), three quad tolerances and two
+        # u(s) tolerances.
+        self.assertEqual(len(doc["peer_records"]), 2 * (2 * 2 + 3 + 2))
         for r in doc["peer_records"]:
             self.assertTrue(r["peer"])
             self.assertNotIn("subject", r)
@@ -176,6 +201,37 @@ class ScipyRecorded(unittest.TestCase):
         refused = recs[("natural_cubic_knot_ratio_1e4", "tol=1e-14")]
         self.assertIsNone(refused["error"])
         self.assertIn("epsrel", refused["peer_status"])
+
+    def test_inverse_runs_become_u_of_s_records_beside_newton(self):
+        doc = scipy_doc()
+        recs = {(r["case"], r["setting"]): r for r in doc["peer_records"] if r["quantity"] == "u_of_s"}
+        self.assertEqual(sorted(recs), [(c, t) for c in ("natural_cubic_2d", "natural_cubic_knot_ratio_1e4")
+                                         for t in ("tol=1e-08", "tol=1e-12")])
+        run = next(r for r in load(os.path.join("scipy", "scipy_driver.json"))["runs"]
+                   if r["kind"] == "inverse" and r["case"] == "natural_cubic_2d" and r["setting"] == "tol=1e-12")
+        check = read_check(run["csv"])["checks"][0]
+        r = recs[("natural_cubic_2d", "tol=1e-12")]
+        self.assertEqual(r["method"], "peer_scipy_quad_brentq")
+        self.assertEqual(r["error"], check["records"][0]["error"])
+        self.assertAlmostEqual(r["estimate"], run["estimate_abs"] / check["length"])
+        self.assertEqual(r["bounded"], r["estimate"] >= r["error"])
+        self.assertEqual(r["counterpart"], {"method": "newton", "setting": "tol=1e-12"})
+        self.assertEqual(r["status"], "converged")
+        # The runner's GSL record of the same case and tolerance times curvebench's Newton: the row uses it.
+        acc = load("accuracy_gsl.json")
+        rows = rp.length_rows(acc["records"], acc["peer_records"] + doc["peer_records"], "u_of_s")
+        row = next(x for x in rows if x[:3] == ["natural_cubic_2d", "tol=1e-12", "peer_scipy_quad_brentq"])
+        gsl = next(x for x in acc["peer_records"] if x["quantity"] == "u_of_s" and x["case"] == "natural_cubic_2d"
+                   and x["setting"] == "tol=1e-12")
+        self.assertEqual(row[11], gsl["counterpart_ns_per_op"])
+        self.assertAlmostEqual(row[12], row[11] / row[10])
+
+    def test_an_inverse_check_of_another_kind_fails(self):
+        driver = load(os.path.join("scipy", "scipy_driver.json"))
+        wrong = read_check("natural_cubic_2d.peer_scipy_quad.lengths.csv")
+        with self.assertRaises(pr.PeerResultError) as e:
+            pr.assemble(driver, lambda csv: wrong if csv.endswith(".inverse.csv") else read_check(csv))
+        self.assertIn("expected one check of kind inverse", str(e.exception))
 
     def test_make_interp_spline_on_the_knot_ratio_case_is_a_finding(self):
         doc = scipy_doc()
@@ -367,13 +423,13 @@ class ReportWithAndWithoutPeers(unittest.TestCase):
     def test_with_peer_records(self):
         report = self.run_report(load("accuracy_gsl.json"))
         self.assertIn("## Peers: the libraries users would pick instead", report)
-        self.assertIn("| GSL 2.7.1 | accuracy runner (always) | 16 |", report)
+        self.assertIn("| GSL 2.7.1 | accuracy runner (always) | 20 |", report)
         self.assertIn("| natural_cubic_2d | peer_gsl_cspline | 0.438 | default | 0.343 |", report)
         self.assertIn("reported success, but its true relative error 5.35e-09", report)
 
     def test_with_the_scipy_driver_joined(self):
         report = self.run_report(load("accuracy_gsl.json"), [("peers_scipy.json", scipy_doc())])
-        self.assertIn("| SciPy 1.10.1, NumPy 1.24.2, Python 3.11.2 | peers_scipy.json (scripts/peers.sh) | 14 |", report)
+        self.assertIn("| SciPy 1.10.1, NumPy 1.24.2, Python 3.11.2 | peers_scipy.json (scripts/peers.sh) | 18 |", report)
         self.assertIn("Optional peers that did not run (no reports/peers_<driver>.json; run scripts/peers.sh): "
                       "real Blender F-curves", report)
         self.assertIn("### Real Blender F-curves\n\nNot run: no reports/peers_blender.json", report)
