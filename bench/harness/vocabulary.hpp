@@ -218,6 +218,10 @@ inline constexpr peer chromium_waapi{"peer_chromium_waapi", "Chromium",
 // cases' keys as F-curves, fcurve.evaluate at the query times.
 inline constexpr peer blender_fcurve{"peer_blender_fcurve", "Blender",
                                      "Blender (Debian, headless): fcurve.evaluate of an F-curve built from the keys"};
+// three.js (optional: scripts/peers/gltf_driver.mjs, npm version pinned): the glTF channel cases
+// loaded as GLBs by its GLTFLoader, evaluated by the animation track's interpolant (float32).
+inline constexpr peer three_gltf{"peer_three_gltf", "three",
+                                 "three 0.187.0: GLTFLoader's animation track, track.createInterpolant().evaluate(t)"};
 }  // namespace peers
 
 inline constexpr const peer* all_peers[] = {
@@ -228,7 +232,7 @@ inline constexpr const peer* all_peers[] = {
     &peers::gsl_steffen, &peers::gsl_qag, &peers::gsl_qags, &peers::scipy_cubic_spline,
     &peers::scipy_make_interp_spline, &peers::scipy_bspline, &peers::scipy_quad, &peers::bezier_easing_3,
     &peers::bezier_easing_2, &peers::mapbox_unitbezier, &peers::d3_ease, &peers::chromium_waapi,
-    &peers::blender_fcurve};
+    &peers::blender_fcurve,    &peers::three_gltf};
 
 /// What one item of a benchmark is: the unit of its time per operation.
 struct operation {
