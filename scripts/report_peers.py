@@ -292,7 +292,8 @@ def three_lines(peer_files):
     if data is None:
         return md + ["Not run: no reports/peers_three.json (scripts/peers.sh runs it when build-peers/node has three)."]
     rows = three_rows(data)
-    md += [f"The glTF channel cases written as GLBs (float32 accessors) and loaded by three {data['versions'].get('three', '?')}'s "
+    version = data.get("versions", {}).get("three", "?")
+    md += [f"The glTF channel cases written as GLBs (float32 accessors) and loaded by three {version}'s "
            "GLTFLoader, each track evaluated by its own interpolant (float32 results), against the glTF 2.0 sampler of "
            "the case's keys at 60 digits (clamped outside them). Error: a scalar's in eps(float32) x the largest "
            "|value|, a rotation's as the angle between the rotations (radians, and in eps(float32)); the same against "
@@ -300,7 +301,8 @@ def three_lines(peer_files):
            "curvebench's model (double; a scalar's absolute, a rotation's angle in radians)."
            + _three_finding(rows), ""]
     md.append(lib.table(["case", "interpolation", "three interpolant", "times", "max error (eps float32)",
-                         "max angle (rad)", "vs float32 keys (eps float32)", "max difference from curvebench model"], rows))
+                         "max angle (rad)", "vs float32 keys (eps float32)",
+                         "max difference from curvebench model"], rows))
     return md
 
 

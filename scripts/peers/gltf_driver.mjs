@@ -152,7 +152,8 @@ async function main() {
     }
     const gltf = await load(glbOf(s));
     const clip = gltf.animations[0];
-    if (!clip || clip.tracks.length !== 1) throw new Error(`${name}: the loader made ${clip ? clip.tracks.length : 0} tracks`);
+    if (!clip || clip.tracks.length !== 1)
+      throw new Error(`${name}: the loader made ${clip ? clip.tracks.length : 0} tracks, not 1`);
     const track = clip.tracks[0];
     const interpolant = track.createInterpolant();
     const ts = queryTimes(s.times[0], s.times[s.times.length - 1], s.times, a.quick ? 65 : 257);
@@ -162,8 +163,8 @@ async function main() {
                 times: ts, values, ns_per_op: bestNs(interpolant, ts) });
   }
   const pkg = JSON.parse(fs.readFileSync(path.join("node_modules", "three", "package.json"), "utf8"));
-  const doc = { driver: "three", quick: a.quick, versions: { three: pkg.version, Node: process.version.replace(/^v/, "") },
-                notes, runs };
+  const versions = { three: pkg.version, Node: process.version.replace(/^v/, "") };
+  const doc = { driver: "three", quick: a.quick, versions, notes, runs };
   fs.writeFileSync(a.out + ".tmp", JSON.stringify(doc, null, 1));
   fs.renameSync(a.out + ".tmp", a.out);
   console.log(`gltf_driver: ${runs.length} glTF cases through three ${pkg.version}'s GLTFLoader -> ${a.out}`);

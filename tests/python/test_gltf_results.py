@@ -5,7 +5,6 @@ the same times beside it: <case>.model.csv) joined into the figures REPORT.md sh
 import copy
 import importlib.util
 import json
-import math
 import os
 import sys
 import unittest
