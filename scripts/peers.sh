@@ -18,7 +18,11 @@
 # beside curvebench's Blender model of the same equations; real Blender when `blender` is on PATH
 # (never installed here: Debian's blender is about 770 MB): scripts/peers/blender_channels.py turns
 # the channel cases an F-curve can hold into a request for scripts/peers/blender_fcurves.py, run
-# by `blender -b`, and compares Blender's values with curvebench's Blender model and the exact keys.
+# by `blender -b`, and compares Blender's values with curvebench's Blender model and the exact keys;
+# scripts/peers/gltf_driver.mjs (Node: three 0.187.0, pinned in the same package.json) loads each
+# glTF channel case as a GLB through three's GLTFLoader and evaluates the track's interpolant
+# (float32 keys and results), measured by scripts/peers/gltf_results.py against the glTF 2.0
+# sampler of the case's keys at 60 digits, beside curvebench's gltf model (`curvebench sample`).
 # Each driver's values are measured by `curvebench check` against the 50-digit reference of the
 # case's spec (scripts/peers/peer_results.py joins them), so the truth is never a double
 # evaluation of curvebench's own code. The tool is $CURVEBENCH_TOOL, or build-bench's (built here
@@ -158,6 +162,17 @@ run_blender() {
                    --blender "$work/blender.json" --model-dir "$work/model" --out "$reports/peers_blender.json"
 }
 
+run_three() {
+  local work="$reports/peers/three"
+  rm -f "$reports/peers_three.json"
+  rm -rf "$work"
+  mkdir -p "$work"
+  cp "$root/scripts/peers/gltf_driver.mjs" "$node_dir/gltf_driver.mjs"
+  (cd "$node_dir" && node gltf_driver.mjs --cases "$root/bench/cases" --out "$work/three_driver.json" "${quick_args[@]}")
+  /usr/bin/python3 "$root/scripts/peers/gltf_results.py" --driver "$work/three_driver.json" --cases "$root/bench/cases" \
+                   --tool "$tool" --work "$work/model" --out "$reports/peers_three.json"
+}
+
 run_chromium() {
   local work="$reports/peers/chromium"
   rm -f "$reports/peers_chromium.json"
@@ -198,6 +213,15 @@ if command -v node >/dev/null && [[ -d "$node_dir/node_modules/d3-ease" ]] &&
 else
   echo "peers.sh: d3-ease is not installed (node, build-peers/node, python3-mpmath); skipped" >&2
   rm -f "$reports/peers_penner.json"
+fi
+if command -v node >/dev/null && [[ -d "$node_dir/node_modules/three" ]] &&
+   /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
+  echo "peers.sh: three.js glTF interpolants (Node $(node --version))"
+  run_three
+  ran=$((ran + 1))
+else
+  echo "peers.sh: three is not installed (node, build-peers/node, python3-mpmath); skipped" >&2
+  rm -f "$reports/peers_three.json"
 fi
 if command -v blender >/dev/null && /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
   echo "peers.sh: real Blender ($(blender --version 2>/dev/null | head -n 1))"

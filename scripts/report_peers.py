@@ -37,7 +37,8 @@ OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
                     "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)",
                     "chromium": "headless Chromium, CSS easing through the Web Animations API (scripts/peers/chromium_driver.py)",
                     "penner": "d3-ease's Penner easings (scripts/peers/penner_driver.mjs)",
-                    "blender": "real Blender F-curves (scripts/peers/blender_channels.py; needs blender on PATH)"}
+                    "blender": "real Blender F-curves (scripts/peers/blender_channels.py; needs blender on PATH)",
+                    "three": "three.js's glTF interpolants (scripts/peers/gltf_driver.mjs)"}
 
 
 def load_peer_files(report_dir):
@@ -273,6 +274,57 @@ def blender_lines(peer_files):
     return md
 
 
+# three evaluates from the float32 keys it holds into a float32 result: an error within one
+# eps(float32) of the truth of those keys is the result's rounding plus a few double roundings.
+THREE_STORAGE_ONLY = 1.0
+
+
+def three_rows(data):
+    """[case, interpolation, three's interpolant, times, max error vs truth in eps(float32), in
+    radians (rotations; None for a scalar), vs the truth of the float32 keys in eps(float32), max
+    |three - curvebench model|] per case of a peers_three.json (scripts/peers/gltf_results.py)."""
+    return [[c["case"] + (" (rotation)" if c.get("path") == "rotation" else ""), c.get("interpolation"),
+             c.get("interpolant"), c.get("times"), c.get("error_eps32"), c.get("max_angle_rad"),
+             c.get("vs_float32_keys_eps32"), c.get("vs_model")] for c in data.get("cases", [])]
+
+
+def three_lines(peer_files):
+    """The "three.js glTF interpolants" subsection: per glTF case, three's values against the glTF
+    2.0 sampler at 60 digits and against curvebench's gltf model; "not run" without the file."""
+    md = ["", "### three.js glTF interpolants", ""]
+    data = next((d for _, d in peer_files if d.get("driver") == "three"), None)
+    if data is None:
+        return md + ["Not run: no reports/peers_three.json (scripts/peers.sh runs it when build-peers/node has three)."]
+    rows = three_rows(data)
+    version = data.get("versions", {}).get("three", "?")
+    md += [f"The glTF channel cases written as GLBs (float32 accessors) and loaded by three {version}'s "
+           "GLTFLoader, each track evaluated by its own interpolant (float32 results), against the glTF 2.0 sampler of "
+           "the case's keys at 60 digits (clamped outside them). Error: a scalar's in eps(float32) x the largest "
+           "|value|, a rotation's as the angle between the rotations (radians, and in eps(float32)); the same against "
+           "the truth of the keys rounded to float32 separates evaluation from storage; the difference from "
+           "curvebench's model (double; a scalar's absolute, a rotation's angle in radians)."
+           + _three_finding(rows), ""]
+    md.append(lib.table(["case", "interpolation", "three interpolant", "times", "max error (eps float32)",
+                         "max angle (rad)", "vs float32 keys (eps float32)",
+                         "max difference from curvebench model"], rows))
+    return md
+
+
+def _three_finding(rows):
+    """The run's largest errors in one sentence, with what they show when the evaluation from the
+    float32 keys three holds stays within THREE_STORAGE_ONLY eps(float32); "" without figures."""
+    errs = [(r[4], r[6]) for r in rows]
+    if not errs or any(not isinstance(e, (int, float)) or not isinstance(k, (int, float)) for e, k in errs):
+        return ""
+    worst, worst32 = max(e for e, _ in errs), max(k for _, k in errs)
+    text = (f" In this run the largest error is {lib.fmt(worst)} eps(float32) against the keys as written and "
+            f"{lib.fmt(worst32)} against the keys rounded to float32")
+    if worst32 <= THREE_STORAGE_ONLY:
+        return text + (": three's interpolants are the specification's sampler up to float32 storage of the keys "
+                       "and of the result.")
+    return text + "."
+
+
 def peers_section(acc, report_dir, bench_rows, vocab):
     """The markdown lines of the "Peers" section."""
     md = ["", "## Peers: the libraries users would pick instead", ""]
@@ -335,6 +387,7 @@ def peers_section(acc, report_dir, bench_rows, vocab):
                              "curvebench / peer"], sp))
 
     md += blender_lines(peer_files)
+    md += three_lines(peer_files)
 
     md += ["", "### Findings: where a peer does less than its documentation says or the same data allow", ""]
     fs = findings(peer_records, records)

@@ -225,17 +225,21 @@ inline constexpr peer chromium_waapi{"peer_chromium_waapi", "Chromium",
 // cases' keys as F-curves, fcurve.evaluate at the query times.
 inline constexpr peer blender_fcurve{"peer_blender_fcurve", "Blender",
                                      "Blender (Debian, headless): fcurve.evaluate of an F-curve built from the keys"};
+// three.js (optional: scripts/peers/gltf_driver.mjs, npm version pinned): the glTF channel cases
+// loaded as GLBs by its GLTFLoader, evaluated by the animation track's interpolant (float32).
+inline constexpr peer three_gltf{"peer_three_gltf", "three",
+                                 "three 0.187.0: GLTFLoader's animation track, track.createInterpolant().evaluate(t)"};
 }  // namespace peers
 
 inline constexpr const peer* all_peers[] = {
-    &peers::boost_gauss,       &peers::boost_gauss_kronrod15,        &peers::boost_gauss_kronrod31,
-    &peers::boost_tanh_sinh,   &peers::boost_catmull_rom,            &peers::boost_cubic_hermite,
-    &peers::boost_cardinal_cubic_b_spline, &peers::eigen_spline_fixed_degree, &peers::eigen_spline_dynamic_degree,
-    &peers::bisection_reintegration, &peers::gsl_cspline, &peers::gsl_cspline_periodic, &peers::gsl_akima,
-    &peers::gsl_steffen, &peers::gsl_qag, &peers::gsl_qags, &peers::gsl_qag_brent, &peers::scipy_cubic_spline,
-    &peers::scipy_make_interp_spline, &peers::scipy_bspline, &peers::scipy_quad, &peers::scipy_quad_brentq, &peers::bezier_easing_3,
+    &peers::boost_gauss, &peers::boost_gauss_kronrod15, &peers::boost_gauss_kronrod31, &peers::boost_tanh_sinh,
+    &peers::boost_catmull_rom, &peers::boost_cubic_hermite, &peers::boost_cardinal_cubic_b_spline,
+    &peers::eigen_spline_fixed_degree, &peers::eigen_spline_dynamic_degree, &peers::bisection_reintegration,
+    &peers::gsl_cspline, &peers::gsl_cspline_periodic, &peers::gsl_akima, &peers::gsl_steffen, &peers::gsl_qag,
+    &peers::gsl_qags, &peers::gsl_qag_brent, &peers::scipy_cubic_spline, &peers::scipy_make_interp_spline,
+    &peers::scipy_bspline, &peers::scipy_quad, &peers::scipy_quad_brentq, &peers::bezier_easing_3,
     &peers::bezier_easing_2, &peers::mapbox_unitbezier, &peers::d3_ease, &peers::chromium_waapi,
-    &peers::blender_fcurve};
+    &peers::blender_fcurve, &peers::three_gltf};
 
 /// What one item of a benchmark is: the unit of its time per operation.
 struct operation {

@@ -138,8 +138,11 @@ class Joins(unittest.TestCase):
         self.assertEqual(rows[0], ["GSL 2.7.1", "accuracy runner (always)", 20])
         self.assertEqual(rows[1], ["SciPy 1.10.1", "peers_scipy.json (scripts/peers.sh)", 2])
         self.assertEqual(rp.missing_drivers([("p", {"driver": "scipy"}), ("q", {"driver": "chromium"}),
-                                             ("r", {"driver": "penner"}), ("s", {"driver": "blender"})]),
+                                             ("r", {"driver": "penner"}), ("s", {"driver": "blender"}),
+                                             ("t", {"driver": "three"})]),
                          ["bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)"])
+        self.assertIn("three.js's glTF interpolants (scripts/peers/gltf_driver.mjs)",
+                      rp.missing_drivers([("p", {"driver": "scipy"})]))
 
     def test_malformed_peer_file_names_the_file(self):
         d = tempfile.mkdtemp()
@@ -433,9 +436,41 @@ class ReportWithAndWithoutPeers(unittest.TestCase):
         self.assertIn("Optional peers that did not run (no reports/peers_<driver>.json; run scripts/peers.sh): "
                       "real Blender F-curves", report)
         self.assertIn("### Real Blender F-curves\n\nNot run: no reports/peers_blender.json", report)
+        self.assertIn("### three.js glTF interpolants\n\nNot run: no reports/peers_three.json", report)
         self.assertIn("bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs), ", report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | peer_scipy_make_interp_spline | 661 | default | 0.813 |", report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | tol=1e-10 | peer_scipy_quad | 5.35e-09 |", report)
+
+    @unittest.skipUnless(importlib.util.find_spec("mpmath"), "the glTF truth needs python3-mpmath")
+    def test_with_the_three_driver_joined(self):
+        # The recorded three.js run (tests/data/peers/three, see test_gltf_results.py) measured and
+        # rendered by report.py: the table with its figures, and a changed value changes it.
+        import gltf_results as gr
+        three = os.path.join(DATA, "three")
+        with open(os.path.join(three, "three_driver.json"), encoding="utf-8") as f:
+            driver = json.load(f)
+        specs = {}
+        for run in driver["runs"]:
+            with open(os.path.join(HERE, "..", "..", "bench", "cases", run["case"] + ".json"), encoding="utf-8") as f:
+                specs[run["case"]] = json.load(f)
+
+        def model(run, spec):
+            return gr.read_sample(os.path.join(three, run["case"] + ".model.csv"), run["times"],
+                                  spec.get("path") == "rotation")
+        doc = gr.assemble(driver, specs, model)
+        report = self.run_report(load("accuracy_gsl.json"), [("peers_three.json", doc)])
+        self.assertIn("| three 0.187.0, Node 20.20.2 | peers_three.json (scripts/peers.sh) | 4 |", report)
+        step = next(c for c in doc["cases"] if c["case"] == "gltf_rotation_step")
+        self.assertIn(f"| gltf_rotation_step (rotation) | step | DiscreteInterpolant | {step['times']} | "
+                      f"{rp.lib.fmt(step['error_eps32'])} | {rp.lib.fmt(step['max_angle_rad'])} | 0 | "
+                      f"{rp.lib.fmt(step['vs_model'])} |", report)
+        self.assertNotIn("three.js's glTF interpolants (scripts/peers/gltf_driver.mjs)", report)  # it ran
+        run = next(r for r in driver["runs"] if r["case"] == "gltf_rotation_step")
+        run["values"][-1] = [0.0, 0.0, 0.0, 1.0]  # after the end: the identity instead of the last key
+        changed = self.run_report(load("accuracy_gsl.json"), [("peers_three.json", gr.assemble(driver, specs, model))])
+        self.assertNotIn(f"| gltf_rotation_step (rotation) | step | DiscreteInterpolant | {step['times']} | "
+                         f"{rp.lib.fmt(step['error_eps32'])} |", changed)
+        self.assertIn("| gltf_rotation_step (rotation) | step | DiscreteInterpolant |", changed)
 
     def test_without_peer_records(self):
         acc = copy.deepcopy(load("accuracy_gsl.json"))
