@@ -5,6 +5,7 @@
 #include "harness/order_fit.hpp"
 #include "harness/pool.hpp"
 #include "harness/setting.hpp"
+#include "harness/sweep.hpp"
 #include "harness/vocabulary.hpp"
 #include "harness/vocabulary_json.hpp"
 #include "harness/writers.hpp"
@@ -180,6 +181,43 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
   EXPECT_LE(record("u_of_s", "newton", "tol=1e-12")["error"].get<double>(), newton_1e12_max);
   EXPECT_TRUE(record("length", "composite_gauss", "n=3,panels=4").is_object());
   EXPECT_EQ(out["case"]["family"], "bezier");
+}
+
+// GSL's u(s) by Brent over qag (harness/sweep_peers.cpp): one record per Newton tolerance of the
+// full sweep, paired with curvebench's Newton at that tolerance; a tolerance qag refuses (1e-14 with
+// epsabs 0: below its 50 eps floor) is a record without a value that says why, never a u measured
+// from an integral GSL did not compute.
+TEST(run_case, gsl_u_of_s_records_pair_newton_and_keep_refusals_valueless) {
+  const case_dir dir("gsl_u_of_s");
+  dir.add("arch", arch);
+  const auto cases = curvebench::harness::load_cases(dir.path.string());
+  ASSERT_EQ(cases.size(), 1u);
+  const json out = curvebench::harness::run_case(cases[0], false);
+  std::map<std::string, json> by_setting;
+  for (const auto& r : out["peer_records"])
+    if (r["quantity"] == "u_of_s") by_setting[r["setting"].get<std::string>()] = r;
+  ASSERT_EQ(by_setting.size(), curvebench::harness::settings(false).newton_tol.size());
+  for (const auto& [setting, r] : by_setting) {
+    SCOPED_TRACE(setting);
+    EXPECT_EQ(r["method"], hv::peers::gsl_qag_brent.id);
+    EXPECT_EQ(r["counterpart"]["method"], hv::methods::newton.id);
+    EXPECT_EQ(r["counterpart"]["setting"], setting);
+    if (setting == "tol=1e-14") {
+      EXPECT_TRUE(r["error"].is_null());
+      EXPECT_TRUE(r["estimate"].is_null());
+      EXPECT_EQ(r["status"], "not_guaranteed");
+      EXPECT_THAT(r["peer_status"].get<std::string>(), ::testing::HasSubstr("tolerance"));
+      continue;
+    }
+    // A smooth one-segment arch: qag is accurate to its tolerance, so Brent's answer is too (x4:
+    // the residual test and qag's error add; the anchored reference measures the sum).
+    const double tol = std::stod(setting.substr(4));
+    ASSERT_TRUE(r["error"].is_number());
+    EXPECT_LE(r["error"].get<double>(), 4 * tol);
+    EXPECT_GT(r["evaluations"].get<double>(), 0);
+    EXPECT_GT(r["ns_per_op"].get<double>(), 0);
+    EXPECT_GT(r["counterpart_ns_per_op"].get<double>(), 0);
+  }
 }
 
 TEST(run_accuracy, returns_1_and_leaves_out_a_failed_case_0_when_all_run) {

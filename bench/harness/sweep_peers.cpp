@@ -276,6 +276,12 @@ struct speed_integrand {
   }
 };
 
+/// Whether a QUADPACK status comes with a value: GSL_EBADTOL and the like return before integrating.
+bool integrated(int status) {
+  return status == GSL_SUCCESS || status == GSL_EMAXITER || status == GSL_EROUND || status == GSL_ESING ||
+         status == GSL_EDIVERGE;
+}
+
 /// QUADPACK's statuses as result_status names: converged, or the reason it stopped.
 std::string status_name(int status) {
   using arclength::result_status;
@@ -313,9 +319,7 @@ void gsl_length(const case_info& info, json& out, const any_curve<double, Dim>& 
       };
       const int status = integrate();
       const std::size_t calls = f.calls;
-      // GSL_EBADTOL and the like return before integrating: no value to measure.
-      const bool has_value = status == GSL_SUCCESS || status == GSL_EMAXITER || status == GSL_EROUND ||
-                             status == GSL_ESING || status == GSL_EDIVERGE;
+      const bool has_value = integrated(status);
       const std::string s = setting(m::adaptive_gk, {{"tol", tol}});
       peer_record r{&vocab::quantities::length,
                     peer,
@@ -402,6 +406,13 @@ void gsl_u_of_s(const case_info& info, json& out, const any_curve<double, Dim>& 
     root.target = 0;
     const double total = s_of_u_root<Dim>::call(d.hi, &root), total_abserr = root.last_abserr;
     status = root.worst_status;
+    const std::string s = setting(m::newton, {{"tol", tol}});
+    if (!integrated(status)) {  // a tolerance qag refuses: no u to measure, the refusal is the record
+      out.push_back(to_json(info, peer_record{&vocab::quantities::u_of_s, &vocab::peers::gsl_qag_brent, s, nan, nan,
+                                              0.0, status_name(status), gsl_strerror(status), nan,
+                                              std::string(m::newton.id), s, nan}));
+      continue;
+    }
     // One query: u with |s(u) - s| <= tol L by GSL's account, or the status of why not.
     const auto solve = [&](double target) {
       root.target = target;
@@ -436,7 +447,6 @@ void gsl_u_of_s(const case_info& info, json& out, const any_curve<double, Dim>& 
     double err = 0;
     for (double target : targets) err = std::max(err, ref.ds(std::clamp(solve(target), d.lo, d.hi), target));
     const double calls = static_cast<double>(speed.calls) / static_cast<double>(targets.size());
-    const std::string s = setting(m::newton, {{"tol", tol}});
     peer_record r{&vocab::quantities::u_of_s,
                   &vocab::peers::gsl_qag_brent,
                   s,
