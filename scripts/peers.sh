@@ -23,6 +23,7 @@
 # glTF channel case as a GLB through three's GLTFLoader and evaluates the track's interpolant
 # (float32 keys and results), measured by scripts/peers/gltf_results.py against the glTF 2.0
 # sampler of the case's keys at 60 digits, beside curvebench's gltf model (`curvebench sample`).
+# The Node drivers share scripts/peers/node_driver.mjs (command line, sample times, ns per call).
 # Each driver's values are measured by `curvebench check` against the 50-digit reference of the
 # case's spec (scripts/peers/peer_results.py joins them), so the truth is never a double
 # evaluation of curvebench's own code. The tool is $CURVEBENCH_TOOL, or build-bench's (built here
@@ -92,11 +93,9 @@ mkdir -p "$reports"
 quick_args=()
 [[ $quick -eq 1 ]] && quick_args=(--quick)
 
+# run_NAME: driver NAME, writing reports/peers_NAME.json; `optional` (below) calls it with $work a
+# fresh reports/peers/NAME.
 run_scipy() {
-  local work="$reports/peers/scipy"
-  rm -f "$reports/peers_scipy.json"  # no stale results when this run fails
-  rm -rf "$work"
-  mkdir -p "$work"
   /usr/bin/python3 "$root/scripts/peers/scipy_driver.py" --cases "$root/bench/cases" --out "$work" "${quick_args[@]}"
   # Measure every CSV the driver wrote against the 50-digit reference of its case.
   /usr/bin/python3 - "$work/scipy_driver.json" "$tool" "$root/bench/cases" <<'EOF'
@@ -118,13 +117,18 @@ EOF
                    --out "$reports/peers_scipy.json"
 }
 
+# node_driver DRIVER ARGS...: scripts/peers/DRIVER.mjs run beside the pinned packages
+# (build-peers/node) with the module the Node drivers share, at this run's parameters.
+node_driver() {
+  local driver=$1
+  shift
+  cp "$root/scripts/peers/$driver.mjs" "$root/scripts/peers/node_driver.mjs" "$node_dir/"
+  (cd "$node_dir" && node "$driver.mjs" "$@" "${quick_args[@]}")
+}
+
 run_easing() {
-  local work="$reports/peers/easing"
-  rm -f "$reports/peers_easing.json"
-  rm -rf "$work"
   mkdir -p "$work/curvebench"
-  cp "$root/scripts/peers/easing_driver.mjs" "$node_dir/easing_driver.mjs"
-  (cd "$node_dir" && node easing_driver.mjs --cases "$root/bench/cases" --out "$work/easing_driver.json" "${quick_args[@]}")
+  node_driver easing_driver --cases "$root/bench/cases" --out "$work/easing_driver.json"
   # curvebench's own CSS evaluation at the driver's times: the case with the exact time solver
   # (the peers' counterpart) and as written (the tool's table_newton model).
   /usr/bin/python3 "$root/scripts/peers/sample_css_runs.py" --driver "$work/easing_driver.json" \
@@ -134,21 +138,12 @@ run_easing() {
 }
 
 run_penner() {
-  local work="$reports/peers/penner"
-  rm -f "$reports/peers_penner.json"
-  rm -rf "$work"
-  mkdir -p "$work"
-  cp "$root/scripts/peers/penner_driver.mjs" "$node_dir/penner_driver.mjs"
-  (cd "$node_dir" && node penner_driver.mjs --out "$work/penner_driver.json" "${quick_args[@]}")
+  node_driver penner_driver --out "$work/penner_driver.json"
   /usr/bin/python3 "$root/scripts/peers/penner_results.py" --driver "$work/penner_driver.json" \
                    --tool "$tool" --work "$work/blender_model" --out "$reports/peers_penner.json"
 }
 
 run_blender() {
-  local work="$reports/peers/blender"
-  rm -f "$reports/peers_blender.json"
-  rm -rf "$work"
-  mkdir -p "$work"
   /usr/bin/python3 "$root/scripts/peers/blender_channels.py" request --cases "$root/bench/cases" \
                    --out "$work/request.json" --model-dir "$work/model" "${quick_args[@]}"
   blender -b --factory-startup --python "$root/scripts/peers/blender_fcurves.py" -- \
@@ -163,20 +158,12 @@ run_blender() {
 }
 
 run_three() {
-  local work="$reports/peers/three"
-  rm -f "$reports/peers_three.json"
-  rm -rf "$work"
-  mkdir -p "$work"
-  cp "$root/scripts/peers/gltf_driver.mjs" "$node_dir/gltf_driver.mjs"
-  (cd "$node_dir" && node gltf_driver.mjs --cases "$root/bench/cases" --out "$work/three_driver.json" "${quick_args[@]}")
+  node_driver gltf_driver --cases "$root/bench/cases" --out "$work/three_driver.json"
   /usr/bin/python3 "$root/scripts/peers/gltf_results.py" --driver "$work/three_driver.json" --cases "$root/bench/cases" \
                    --tool "$tool" --work "$work/model" --out "$reports/peers_three.json"
 }
 
 run_chromium() {
-  local work="$reports/peers/chromium"
-  rm -f "$reports/peers_chromium.json"
-  rm -rf "$work"
   mkdir -p "$work/curvebench"
   /usr/bin/python3 "$root/scripts/peers/chromium_driver.py" --cases "$root/bench/cases" \
                    --out "$work/chromium_driver.json" --work "$work/page" "${quick_args[@]}"
@@ -187,56 +174,41 @@ run_chromium() {
                    --cases "$root/bench/cases" --curvebench-dir "$work/curvebench" --out "$reports/peers_chromium.json"
 }
 
+# Whether the drivers' requirements are there: a Python module; a pinned npm package in
+# build-peers/node (with node and mpmath, the truth of every Node peer); a program on PATH (with mpmath).
+python_has() { /usr/bin/python3 -c "import $1" 2>/dev/null; }
+node_has() { command -v node >/dev/null && [[ -d "$node_dir/node_modules/$1" ]] && python_has mpmath; }
+on_path() { command -v "$1" >/dev/null && python_has mpmath; }
+node_version=$(node --version 2>/dev/null || echo "not installed")
+
 ran=0
-if /usr/bin/python3 -c "import scipy, numpy" 2>/dev/null; then
-  echo "peers.sh: SciPy"
-  run_scipy
-  ran=$((ran + 1))
-else
-  echo "peers.sh: SciPy not installed (python3-scipy); skipped" >&2
-  rm -f "$reports/peers_scipy.json"  # no stale results from another run
-fi
-if command -v node >/dev/null && [[ -d "$node_dir/node_modules/bezier-easing-3" ]] &&
-   /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
-  echo "peers.sh: easing (Node $(node --version))"
-  run_easing
-  ran=$((ran + 1))
-else
-  echo "peers.sh: the easing peers are not installed (node, build-peers/node, python3-mpmath); skipped" >&2
-  rm -f "$reports/peers_easing.json"
-fi
-if command -v node >/dev/null && [[ -d "$node_dir/node_modules/d3-ease" ]] &&
-   /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
-  echo "peers.sh: d3-ease (Node $(node --version))"
-  run_penner
-  ran=$((ran + 1))
-else
-  echo "peers.sh: d3-ease is not installed (node, build-peers/node, python3-mpmath); skipped" >&2
-  rm -f "$reports/peers_penner.json"
-fi
-if command -v node >/dev/null && [[ -d "$node_dir/node_modules/three" ]] &&
-   /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
-  echo "peers.sh: three.js glTF interpolants (Node $(node --version))"
-  run_three
-  ran=$((ran + 1))
-else
-  echo "peers.sh: three is not installed (node, build-peers/node, python3-mpmath); skipped" >&2
-  rm -f "$reports/peers_three.json"
-fi
-if command -v blender >/dev/null && /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
-  echo "peers.sh: real Blender ($(blender --version 2>/dev/null | head -n 1))"
-  run_blender
-  ran=$((ran + 1))
-else
-  echo "peers.sh: blender is not on PATH (or python3-mpmath is missing); the real-Blender comparison is not run" >&2
-  rm -f "$reports/peers_blender.json"
-fi
-if command -v chromium >/dev/null && /usr/bin/python3 -c "import mpmath" 2>/dev/null; then
-  echo "peers.sh: $(chromium --version 2>/dev/null | head -n 1)"
-  run_chromium
-  ran=$((ran + 1))
-else
-  echo "peers.sh: Chromium is not installed (chromium, python3-mpmath); skipped" >&2
-  rm -f "$reports/peers_chromium.json"
-fi
+# optional NAME LABEL MISSING CHECK...: removes an earlier reports/peers_NAME.json (no stale results
+# from another run, whatever happens next); then, when the command CHECK... succeeds, runs run_NAME
+# with $work a fresh reports/peers/NAME and prints LABEL, otherwise prints MISSING.
+optional() {
+  local name=$1 label=$2 missing=$3
+  shift 3
+  rm -f "$reports/peers_$name.json"
+  if "$@"; then
+    echo "peers.sh: $label"
+    work="$reports/peers/$name"
+    rm -rf "$work"
+    mkdir -p "$work"
+    "run_$name"
+    ran=$((ran + 1))
+  else
+    echo "peers.sh: $missing" >&2
+  fi
+}
+optional scipy "SciPy" "SciPy not installed (python3-scipy); skipped" python_has "scipy, numpy"
+optional easing "easing (Node $node_version)" \
+  "the easing peers are not installed (node, build-peers/node, python3-mpmath); skipped" node_has bezier-easing-3
+optional penner "d3-ease (Node $node_version)" \
+  "d3-ease is not installed (node, build-peers/node, python3-mpmath); skipped" node_has d3-ease
+optional three "three.js glTF interpolants (Node $node_version)" \
+  "three is not installed (node, build-peers/node, python3-mpmath); skipped" node_has three
+optional blender "real Blender ($(blender --version 2>/dev/null | head -n 1))" \
+  "blender is not on PATH (or python3-mpmath is missing); the real-Blender comparison is not run" on_path blender
+optional chromium "$(chromium --version 2>/dev/null | head -n 1)" \
+  "Chromium is not installed (chromium, python3-mpmath); skipped" on_path chromium
 echo "peers.sh: $ran optional peer driver(s) ran; results in $reports/peers_*.json"

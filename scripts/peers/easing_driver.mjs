@@ -14,29 +14,10 @@ import path from "node:path";
 import { createRequire } from "node:module";
 import bezier3 from "bezier-easing-3";
 import unitBezier from "@mapbox/unitbezier";
+import { bestNs, driverArgs, sampleFractions } from "./node_driver.mjs";
 
 const require = createRequire(import.meta.url);
 const bezier2 = require("bezier-easing");
-
-const INV_PHI = 0.6180339887498949;  // as bench/harness/sweeps.hpp
-
-function sampleFractions(n) {
-  const out = [];
-  for (let j = 0; j < n; ++j) out.push(j === 0 ? 0 : j + 1 === n ? 1 : (j * INV_PHI) % 1);
-  return out;
-}
-
-function args(argv) {
-  const a = { quick: false };
-  for (let i = 0; i < argv.length; ++i) {
-    if (argv[i] === "--cases") a.cases = argv[++i];
-    else if (argv[i] === "--out") a.out = argv[++i];
-    else if (argv[i] === "--quick") a.quick = true;
-    else throw new Error(`easing_driver: unknown argument ${argv[i]}`);
-  }
-  if (!a.cases || !a.out) throw new Error("easing_driver: --cases DIR and --out FILE are required");
-  return a;
-}
 
 function version(pkg) {
   return JSON.parse(fs.readFileSync(path.join("node_modules", pkg, "package.json"), "utf8")).version;
@@ -49,21 +30,7 @@ function cubicBezier(easing) {
   return v.length === 4 && v.every(Number.isFinite) ? v : null;
 }
 
-function bestNs(fn, times) {
-  let best = Infinity;
-  // 200 passes: the first ones run before V8 has compiled the peer; the best pass is compiled code.
-  for (let pass = 0; pass < 200; ++pass) {
-    let sink = 0;
-    const t0 = process.hrtime.bigint();
-    for (const t of times) sink += fn(t);
-    const ns = Number(process.hrtime.bigint() - t0);
-    if (Number.isNaN(sink)) throw new Error("easing_driver: NaN from a peer");
-    best = Math.min(best, ns);
-  }
-  return best / times.length;
-}
-
-const a = args(process.argv.slice(2));
+const a = driverArgs("easing_driver", process.argv.slice(2), true);
 const times = sampleFractions(a.quick ? 65 : 257);
 const peers = {
   peer_bezier_easing_3: (p) => bezier3(...p),
@@ -92,7 +59,8 @@ for (const file of fs.readdirSync(a.cases).filter((f) => f.endsWith(".json")).so
       runs.push({ case: name, peer, easing: p, refused: String(e.message || e) });
       continue;
     }
-    const run = { case: name, peer, easing: p, times, values: times.map(f), ns_per_op: bestNs(f, times) };
+    const run = { case: name, peer, easing: p, times, values: times.map(f),
+                  ns_per_op: bestNs(f, times, "easing_driver: NaN from a peer") };
     // @mapbox/unitbezier documents solve(x, epsilon) with epsilon 1e-6 by default: its precision.
     if (peer === "peer_mapbox_unitbezier") run.documented_tolerance = 1e-6;
     runs.push(run);

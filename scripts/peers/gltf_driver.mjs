@@ -25,25 +25,12 @@
 import fs from "node:fs";
 import path from "node:path";
 import { GLTFLoader } from "three/examples/jsm/loaders/GLTFLoader.js";
-
-const INV_PHI = 0.6180339887498949;  // as bench/harness/sweeps.hpp
-
-function args(argv) {
-  const a = { quick: false };
-  for (let i = 0; i < argv.length; ++i) {
-    if (argv[i] === "--cases") a.cases = argv[++i];
-    else if (argv[i] === "--out") a.out = argv[++i];
-    else if (argv[i] === "--quick") a.quick = true;
-    else throw new Error(`gltf_driver: unknown argument ${argv[i]}`);
-  }
-  if (!a.cases || !a.out) throw new Error("gltf_driver: --cases DIR and --out FILE are required");
-  return a;
-}
+import { bestNs, driverArgs, sampleFractions } from "./node_driver.mjs";
 
 function queryTimes(t0, t1, keyTimes, n) {
   const span = t1 - t0;
   const out = new Set(keyTimes);
-  for (let j = 0; j < n; ++j) out.add(j === 0 ? t0 : j + 1 === n ? t1 : t0 + span * ((j * INV_PHI) % 1));
+  for (const f of sampleFractions(n)) out.add(f === 1 ? t1 : t0 + span * f);
   for (let i = 0; i < 16; ++i) {
     out.add(t0 - span * 0.1 * (16 - i) / 16);
     out.add(t1 + span * 0.1 * (i + 1) / 16);
@@ -125,21 +112,8 @@ function load(glb) {
   return new Promise((resolve, reject) => new GLTFLoader().parse(glb, "", resolve, reject));
 }
 
-function bestNs(interpolant, times) {
-  let best = Infinity;
-  for (let pass = 0; pass < 200; ++pass) {
-    let sink = 0;
-    const t0 = process.hrtime.bigint();
-    for (const t of times) sink += interpolant.evaluate(t)[0];
-    const ns = Number(process.hrtime.bigint() - t0);
-    if (Number.isNaN(sink)) throw new Error("gltf_driver: NaN from three");
-    best = Math.min(best, ns);
-  }
-  return best / times.length;
-}
-
 async function main() {
-  const a = args(process.argv.slice(2));
+  const a = driverArgs("gltf_driver", process.argv.slice(2), true);
   const notes = [], runs = [];
   for (const file of fs.readdirSync(a.cases).filter((f) => f.endsWith(".json")).sort()) {
     const spec = JSON.parse(fs.readFileSync(path.join(a.cases, file), "utf8"));
@@ -160,7 +134,8 @@ async function main() {
     const values = ts.map((t) => Array.from(interpolant.evaluate(t)));
     runs.push({ case: name, path: spec.path === "rotation" ? "rotation" : "weights", interpolation: spec.interpolation,
                 track: track.constructor.name, interpolant: interpolant.constructor.name, target: track.name,
-                times: ts, values, ns_per_op: bestNs(interpolant, ts) });
+                times: ts, values,
+                ns_per_op: bestNs((t) => interpolant.evaluate(t)[0], ts, "gltf_driver: NaN from three") });
   }
   const pkg = JSON.parse(fs.readFileSync(path.join("node_modules", "three", "package.json"), "utf8"));
   const versions = { three: pkg.version, Node: process.version.replace(/^v/, "") };

@@ -13,41 +13,15 @@
 import fs from "node:fs";
 import path from "node:path";
 import * as d3 from "d3-ease";
-
-const INV_PHI = 0.6180339887498949;  // as bench/harness/sweeps.hpp
+import { bestNs, driverArgs, sampleFractions } from "./node_driver.mjs";
 
 function times(n) {
-  const out = new Set();
-  for (let j = 0; j < n; ++j) out.add(j === 0 ? 0 : j + 1 === n ? 1 : (j * INV_PHI) % 1);
+  const out = new Set(sampleFractions(n));
   for (const k of [6, 12, 24]) {
     const h = 2 ** -k;
     for (const t of [h, 0.5 - h, 0.5, 0.5 + h, 1 - h]) out.add(t);
   }
   return [...out].sort((a, b) => a - b);
-}
-
-function args(argv) {
-  const a = { quick: false };
-  for (let i = 0; i < argv.length; ++i) {
-    if (argv[i] === "--out") a.out = argv[++i];
-    else if (argv[i] === "--quick") a.quick = true;
-    else throw new Error(`penner_driver: unknown argument ${argv[i]}`);
-  }
-  if (!a.out) throw new Error("penner_driver: --out FILE is required");
-  return a;
-}
-
-function bestNs(fn, ts) {
-  let best = Infinity;
-  for (let pass = 0; pass < 200; ++pass) {
-    let sink = 0;
-    const t0 = process.hrtime.bigint();
-    for (const t of ts) sink += fn(t);
-    const ns = Number(process.hrtime.bigint() - t0);
-    if (Number.isNaN(sink)) throw new Error("penner_driver: NaN from d3-ease");
-    best = Math.min(best, ns);
-  }
-  return best / ts.length;
 }
 
 // [function name, family, mode, parameters, the d3 function]
@@ -65,11 +39,12 @@ for (const [fam, base, params] of [["quad", "Quad", {}], ["cubic", "Cubic", {}],
   }
 }
 
-const a = args(process.argv.slice(2));
+const a = driverArgs("penner_driver", process.argv.slice(2), false);
 const ts = times(a.quick ? 65 : 257);
 const pkg = JSON.parse(fs.readFileSync(path.join("node_modules", "d3-ease", "package.json"), "utf8"));
 const runs = functions.map(([name, family, mode, params, f]) => (
-  { function: name, family, mode, params, times: ts, values: ts.map((t) => f(t)), ns_per_op: bestNs(f, ts) }));
+  { function: name, family, mode, params, times: ts, values: ts.map((t) => f(t)),
+    ns_per_op: bestNs(f, ts, "penner_driver: NaN from d3-ease") }));
 const doc = { driver: "penner", quick: a.quick, versions: { Node: process.version.replace(/^v/, ""), "d3-ease": pkg.version },
               notes: [], runs };
 fs.writeFileSync(a.out + ".tmp", JSON.stringify(doc, null, 1));
