@@ -35,6 +35,8 @@ import json
 import os
 import sys
 
+import peer_io
+
 PEER = "peer_blender_fcurve"
 INTERP = {"constant": "CONSTANT", "linear": "LINEAR", "bezier": "BEZIER"}
 EASE = {"auto": "AUTO", "in": "EASE_IN", "out": "EASE_OUT", "in_out": "EASE_IN_OUT"}
@@ -253,9 +255,7 @@ def main():
     except (OSError, KeyError, json.JSONDecodeError, BlenderChannelError) as e:
         print(f"blender_channels: {e}", file=sys.stderr)
         return 1
-    with open(a.out + ".tmp", "w", encoding="utf-8") as f:
-        json.dump(doc, f, indent=1)
-    os.replace(a.out + ".tmp", a.out)
+    peer_io.write_json(a.out, doc)
     print(f"blender_channels: {len(doc['peer_records'])} channels -> {a.out}")
     return 0
 

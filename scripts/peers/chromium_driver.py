@@ -35,7 +35,8 @@ import subprocess
 import sys
 import tempfile
 
-INV_PHI = 0.6180339887498949  # as bench/harness/sweeps.hpp
+import peer_io
+
 DURATION_MS = 1048576.0  # 2^20: x * duration is exact for every double x in [0, 1]
 PEER = "peer_chromium_waapi"
 # steps() easings the driver adds (no case of the suite has one): every jump position.
@@ -46,10 +47,6 @@ RESULT_ID = "curvebench-result"
 
 class ChromiumDriverError(Exception):
     pass
-
-
-def sample_fractions(n):
-    return [0.0 if j == 0 else 1.0 if j + 1 == n else (j * INV_PHI) % 1.0 for j in range(n)]
 
 
 def parse_cubic_bezier(easing):
@@ -208,7 +205,7 @@ def main():
         if f.endswith(".json"):
             with open(os.path.join(a.cases, f), encoding="utf-8") as fh:
                 specs[f[:-5]] = json.load(fh)
-    easings = easings_of(specs, sample_fractions(65 if a.quick else 257))
+    easings = easings_of(specs, peer_io.sample_fractions(65 if a.quick else 257))
     try:
         version = chromium_version(subprocess.run([a.chromium, "--version"], capture_output=True, text=True,
                                                   check=True).stdout)
@@ -232,9 +229,7 @@ def main():
         return 1
     out = {"driver": "chromium", "quick": a.quick, "versions": {"Chromium": version},
            "user_agent": doc.get("userAgent"), "notes": [], "runs": runs}
-    with open(a.out + ".tmp", "w", encoding="utf-8") as f:
-        json.dump(out, f, indent=1)
-    os.replace(a.out + ".tmp", a.out)
+    peer_io.write_json(a.out, out)
     print(f"chromium_driver: {len(runs)} easings -> {a.out}")
     return 0
 

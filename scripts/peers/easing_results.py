@@ -35,6 +35,8 @@ import sys
 
 import mpmath
 
+import peer_io
+
 EPS = 2.0 ** -52
 
 
@@ -211,9 +213,7 @@ def main():
     except (OSError, json.JSONDecodeError, EasingResultError) as e:
         print(f"easing_results: {e}", file=sys.stderr)
         return 1
-    with open(a.out + ".tmp", "w", encoding="utf-8") as f:
-        json.dump(doc, f, indent=1)
-    os.replace(a.out + ".tmp", a.out)
+    peer_io.write_json(a.out, doc)
     print(f"easing_results: {len(doc['peer_records'])} peer records -> {a.out}")
     return 0
 

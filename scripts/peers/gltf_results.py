@@ -48,6 +48,8 @@ import sys
 
 import mpmath
 
+import peer_io
+
 PEER = "peer_three_gltf"
 EPS32 = 2.0 ** -23
 EPS64 = 2.0 ** -52
@@ -300,9 +302,7 @@ def main():
     except (OSError, KeyError, json.JSONDecodeError, subprocess.SubprocessError, GltfResultError) as e:
         print(f"gltf_results: {e}", file=sys.stderr)
         return 1
-    with open(a.out + ".tmp", "w", encoding="utf-8") as f:
-        json.dump(doc, f, indent=1)
-    os.replace(a.out + ".tmp", a.out)
+    peer_io.write_json(a.out, doc)
     print(f"gltf_results: {len(doc['peer_records'])} glTF cases -> {a.out}")
     return 0
 

@@ -29,6 +29,8 @@ import json
 import os
 import sys
 
+import peer_io
+
 
 class PeerResultError(Exception):
     pass
@@ -180,10 +182,7 @@ def main():
     except PeerResultError as e:
         print(f"peer_results: {e}", file=sys.stderr)
         return 1
-    tmp = a.out + ".tmp"
-    with open(tmp, "w", encoding="utf-8") as f:
-        json.dump(doc, f, indent=1)
-    os.replace(tmp, a.out)
+    peer_io.write_json(a.out, doc)
     print(f"peer_results: {len(doc['peer_records'])} peer records -> {a.out}")
     return 0
 

@@ -38,6 +38,8 @@ import sys
 
 import mpmath
 
+import peer_io
+
 EPS = 2.0 ** -52
 PEER = "peer_d3_ease"
 BLENDER_FAMILY = {"quad": "quad", "cubic": "cubic", "poly4": "quart", "poly5": "quint", "sin": "sine", "exp": "expo",
@@ -213,9 +215,7 @@ def main():
     except (OSError, json.JSONDecodeError, subprocess.SubprocessError, PennerResultError) as e:
         print(f"penner_results: {e}", file=sys.stderr)
         return 1
-    with open(a.out + ".tmp", "w", encoding="utf-8") as f:
-        json.dump(doc, f, indent=1)
-    os.replace(a.out + ".tmp", a.out)
+    peer_io.write_json(a.out, doc)
     print(f"penner_results: {len(doc['peer_records'])} peer records -> {a.out}")
     return 0
 

@@ -59,10 +59,11 @@ from scipy.integrate import IntegrationWarning, quad
 from scipy.optimize import brentq
 from scipy.interpolate import BSpline, CubicSpline, PchipInterpolator, make_interp_spline
 
+import peer_io
+
 # The peer ids this driver writes (each declared in bench/harness/vocabulary.hpp).
 PEERS = ("peer_scipy_cubic_spline", "peer_scipy_make_interp_spline", "peer_scipy_bspline", "peer_scipy_quad",
          "peer_scipy_quad_brentq")
-INV_PHI = 0.6180339887498949  # 1 / golden ratio, as harness/sweeps.hpp
 QUICK_TOLS = (1e-6, 1e-10, 1e-14)
 FULL_TOLS = (1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14)
 # u(s): the accuracy runner's Newton tolerances and target counts (harness/sweep.hpp).
@@ -71,14 +72,9 @@ FULL_INVERSE = ((1e-6, 1e-9, 1e-12, 1e-14), 33)
 BRENTQ_MAXITER = 100
 
 
-def sample_fractions(n):
-    """harness/sweeps.hpp sample_fractions: 0, 1 and frac(j / phi) in between."""
-    return [0.0 if j == 0 else 1.0 if j + 1 == n else math.fmod(j * INV_PHI, 1.0) for j in range(n)]
-
-
 def sample_parameters(lo, hi, n):
     """The accuracy runner's eval parameters (harness/sweeps.hpp), the same doubles."""
-    return np.array([hi if f == 1.0 else lo + (hi - lo) * f for f in sample_fractions(n)])
+    return np.array([hi if f == 1.0 else lo + (hi - lo) * f for f in peer_io.sample_fractions(n)])
 
 
 def best_ns(fn, repeats):
@@ -222,7 +218,7 @@ def inverse_run(name, curve_peer, dp, lo, hi, tol, n_targets, out_dir):
             total = s_of(hi)[0]
             # The interior targets: the ends are u = lo and u = hi by definition, and s = L by SciPy's
             # own L may lie beyond the true L, which `curvebench check` refuses.
-            targets = [total * f for f in sample_fractions(n_targets) if 0 < f < 1]
+            targets = [total * f for f in peer_io.sample_fractions(n_targets) if 0 < f < 1]
             calls[0] = 0
             us = [solve(s, total) for s in targets]
             evals = calls[0] / len(targets)
@@ -282,10 +278,7 @@ def main():
            "versions": {"SciPy": scipy.__version__, "NumPy": np.__version__,
                         "Python": sys.version.split()[0]},
            "notes": notes, "runs": runs}
-    tmp = os.path.join(a.out, "scipy_driver.json.tmp")
-    with open(tmp, "w", encoding="utf-8") as f:
-        json.dump(doc, f, indent=1)
-    os.replace(tmp, os.path.join(a.out, "scipy_driver.json"))
+    peer_io.write_json(os.path.join(a.out, "scipy_driver.json"), doc)
     print(f"scipy_driver: {len(runs)} runs on {len({r['case'] for r in runs})} cases -> {a.out}")
     return 0
 

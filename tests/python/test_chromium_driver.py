@@ -14,6 +14,7 @@ sys.path.insert(0, os.path.join(ROOT, "scripts"))
 sys.path.insert(0, os.path.join(ROOT, "scripts", "peers"))
 import chromium_driver as cd  # noqa: E402
 import report_peers as rp  # noqa: E402
+import peer_io  # noqa: E402
 
 DUMP = os.path.join(HERE, "..", "data", "peers", "chromium", "dump_quick.html")
 
@@ -29,7 +30,7 @@ def css_specs():
 
 
 def recorded():
-    easings = cd.easings_of(css_specs(), cd.sample_fractions(65))
+    easings = cd.easings_of(css_specs(), peer_io.sample_fractions(65))
     with open(DUMP, encoding="utf-8") as f:
         return easings, cd.runs_of(cd.parse_dump(f.read()), easings)
 
@@ -38,7 +39,7 @@ class Page(unittest.TestCase):
     def test_easings_and_times(self):
         specs = dict(css_specs(), other={"type": "bezier", "points": [[0, 0], [1, 1]]},
                      lin={"type": "channel", "tool": "css", "easing": "linear(0, 0.5, 1)"})
-        easings = cd.easings_of(specs, cd.sample_fractions(65))
+        easings = cd.easings_of(specs, peer_io.sample_fractions(65))
         names = [c for c, _, _ in easings]
         self.assertIn("css_wild_overshoot", names)
         self.assertNotIn("other", names)
