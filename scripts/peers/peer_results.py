@@ -83,6 +83,12 @@ def values_records(run, check, library):
     return out
 
 
+def _refused(message):
+    """The fields of a record the library refused to compute: no value, its message kept."""
+    return {"error": None, "estimate": None, "bounded": None, "evaluations": 0, "status": "not_guaranteed",
+            "peer_status": message, "ns_per_op": None}
+
+
 def lengths_records(run, check, library, group):
     """The peer records of a lengths run: one per driver row, measured rows joined in order."""
     rows = run.get("rows", [])
@@ -106,8 +112,7 @@ def lengths_records(run, check, library, group):
              "setting": row["setting"], "peer": True, "library": library,
              "counterpart": {"method": run["counterpart"]["method"], "setting": row["setting"]}}
         if "refused" in row:
-            r.update({"error": None, "estimate": None, "bounded": None, "evaluations": 0,
-                      "status": "not_guaranteed", "peer_status": row["refused"], "ns_per_op": None})
+            r.update(_refused(row["refused"]))
         else:
             err = check_rows[k]["error"]
             k += 1
@@ -124,8 +129,7 @@ def inverse_record(run, check, library, group):
     r = {"case": run["case"], "group": group, "quantity": "u_of_s", "method": run["peer"],
          "setting": run["setting"], "peer": True, "library": library, "counterpart": run["counterpart"]}
     if "refused" in run:
-        r.update({"error": None, "estimate": None, "bounded": None, "evaluations": 0,
-                  "status": "not_guaranteed", "peer_status": run["refused"], "ns_per_op": None})
+        r.update(_refused(run["refused"]))
         return r
     checks = check.get("checks") if check else None
     if not isinstance(checks, list) or len(checks) != 1 or checks[0].get("kind") != "inverse":
