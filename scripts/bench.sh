@@ -61,7 +61,7 @@ accuracy_args=(accuracy --out "$reports/accuracy.json")
 "$build/bench/curvebench" "${accuracy_args[@]}"
 
 # The optional peers (scripts/peers.sh installs them) when installed: reports/peers_*.json, which
-# the report joins; the C++ peers (GSL) ran inside the accuracy sweep above.
+# the report joins; the C++ peers (GSL, Boost.Math, Eigen) ran inside the accuracy sweep above.
 peers_args=(--no-install)
 [[ $quick -eq 1 ]] && peers_args+=(--quick)
 CURVEBENCH_TOOL="$build/bench/curvebench" bash "$root/scripts/peers.sh" "${peers_args[@]}" ||

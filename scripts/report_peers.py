@@ -3,8 +3,8 @@ curvebench, measured on the same cases against the same 50-digit references, err
 beside curvebench's own, and the findings where a peer does not do what its documentation says.
 
 Inputs:
-  accuracy.json      "peer_records" (the C++ peers the accuracy runner always runs: GSL, by
-                     bench/harness/sweep_peers.cpp) and context.peers (their versions); an
+  accuracy.json      "peer_records" (the C++ peers the accuracy runner always runs: GSL,
+                     Boost.Math and Eigen, by bench/harness/sweep_peers*.cpp) and context.peers (their versions); an
                      accuracy.json without peer records (older runs) gives a section saying so
   peers_*.json       one per optional peer driver (scripts/peers.sh): {"driver", "versions":
                      {library: version}, "notes": [text], "peer_records": [...]}, built by
@@ -338,7 +338,10 @@ def peers_section(acc, report_dir, bench_rows, vocab):
         return md + ["No peer results (this accuracy.json has no peer_records: it predates the peer sweep).", ""]
     md += ["Each peer runs on every case it can represent and is measured against the same 50-digit "
            "reference as curvebench's methods; curvebench's counterpart is the record of the same "
-           "computation (the default evaluation of the case, adaptive_gk at the same relative tolerance).", ""]
+           "computation (the default evaluation of the case, adaptive_gk at the same relative tolerance). "
+           "A peer that represents only part of the case's domain says which in its setting (Boost's "
+           "catmull_rom wraps its end tangents: segments=interior) and is compared with curvebench's error "
+           "on the same parameters.", ""]
     md.append(lib.table(["peers and versions", "ran by", "records"], versions))
     missing = missing_drivers(peer_files)
     if missing:

@@ -23,6 +23,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace hv = curvebench::harness::vocab;
 namespace fs = std::filesystem;
@@ -218,6 +219,87 @@ TEST(run_case, gsl_u_of_s_records_pair_newton_and_keep_refusals_valueless) {
     EXPECT_GT(r["ns_per_op"].get<double>(), 0);
     EXPECT_GT(r["counterpart_ns_per_op"].get<double>(), 0);
   }
+}
+
+// The Boost.Math and Eigen peers (harness/sweep_peers_boost_eigen.cpp): each runs on the cases it
+// represents, on the part of the domain where it is the case's curve, and is measured against the
+// same reference. Tolerances: a peer evaluating the same curve in double loses a few roundings
+// more than curvebench's power form (Barry-Goldman's pyramid: 6 lerps; de Boor in Eigen: 3 levels
+// of convex combinations), measured at most 1.4 eps x size on these cases, so 16 fails on a
+// different curve (a wrong knot or end tangent gives errors of 1e13 and more) but not on
+// rounding. Lengths: on the one-segment arch every Boost rule meets its own test
+// (error estimate <= tol x L1) at tol 1e-6 and 1e-10, and its estimate then bounds the error.
+TEST(run_case, boost_and_eigen_peers_measure_the_cases_they_represent) {
+  const case_dir dir("boost_eigen_peers");
+  dir.add("arch", arch);
+  dir.add("catmull", R"("type": "catmull_rom", "alpha": 0.5, "points": [[0, 0], [1, 2], [3, 3], [4, 0], [6, 1]])");
+  dir.add("catmull_closed",
+          R"("type": "catmull_rom", "alpha": 0.5, "end": "closed", "points": [[0, 0], [1, 2], [3, 3], [4, 0]])");
+  dir.add("clamped", R"("type": "bspline", "degree": 3, "points": [[0, 0], [1, 2], [3, 3], [4, 0], [6, 1], [7, 4]])");
+  dir.add("periodic", R"("type": "bspline", "degree": 3, "knot_vector": "periodic",
+                         "points": [[1, 0], [0, 1], [-1, 0], [0, -1], [0.5, -0.5]])");
+  dir.add("quintic", R"("type": "bspline", "degree": 5,
+                        "points": [[0, 0, 0], [1, 2, 1], [3, 3, 0], [4, 0, -1], [6, 1, 2], [7, 4, 0]])");
+  dir.add("hermite", R"("type": "hermite", "knots": [0, 0.5, 2], "points": [[0, 0], [2, 1], [3, 3]],
+                        "slopes": [[1, 0], [1, 1], [0, 2]])");
+  dir.add("hermite_broken", R"("type": "hermite", "points": [[0, 0], [2, 1], [3, 3]],
+                               "incoming": [[1, 0], [1, 1], [0, 2]], "outgoing": [[1, 0], [2, -1], [0, 2]])");
+  const auto cases = curvebench::harness::load_cases(dir.path.string());
+  // (case, method, setting) -> record, the eval peers only
+  std::map<std::tuple<std::string, std::string, std::string>, json> eval;
+  for (const auto& c : cases) {
+    const json out = curvebench::harness::run_case(c, true);
+    std::map<std::string, int> lengths;  // Boost length records per peer
+    for (const auto& r : out["peer_records"]) {
+      const std::string method = r["method"];
+      if (method.rfind("peer_gsl", 0) == 0) continue;
+      SCOPED_TRACE(c.name + " " + method + " " + r["setting"].get<std::string>());
+      EXPECT_THAT(r["library"].get<std::string>(), ::testing::StartsWith(method.find("eigen") != std::string::npos
+                                                                             ? "Eigen 3."
+                                                                             : "Boost.Math 1."));
+      if (r["quantity"] == "eval") {
+        eval[{c.name, method, r["setting"]}] = r;
+        continue;
+      }
+      ASSERT_EQ(r["quantity"], "length");
+      ++lengths[method];
+      ASSERT_TRUE(r["error"].is_number());
+      EXPECT_EQ(r["counterpart"]["method"], hv::methods::adaptive_gk.id);
+      EXPECT_EQ(r["counterpart"]["setting"], r["setting"]);
+      if (c.name == "arch" && r["setting"] != "tol=1e-14") {
+        EXPECT_EQ(r["status"], "converged");
+        EXPECT_EQ(r["bounded"], true);
+      }
+    }
+    EXPECT_EQ(lengths, (std::map<std::string, int>{
+                           {std::string(hv::peers::boost_gauss_kronrod15.id), 3},
+                           {std::string(hv::peers::boost_gauss_kronrod31.id), 3},
+                           {std::string(hv::peers::boost_tanh_sinh.id), 3}}))
+        << c.name << ": every Boost rule at each adaptive_gk tolerance of the quick sweep";
+  }
+  const auto expect_close = [&](const std::string& c, const hv::peer& p, const std::string& setting) {
+    SCOPED_TRACE(c + " " + std::string(p.id) + " " + setting);
+    const auto it = eval.find({c, std::string(p.id), setting});
+    ASSERT_NE(it, eval.end()) << "no record";
+    const json& r = it->second;
+    ASSERT_TRUE(r["error"].is_number()) << r.dump();
+    EXPECT_LE(r["error"].get<double>(), 16);
+    EXPECT_LE(r["counterpart_error"].get<double>(), 16);
+    EXPECT_GT(r["ns_per_op"].get<double>(), 0);
+  };
+  // Boost's open Catmull-Rom wraps its end tangents: only the interior segments are the case's.
+  expect_close("catmull", hv::peers::boost_catmull_rom, "segments=interior");
+  expect_close("catmull_closed", hv::peers::boost_catmull_rom, "");
+  EXPECT_FALSE(eval.count({"catmull", std::string(hv::peers::boost_catmull_rom.id), ""}));
+  for (const std::string c : {"clamped", "periodic", "quintic"})
+    for (const std::string setting : {"", "derivative=1"}) {
+      expect_close(c, hv::peers::eigen_spline_fixed_degree, setting);
+      expect_close(c, hv::peers::eigen_spline_dynamic_degree, setting);
+    }
+  expect_close("hermite", hv::peers::boost_cubic_hermite, "");
+  expect_close("hermite", hv::peers::boost_cubic_hermite, "derivative=1");
+  for (const auto& [key, r] : eval)
+    EXPECT_NE(std::get<0>(key), "hermite_broken") << "cubic_hermite has one slope per key: " << r.dump();
 }
 
 TEST(run_accuracy, returns_1_and_leaves_out_a_failed_case_0_when_all_run) {

@@ -165,7 +165,7 @@ int run_accuracy(const accuracy_options& opt) {
                     {"flags", CURVEBENCH_FLAGS},
                     {"quick", opt.quick},
                     {"threads", threads},
-                    {"peers", {{"GSL", gsl_version()}}},
+                    {"peers", peer_versions()},
                     {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
   write_results(out, opt.out);
   std::size_t failed = 0;

@@ -32,6 +32,8 @@
 // counterpart's method and setting so the report joins its error record.
 #include "harness/sweeps.hpp"
 
+#include "harness/peer_record.hpp"
+
 #include "harness/setting.hpp"
 
 #include "curvebench/arclength/length.hpp"
@@ -62,71 +64,16 @@ namespace {
 
 using json = nlohmann::json;
 
-json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(); }
+using namespace peers_detail;
 
-/// Best of three batches of the time per call of f, each batch repeating f until 2 ms have passed.
-template <class F>
-double ns_per_call(F&& f) {
-  using clock = std::chrono::steady_clock;
-  double best = std::numeric_limits<double>::infinity();
-  for (int batch = 0; batch < 3; ++batch) {
-    std::size_t calls = 0;
-    const auto t0 = clock::now();
-    double elapsed = 0;
-    do {
-      f();
-      ++calls;
-      elapsed = std::chrono::duration<double, std::nano>(clock::now() - t0).count();
-    } while (elapsed < 2e6);
-    best = std::min(best, elapsed / static_cast<double>(calls));
-  }
-  return best;
-}
+/// "GSL <version>": the library field of GSL's records.
+std::string gsl_library() { return "GSL " GSL_VERSION; }
 
 /// GSL's default error handler aborts the process; the peers' failures are data here. The
 /// handler is global in GSL, so it is switched off once, before any thread calls GSL.
 void gsl_errors_are_statuses() {
   static std::once_flag once;
   std::call_once(once, [] { gsl_set_error_handler_off(); });
-}
-
-struct peer_record {
-  const vocab::quantity* quantity;
-  const vocab::peer* peer;
-  std::string setting;
-  double error;
-  double estimate;
-  double evaluations;
-  std::string status;       ///< a result_status name
-  std::string peer_status;  ///< the library's own words for its status
-  double ns_per_op;
-  std::string counterpart_algorithm;  ///< eval: the family's algorithm; otherwise the method id
-  std::string counterpart_setting;
-  double counterpart_ns_per_op;
-};
-
-/// counterpart_error: curvebench's error measured here beside the peer's, where curvebench's own
-/// sweeps keep no record of the same quantity (the first derivative); NaN: none, left out.
-json to_json(const case_info& info, const peer_record& r,
-             double counterpart_error = std::numeric_limits<double>::quiet_NaN()) {
-  json j{{"case", info.name},
-         {"group", info.group},
-         {"quantity", std::string(r.quantity->id)},
-         {"method", std::string(r.peer->id)},
-         {"library", std::string(r.peer->library) + " " + GSL_VERSION},
-         {"peer", true},
-         {"setting", r.setting},
-         {"error", finite_or_null(r.error)},
-         {"estimate", finite_or_null(r.estimate)},
-         {"evaluations", r.evaluations},
-         {"status", r.status},
-         {"peer_status", r.peer_status},
-         {"ns_per_op", finite_or_null(r.ns_per_op)},
-         {"counterpart", {{"method", r.counterpart_algorithm}, {"setting", r.counterpart_setting}}},
-         {"counterpart_ns_per_op", finite_or_null(r.counterpart_ns_per_op)}};
-  j["bounded"] = std::isfinite(r.estimate) && std::isfinite(r.error) ? json(r.estimate >= r.error) : json();
-  if (std::isfinite(counterpart_error)) j["counterpart_error"] = counterpart_error;
-  return j;
 }
 
 struct spline_deleter {
@@ -189,10 +136,8 @@ struct gsl_coordinate_splines {
   }
 };
 
-/// eval records of the GSL splines: the values (error in eps(double) x size, as curvebench's eval
-/// records) and the first derivative (setting "derivative=1", in eps(double) x the size of the
-/// exact derivative at the same parameters, as `curvebench check` measures a user's derivative),
-/// with curvebench's own derivative measured beside it.
+/// eval records of the GSL splines (peers_detail::eval_records) at the eval sweep's parameters; a
+/// spline GSL refused to build is a record without a value that keeps GSL's status.
 template <int Dim>
 void gsl_eval(const case_info& info, json& out, const any_curve<double, Dim>& c, case_reference<Dim>& ref,
               const sweep& w, const io::field& spec) {
@@ -200,69 +145,18 @@ void gsl_eval(const case_info& info, json& out, const any_curve<double, Dim>& c,
   if (!g.peer) return;
   const interval<double> d = c.domain();
   const std::vector<double> us = sample_parameters(d.lo, d.hi, w.eval_params);
-  const double n = static_cast<double>(us.size());
-  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  const double eps = std::numeric_limits<double>::epsilon();
-  for (int order : {0, 1}) {
-    const std::string setting = order == 0 ? std::string() : "derivative=1";
-    peer_record r{&vocab::quantities::eval,
-                  g.peer,
-                  setting,
-                  nan,
-                  nan,
-                  n,
-                  std::string(arclength::to_string(arclength::result_status::not_guaranteed)),
-                  g.peer_status,
-                  nan,
-                  std::string(vocab::methods::eval_default.id),
-                  setting,
-                  nan};
-    double counterpart_error = nan;
-    const auto ours = [&](double u) { return order == 0 ? c(u) : c.derivative(u, 1); };
-    if (g.ready()) {
-      std::vector<point<double, Dim>> values(us.size());
-      int failed = GSL_SUCCESS;
-      for (std::size_t j = 0; j < us.size(); ++j) {
-        int status = GSL_SUCCESS;
-        values[j] = g(us[j], order, status);
-        if (status != GSL_SUCCESS && failed == GSL_SUCCESS) failed = status;
-      }
-      r.peer_status = gsl_strerror(failed);
-      if (failed == GSL_SUCCESS) {
-        if (order == 0) {
-          ref.set_eval_parameters(us);
-          r.error = ref.eval_error(values);
-        } else {
-          double size = 0;
-          for (double u : us) size = std::max(size, ref.exact(u, 1).cwiseAbs().maxCoeff());
-          if (!(size > 0)) size = 1;
-          double peer_max = 0, ours_max = 0;
-          for (std::size_t j = 0; j < us.size(); ++j) {
-            peer_max = std::max(peer_max, ref.difference(us[j], 1, values[j]));
-            ours_max = std::max(ours_max, ref.difference(us[j], 1, ours(us[j])));
-          }
-          r.error = peer_max / (eps * size);
-          counterpart_error = ours_max / (eps * size);
-        }
-        r.ns_per_op = ns_per_call([&] {
-                        int status = GSL_SUCCESS;
-                        for (double u : us) {
-                          const point<double, Dim> p = g(u, order, status);
-                          asm volatile("" : : "g"(&p) : "memory");  // keep p
-                        }
-                      }) /
-                      n;
-        r.counterpart_ns_per_op = ns_per_call([&] {
-                                    for (double u : us) {
-                                      const point<double, Dim> p = ours(u);
-                                      asm volatile("" : : "g"(&p) : "memory");
-                                    }
-                                  }) /
-                                  n;
-      }
-    }
-    out.push_back(to_json(info, r, counterpart_error));
-  }
+  const bool ready = g.ready();
+  eval_records<Dim>(info, out, c, ref, us, *g.peer, gsl_library(), "", g.peer_status,
+                    [&](double u, int order, std::string& failure) {
+                      int status = GSL_SUCCESS;
+                      if (!ready) {
+                        failure = g.peer_status;
+                        return point<double, Dim>();
+                      }
+                      const point<double, Dim> p = g(u, order, status);
+                      if (status != GSL_SUCCESS) failure = gsl_strerror(status);
+                      return p;
+                    });
 }
 
 template <int Dim>
@@ -348,7 +242,7 @@ void gsl_length(const case_info& info, json& out, const any_curve<double, Dim>& 
         }
         r.counterpart_ns_per_op = counterpart_ns[tol];
       }
-      out.push_back(to_json(info, r));
+      out.push_back(to_json(info, r, gsl_library()));
     }
   }
 }
@@ -384,7 +278,6 @@ void gsl_u_of_s(const case_info& info, json& out, const any_curve<double, Dim>& 
                 const sweep& w) {
   constexpr std::size_t limit = 1000;
   constexpr int max_iterations = 100;
-  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   const std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> ws(
       gsl_integration_workspace_alloc(limit), gsl_integration_workspace_free);
   const std::unique_ptr<gsl_root_fsolver, void (*)(gsl_root_fsolver*)> brent(
@@ -410,7 +303,8 @@ void gsl_u_of_s(const case_info& info, json& out, const any_curve<double, Dim>& 
     if (!integrated(status)) {  // a tolerance qag refuses: no u to measure, the refusal is the record
       out.push_back(to_json(info, peer_record{&vocab::quantities::u_of_s, &vocab::peers::gsl_qag_brent, s, nan, nan,
                                               0.0, status_name(status), gsl_strerror(status), nan,
-                                              std::string(m::newton.id), s, nan}));
+                                              std::string(m::newton.id), s, nan},
+                             gsl_library()));
       continue;
     }
     // One query: u with |s(u) - s| <= tol L by GSL's account, or the status of why not.
@@ -479,13 +373,15 @@ void gsl_u_of_s(const case_info& info, json& out, const any_curve<double, Dim>& 
                                 }
                               }) /
                               n;
-    out.push_back(to_json(info, r));
+    out.push_back(to_json(info, r, gsl_library()));
   }
 }
 
 }  // namespace
 
-std::string gsl_version() { return GSL_VERSION; }
+json peer_versions() {
+  return {{"GSL", GSL_VERSION}, {"Boost.Math", boost_version()}, {"Eigen", eigen_version()}};
+}
 
 template <int Dim>
 json sweep_peers(const case_info& info, const any_curve<double, Dim>& c, case_reference<Dim>& ref, const sweep& w) {
@@ -495,6 +391,7 @@ json sweep_peers(const case_info& info, const any_curve<double, Dim>& c, case_re
   gsl_eval<Dim>(info, out, c, ref, w, spec);
   gsl_length<Dim>(info, out, c, ref, w);
   gsl_u_of_s<Dim>(info, out, c, ref, w);
+  boost_eigen_peers<Dim>(info, out, c, ref, w, spec);
   return out;
 }
 

@@ -1,7 +1,9 @@
 """Unit tests of scripts/report_peers.py (REPORT.md's "Peers" section) on outputs recorded from real
 runs and checked into tests/data/peers/: accuracy_gsl.json is two cases of a quick accuracy run
 (`curvebench accuracy --quick --only natural_cubic`, GSL 2.7.1, with the u(s) peer), trimmed to
-the records the section joins; scipy/ is scripts/peers/scipy_driver.py --quick on the same two
+the records the section joins; accuracy_boost_eigen.json is the Boost.Math and Eigen peers' records
+of a quick run on catmull_rom_centripetal_2d and hermite_knot_ratio_1e4 (Boost 1.74.0) with the
+curvebench records they join; scipy/ is scripts/peers/scipy_driver.py --quick on the same two
 cases with the `curvebench check` output of each CSV. Run by ctest
 (report_py) with the other tests of tests/python."""
 import copy
@@ -365,12 +367,51 @@ class SpeedRows(unittest.TestCase):
         self.assertEqual(rp.speed_rows(rows, vocab, {"SciPy"}), [])
 
 
+class BoostEigenRecorded(unittest.TestCase):
+    """The runner's Boost.Math peers as the section shows them (recorded, Boost 1.74.0)."""
+
+    def setUp(self):
+        self.acc = load("accuracy_boost_eigen.json")
+
+    def test_a_peer_on_part_of_the_domain_is_compared_with_curvebench_on_the_same_part(self):
+        # Boost's open catmull_rom is the case's curve on the interior segments only: its rows name
+        # the part and carry curvebench's error measured on the same parameters, not the whole
+        # domain's record (0.55 for the values on the interior; 0.36 for the default over the domain).
+        rows = {r[1]: r for r in rp.eval_rows(self.acc["records"], self.acc["peer_records"])}
+        interior = rows["peer_boost_catmull_rom segments=interior"]
+        self.assertEqual(interior[3], "default segments=interior")
+        record = next(r for r in self.acc["peer_records"]
+                      if r["method"] == "peer_boost_catmull_rom" and r["setting"] == "segments=interior")
+        self.assertEqual(interior[4], record["counterpart_error"])
+        self.assertLess(interior[2], 16)
+        # cubic_hermite represents the whole domain: the row joins the default evaluation's record.
+        whole = rows["peer_boost_cubic_hermite"]
+        own = next(r for r in self.acc["records"] if r["case"] == "hermite_knot_ratio_1e4" and r["method"] == "default")
+        self.assertEqual(whole[4], own["error"])
+
+    def test_recorded_findings(self):
+        # Boost 1.74's catmull_rom::prime is not the derivative of its curve (tests/test_spline_peers.cpp
+        # pins it); whole-domain Gauss-Kronrod steps over the 1e-4-wide segments and says it converged.
+        f = rp.findings(self.acc["peer_records"], self.acc["records"])
+        self.assertTrue(any(x.startswith("peer_boost_catmull_rom on catmull_rom_centripetal_2d "
+                                         "(segments=interior,derivative=1): error 6.20e+14") for x in f), f)
+        self.assertTrue(any(x.startswith("peer_boost_gauss_kronrod31 on hermite_knot_ratio_1e4 (tol=1e-10): "
+                                         "reported success") for x in f), f)
+        self.assertFalse(any("peer_boost_cubic_hermite" in x for x in f), f)
+
+    def test_versions_name_each_library_with_its_records(self):
+        rows = {r[0]: r[2] for r in rp.version_rows(self.acc, [])}
+        self.assertEqual(rows["Boost.Math 1.74.0"], 22)
+        self.assertEqual(rows["Eigen 3.4.0"], 0)
+
+
 class PeerIdsInTheVocabulary(unittest.TestCase):
     def test_every_peer_id_written_is_declared(self):
         import re
         with open(os.path.join(HERE, "..", "..", "bench", "harness", "vocabulary.hpp"), encoding="utf-8") as f:
             declared = set(re.findall(r'"(peer_[a-z0-9_]+)"', f.read()))
         written = {r["method"] for r in load("accuracy_gsl.json")["peer_records"]}
+        written |= {r["method"] for r in load("accuracy_boost_eigen.json")["peer_records"]}
         written |= {r["method"] for r in scipy_doc()["peer_records"]}
         with open(os.path.join(SCRIPTS, "peers", "scipy_driver.py"), encoding="utf-8") as f:
             peers_line = next(line for line in f if line.startswith("PEERS = "))
