@@ -244,6 +244,10 @@ TEST(run_case, boost_and_eigen_peers_measure_the_cases_they_represent) {
                         "slopes": [[1, 0], [1, 1], [0, 2]])");
   dir.add("hermite_broken", R"("type": "hermite", "points": [[0, 0], [2, 1], [3, 3]],
                                "incoming": [[1, 0], [1, 1], [0, 2]], "outgoing": [[1, 0], [2, -1], [0, 2]])");
+  dir.add("clamped_cubic", R"("type": "natural_cubic", "end": "clamped", "start_slope": [1, 2], "end_slope": [1, -1],
+                              "points": [[0, 0], [1, 2], [3, 3], [4, 0], [6, 1]])");
+  dir.add("clamped_cubic_knots", R"("type": "natural_cubic", "end": "clamped", "start_slope": [1, 2],
+                                    "end_slope": [1, -1], "knots": [0, 1, 3], "points": [[0, 0], [1, 2], [3, 3]])");
   const auto cases = curvebench::harness::load_cases(dir.path.string());
   // (case, method, setting) -> record, the eval peers only
   std::map<std::tuple<std::string, std::string, std::string>, json> eval;
@@ -298,8 +302,12 @@ TEST(run_case, boost_and_eigen_peers_measure_the_cases_they_represent) {
     }
   expect_close("hermite", hv::peers::boost_cubic_hermite, "");
   expect_close("hermite", hv::peers::boost_cubic_hermite, "derivative=1");
+  // cardinal_cubic_b_spline: the clamped spline on uniform knots only.
+  expect_close("clamped_cubic", hv::peers::boost_cardinal_cubic_b_spline, "");
+  expect_close("clamped_cubic", hv::peers::boost_cardinal_cubic_b_spline, "derivative=1");
   for (const auto& [key, r] : eval)
-    EXPECT_NE(std::get<0>(key), "hermite_broken") << "cubic_hermite has one slope per key: " << r.dump();
+    EXPECT_TRUE(std::get<0>(key) != "hermite_broken" && std::get<0>(key) != "clamped_cubic_knots")
+        << "cubic_hermite has one slope per key, cardinal_cubic_b_spline uniform knots: " << r.dump();
 }
 
 TEST(run_accuracy, returns_1_and_leaves_out_a_failed_case_0_when_all_run) {

@@ -18,6 +18,9 @@
 //             the interior segments [u_1, u_{n-2}] otherwise (setting "segments=interior");
 //           - interpolators::cubic_hermite, one per coordinate, on hermite cases with one slope per
 //             key ("slopes"; a broken tangent has no cubic_hermite);
+//           - interpolators::cardinal_cubic_b_spline, one per coordinate, given both end
+//             derivatives, on natural_cubic cases with "end": "clamped" and uniform knots (the
+//             clamped C2 spline on t0 + i h; tests/test_spline_peers.cpp);
 //           - Eigen::Spline with the degree fixed at compile time (3 and 5) and dynamic, on the
 //             bspline cases' own knot vector and control points (clamped, uniform or periodic).
 //           Boost and Eigen report no status; an exception (Boost's domain errors) is the record's
@@ -32,6 +35,7 @@
 #include "curvebench/curves/cardinal_spline.hpp"
 #include "curvebench/io/family.hpp"
 
+#include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <boost/math/interpolators/catmull_rom.hpp>
 #include <boost/math/interpolators/cubic_hermite.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
@@ -239,6 +243,46 @@ void boost_cubic_hermite(const case_info& info, json& out, const any_curve<doubl
                     });
 }
 
+template <int Dim>
+void boost_cardinal_cubic_b_spline(const case_info& info, json& out, const any_curve<double, Dim>& c,
+                                   case_reference<Dim>& ref, const sweep& w, const io::field& spec) {
+  if (spec.member("type").string() != "natural_cubic" || !spec.has("end") || spec.member("end").string() != "clamped")
+    return;
+  const point_list<double, Dim> p = io::detail::spec_points<double, Dim>(spec);
+  const std::vector<double> x = io::detail::knots_or_uniform<double>(spec, p.size());
+  const double h = (x.back() - x.front()) / static_cast<double>(x.size() - 1);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (x[i] != x.front() + static_cast<double>(i) * h) return;  // Boost's knots are t0 + i h exactly
+  const point<double, Dim> start = io::detail::one_point<double, Dim>(spec.member("start_slope"));
+  const point<double, Dim> end = io::detail::one_point<double, Dim>(spec.member("end_slope"));
+  using spline = boost::math::interpolators::cardinal_cubic_b_spline<double>;
+  std::vector<spline> b;
+  std::string refused;
+  try {
+    for (int k = 0; k < Dim; ++k) {
+      std::vector<double> y(p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) y[i] = p[i][k];
+      b.emplace_back(y.data(), y.size(), x.front(), h, start[k], end[k]);
+    }
+  } catch (const std::exception& e) {
+    refused = e.what();
+  }
+  const interval<double> d = c.domain();
+  eval_records<Dim>(info, out, c, ref, sample_parameters(d.lo, d.hi, w.eval_params),
+                    vocab::peers::boost_cardinal_cubic_b_spline, boost_library(), "", returned,
+                    [&](double u, int order, std::string& failure) {
+                      if (!refused.empty()) {
+                        failure = refused;
+                        return point<double, Dim>();
+                      }
+                      return catching<Dim>([&](double t, int o) {
+                        point<double, Dim> v;
+                        for (int k = 0; k < Dim; ++k) v[k] = o == 0 ? b[k](t) : b[k].prime(t);
+                        return v;
+                      })(u, order, failure);
+                    });
+}
+
 /// Eigen::Spline<double, Dim, Degree> (Degree = Eigen::Dynamic: the degree given at run time) on
 /// the B-spline's knots and control points.
 template <int Dim, int Degree>
@@ -288,6 +332,7 @@ void boost_eigen_peers(const case_info& info, json& out, const any_curve<double,
                        const sweep& w, const io::field& spec) {
   boost_catmull_rom<Dim>(info, out, c, ref, w, spec);
   boost_cubic_hermite<Dim>(info, out, c, ref, w, spec);
+  boost_cardinal_cubic_b_spline<Dim>(info, out, c, ref, w, spec);
   eigen_splines<Dim>(info, out, c, ref, w);
   boost_length<Dim>(info, out, c, ref, w);
 }
