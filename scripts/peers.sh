@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The optional peers (issue 15): installs what they need (apt, pinned versions, non-interactive)
 # and runs their drivers on the case suite, writing reports/peers_<driver>.json, which
-# scripts/report.py joins into REPORT.md's Peers section when present. The C++ peers (GSL) need
+# scripts/report.py joins into REPORT.md's Peers section when present. The C++ peers (GSL,
+# Boost.Math, Eigen) need
 # nothing from here: the accuracy runner runs them in every scripts/bench.sh.
 #   scripts/peers.sh               install, then run every driver (the full sweep's parameters)
 #   scripts/peers.sh --quick       the quick sweep's parameters and tolerances
