@@ -2,8 +2,8 @@
 # The optional peers (issue 15): installs what they need (apt, pinned versions, non-interactive)
 # and runs their drivers on the case suite, writing reports/peers_<driver>.json, which
 # scripts/report.py joins into REPORT.md's Peers section when present. The C++ peers (GSL,
-# Boost.Math, Eigen) need
-# nothing from here: the accuracy runner runs them in every scripts/bench.sh.
+# Boost.Math, Eigen) need nothing from here: the accuracy runner runs them in every
+# scripts/bench.sh.
 #   scripts/peers.sh               install, then run every driver (the full sweep's parameters)
 #   scripts/peers.sh --quick       the quick sweep's parameters and tolerances
 #   scripts/peers.sh --no-install  run only the drivers whose packages are already installed
