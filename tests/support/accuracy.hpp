@@ -21,10 +21,21 @@
 
 namespace curvebench::testing {
 
+#ifndef CURVEBENCH_SANITIZE_TYPED_REALS
 /// The four Real types every numerical family is tested on.
 using all_reals = ::testing::Types<float, double, long double, real50>;
 /// The IEEE types (for tests whose reference is a real50 instantiation of the same template).
 using ieee_reals = ::testing::Types<float, double, long double>;
+#else
+// The sanitizer build (scripts/test.sh --sanitize, tests/CMakeLists.txt) runs the typed tests in
+// float and double only. What AddressSanitizer and UBSan look for (an index out of range, a read
+// past a buffer, a signed overflow, a bad cast) follows the template's control flow, which is the
+// same for every Real; long double and real50 run in scripts/test.sh's own build, and the
+// real50 references of every test still run here. Measured: test_bspline.cpp compiles in 31 s
+// instead of 60 s at -Og with both sanitizers, test_cardinal_spline.cpp in 45 s instead of 81 s.
+using all_reals = ::testing::Types<float, double>;
+using ieee_reals = ::testing::Types<float, double>;
+#endif
 
 /// Text for diagnostics: hexfloat and decimal for IEEE types, 50 digits for multiprecision.
 template <class T>
