@@ -9,6 +9,7 @@
 #include "harness/sweep.hpp"
 #include "harness/vocabulary.hpp"
 
+#include "curvebench/arclength/length.hpp"
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/core/any_curve.hpp"
 #include "curvebench/io/spec.hpp"
@@ -18,7 +19,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -88,23 +91,47 @@ inline json to_json(const case_info& info, const peer_record& r, const std::stri
   return j;
 }
 
-/// A peer's evaluation of the curve: f(u, order, failure) -> P(u) (order 0) or P'(u) (order 1) at
-/// u inside the domain; a failure (a status, an exception's message) is written to `failure` and
-/// the value is then not used.
-template <int Dim>
-using peer_evaluation = point<double, Dim>(double u, int order, std::string& failure);
-
 /// eval records of a peer evaluating the case's curve at the parameters us: the values (setting
 /// `part`; error in eps(double) x size, as curvebench's eval records) and the first derivative
 /// (setting "derivative=1" after `part`, in eps(double) x the size of the exact derivative at the
 /// same parameters, as `curvebench check` measures a user's derivative), each with curvebench's
 /// own error at the same parameters beside it (counterpart_error) and both times per evaluation.
 /// `part` ("" for the whole domain) names the part of the domain the peer represents.
-/// ok_status: the library's words for a run without failure.
+/// ok_status: the library's words for a run without failure; refused: its words for why it built
+/// no curve ("" when it did), which leaves both records without a value.
+/// f(u, order, failure) -> P(u) (order 0) or P'(u) (order 1) at u inside the domain; a failure (a
+/// library's status written to `failure`, or an exception's message) leaves the record without a
+/// value, that message its peer_status.
+/// curvebench's adaptive_gk timed once per tolerance for every peer of a case's lengths (GSL's
+/// qag and qags, Boost's three rules): the counterpart of them all. It costs 0.2 s a call on the
+/// 1e5-segment case.
+template <int Dim>
+class adaptive_gk_times {
+ public:
+  explicit adaptive_gk_times(const any_curve<double, Dim>& c) : c_(&c) {}
+  /// ns per adaptive_length(c) at relative tolerance tol.
+  double operator()(double tol) {
+    const auto [it, added] = ns_.try_emplace(tol, 0.0);
+    if (added) {
+      arclength::adaptive_options<double> o;
+      o.relative_tolerance = tol;
+      it->second = ns_per_call([&] {
+        const auto l = arclength::adaptive_length(*c_, o);
+        asm volatile("" : : "g"(&l) : "memory");
+      });
+    }
+    return it->second;
+  }
+
+ private:
+  const any_curve<double, Dim>* c_;
+  std::map<double, double> ns_;
+};
+
 template <int Dim, class F>
 void eval_records(const case_info& info, json& out, const any_curve<double, Dim>& c, case_reference<Dim>& ref,
                   const std::vector<double>& us, const vocab::peer& peer, const std::string& library,
-                  const std::string& part, const std::string& ok_status, F&& f) {
+                  const std::string& part, const std::string& ok_status, const std::string& refused, F&& f) {
   const double n = static_cast<double>(us.size());
   const double eps = std::numeric_limits<double>::epsilon();
   for (int order : {0, 1}) {
@@ -124,8 +151,12 @@ void eval_records(const case_info& info, json& out, const any_curve<double, Dim>
                   nan};
     const auto ours = [&](double u) { return order == 0 ? c(u) : c.derivative(u, 1); };
     std::vector<point<double, Dim>> values(us.size());
-    std::string failed;
-    for (std::size_t j = 0; j < us.size() && failed.empty(); ++j) values[j] = f(us[j], order, failed);
+    std::string failed = refused;
+    try {
+      for (std::size_t j = 0; j < us.size() && failed.empty(); ++j) values[j] = f(us[j], order, failed);
+    } catch (const std::exception& e) {
+      failed = e.what();
+    }
     double counterpart_error = nan;
     if (failed.empty()) {
       double size = 0;
@@ -167,7 +198,8 @@ namespace curvebench::harness {
 /// The Boost.Math and Eigen peers of a case (harness/sweep_peers_boost_eigen.cpp), appended to out.
 template <int Dim>
 void boost_eigen_peers(const case_info& info, nlohmann::json& out, const any_curve<double, Dim>& c,
-                       case_reference<Dim>& ref, const sweep& w, const io::field& spec);
+                       case_reference<Dim>& ref, const sweep& w, const io::field& spec,
+                       peers_detail::adaptive_gk_times<Dim>& adaptive_gk_ns);
 
 std::string boost_version();  ///< "1.74.0"
 std::string eigen_version();  ///< "3.4.0"

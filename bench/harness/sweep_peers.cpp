@@ -145,14 +145,9 @@ void gsl_eval(const case_info& info, json& out, const any_curve<double, Dim>& c,
   if (!g.peer) return;
   const interval<double> d = c.domain();
   const std::vector<double> us = sample_parameters(d.lo, d.hi, w.eval_params);
-  const bool ready = g.ready();
-  eval_records<Dim>(info, out, c, ref, us, *g.peer, gsl_library(), "", g.peer_status,
-                    [&](double u, int order, std::string& failure) {
+  eval_records<Dim>(info, out, c, ref, us, *g.peer, gsl_library(), "", gsl_strerror(GSL_SUCCESS),
+                    g.ready() ? std::string() : g.peer_status, [&](double u, int order, std::string& failure) {
                       int status = GSL_SUCCESS;
-                      if (!ready) {
-                        failure = g.peer_status;
-                        return point<double, Dim>();
-                      }
                       const point<double, Dim> p = g(u, order, status);
                       if (status != GSL_SUCCESS) failure = gsl_strerror(status);
                       return p;
@@ -189,7 +184,7 @@ std::string status_name(int status) {
 
 template <int Dim>
 void gsl_length(const case_info& info, json& out, const any_curve<double, Dim>& c, const case_reference<Dim>& ref,
-                const sweep& w) {
+                const sweep& w, adaptive_gk_times<Dim>& adaptive_gk_ns) {
   constexpr std::size_t limit = 1000;  // the workspace size of GSL's own examples
   const std::unique_ptr<gsl_integration_workspace, void (*)(gsl_integration_workspace*)> ws(
       gsl_integration_workspace_alloc(limit), gsl_integration_workspace_free);
@@ -197,9 +192,6 @@ void gsl_length(const case_info& info, json& out, const any_curve<double, Dim>& 
   const interval<double> d = c.domain();
   const double L = ref.length();
   namespace m = vocab::methods;
-  // adaptive_gk's time per tolerance, measured once for qag and qags (it costs 0.2 s a call on the
-  // 1e5-segment case).
-  std::map<double, double> counterpart_ns;
   for (const vocab::peer* peer : {&vocab::peers::gsl_qag, &vocab::peers::gsl_qags}) {
     const bool qags = peer == &vocab::peers::gsl_qags;
     for (double tol : w.adaptive_tol) {
@@ -232,15 +224,7 @@ void gsl_length(const case_info& info, json& out, const any_curve<double, Dim>& 
           integrate();
           asm volatile("" : : "g"(&value) : "memory");
         });
-        if (!counterpart_ns.count(tol)) {
-          arclength::adaptive_options<double> o;
-          o.relative_tolerance = tol;
-          counterpart_ns[tol] = ns_per_call([&] {
-            const auto q = arclength::adaptive_length(c, o);
-            asm volatile("" : : "g"(&q) : "memory");
-          });
-        }
-        r.counterpart_ns_per_op = counterpart_ns[tol];
+        r.counterpart_ns_per_op = adaptive_gk_ns(tol);
       }
       out.push_back(to_json(info, r, gsl_library()));
     }
@@ -389,9 +373,10 @@ json sweep_peers(const case_info& info, const any_curve<double, Dim>& c, case_re
   json out = json::array();
   const io::field spec = io::root(info.spec, info.name);
   gsl_eval<Dim>(info, out, c, ref, w, spec);
-  gsl_length<Dim>(info, out, c, ref, w);
+  adaptive_gk_times<Dim> adaptive_gk_ns(c);
+  gsl_length<Dim>(info, out, c, ref, w, adaptive_gk_ns);
   gsl_u_of_s<Dim>(info, out, c, ref, w);
-  boost_eigen_peers<Dim>(info, out, c, ref, w, spec);
+  boost_eigen_peers<Dim>(info, out, c, ref, w, spec, adaptive_gk_ns);
   return out;
 }
 

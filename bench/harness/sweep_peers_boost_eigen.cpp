@@ -8,7 +8,8 @@
 //           is relative to the integral's L1 norm, here the length itself). Estimate: the error
 //           Boost returns, / L. Boost has no status; both stop when their error estimate is at most
 //           tol x L1 or at their depth cap, so the record says which ("converged" or "cap_hit").
-//           Counterpart: adaptive_gk at the same tol, timed back to back.
+//           Counterpart: adaptive_gk at the same tol, timed once per case for GSL's and Boost's rules
+//           (peers_detail::adaptive_gk_times).
 //   eval    values and first derivatives (peers_detail::eval_records) of
 //           - interpolators::catmull_rom (the Barry-Goldman form, alpha from the spec) on catmull_rom
 //             cases without given knots: Boost always takes the wrapped neighbours (P_{n-1} before
@@ -66,14 +67,13 @@ std::string eigen_library() { return "Eigen " + eigen_version(); }
 
 template <int Dim>
 void boost_length(const case_info& info, json& out, const any_curve<double, Dim>& c, const case_reference<Dim>& ref,
-                  const sweep& w) {
+                  const sweep& w, adaptive_gk_times<Dim>& adaptive_gk_ns) {
   constexpr unsigned max_depth = 15;  // gauss_kronrod's default
   namespace q = boost::math::quadrature;
   namespace m = vocab::methods;
   const interval<double> d = c.domain();
   const double L = ref.length();
   q::tanh_sinh<double> ts;  // max_refinements 15, its default
-  std::map<double, double> counterpart_ns;
   for (const vocab::peer* peer :
        {&vocab::peers::boost_gauss_kronrod15, &vocab::peers::boost_gauss_kronrod31, &vocab::peers::boost_tanh_sinh}) {
     for (double tol : w.adaptive_tol) {
@@ -127,15 +127,7 @@ void boost_length(const case_info& info, json& out, const any_curve<double, Dim>
           const double v = integrate();
           asm volatile("" : : "g"(&v) : "memory");
         });
-        if (!counterpart_ns.count(tol)) {
-          arclength::adaptive_options<double> o;
-          o.relative_tolerance = tol;
-          counterpart_ns[tol] = ns_per_call([&] {
-            const auto l = arclength::adaptive_length(c, o);
-            asm volatile("" : : "g"(&l) : "memory");
-          });
-        }
-        r.counterpart_ns_per_op = counterpart_ns[tol];
+        r.counterpart_ns_per_op = adaptive_gk_ns(tol);
       }
       out.push_back(to_json(info, r, boost_library()));
     }
@@ -151,16 +143,13 @@ point<double, Dim> to_point(const std::array<double, Dim>& a) {
   return p;
 }
 
-/// f(u, order) with an exception's message as the failure.
-template <int Dim, class F>
-auto catching(F f) {
-  return [f](double u, int order, std::string& failure) {
-    try {
-      return f(u, order);
-    } catch (const std::exception& e) {
-      failure = e.what();
-      return point<double, Dim>();
-    }
+/// The evaluation of one Boost interpolator per coordinate (value or prime), for eval_records.
+template <int Dim, class Spline>
+auto per_coordinate(const std::vector<Spline>& splines) {
+  return [&splines](double u, int order, std::string&) {
+    point<double, Dim> v;
+    for (int k = 0; k < Dim; ++k) v[k] = order == 0 ? splines[k](u) : splines[k].prime(u);
+    return v;
   };
 }
 
@@ -195,14 +184,8 @@ void boost_catmull_rom(const case_info& info, json& out, const any_curve<double,
   }
   const std::vector<double> us = sample_parameters(part.lo, part.hi, w.eval_params);
   eval_records<Dim>(info, out, c, ref, us, vocab::peers::boost_catmull_rom, boost_library(), part_setting, returned,
-                    [&](double u, int order, std::string& failure) {
-                      if (!cr) {
-                        failure = refused;
-                        return point<double, Dim>();
-                      }
-                      return catching<Dim>([&](double s, int o) {
-                        return to_point<Dim>(o == 0 ? (*cr)(s) : cr->prime(s));
-                      })(u, order, failure);
+                    refused, [&](double u, int order, std::string&) {
+                      return to_point<Dim>(order == 0 ? (*cr)(u) : cr->prime(u));
                     });
 }
 
@@ -230,17 +213,7 @@ void boost_cubic_hermite(const case_info& info, json& out, const any_curve<doubl
   }
   const interval<double> d = c.domain();
   eval_records<Dim>(info, out, c, ref, sample_parameters(d.lo, d.hi, w.eval_params), vocab::peers::boost_cubic_hermite,
-                    boost_library(), "", returned, [&](double u, int order, std::string& failure) {
-                      if (!refused.empty()) {
-                        failure = refused;
-                        return point<double, Dim>();
-                      }
-                      return catching<Dim>([&](double t, int o) {
-                        point<double, Dim> v;
-                        for (int k = 0; k < Dim; ++k) v[k] = o == 0 ? h[k](t) : h[k].prime(t);
-                        return v;
-                      })(u, order, failure);
-                    });
+                    boost_library(), "", returned, refused, per_coordinate<Dim>(h));
 }
 
 template <int Dim>
@@ -269,18 +242,8 @@ void boost_cardinal_cubic_b_spline(const case_info& info, json& out, const any_c
   }
   const interval<double> d = c.domain();
   eval_records<Dim>(info, out, c, ref, sample_parameters(d.lo, d.hi, w.eval_params),
-                    vocab::peers::boost_cardinal_cubic_b_spline, boost_library(), "", returned,
-                    [&](double u, int order, std::string& failure) {
-                      if (!refused.empty()) {
-                        failure = refused;
-                        return point<double, Dim>();
-                      }
-                      return catching<Dim>([&](double t, int o) {
-                        point<double, Dim> v;
-                        for (int k = 0; k < Dim; ++k) v[k] = o == 0 ? b[k](t) : b[k].prime(t);
-                        return v;
-                      })(u, order, failure);
-                    });
+                    vocab::peers::boost_cardinal_cubic_b_spline, boost_library(), "", returned, refused,
+                    per_coordinate<Dim>(b));
 }
 
 /// Eigen::Spline<double, Dim, Degree> (Degree = Eigen::Dynamic: the degree given at run time) on
@@ -296,7 +259,7 @@ void eigen_spline(const case_info& info, json& out, const any_curve<double, Dim>
   typename spline::ControlPointVectorType ctrls(Dim, static_cast<Eigen::Index>(cp.size()));
   for (std::size_t i = 0; i < cp.size(); ++i) ctrls.col(static_cast<Eigen::Index>(i)) = cp[i];
   const spline s(knots, ctrls);
-  eval_records<Dim>(info, out, c, ref, us, peer, eigen_library(), "", returned,
+  eval_records<Dim>(info, out, c, ref, us, peer, eigen_library(), "", returned, "",
                     [&](double u, int order, std::string&) -> point<double, Dim> {
                       if (order == 0) return s(u);
                       return s.derivatives(u, 1).col(1);
@@ -329,17 +292,17 @@ std::string eigen_version() {
 
 template <int Dim>
 void boost_eigen_peers(const case_info& info, json& out, const any_curve<double, Dim>& c, case_reference<Dim>& ref,
-                       const sweep& w, const io::field& spec) {
+                       const sweep& w, const io::field& spec, adaptive_gk_times<Dim>& adaptive_gk_ns) {
   boost_catmull_rom<Dim>(info, out, c, ref, w, spec);
   boost_cubic_hermite<Dim>(info, out, c, ref, w, spec);
   boost_cardinal_cubic_b_spline<Dim>(info, out, c, ref, w, spec);
   eigen_splines<Dim>(info, out, c, ref, w);
-  boost_length<Dim>(info, out, c, ref, w);
+  boost_length<Dim>(info, out, c, ref, w, adaptive_gk_ns);
 }
 
 template void boost_eigen_peers<2>(const case_info&, json&, const any_curve<double, 2>&, case_reference<2>&,
-                                   const sweep&, const io::field&);
+                                   const sweep&, const io::field&, adaptive_gk_times<2>&);
 template void boost_eigen_peers<3>(const case_info&, json&, const any_curve<double, 3>&, case_reference<3>&,
-                                   const sweep&, const io::field&);
+                                   const sweep&, const io::field&, adaptive_gk_times<3>&);
 
 }  // namespace curvebench::harness
