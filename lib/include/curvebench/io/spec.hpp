@@ -142,4 +142,24 @@ template <class Real, int Dim>
   }
 }
 
+// The in-tree builds (tests, harness, tool) compile curve_from_spec once per Real and Dim in
+// lib/src/spec_instances_*.cpp rather than in every file that reads a spec: each instantiation builds
+// every family through any_curve, 30-80 s of compilation per file. CMake's curvebench_spec_instances
+// target defines the macro; the installed, header-only io layer never sees it.
+#ifdef CURVEBENCH_IO_SPEC_INSTANCES
+}  // namespace curvebench::io
+#include "curvebench/reference/multiprecision.hpp"
+namespace curvebench::io {
+#define CURVEBENCH_IO_SPEC_INSTANCE(Real, Dim) \
+  extern template any_curve<Real, Dim> curve_from_spec<Real, Dim>(const field&);
+CURVEBENCH_IO_SPEC_INSTANCE(double, 1)
+CURVEBENCH_IO_SPEC_INSTANCE(double, 2)
+CURVEBENCH_IO_SPEC_INSTANCE(double, 3)
+CURVEBENCH_IO_SPEC_INSTANCE(double, 4)
+CURVEBENCH_IO_SPEC_INSTANCE(real50, 1)
+CURVEBENCH_IO_SPEC_INSTANCE(real50, 2)
+CURVEBENCH_IO_SPEC_INSTANCE(real50, 3)
+#undef CURVEBENCH_IO_SPEC_INSTANCE
+#endif
+
 }  // namespace curvebench::io
