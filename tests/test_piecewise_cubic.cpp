@@ -463,9 +463,12 @@ TYPED_TEST(lookup_test, segment_lookup_equals_binary_search_at_knots_neighbours_
   }
 }
 
-// The sorted power path (per-segment runs, coefficients hoisted) computes what single calls do, in
-// the same order: bit-identical values, also with repeated parameters, runs that skip segments,
-// every knot and its neighbours, and both domain ends.
+// The sorted power path (per-segment runs, coefficients hoisted, where parameters are dense; point
+// by point where they are sparse) computes what single calls do, in the same order: bit-identical
+// values, also with repeated parameters, runs that skip segments, every knot and its neighbours,
+// and both domain ends. lookup_parameters puts about 3 parameters per segment before the random
+// ones, so each knot set takes the sparse path (fewer than 4 per segment) at 3 random parameters
+// and the dense one (runs longer than the 8 a block takes) at 50000; 1024 gives either.
 TYPED_TEST(lookup_test, sorted_power_path_is_bit_identical_to_single_calls) {
   using Real = TypeParam;
   for (const auto& [name, k] : lookup_knot_sets<Real>()) {

@@ -11,8 +11,9 @@
 // segment, and a binary search over the few knots of the bucket (corrected against the neighbours
 // at the bucket's edges) finishes: the segment is the same as a binary search over all knots at
 // every u. evaluate_batch and evaluate_sorted (non-decreasing parameters; the default power
-// evaluation walks the segments and runs a branch-free loop per segment over its parameters, the
-// coefficients hoisted, bit-identical to single calls) never allocate.
+// evaluation walks the segments and, where the parameters are dense, runs a branch-free loop per
+// segment over its parameters, the coefficients hoisted; sparse ones go point by point; both
+// bit-identical to single calls) never allocate.
 // Sources: seeds 000, 001, 002 (basis matrices, T · M · G); Farin (2002) for de Casteljau.
 // Cost: O(1) per value after lookup. Accuracy: O(eps · scale), scale the coefficients' size (power)
 // or the control items' (matrix, bezier); de Casteljau the most stable.
@@ -439,25 +440,44 @@ class piecewise_cubic {
     return ok;
   }
 
-  // evaluate_sorted's power path for checked input: per segment, the run of parameters below its
-  // right knot, then one loop over the run with the segment's coefficients hoisted. The arithmetic
-  // is horner()'s, in the same order, so each value is bit-identical to operator().
+  // evaluate_sorted's power path for checked input. Dense parameters (at least 4 per segment they
+  // span, on average) go by runs: per segment, its run of parameters, found 8 at a time (one
+  // comparison per 8, since the parameters are sorted), then one loop over the run with the
+  // segment's coefficients hoisted, which the compiler vectorises. Sparse ones go point by point,
+  // stepping the segment forward: a run of one or two parameters costs more than it saves. The
+  // arithmetic is horner()'s, in the same order, so each value is bit-identical to operator().
   void sorted_power(std::span<const Real> us, std::span<point_type> out) const {
     const std::size_t count = us.size(), last = segment_count() - 1;
     std::size_t i = locate(us.front());
+    const std::size_t spanned = locate(us.back()) - i + 1;
+    if (count < 4 * spanned) {
+      for (std::size_t k = 0; k < count; ++k) {
+        while (!(us[k] < lookup_[i].right)) ++i;  // +inf at the last segment
+        out[k] = horner(power_[i], (us[k] - lookup_[i].knot) / lookup_[i].h);
+      }
+      return;
+    }
     std::size_t k = 0;
     while (k < count) {
-      std::size_t e = count;
-      if (i < last) {
-        const Real right = knots_[i + 1];
-        e = k;
-        while (e < count && us[e] < right) ++e;
-      }
+      const std::size_t e = i < last ? run_end(us, k, knots_[i + 1]) : count;
       run_power(i, us.data() + k, out.data() + k, e - k);
       k = e;
       if (k < count)
         while (i < last && !(us[k] < knots_[i + 1])) ++i;
     }
+  }
+
+  // The first index e >= k with us[e] >= right (or the size): the first 8 one by one (most runs of
+  // sparse parameters end there), then whole blocks of 8 by their last parameter, then one by one.
+  [[nodiscard]] static std::size_t run_end(std::span<const Real> us, std::size_t k, const Real& right) {
+    constexpr std::size_t block = 8;
+    const std::size_t count = us.size(), first = std::min(count, k + block);
+    std::size_t e = k;
+    while (e < first && us[e] < right) ++e;
+    if (e < k + block) return e;
+    while (e + block <= count && us[e + block - 1] < right) e += block;
+    while (e < count && us[e] < right) ++e;
+    return e;
   }
 
   void run_power(std::size_t i, const Real* us, point_type* out, std::size_t m) const {
