@@ -4,7 +4,7 @@
 #   scripts/setup.sh [PACKAGE...]   the packages given are needed too (fuzz.sh: clang, libFuzzer)
 set -euo pipefail
 
-packages=(g++ cmake make ccache libeigen3-dev libboost-dev libboost-math-dev libbenchmark-dev libgtest-dev libgmock-dev
+packages=(g++ cmake make ninja-build ccache libeigen3-dev libboost-dev libboost-math-dev libbenchmark-dev libgtest-dev libgmock-dev
           nlohmann-json3-dev libcli11-dev libgsl-dev python3-matplotlib python3-numpy "$@")
 
 missing=()
