@@ -3,8 +3,8 @@
 // batches of 1024 (unsorted: one lookup each; sorted: the segment-walking fast path), on uniform
 // knots (O(1) lookup) and non-uniform knots (bucket index), beside floors timed in the same run:
 //   floor_horner        the simplest correct single evaluation: a flat coefficient array, the O(1)
-//                       uniform index (std::upper_bound on other knots), t = (u - u_i) / h_i, Horner,
-//                       no checks;
+//                       uniform index (std::upper_bound on other knots), t = (u - u_i) fl(1 / h_i)
+//                       (the engine's local parameter, within 4 u), Horner, no checks;
 //   floor_soa_sorted    a sorted batch with each segment's coefficients hoisted and the coordinates
 //                       in separate arrays (SoA), one branch-free loop per segment;
 //   floor_store_stream  a store-only stream of the batch's output bytes: the memory bound, timed at
@@ -129,7 +129,7 @@ double max_error(const cb::piecewise_cubic<cb::real50, dim>& ref, const std::vec
 
 template <class Real>
 struct floor_kernel {
-  std::vector<Real> knots, h;
+  std::vector<Real> knots, rcp_h;  // rcp_h[i] = fl(1 / h_i)
   std::vector<Real> coef;                       // AoS: coef[(4 i + j) dim + d]
   std::array<std::vector<Real>, 4 * dim> soa;   // SoA: soa[j dim + d][i]
   bool uniform = false;
@@ -142,7 +142,7 @@ struct floor_kernel {
     const std::size_t n = c.segment_count();
     last = n - 1;
     for (std::size_t i = 0; i < n; ++i) {
-      h.push_back(knots[i + 1] - knots[i]);
+      rcp_h.push_back(Real(1) / (knots[i + 1] - knots[i]));
       for (std::size_t j = 0; j < 4; ++j)
         for (int d = 0; d < dim; ++d) {
           coef.push_back(c.power_coefficients(i)[j][d]);
@@ -164,7 +164,7 @@ struct floor_kernel {
 
   [[nodiscard]] cb::point<Real, dim> operator()(Real u) const {
     const std::size_t i = segment(u);
-    const Real t = (u - knots[i]) / h[i];
+    const Real t = (u - knots[i]) * rcp_h[i];
     const Real* a = coef.data() + 4 * dim * i;
     cb::point<Real, dim> p;
     for (int d = 0; d < dim; ++d) p[d] = a[d] + t * (a[dim + d] + t * (a[2 * dim + d] + t * a[3 * dim + d]));
@@ -180,12 +180,12 @@ struct floor_kernel {
         e = k;
         while (e < count && us[e] < knots[i + 1]) ++e;
       }
-      const Real ui = knots[i], hi = h[i];
+      const Real ui = knots[i], ri = rcp_h[i];
       Real a[4][dim];
       for (std::size_t j = 0; j < 4; ++j)
         for (int d = 0; d < dim; ++d) a[j][d] = soa[j * dim + static_cast<std::size_t>(d)][i];
       for (std::size_t m = k; m < e; ++m) {
-        const Real t = (us[m] - ui) / hi;
+        const Real t = (us[m] - ui) * ri;
         for (int d = 0; d < dim; ++d) x[static_cast<std::size_t>(d)][m] = a[0][d] + t * (a[1][d] + t * (a[2][d] + t * a[3][d]));
       }
       k = e;

@@ -1,9 +1,10 @@
 // piecewise_cubic: the shared evaluation engine of every cubic spline family (Hermite,
 // cardinal/Catmull-Rom, Kochanek-Bartels, natural, cubic B-splines).
-// Knots u_0 < ... < u_n; segment i on [u_i, u_{i+1}] with local t = (u - u_i) / h_i is
-// P_i(t) = T(t) · M_i · G_i, T = [1 t t^2 t^3] (basis/cubic_matrices.hpp); an interior knot belongs
-// to the segment on its right, u_n to the last. Stored per segment: power coefficients M_i G_i,
-// G_i and M_i, and Bezier points. Algorithms (cubic_algorithm, per call): power (Horner, ~3 fma per
+// Knots u_0 < ... < u_n; segment i on [u_i, u_{i+1}] with local t = (u - u_i) / h_i (evaluated as
+// (u - u_i) fl(1 / h_i): no division per call, one u more, see local_t) is P_i(t) = T(t) · M_i · G_i,
+// T = [1 t t^2 t^3] (basis/cubic_matrices.hpp); an interior knot belongs to the segment on its
+// right, u_n to the last. Stored per segment: power coefficients M_i G_i, G_i and M_i, and Bezier
+// points. Algorithms (cubic_algorithm, per call): power (Horner, ~3 fma per
 // coordinate), matrix (T · M · G per call, the textbook form), bezier (de Casteljau, 6 lerps).
 // Derivatives of order <= 3 exact by the chain rule h_i^-k; higher orders zero. Segment lookup O(1)
 // for uniform knots (index corrected against the neighbours); for other knots O(1) expected: an
@@ -25,9 +26,10 @@
 // exact coefficient, so the bound holds the rounding that happened (a few ulps of |a|) rather than
 // the worst case 4 eps |M| |G|, which far from the origin is 1e3 times larger; other Reals take the
 // worst case), Horner's gamma_6 sum |a_j| (order 1: gamma_5 over 1, 2, 3 times |a_1..3|, the
-// factor 3 rounding once) (Higham 2002, 5.1), and t = fl((u - u_i) / h_i)'s 3 u (the difference,
-// the division, h_i's own rounding) times max |P_i'(t)| (order 1: |P_i''|); order 1 multiplies by
-// fl(1 / h_i) with 3 u more (h rounded, 1 / h, the product). u = eps / 2 is the unit roundoff;
+// factor 3 rounding once) (Higham 2002, 5.1), and t = fl(fl(u - u_i) fl(1 / h_i))'s 4 u (the
+// difference, h_i's own rounding, the reciprocal, the product; no division per evaluation) times
+// max |P_i'(t)| (order 1: |P_i''|); order 1 multiplies by fl(1 / h_i) with 3 u more (h rounded,
+// 1 / h, the product). u = eps / 2 is the unit roundoff;
 // norms are Euclidean over the coordinates (the componentwise bounds summed as vectors), and 1%
 // covers gamma_k = k u / (1 - k u) and the second-order terms.
 #pragma once
@@ -91,6 +93,12 @@ template <class Real>
 
 template <class Real, int Dim>
 class piecewise_cubic {
+  // Per segment, what the lookup and t need, in one place: the knots to check u against (-inf,
+  // +inf at the ends), u_i and fl(1 / h_i).
+  struct lookup_record {
+    Real left, right, knot, inv_h;
+  };
+
  public:
   using real_type = Real;
   using point_type = point<Real, Dim>;
@@ -180,22 +188,23 @@ class piecewise_cubic {
     if (!(lo_ <= u && u <= hi_)) out_of_domain(u);
     const std::size_t i = locate(u);
     const lookup_record& r = lookup_[i];
-    return horner(power_[i], (u - r.knot) / r.h);
+    return horner(power_[i], local_t(i, r, u));
   }
   [[nodiscard]] CURVEBENCH_PC_HOT point_type derivative(const Real& u, int order) const {
     // P'(u), the speed of every arc-length method, inline like operator(): the same operations as
-    // the general path (t by the division by h, the power-form derivative, the chain rule's
+    // the general path (t by local_t, the power-form derivative, the chain rule's
     // fl(1 / h)), so the same rounding bound; where FMA is enabled (-march=native) the compiler
     // may contract them differently in the two contexts, a difference of an ulp or so.
     if (order == 1) {
       if (!(lo_ <= u && u <= hi_)) out_of_domain(u);
       const std::size_t i = locate(u);
       const lookup_record& r = lookup_[i];
-      const Real t = (u - r.knot) / r.h;
+      const Real t = local_t(i, r, u);
       const std::array<point_type, 4>& a = power_[i];
-      // inv_h_[i] is fl(1 / h_i), the chain rule's factor computed once: one division per call
-      // instead of two (the divider, shared with the speed's square root, is what limits it).
-      return point_type((a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]))) * inv_h_[i]);
+      // The chain rule's factor fl(1 / h_i), computed once: no division per call (the divider,
+      // shared with the speed's square root, is what limits the arc-length methods).
+      const point_type dt = a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]));
+      return reciprocal_ ? point_type(dt * r.inv_h) : point_type(dt / h_[i]);
     }
     return evaluate(u, order, cubic_algorithm::power);
   }
@@ -212,7 +221,7 @@ class piecewise_cubic {
     validate::derivative_order(order);
     check_parameter(u, domain());
     const std::size_t i = locate(u);
-    return eval_segment(i, (u - knots_[i]) / h_[i], order, algorithm);
+    return eval_segment(i, local_t(i, lookup_[i], u), order, algorithm);
   }
 
  public:
@@ -240,7 +249,7 @@ class piecewise_cubic {
     for (std::size_t k = 0; k < us.size(); ++k) {
       check_parameter(us[k], d, "us", k);
       const std::size_t i = locate(us[k]);
-      out[k] = eval_segment(i, (us[k] - knots_[i]) / h_[i], order, algorithm);
+      out[k] = eval_segment(i, local_t(i, lookup_[i], us[k]), order, algorithm);
     }
   }
 
@@ -271,7 +280,7 @@ class piecewise_cubic {
         validate::fail("us must be non-decreasing for evaluate_sorted: " + validate::indexed("us", k) + " = " +
                        to_text(u) + " < " + validate::indexed("us", k - 1) + " = " + to_text(us[k - 1]));
       while (i < last && !(u < knots_[i + 1])) ++i;
-      out[k] = eval_segment(i, (u - knots_[i]) / h_[i], order, algorithm);
+      out[k] = eval_segment(i, local_t(i, lookup_[i], u), order, algorithm);
     }
   }
 
@@ -344,7 +353,12 @@ class piecewise_cubic {
     lookup_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
       lookup_[i] = {i == 0 ? -std::numeric_limits<Real>::infinity() : knots_[i],
-                    i == last_ ? std::numeric_limits<Real>::infinity() : knots_[i + 1], knots_[i], h_[i]};
+                    i == last_ ? std::numeric_limits<Real>::infinity() : knots_[i + 1], knots_[i], inv_h_[i]};
+    // t by the reciprocal needs fl(1 / h_i) in the normal range for every segment, where it is
+    // within u of 1 / h_i (see local_t); otherwise every segment divides.
+    reciprocal_ = true;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(is_finite(inv_h_[i]) && abs(inv_h_[i]) >= std::numeric_limits<Real>::min())) reciprocal_ = false;
     build_buckets();
     build_rounding_bounds(std::vector<std::array<Real, 4>>(n, std::array<Real, 4>{}));
   }
@@ -370,9 +384,9 @@ class piecewise_cubic {
       const Real slope = a[1] + Real(2) * a[2] + Real(3) * a[3];  // max |P_i'(t)| on [0, 1], and sum |b_j|
       const Real curvature = Real(2) * a[2] + Real(6) * a[3];      // max |P_i''(t)|
       const Real u = eps / Real(2);
-      const Real e0 = da[0] + da[1] + da[2] + da[3] + Real(6) * u * sum_a + Real(3) * u * slope;
+      const Real e0 = da[0] + da[1] + da[2] + da[3] + Real(6) * u * sum_a + Real(4) * u * slope;
       const Real e1 =
-          (da[1] + Real(2) * da[2] + Real(3) * da[3] + Real(5) * u * slope + Real(3) * u * curvature + Real(3) * u * slope) /
+          (da[1] + Real(2) * da[2] + Real(3) * da[3] + Real(5) * u * slope + Real(4) * u * curvature + Real(3) * u * slope) /
           h_[i];
       b0 = max(b0, e0);
       b1 = max(b1, e1);
@@ -453,7 +467,7 @@ class piecewise_cubic {
     if (count < 4 * spanned) {
       for (std::size_t k = 0; k < count; ++k) {
         while (!(us[k] < lookup_[i].right)) ++i;  // +inf at the last segment
-        out[k] = horner(power_[i], (us[k] - lookup_[i].knot) / lookup_[i].h);
+        out[k] = horner(power_[i], local_t(i, lookup_[i], us[k]));
       }
       return;
     }
@@ -481,12 +495,21 @@ class piecewise_cubic {
   }
 
   void run_power(std::size_t i, const Real* us, point_type* out, std::size_t m) const {
-    const Real ui = knots_[i], hi = h_[i];
+    if (reciprocal_)
+      run_power_kernel<true>(i, us, out, m);
+    else
+      run_power_kernel<false>(i, us, out, m);
+  }
+
+  // One segment's run: t as local_t computes it (the branch hoisted), Horner per coordinate.
+  template <bool Reciprocal>
+  void run_power_kernel(std::size_t i, const Real* us, point_type* out, std::size_t m) const {
+    const Real ui = knots_[i], scale = Reciprocal ? inv_h_[i] : h_[i];
     std::array<std::array<Real, 4>, Dim> c;
     for (int d = 0; d < Dim; ++d)
       for (std::size_t j = 0; j < 4; ++j) c[static_cast<std::size_t>(d)][j] = power_[i][j][d];
     for (std::size_t k = 0; k < m; ++k) {
-      const Real t = (us[k] - ui) / hi;
+      const Real t = Reciprocal ? Real((us[k] - ui) * scale) : Real((us[k] - ui) / scale);
       for (int d = 0; d < Dim; ++d) {
         const auto& a = c[static_cast<std::size_t>(d)];
         out[k][d] = a[0] + t * (a[1] + t * (a[2] + t * a[3]));
@@ -559,6 +582,18 @@ class piecewise_cubic {
       bucket_first_[b] = static_cast<std::uint32_t>(i);
     }
     bucket_first_[buckets] = static_cast<std::uint32_t>(n - 1);
+  }
+
+  // The local parameter of u in segment i (r = lookup_[i]): t = fl(fl(u - u_i) fl(1 / h_i)), no
+  // division. Its error against (u - u_i) / (u_{i+1} - u_i): the difference, h_i = fl(u_{i+1} -
+  // u_i), the reciprocal and the product round once each, so |t - t_exact| <= 4 u t (1 + O(u)) when
+  // fl(1 / h_i) is a normal number (a product or difference below the normal range is off by less
+  // than the smallest normal, absolutely; t <= 1 makes that negligible against 4 u max |P'|), one u
+  // more than the division's 3 u; rounding_bound charges the 4 u. Where some fl(1 / h_i) is not
+  // normal (h_i beyond 1 / DBL_MIN, or subnormal) the curve divides: fl(fl(u - u_i) / h_i), 3 u.
+  // At u = u_{i+1} (the last knot) t may round to 1 +- 2 u instead of 1: within the same bound.
+  [[nodiscard]] CURVEBENCH_PC_HOT Real local_t(std::size_t i, const lookup_record& r, const Real& u) const {
+    return reciprocal_ ? Real((u - r.knot) * r.inv_h) : Real((u - r.knot) / h_[i]);
   }
 
   [[nodiscard]] static std::size_t to_index(const Real& x) {
@@ -654,11 +689,7 @@ class piecewise_cubic {
   bool uniform_ = false;
   Real inv_hbar_ = Real(1);
   Real lo_ = Real(0), hi_ = Real(0);  // the domain, kept beside the hot path's other members
-  // Per segment, what the lookup and t need, in one place: the knots to check u against (-inf,
-  // +inf at the ends), u_i and h_i.
-  struct lookup_record {
-    Real left, right, knot, h;
-  };
+  bool reciprocal_ = true;  // t = (u - u_i) fl(1 / h_i) (see local_t); false: (u - u_i) / h_i
   std::vector<lookup_record> lookup_;
   std::size_t last_ = 0;  // segment_count() - 1
   Real last_real_ = Real(0);
