@@ -282,6 +282,46 @@ TYPED_TEST(arclength_test, every_real_meets_its_precision_on_the_smooth_cubic) {
   EXPECT_LE(abs(R(t.richardson_length().value) - length), R(t.richardson_length().error_estimate));
 }
 
+// The speed-minimum screen of adaptive_length runs on the first panel's own 31 node speeds: a
+// smooth segment (the smooth cubic, no speed minimum below half its top) costs that one G15-K31
+// panel and no sample, and meets 1e-13 relative with it; the near-cusp cubic (speed down to
+// 3 eps^2 / 4 at u = 3/4) is flagged, examined and split at its minimum, and still bounds its error
+// (the screen may only decide where to look, never to trust less). screen_flags on hand-made node
+// speeds: a dip to half the top inside, or a low end with the speed falling towards it, is
+// flagged; a monotone speed that stays above half its top is not.
+TEST(arclength, speed_minimum_screen_uses_the_first_panel_and_flags_low_minima) {
+  al::adaptive_options<double> o;
+  o.relative_tolerance = 1e-13;
+  const auto smooth = smooth_cubic<double>();
+  const al::quadrature_result<double> r = al::adaptive_length(smooth, o);
+  EXPECT_TRUE(r.converged());
+  EXPECT_EQ(r.evaluations, al::gauss_kronrod<double>(15).nodes.size());
+  EXPECT_LE(abs(R(r.value) - reference_length(smooth_cubic<R>())), R(r.error_estimate));
+
+  const auto cusp = cusp_cubic<double>(1e-3);
+  const R cusp_length = reference_length(cusp_cubic<R>(1e-3));
+  const al::quadrature_result<double> c = al::adaptive_length(cusp, o);
+  EXPECT_LE(abs(R(c.value) - cusp_length), R(c.error_estimate));
+  // Flagged on its own first panel's node speeds, and so examined: more than that panel and the samples.
+  const auto& screen = al::gauss_kronrod<double>(15);
+  std::vector<double> nodes(screen.nodes.size());
+  (void)screen.apply([&](double u) { return al::speed(cusp, u); }, 0.0, 2.0, al::error_model::gauss_difference,
+                     nodes.data());
+  EXPECT_TRUE(al::detail::screen_flags<double>(nodes));
+  EXPECT_GT(c.evaluations, screen.nodes.size() + o.speed_minimum_samples + 1);
+  std::vector<double> smooth_nodes(screen.nodes.size());
+  (void)screen.apply([&](double u) { return al::speed(smooth, u); }, 0.0, 1.0, al::error_model::gauss_difference,
+                     smooth_nodes.data());
+  EXPECT_FALSE(al::detail::screen_flags<double>(smooth_nodes));
+
+  using v = std::vector<double>;
+  EXPECT_TRUE(al::detail::screen_flags<double>(v{2, 1.5, 0.9, 1.2, 2.5}));   // dip to 0.36 of the top
+  EXPECT_FALSE(al::detail::screen_flags<double>(v{2, 1.8, 1.4, 1.6, 2.5}));  // dip to 0.56 of the top
+  EXPECT_TRUE(al::detail::screen_flags<double>(v{0.5, 0.9, 1.5, 2, 2.5}));   // low end, falling towards it
+  EXPECT_FALSE(al::detail::screen_flags<double>(v{1.3, 1.5, 1.8, 2, 2.5}));  // monotone, above half the top
+  EXPECT_TRUE(al::detail::screen_flags<double>(v{0, 0, 0}));                 // no speed at all
+}
+
 TEST(arclength, parent_false_positive_and_its_guards) {
   // S-curve (u, u^3 - u) on [-1, 1]: P(-1), P(0), P(1) are collinear and evenly spaced on the x axis.
   const poly2<double> s_curve(-1.0, 1.0, {pt2<double>(-1, 0), pt2<double>(1, 2), pt2<double>(0, -3), pt2<double>(0, 1)});

@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace curvebench::arclength {
@@ -59,17 +60,20 @@ struct gauss_kronrod_rule {
   std::vector<Real> kronrod_weights;
   std::vector<Real> gauss_weights;
 
-  /// Both rules on [a, b] in 2n + 1 evaluations of f.
+  /// Both rules on [a, b] in 2n + 1 evaluations of f; with `values`, f at the nodes (ascending) is
+  /// also written there (2n + 1 entries).
   template <class F>
   [[nodiscard]] kronrod_panel<Real> apply(F&& f, const Real& a, const Real& b,
-                                          error_model model = error_model::gauss_difference) const {
-    if (model == error_model::quadpack) return apply_quadpack(f, a, b);
+                                          error_model model = error_model::gauss_difference,
+                                          Real* values = nullptr) const {
+    if (model == error_model::quadpack) return apply_quadpack(f, a, b, values);
     using std::abs;
     const Real half = (b - a) / Real(2);
     const Real mid = (a + b) / Real(2);
     Real k(0), g(0), kabs(0), fmin(0), fmax(0);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const Real fi = f(mid + half * nodes[i]);
+      if (values) values[i] = fi;
       k += kronrod_weights[i] * fi;
       g += gauss_weights[i] * fi;
       kabs += kronrod_weights[i] * abs(fi);
@@ -89,7 +93,7 @@ struct gauss_kronrod_rule {
 
  private:
   template <class F>
-  [[nodiscard]] kronrod_panel<Real> apply_quadpack(F&& f, const Real& a, const Real& b) const {
+  [[nodiscard]] kronrod_panel<Real> apply_quadpack(F&& f, const Real& a, const Real& b, Real* values) const {
     using std::abs;
     using std::min;
     using std::pow;
@@ -99,6 +103,7 @@ struct gauss_kronrod_rule {
     Real k(0), g(0), kabs(0);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       fv[i] = f(mid + half * nodes[i]);
+      if (values) values[i] = fv[i];
       k += kronrod_weights[i] * fv[i];
       g += gauss_weights[i] * fv[i];
       kabs += kronrod_weights[i] * abs(fv[i]);
@@ -269,8 +274,11 @@ struct adaptive_options {
   std::size_t max_evaluations{std::size_t(1) << 24};
   int gauss_points{7};              ///< n of the G_n - K_{2n+1} pair
   error_model model{error_model::gauss_difference};
-  /// Curve lengths only (length.hpp, segment_lengths): samples of |P'|^2 per segment used to find
-  /// interior speed minima (near-cusps) and split there first; 0 turns it off.
+  /// Curve lengths only (length.hpp, segment_lengths): the speed-minimum screen. Each piece's first
+  /// panel is then the G15-K31 rule, whose 31 node speeds are the screen; a piece where they show a
+  /// low minimum (or a low end, speed falling towards it) is examined with this many samples of
+  /// |P'|^2 to find its interior speed minima (near-cusps) and split there first. 0 turns it off
+  /// (first panels by gauss_points' rule, no screen).
   std::size_t speed_minimum_samples{16};
 };
 
@@ -329,34 +337,20 @@ template <class Real, class F>
 
 }  // namespace detail
 
-/// Globally adaptive Gauss-Kronrod over [splits.front(), splits.back()], never integrating across
-/// an interior split point (pass a curve's breakpoints): start with one panel per split interval,
-/// then repeatedly bisect the panel with the largest error estimate until the summed estimate
-/// meets the target (converged), the panel count reaches max_intervals or the next bisection would
-/// pass max_evaluations (cap_hit), or no panel can
-/// usefully be refined because its estimate is its rounding floor, its halves do not improve on
-/// it (detail/roundoff.hpp: f's own rounding), or it is too narrow to bisect
-/// (rounding_limited). Allocates its panel list (not for per-query hot paths: see
-/// integrate_recursive). Throws invalid_input for fewer than 2 split points or bad tolerances.
+namespace detail {
+
+/// integrate_adaptive's refinement from the given first panels (out.evaluations already counts
+/// them): see integrate_adaptive. Allocates its panel lists.
 template <class Real, class F>
-[[nodiscard]] quadrature_result<Real> integrate_adaptive(F&& f, std::span<const Real> splits,
-                                                         const adaptive_options<Real>& opt = {}) {
+[[nodiscard]] quadrature_result<Real> refine_adaptive(F& f, const gauss_kronrod_rule<Real>& rule,
+                                                      const adaptive_options<Real>& opt,
+                                                      std::vector<heap_panel<Real>> heap, quadrature_result<Real> out) {
   using std::abs;
   using std::max;
-  validate::count_at_least("splits", splits.size(), 2, "an integration interval");
-  validate::non_decreasing<Real>("splits", splits);
-  detail::check_tolerances(opt.absolute_tolerance, opt.relative_tolerance);
-  const gauss_kronrod_rule<Real>& rule = gauss_kronrod<Real>(opt.gauss_points);
-  std::vector<detail::heap_panel<Real>> heap, frozen;
-  auto less = [](const detail::heap_panel<Real>& x, const detail::heap_panel<Real>& y) {
+  std::vector<heap_panel<Real>> frozen;
+  auto less = [](const heap_panel<Real>& x, const heap_panel<Real>& y) {
     return x.r.error_estimate < y.r.error_estimate;
   };
-  quadrature_result<Real> out;
-  for (std::size_t i = 0; i + 1 < splits.size(); ++i) {
-    if (!(splits[i + 1] > splits[i])) continue;  // empty interval: contributes 0
-    heap.push_back({splits[i], splits[i + 1], rule.apply(f, splits[i], splits[i + 1], opt.model)});
-    out.evaluations += heap.back().r.evaluations;
-  }
   std::make_heap(heap.begin(), heap.end(), less);
   // Exact-as-possible totals: the value by Neumaier's compensated summation (error <= 2 eps |sum|
   // + O(n eps^2) for any number of panels), estimates by a plain sum.
@@ -364,7 +358,7 @@ template <class Real, class F>
     value = Real(0);
     err = Real(0);
     Real comp(0);
-    auto add = [&](const detail::heap_panel<Real>& h) {
+    auto add = [&](const heap_panel<Real>& h) {
       const Real t = value + h.r.kronrod;
       comp += abs(value) >= abs(h.r.kronrod) ? (value - t) + h.r.kronrod : (h.r.kronrod - t) + value;
       value = t;
@@ -395,7 +389,7 @@ template <class Real, class F>
       break;
     }
     std::pop_heap(heap.begin(), heap.end(), less);
-    detail::heap_panel<Real> worst_panel = heap.back();
+    heap_panel<Real> worst_panel = heap.back();
     heap.pop_back();
     const Real mid = (worst_panel.a + worst_panel.b) / Real(2);
     if (!(worst_panel.r.error_estimate > Real(2) * (worst_panel.r.rounding_floor + worst_panel.r.resolution_floor)) ||
@@ -404,12 +398,12 @@ template <class Real, class F>
       frozen.push_back(worst_panel);  // cannot be improved in Real
       continue;
     }
-    detail::heap_panel<Real> left{worst_panel.a, mid, rule.apply(f, worst_panel.a, mid, opt.model)};
-    detail::heap_panel<Real> right{mid, worst_panel.b, rule.apply(f, mid, worst_panel.b, opt.model)};
+    heap_panel<Real> left{worst_panel.a, mid, rule.apply(f, worst_panel.a, mid, opt.model)};
+    heap_panel<Real> right{mid, worst_panel.b, rule.apply(f, mid, worst_panel.b, opt.model)};
     out.evaluations += left.r.evaluations + right.r.evaluations;
     value += left.r.kronrod + right.r.kronrod - worst_panel.r.kronrod;
     err += left.r.error_estimate + right.r.error_estimate - worst_panel.r.error_estimate;
-    const bool stagnated = detail::bisection_stagnated(
+    const bool stagnated = bisection_stagnated(
         worst_panel.r.error_estimate, left.r.error_estimate + right.r.error_estimate, worst_panel.r.magnitude);
     if (stagnated && worst_panel.suspect) {
       frozen.push_back(left);  // the second stagnation in a row: f's own rounding, refining cannot help
@@ -426,6 +420,34 @@ template <class Real, class F>
   out.value = value;
   out.error_estimate = estimate(err, value);
   return out;
+}
+
+}  // namespace detail
+
+/// Globally adaptive Gauss-Kronrod over [splits.front(), splits.back()], never integrating across
+/// an interior split point (pass a curve's breakpoints): start with one panel per split interval,
+/// then repeatedly bisect the panel with the largest error estimate until the summed estimate
+/// meets the target (converged), the panel count reaches max_intervals or the next bisection would
+/// pass max_evaluations (cap_hit), or no panel can
+/// usefully be refined because its estimate is its rounding floor, its halves do not improve on
+/// it (detail/roundoff.hpp: f's own rounding), or it is too narrow to bisect
+/// (rounding_limited). Allocates its panel list (not for per-query hot paths: see
+/// integrate_recursive). Throws invalid_input for fewer than 2 split points or bad tolerances.
+template <class Real, class F>
+[[nodiscard]] quadrature_result<Real> integrate_adaptive(F&& f, std::span<const Real> splits,
+                                                         const adaptive_options<Real>& opt = {}) {
+  validate::count_at_least("splits", splits.size(), 2, "an integration interval");
+  validate::non_decreasing<Real>("splits", splits);
+  detail::check_tolerances(opt.absolute_tolerance, opt.relative_tolerance);
+  const gauss_kronrod_rule<Real>& rule = gauss_kronrod<Real>(opt.gauss_points);
+  std::vector<detail::heap_panel<Real>> heap;
+  quadrature_result<Real> out;
+  for (std::size_t i = 0; i + 1 < splits.size(); ++i) {
+    if (!(splits[i + 1] > splits[i])) continue;  // empty interval: contributes 0
+    heap.push_back({splits[i], splits[i + 1], rule.apply(f, splits[i], splits[i + 1], opt.model)});
+    out.evaluations += heap.back().r.evaluations;
+  }
+  return detail::refine_adaptive(f, rule, opt, std::move(heap), out);
 }
 
 /// Adaptive Gauss-Kronrod on [a, b] by recursive bisection with the tolerance halved per level,
