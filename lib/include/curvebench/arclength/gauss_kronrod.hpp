@@ -77,8 +77,15 @@ struct gauss_kronrod_rule {
       k += kronrod_weights[i] * fi;
       g += gauss_weights[i] * fi;
       kabs += kronrod_weights[i] * abs(fi);
-      if (i == 0 || fi < fmin) fmin = fi;
-      if (i == 0 || fi > fmax) fmax = fi;
+      // min and max without a data-dependent branch (a mispredicted one per node cost more than
+      // the node's arithmetic); a NaN node leaves them as they were, as the comparisons did.
+      if (i == 0) {
+        fmin = fi;
+        fmax = fi;
+      } else {
+        fmin = std::min(fmin, fi);
+        fmax = std::max(fmax, fi);
+      }
     }
     kronrod_panel<Real> p;
     p.kronrod = k * half;
