@@ -281,11 +281,11 @@ struct adaptive_options {
   std::size_t max_evaluations{std::size_t(1) << 24};
   int gauss_points{7};              ///< n of the G_n - K_{2n+1} pair
   error_model model{error_model::gauss_difference};
-  /// Curve lengths only (length.hpp, segment_lengths): the speed-minimum screen. Each piece's first
-  /// panel is then the G15-K31 rule, whose 31 node speeds are the screen; a piece where they show a
-  /// low minimum (or a low end, speed falling towards it) is examined with this many samples of
-  /// |P'|^2 to find its interior speed minima (near-cusps) and split there first. 0 turns it off
-  /// (first panels by gauss_points' rule, no screen).
+  /// Curve lengths only (length.hpp, segment_lengths): samples of |P'|^2 per segment used to find
+  /// interior speed minima (near-cusps) and split there first; 0 turns it off. adaptive_length
+  /// takes them only where a screen flags the segment: its first panel is then G15-K31, whose 31
+  /// node speeds show a low minimum or a low end with the speed falling towards it (length.hpp);
+  /// segment_lengths takes them on every segment.
   std::size_t speed_minimum_samples{16};
 };
 
