@@ -204,7 +204,7 @@ class piecewise_cubic {
       // The chain rule's factor fl(1 / h_i), computed once: no division per call (the divider,
       // shared with the speed's square root, is what limits the arc-length methods).
       const point_type dt = a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]));
-      return reciprocal_ ? point_type(dt * r.inv_h) : point_type(dt / h_[i]);
+      return reciprocal_ ? per_h<true>(dt, r.inv_h) : per_h<false>(dt, h_[i]);
     }
     return evaluate(u, order, cubic_algorithm::power);
   }
@@ -509,7 +509,7 @@ class piecewise_cubic {
     for (int d = 0; d < Dim; ++d)
       for (std::size_t j = 0; j < 4; ++j) c[static_cast<std::size_t>(d)][j] = power_[i][j][d];
     for (std::size_t k = 0; k < m; ++k) {
-      const Real t = Reciprocal ? Real((us[k] - ui) * scale) : Real((us[k] - ui) / scale);
+      const Real t = per_h<Reciprocal>(Real(us[k] - ui), scale);
       for (int d = 0; d < Dim; ++d) {
         const auto& a = c[static_cast<std::size_t>(d)];
         out[k][d] = a[0] + t * (a[1] + t * (a[2] + t * a[3]));
@@ -593,7 +593,17 @@ class piecewise_cubic {
   // normal (h_i beyond 1 / DBL_MIN, or subnormal) the curve divides: fl(fl(u - u_i) / h_i), 3 u.
   // At u = u_{i+1} (the last knot) t may round to 1 +- 2 u instead of 1: within the same bound.
   [[nodiscard]] CURVEBENCH_PC_HOT Real local_t(std::size_t i, const lookup_record& r, const Real& u) const {
-    return reciprocal_ ? Real((u - r.knot) * r.inv_h) : Real((u - r.knot) / h_[i]);
+    return reciprocal_ ? per_h<true>(u - r.knot, r.inv_h) : per_h<false>(u - r.knot, h_[i]);
+  }
+
+  // x / h_i, by the reciprocal (scale = fl(1 / h_i)) or by the division (scale = h_i): the one
+  // place both forms are written, for t (local_t, the sorted runs) and for the chain rule.
+  template <bool Reciprocal, class X>
+  [[nodiscard]] CURVEBENCH_PC_HOT static X per_h(const X& x, const Real& scale) {
+    if constexpr (Reciprocal)
+      return X(x * scale);
+    else
+      return X(x / scale);
   }
 
   [[nodiscard]] static std::size_t to_index(const Real& x) {
