@@ -389,6 +389,32 @@ std::vector<std::pair<std::string, std::vector<Real>>> lookup_knot_sets() {
     e.push_back(u1);
     sets.emplace_back("knots at the bucket edges and an ulp off them, " + std::to_string(n), e);
   }
+  // Adversarial for the non-uniform index's own map from u to its bucket (piecewise_cubic.hpp's
+  // bucket_of: fl(fl(u - u0) fl(2n / (un - u0))) truncated, 2n buckets for n segments): interior
+  // knots at the first parameter of a bucket under that rounded map, or an ulp either side, so that
+  // u and the knot of a comparison round into the same or neighbouring buckets; every 8th knot on
+  // an odd bucket's edge so that the knots are not uniform.
+  for (std::size_t n : {64u, 1000u}) {
+    const Real u0 = Real(-0.7), u1 = Real(5.9);
+    const std::size_t buckets = 2 * n;
+    const Real inv = Real(static_cast<long long>(buckets)) / (u1 - u0);
+    const auto bucket = [&](Real u) {
+      const Real x = (u - u0) * inv;
+      return x < Real(static_cast<long long>(buckets - 1)) ? static_cast<std::size_t>(x) : buckets - 1;
+    };
+    std::vector<Real> e{u0};
+    for (std::size_t j = 1; j < n; ++j) {
+      const std::size_t b = 2 * j + (j % 8 == 0 ? 1 : 0);
+      Real x = u0 + Real(static_cast<long long>(b)) * ((u1 - u0) / Real(static_cast<long long>(buckets)));
+      while (bucket(x) >= b) x = std::nextafter(x, u0);
+      while (bucket(x) < b) x = std::nextafter(x, u1);
+      if (j % 3 == 1) x = std::nextafter(x, u1);
+      else if (j % 3 == 2) x = std::nextafter(x, u0);
+      e.push_back(x);
+    }
+    e.push_back(u1);
+    sets.emplace_back("knots at the index's rounded bucket edges and an ulp off them, " + std::to_string(n), e);
+  }
   std::uniform_real_distribution<double> step(0.25, 1.75), log_step(std::log10(small), 0.0);
   for (std::size_t n : {64u, 4096u}) {
     std::vector<Real> k{Real(0)};
@@ -452,6 +478,9 @@ TYPED_TEST(lookup_test, segment_lookup_equals_binary_search_at_knots_neighbours_
   using Real = TypeParam;
   for (const auto& [name, k] : lookup_knot_sets<Real>()) {
     const auto c = random_engine(k, 5);
+    if (name.find("bucket edges") != std::string::npos) {
+      ASSERT_FALSE(c.uniform()) << name;  // the index is under test
+    }
     const auto us = lookup_parameters(k, 20000);
     for (const Real& u : us) {
       const std::size_t want =

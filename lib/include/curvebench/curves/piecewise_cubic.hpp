@@ -8,10 +8,10 @@
 // coordinate), matrix (T · M · G per call, the textbook form), bezier (de Casteljau, 6 lerps).
 // Derivatives of order <= 3 exact by the chain rule h_i^-k; higher orders zero. Segment lookup O(1)
 // for uniform knots (index corrected against the neighbours); for other knots O(1) expected: an
-// index of 2n uniform buckets over the domain, built at construction, holds each bucket's first
-// segment, and a binary search over the few knots of the bucket (corrected against the neighbours
-// at the bucket's edges) finishes: the segment is the same as a binary search over all knots at
-// every u. evaluate_batch and evaluate_sorted (non-decreasing parameters; the default power
+// index of 2n uniform buckets over the domain, built at construction by the same rounded map from u
+// to its bucket as the lookup uses, holds per bucket the number of interior knots below it and its
+// own (at most two compared without a branch, more searched): the segment is the same as a binary
+// search over all knots at every u. evaluate_batch and evaluate_sorted (non-decreasing parameters; the default power
 // evaluation walks the segments and, where the parameters are dense, runs a branch-free loop per
 // segment over its parameters, the coefficients hoisted; sparse ones go point by point; both
 // bit-identical to single calls) never allocate.
@@ -531,25 +531,16 @@ class piecewise_cubic {
       while (!(u < lookup_[i].right)) ++i;
       return i;
     }
-    if (!bucket_first_.empty()) {
-      // Bucket b's segments are bucket_first_[b] .. bucket_first_[b + 1]; rounding of x may put u
-      // just outside them, so widen the range until knots[lo] <= u < knots[hi + 1] (or the ends):
-      // then every interior knot up to lo is <= u, every one past hi is > u, and the search over
-      // knots lo + 1 .. hi counts the rest, as the binary search over all knots would. (hi is
-      // needed only when u is past the second knot of the range.)
-      const Real x = (u - lo_) * inv_bucket_width_;  // >= 0 as in the uniform case
-      const std::size_t b = x < bucket_last_real_ ? to_index(x) : bucket_last_;
-      std::size_t lo = bucket_first_[b];
-      while (u < lookup_[lo].left) --lo;
-      // Most buckets hold at most one knot: step over it without a branch (right is +inf at the
-      // last segment, so i stays a segment), and search only when more knots remain below u.
-      const std::size_t i = lo + static_cast<std::size_t>(!(u < lookup_[lo].right));
-      if (u < lookup_[i].right) return i;
-      std::size_t hi = bucket_first_[b + 1];  // u >= right at i, so hi ends above i
-      while (!(u < lookup_[hi].right)) ++hi;
-      const auto it = std::upper_bound(knots_.begin() + static_cast<std::ptrdiff_t>(i) + 1,
-                                       knots_.begin() + static_cast<std::ptrdiff_t>(hi) + 1, u);
-      return static_cast<std::size_t>(it - knots_.begin()) - 1;
+    if (!buckets_.empty()) {
+      // The bucket of u and of every knot is the same function (bucket_of), monotone in u, so the
+      // interior knots of lower buckets are all <= u and those of higher buckets all > u: the
+      // segment is the bucket's count of lower knots (first) plus its own knots <= u. At most two
+      // of them (almost every bucket): compared without a branch, +inf standing for none.
+      const bucket_record& e = buckets_[bucket_of(u)];
+      if (e.count <= 2) [[likely]]
+        return e.first + static_cast<std::size_t>(!(u < e.split[0])) + static_cast<std::size_t>(!(u < e.split[1]));
+      const auto from = knots_.begin() + static_cast<std::ptrdiff_t>(e.first) + 1;
+      return static_cast<std::size_t>(std::upper_bound(from, from + e.count, u) - knots_.begin()) - 1;
     }
     return locate_binary(u);
   }
@@ -560,28 +551,38 @@ class piecewise_cubic {
     return static_cast<std::size_t>(it - knots_.begin()) - 1;
   }
 
-  // The bucket index of non-uniform knots: 2n buckets of equal width w over the domain (so that
-  // most hold at most one knot), bucket b's first segment the one holding its left edge u0 + b w
-  // (the last entry: the last segment). Any rounding in the edges only widens a lookup's range
-  // (locate), never changes its answer.
+  // The bucket of u in the index of non-uniform knots: fl(fl(u - u_0) / w) truncated (by the
+  // reciprocal of the width w = (u_n - u_0) / B), clamped to the last of the B buckets. Each step
+  // rounds monotonically, so the map is non-decreasing in u; the index is built by the same
+  // function on the knots, so no rounding in it can move a knot to the wrong side of u (locate).
+  [[nodiscard]] CURVEBENCH_PC_HOT std::size_t bucket_of(const Real& u) const {
+    const Real x = (u - lo_) * inv_bucket_width_;  // >= 0: u >= u_0
+    return x < bucket_last_real_ ? to_index(x) : bucket_last_;
+  }
+
+  // The bucket index: B = 2n buckets (so that most hold at most one interior knot); per bucket the
+  // number of interior knots in lower buckets, its own count and, up to two, its knots.
   void build_buckets() {
-    bucket_first_.clear();
+    buckets_.clear();
     const std::size_t n = h_.size();
     if (uniform_ || n < 2 || n >= std::size_t(std::numeric_limits<std::uint32_t>::max() / 2)) return;
-    const std::size_t buckets = 2 * n;
-    const Real width = (knots_.back() - knots_.front()) / Real(static_cast<long long>(buckets));
-    inv_bucket_width_ = Real(static_cast<long long>(buckets)) / (knots_.back() - knots_.front());
-    if (!is_finite(inv_bucket_width_) || !(width > Real(0))) return;
-    bucket_last_ = buckets - 1;
+    const std::size_t count = 2 * n;
+    inv_bucket_width_ = Real(static_cast<long long>(count)) / (knots_.back() - knots_.front());
+    if (!is_finite(inv_bucket_width_) || !(inv_bucket_width_ > Real(0))) return;
+    bucket_last_ = count - 1;
     bucket_last_real_ = Real(static_cast<long long>(bucket_last_));
-    bucket_first_.resize(buckets + 1);
-    std::size_t i = 0;
-    for (std::size_t b = 0; b < buckets; ++b) {
-      const Real edge = knots_.front() + Real(static_cast<long long>(b)) * width;
-      while (i < n - 1 && !(edge < knots_[i + 1])) ++i;
-      bucket_first_[b] = static_cast<std::uint32_t>(i);
+    const Real none = std::numeric_limits<Real>::infinity();
+    buckets_.assign(count, bucket_record{{none, none}, 0, 0});
+    for (std::size_t j = 1; j < n; ++j) {
+      bucket_record& e = buckets_[bucket_of(knots_[j])];
+      if (e.count < 2) e.split[e.count] = knots_[j];
+      ++e.count;
     }
-    bucket_first_[buckets] = static_cast<std::uint32_t>(n - 1);
+    std::uint32_t below = 0;
+    for (bucket_record& e : buckets_) {
+      e.first = below;
+      below += e.count;
+    }
   }
 
   // The local parameter of u in segment i (r = lookup_[i]): t = fl(fl(u - u_i) fl(1 / h_i)), no
@@ -703,7 +704,13 @@ class piecewise_cubic {
   std::vector<lookup_record> lookup_;
   std::size_t last_ = 0;  // segment_count() - 1
   Real last_real_ = Real(0);
-  std::vector<std::uint32_t> bucket_first_;  // non-uniform knots: 2n + 1 entries (build_buckets)
+  // One bucket of the non-uniform index (build_buckets): the interior knots in lower buckets, the
+  // bucket's own count and its first two knots (+inf where it has fewer).
+  struct bucket_record {
+    std::array<Real, 2> split;
+    std::uint32_t first, count;
+  };
+  std::vector<bucket_record> buckets_;  // non-uniform knots: 2n buckets
   Real inv_bucket_width_ = Real(1);
   std::size_t bucket_last_ = 0;  // the number of buckets - 1
   Real bucket_last_real_ = Real(0);
