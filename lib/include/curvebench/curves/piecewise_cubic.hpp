@@ -187,8 +187,8 @@ class piecewise_cubic {
     // The hot path: the domain check inline (NaN fails it), the lookup, t and Horner.
     if (!(lo_ <= u && u <= hi_)) out_of_domain(u);
     const std::size_t i = locate(u);
-    const lookup_record& r = lookup_[i];
-    return horner(power_[i], local_t(i, r, u));
+    const lookup_record& r = seg_[i].lookup;
+    return horner(seg_[i].power, local_t(i, r, u));
   }
   [[nodiscard]] CURVEBENCH_PC_HOT point_type derivative(const Real& u, int order) const {
     // P'(u), the speed of every arc-length method, inline like operator(): the same operations as
@@ -198,9 +198,9 @@ class piecewise_cubic {
     if (order == 1) {
       if (!(lo_ <= u && u <= hi_)) out_of_domain(u);
       const std::size_t i = locate(u);
-      const lookup_record& r = lookup_[i];
+      const lookup_record& r = seg_[i].lookup;
       const Real t = local_t(i, r, u);
-      const std::array<point_type, 4>& a = power_[i];
+      const std::array<point_type, 4>& a = seg_[i].power;
       // The chain rule's factor fl(1 / h_i), computed once: no division per call (the divider,
       // shared with the speed's square root, is what limits the arc-length methods).
       const point_type dt = a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]));
@@ -221,7 +221,7 @@ class piecewise_cubic {
     validate::derivative_order(order);
     check_parameter(u, domain());
     const std::size_t i = locate(u);
-    return eval_segment(i, local_t(i, lookup_[i], u), order, algorithm);
+    return eval_segment(i, local_t(i, seg_[i].lookup, u), order, algorithm);
   }
 
  public:
@@ -249,7 +249,7 @@ class piecewise_cubic {
     for (std::size_t k = 0; k < us.size(); ++k) {
       check_parameter(us[k], d, "us", k);
       const std::size_t i = locate(us[k]);
-      out[k] = eval_segment(i, local_t(i, lookup_[i], us[k]), order, algorithm);
+      out[k] = eval_segment(i, local_t(i, seg_[i].lookup, us[k]), order, algorithm);
     }
   }
 
@@ -280,7 +280,7 @@ class piecewise_cubic {
         validate::fail("us must be non-decreasing for evaluate_sorted: " + validate::indexed("us", k) + " = " +
                        to_text(u) + " < " + validate::indexed("us", k - 1) + " = " + to_text(us[k - 1]));
       while (i < last && !(u < knots_[i + 1])) ++i;
-      out[k] = eval_segment(i, local_t(i, lookup_[i], u), order, algorithm);
+      out[k] = eval_segment(i, local_t(i, seg_[i].lookup, u), order, algorithm);
     }
   }
 
@@ -295,7 +295,7 @@ class piecewise_cubic {
     return locate(u);
   }
   /// Power coefficients a0..a3 of segment i in the local parameter t.
-  [[nodiscard]] const std::array<point_type, 4>& power_coefficients(std::size_t i) const { return power_.at(i); }
+  [[nodiscard]] const std::array<point_type, 4>& power_coefficients(std::size_t i) const { return seg_.at(i).power; }
   /// Bezier control points of segment i (same curve, local parameter t).
   [[nodiscard]] const std::array<point_type, 4>& bezier_points(std::size_t i) const { return bezier_.at(i); }
   [[nodiscard]] const geometry_type& geometry(std::size_t i) const { return geometry_.at(i); }
@@ -319,7 +319,7 @@ class piecewise_cubic {
     }
     h_.resize(n);
     inv_h_.resize(n);
-    power_.resize(n);
+    seg_.resize(n);
     bezier_.resize(n);
     // 3 M_bezier^{-1}: Bezier points from power coefficients are b = M_bezier^{-1} a; the integer
     // form keeps C = M_bezier^{-1} M exact for integer M up to one final division by 3.
@@ -332,7 +332,7 @@ class piecewise_cubic {
       const matrix_type c = (binv3 * basis_[i]) / Real(3);
       const geometry_type b = c * geometry_[i];
       for (int r = 0; r < 4; ++r) {
-        power_[i][static_cast<std::size_t>(r)] = a.row(r).transpose();
+        seg_[i].power[static_cast<std::size_t>(r)] = a.row(r).transpose();
         bezier_[i][static_cast<std::size_t>(r)] = b.row(r).transpose();
       }
     }
@@ -350,9 +350,8 @@ class piecewise_cubic {
     hi_ = knots_.back();
     last_ = n - 1;
     last_real_ = Real(static_cast<long long>(last_));
-    lookup_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-      lookup_[i] = {i == 0 ? -std::numeric_limits<Real>::infinity() : knots_[i],
+      seg_[i].lookup = {i == 0 ? -std::numeric_limits<Real>::infinity() : knots_[i],
                     i == last_ ? std::numeric_limits<Real>::infinity() : knots_[i + 1], knots_[i], inv_h_[i]};
     // t by the reciprocal needs fl(1 / h_i) in the normal range for every segment, where it is
     // within u of 1 / h_i (see local_t); otherwise every segment divides.
@@ -373,7 +372,7 @@ class piecewise_cubic {
       std::array<Real, 4> g{}, a{}, da{};
       for (int r = 0; r < 4; ++r) {
         g[static_cast<std::size_t>(r)] = safe_norm(point_type(geometry_[i].row(r).transpose()));
-        a[static_cast<std::size_t>(r)] = safe_norm(power_[i][static_cast<std::size_t>(r)]);
+        a[static_cast<std::size_t>(r)] = safe_norm(seg_[i].power[static_cast<std::size_t>(r)]);
       }
       for (int r = 0; r < 4; ++r) {
         Real e(0);
@@ -425,7 +424,7 @@ class piecewise_cubic {
         const Real res = p + sum;
         const Real gamma4 = Real(4) * u / (Real(1) - Real(4) * u);
         // Products below the normal range are not error-free: 4 units of the smallest subnormal each.
-        e[d] = abs(power_[i][static_cast<std::size_t>(r)][d] - res) * (Real(1) + eps) + u * abs(res) +
+        e[d] = abs(seg_[i].power[static_cast<std::size_t>(r)][d] - res) * (Real(1) + eps) + u * abs(res) +
                gamma4 * gamma4 * size + Real(8) * std::numeric_limits<Real>::denorm_min();
         if (!is_finite(e[d])) return worst_case;
       }
@@ -458,16 +457,19 @@ class piecewise_cubic {
   // span, on average) go by runs: per segment, its run of parameters, found 8 at a time (one
   // comparison per 8, since the parameters are sorted), then one loop over the run with the
   // segment's coefficients hoisted, which the compiler vectorises. Sparse ones go point by point,
-  // stepping the segment forward: a run of one or two parameters costs more than it saves. The
-  // arithmetic is horner()'s, in the same order, so each value is bit-identical to operator().
+  // stepping the segment forward over the knots: a run of one or two parameters costs more than
+  // it saves. The arithmetic is horner()'s, in the same order, so each value is bit-identical to
+  // operator().
   void sorted_power(std::span<const Real> us, std::span<point_type> out) const {
     const std::size_t count = us.size(), last = segment_count() - 1;
     std::size_t i = locate(us.front());
     const std::size_t spanned = locate(us.back()) - i + 1;
     if (count < 4 * spanned) {
       for (std::size_t k = 0; k < count; ++k) {
-        while (!(us[k] < lookup_[i].right)) ++i;  // +inf at the last segment
-        out[k] = horner(power_[i], local_t(i, lookup_[i], us[k]));
+        // Stepped over the dense knots (a cache line holds 8 segments' in double), not over the
+        // segment records (two lines each).
+        while (i < last && !(us[k] < knots_[i + 1])) ++i;
+        out[k] = horner(seg_[i].power, local_t(i, seg_[i].lookup, us[k]));
       }
       return;
     }
@@ -507,7 +509,7 @@ class piecewise_cubic {
     const Real ui = knots_[i], scale = Reciprocal ? inv_h_[i] : h_[i];
     std::array<std::array<Real, 4>, Dim> c;
     for (int d = 0; d < Dim; ++d)
-      for (std::size_t j = 0; j < 4; ++j) c[static_cast<std::size_t>(d)][j] = power_[i][j][d];
+      for (std::size_t j = 0; j < 4; ++j) c[static_cast<std::size_t>(d)][j] = seg_[i].power[j][d];
     for (std::size_t k = 0; k < m; ++k) {
       const Real t = per_h<Reciprocal>(Real(us[k] - ui), scale);
       for (int d = 0; d < Dim; ++d) {
@@ -527,8 +529,8 @@ class piecewise_cubic {
       // rounding), so clamp before converting.
       const Real x = (u - lo_) * inv_hbar_;
       std::size_t i = x < last_real_ ? to_index(x) : last_;
-      while (u < lookup_[i].left) --i;
-      while (!(u < lookup_[i].right)) ++i;
+      while (u < seg_[i].lookup.left) --i;
+      while (!(u < seg_[i].lookup.right)) ++i;
       return i;
     }
     if (!buckets_.empty()) {
@@ -585,7 +587,7 @@ class piecewise_cubic {
     }
   }
 
-  // The local parameter of u in segment i (r = lookup_[i]): t = fl(fl(u - u_i) fl(1 / h_i)), no
+  // The local parameter of u in segment i (r = seg_[i].lookup): t = fl(fl(u - u_i) fl(1 / h_i)), no
   // division. Its error against (u - u_i) / (u_{i+1} - u_i): the difference, h_i = fl(u_{i+1} -
   // u_i), the reciprocal and the product round once each, so |t - t_exact| <= 4 u t (1 + O(u)) when
   // fl(1 / h_i) is a normal number (a product or difference below the normal range is off by less
@@ -623,7 +625,7 @@ class piecewise_cubic {
 
   [[nodiscard]] point_type eval_segment(std::size_t i, const Real& t, int order, cubic_algorithm algorithm) const {
     if (order > 3) return point_type::Zero();
-    const point_type p = algorithm == cubic_algorithm::power    ? eval_power(power_[i], t, order)
+    const point_type p = algorithm == cubic_algorithm::power    ? eval_power(seg_[i].power, t, order)
                          : algorithm == cubic_algorithm::matrix ? eval_matrix(basis_[i], geometry_[i], t, order)
                                                                 : eval_bezier(bezier_[i], t, order);
     if (order == 0) return p;
@@ -695,13 +697,19 @@ class piecewise_cubic {
   std::vector<matrix_type> basis_;
   std::vector<Real> h_;
   std::vector<Real> inv_h_;  // fl(1 / h_i): the first derivative's chain-rule factor
-  std::vector<std::array<point_type, 4>> power_;
+  // Per segment, everything a power evaluation reads (the lookup's record and the coefficients) in
+  // one record on its own cache lines: 64 bytes for 1D double, 128 for 3D double (it was two arrays,
+  // so a random evaluation touched three or four lines where two hold it).
+  struct alignas(64) segment_record {
+    std::array<point_type, 4> power;
+    lookup_record lookup;
+  };
+  std::vector<segment_record> seg_;
   std::vector<std::array<point_type, 4>> bezier_;
   bool uniform_ = false;
   Real inv_hbar_ = Real(1);
   Real lo_ = Real(0), hi_ = Real(0);  // the domain, kept beside the hot path's other members
   bool reciprocal_ = true;  // t = (u - u_i) fl(1 / h_i) (see local_t); false: (u - u_i) / h_i
-  std::vector<lookup_record> lookup_;
   std::size_t last_ = 0;  // segment_count() - 1
   Real last_real_ = Real(0);
   // One bucket of the non-uniform index (build_buckets): the interior knots in lower buckets, the
