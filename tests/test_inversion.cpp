@@ -521,3 +521,95 @@ TEST(inversion, real50_newton_reaches_50_digits) {
     EXPECT_LT(abs(r.s(inv.u) - s), R("1e-40") * r.length());
   }
 }
+
+// ---- Newton steps bounded without integrating them ------------------------------------------
+
+// The smooth and near-cusp suite cubics as piecewise_cubic engines (which bound their second
+// derivative): the same polynomials in t = u / w, a_k = c_k w^k (exact: w is a power of two).
+template <class Real>
+cb::piecewise_cubic<Real, 2> engine_of(const poly2<Real>& p, const Real& lo, const Real& hi) {
+  typename cb::piecewise_cubic<Real, 2>::geometry_type a;
+  Real scale(1);
+  for (int k = 0; k < 4; ++k) {
+    a.row(k) = (p.coefficients()[0][static_cast<std::size_t>(k)] * scale).transpose();
+    scale *= hi - lo;
+  }
+  return cb::piecewise_cubic<Real, 2>::from_power({lo, hi}, {a});
+}
+
+// detail::bounded_step_error against the 50-digit arc length: from points u across every segment,
+// toward targets s* = s(u + f w) for steps f of 1e-9 to 1e-1 of the segment width w either way
+// (so that the step's quadratic term, M D^2, ranges from negligible to dominant), with s(u) given
+// as the double nearest the reference and eu its exact error: |s(next) - s*| <= the bound, every
+// time. And the bound is not vacuous: on the large steps it is within 30x of the true error
+// somewhere (M is the largest |P''| of the segment, the true term uses |P''| near u).
+template <class C, class C50>
+void check_bounded_steps(const char* name, const C& c, const C50& c50) {
+  SCOPED_TRACE(name);
+  using Real = typename C::real_type;
+  const ref::reference_arc_length<C50> r(c50);
+  const auto bp = c.breakpoints();
+  std::size_t checked = 0;
+  double closest = 0;
+  for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
+    const Real w = bp[i + 1] - bp[i];
+    for (int j = 1; j < 16; ++j) {
+      const Real u = bp[i] + w * Real(j) / Real(16);
+      const R s_u = r.s(R(u));
+      const Real su = static_cast<Real>(s_u);
+      const Real eu = std::nextafter(static_cast<Real>(abs(s_u - R(su))), std::numeric_limits<Real>::infinity());
+      const Real sp = al::speed(c, u);
+      if (!(sp > Real(0))) continue;
+      for (const double f : {1e-9, -1e-9, 1e-6, -1e-6, 1e-4, -1e-4, 1e-2, -1e-2, 1e-1, -1e-1}) {
+        const Real ut = u + Real(f) * w;
+        if (!(ut > bp[i] && ut < bp[i + 1])) continue;
+        const Real target = static_cast<Real>(r.s(R(ut)));
+        const Real fu = su - target;
+        const Real next = u - fu / sp;
+        if (!(next > bp[i] && next < bp[i + 1])) continue;
+        const Real b = al::detail::bounded_step_error(c, u, fu, eu, sp, next);
+        ASSERT_TRUE(std::isfinite(b)) << "segment " << i << " u = " << u;
+        const R truth = abs(r.s(R(next)) - R(target));
+        ASSERT_LE(truth, R(b)) << "segment " << i << " u = " << u << " step " << f;
+        ++checked;
+        if (std::abs(f) >= 1e-2) closest = std::max(closest, static_cast<double>(truth / R(b)));
+      }
+    }
+  }
+  EXPECT_GT(checked, 50u);
+  EXPECT_GT(closest, 1.0 / 30);
+}
+
+TEST(inversion, a_newton_step_bounded_by_the_second_derivative_bounds_its_true_error) {
+  check_bounded_steps("smooth cubic", engine_of(smooth_cubic<double>(), 0.0, 1.0),
+                      engine_of(smooth_cubic<R>(), R(0), R(1)));
+  check_bounded_steps("near cusp", engine_of(cusp_cubic<double>(1.0 / 1024), 0.0, 2.0),
+                      engine_of(cusp_cubic<R>(1.0 / 1024), R(0), R(2)));
+  check_bounded_steps("100-segment spline", long_spline<double>(), long_spline<R>());
+  check_bounded_steps("100-segment spline, float", long_spline<float>(), long_spline<R>());
+  // Across a knot the curve bounds nothing (P' may jump there): no bounded step.
+  const auto c = long_spline<double>();
+  EXPECT_EQ(al::detail::bounded_step_error(c, 4.9, 1e-3, 0.0, 1.0, 5.1), std::numeric_limits<double>::infinity());
+  // A curve that declares no second-derivative bound: none either.
+  EXPECT_EQ(al::detail::bounded_step_error(smooth_cubic<double>(), 0.4, 1e-3, 0.0, 1.0, 0.401),
+            std::numeric_limits<double>::infinity());
+}
+
+// With the length prefix and a curve that bounds its second derivative, a smooth segment's query
+// costs one short integral (G7-K15 from the nearer prefix point) and one speed: 16 evaluations,
+// converged with a bound that covers the true |s(u) - s*| (50-digit reference).
+TEST(inversion, newton_on_a_piecewise_cubic_settles_its_step_without_a_check_integral) {
+  const auto c = engine_of(smooth_cubic<double>(), 0.0, 1.0);
+  const ref::reference_arc_length<cb::piecewise_cubic<R, 2>> r(engine_of(smooth_cubic<R>(), R(0), R(1)));
+  const al::segment_lengths<double> seg(c, al::segment_lengths<double>::default_options(),
+                                        al::segment_lengths<double>::newton_prefix_panels);
+  const double tol = al::newton_options<double>{}.relative_tolerance * seg.length();
+  for (int k = 1; k < 64; ++k) {
+    const double s = seg.length() * (k + 0.3183) / 64.5;
+    const auto rn = al::newton_invert(c, seg, s);
+    EXPECT_TRUE(rn.converged()) << "k=" << k;
+    EXPECT_LE(rn.evaluations, 16u) << "k=" << k;
+    EXPECT_LE(rn.s_error_estimate, tol) << "k=" << k;
+    EXPECT_LE(abs(r.s(R(rn.u)) - R(s)), R(rn.s_error_estimate)) << "k=" << k;
+  }
+}

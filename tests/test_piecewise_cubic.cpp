@@ -606,3 +606,59 @@ TEST(engine, sorted_power_path_rejects_bad_input_at_its_index_with_the_prefix_wr
   past.back() = std::nextafter(64.0, 65.0);
   EXPECT_THROW(c.evaluate_sorted(past, out), std::domain_error);
 }
+
+// second_derivative_bound: on every segment of every lookup knot set (random Hermite data, so every
+// sign pattern of a_2, a_3 occurs), over the whole segment and over random sub-intervals, at least
+// |P''| of the stored coefficients at 65 points of the interval, its ends included, evaluated in
+// real50 (P''(u) = (2 a_2 + 6 a_3 t) / h_i^2 with the exact t and h_i); and at most that plus
+// 1e-5 of the coefficients' scale (2 |a_2| + 6 |a_3|) / h_i^2: the bound is the norm at the ends
+// (exact, the norm of an affine function is largest at an end) raised by 8 u of the scale and
+// 16 eps, 1e-5 leaving room for float's 8 u = 4.8e-7. +inf across a knot (P' may jump there); the
+// domain is checked.
+TYPED_TEST(lookup_test, second_derivative_bound_covers_the_second_derivative_and_is_tight) {
+  using Real = TypeParam;
+  using R50 = cb::real50;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> frac(0.0, 1.0);
+  for (const auto& [name, k] : lookup_knot_sets<Real>()) {
+    const auto c = random_engine(k, 9);
+    for (std::size_t i = 0; i + 1 < k.size(); ++i) {
+      const auto& a = c.power_coefficients(i);
+      const R50 h = R50(k[i + 1]) - R50(k[i]);
+      R50 scale_sq(0);
+      for (int d = 0; d < 3; ++d) {
+        const R50 s = (R50(2) * abs(R50(a[2][d])) + R50(6) * abs(R50(a[3][d]))) / (h * h);
+        scale_sq += s * s;
+      }
+      const R50 scale = sqrt(scale_sq);
+      for (int trial = 0; trial < 4; ++trial) {
+        Real lo = k[i], hi = k[i + 1];
+        if (trial > 0) {
+          const Real x = k[i] + Real(frac(rng)) * (k[i + 1] - k[i]), y = k[i] + Real(frac(rng)) * (k[i + 1] - k[i]);
+          lo = std::min(x, y);
+          hi = std::max(x, y);
+          if (!(lo >= k[i] && hi <= k[i + 1])) continue;
+        }
+        R50 top(0);
+        for (int j = 0; j <= 64; ++j) {
+          const R50 t = (R50(lo) + (R50(hi) - R50(lo)) * R50(j) / 64 - R50(k[i])) / h;
+          R50 sq(0);
+          for (int d = 0; d < 3; ++d) {
+            const R50 v = (R50(2) * R50(a[2][d]) + R50(6) * R50(a[3][d]) * t) / (h * h);
+            sq += v * v;
+          }
+          top = std::max(top, R50(sqrt(sq)));
+        }
+        const Real b = c.second_derivative_bound(lo, hi);
+        ASSERT_GE(R50(b), top) << name << ": segment " << i << " [" << lo << ", " << hi << "]";
+        ASSERT_LE(R50(b), top + R50(1e-5) * scale) << name << ": segment " << i << " [" << lo << ", " << hi << "]";
+      }
+      if (i + 2 < k.size()) {
+        const Real mid = k[i] + (k[i + 1] - k[i]) / Real(2);
+        ASSERT_EQ(c.second_derivative_bound(mid, k[i + 2]), std::numeric_limits<Real>::infinity()) << name;
+      }
+    }
+    EXPECT_THROW((void)c.second_derivative_bound(k.front(), k.back() + Real(1)), std::domain_error);
+    EXPECT_THROW((void)c.second_derivative_bound(std::numeric_limits<Real>::quiet_NaN(), k.back()), std::domain_error);
+  }
+}

@@ -13,12 +13,16 @@
 // bisecting when the step leaves the bracket or |P'| = 0. Stops when |s(u) - s*| + its error bound
 // <= tolerance (converged), at the iteration cap or the evaluation budget (cap_hit: the best
 // iterate, its bound still reported) or when the bracket cannot shrink in Real (rounding_limited).
+// Where the curve bounds |P''| (core/curve.hpp: piecewise cubics do), a step is also accepted
+// without integrating over it when the bound on its error (detail::bounded_step_error: the
+// residual before it, the step's own rounding and M D^2 / 2 for a step D) meets the tolerance.
 // Every error bound (segment lengths, prefix points, |s(u) - s*|) includes the curve's own rounding
 // over the stretch integrated, rounding_bound(c, 1) |u - u_known| (length.hpp); a curve without a
 // bound is solved all the same and its answers say not_guaranteed (+inf).
 // Sources: seed 002 (find u2 with arclength(u1, u2) = s); Guenter & Parent (1990); Eberly (2008).
 // Cost: O(log segments) + 32 evaluations per long and 16 per short iteration; without the prefix
-// typically one long and two or three short, with it two short (one step and its check); at most
+// typically one long and two or three short, with it two short (one step and its check), or one
+// short and one speed where the step is bounded without its check (16 evaluations); at most
 // max_evaluations (2^16) per query; no allocation per query. segment_lengths: at most
 // adaptive_options::max_evaluations (2^24) over the whole curve, plus a few per segment; the
 // prefix at most as many again (P panels of 2n + 1 evaluations per smooth segment).
@@ -389,6 +393,33 @@ template <class Real>
   return gauss_kronrod<Real>(7);
 }
 
+/// A bound on |s(next) - s*| after the Newton step next = u - fu / sp from u, where s(u) - s* was
+/// computed as fu with |s(u) - s* - fu| <= eu and sp = fl(|P'(u)|), without integrating over the
+/// step: s(next) - s* = s(u) - s* + integral of |P'| from u to next, and with D = next - u,
+/// |integral - D sp| <= 3 r |D| + M D^2 / 2, r = rounding_bound(c, 1) (|P'| as evaluated, and as
+/// the stored coefficients give it exactly, are each within r of the curve's), M =
+/// second_derivative_bound(c, u, next) (|P'| is Lipschitz with M there: ||a| - |b|| <= |a - b|).
+/// So |s(next) - s*| <= eu + |fu + sp D| + 3 r |D| + M D^2 / 2; the computed fu + sp D is within
+/// 3 u (|fu| + sp |D|) of the exact one (the subtraction that made fu, next - u, the product and
+/// the sum), charged as 8 u, and D^2 is raised by 4 u for D's own rounding. +inf when the curve
+/// bounds no second derivative over [u, next] (a knot between them, or no declaration).
+template <curve C>
+[[nodiscard]] typename C::real_type bounded_step_error(const C& c, const typename C::real_type& u,
+                                                       const typename C::real_type& fu,
+                                                       const typename C::real_type& eu,
+                                                       const typename C::real_type& sp,
+                                                       const typename C::real_type& next) {
+  using Real = typename C::real_type;
+  using std::abs;
+  const Real m = second_derivative_bound(c, u < next ? u : next, u < next ? next : u);
+  if (!is_finite(m)) return no_bound<Real>();
+  const Real d = abs(next - u);
+  const Real half_eps = epsilon<Real>() / Real(2);
+  const Real b = eu + abs(fu + sp * (next - u)) + Real(8) * half_eps * (abs(fu) + sp * d) +
+                 Real(3) * rounding_bound(c, 1) * d + m * d * d / Real(2) * (Real(1) + Real(4) * half_eps);
+  return b * (Real(1) + Real(8) * half_eps);
+}
+
 template <class Real>
 void check_newton_options(const newton_options<Real>& opt) {
   validate::positive("relative_tolerance", opt.relative_tolerance);
@@ -510,6 +541,19 @@ template <curve C>
     if (!(next > lo && next < hi) || next == u) {
       out.status = result_status::rounding_limited;  // the bracket cannot shrink further in Real
       break;
+    }
+    // The step bounded without integrating it (detail::bounded_step_error), where the curve bounds
+    // its second derivative: one speed instead of a short integral. Not for final_step's table
+    // nodes, which want the residual taken to rounding level.
+    if (bounded && !opt.final_step) {
+      const Real b = detail::bounded_step_error(c, u, fu, eu, sp, next);
+      if (b <= tolerance) {
+        out.u = next;
+        out.residual = fu + sp * (next - u);
+        out.s_error_estimate = b;
+        out.status = result_status::converged;
+        break;
+      }
     }
     u = next;
   }

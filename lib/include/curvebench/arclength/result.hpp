@@ -72,9 +72,10 @@ struct quadrature_result {
   }
 };
 
-/// u with s(u) = s_target: the parameter found, the residual s(u) - s_target as computed, an
-/// error estimate in arc length (|s_exact(u) - s_target| <= s_error_estimate is intended),
-/// iterations, curve-derivative evaluations, status.
+/// u with s(u) = s_target: the parameter found, the residual s(u) - s_target as computed (after a
+/// Newton step bounded without integrating over it, the step's linear model s(u0) - s_target +
+/// |P'(u0)| (u - u0)), an error estimate in arc length (|s_exact(u) - s_target| <= s_error_estimate
+/// is intended), iterations, curve-derivative evaluations, status.
 template <class Real>
 struct inversion_result {
   Real u{0};

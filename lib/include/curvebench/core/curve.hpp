@@ -14,6 +14,10 @@
 // Real, a constant computed once at construction (+infinity: no bound known). `rounding_bound(c,
 // order)` returns it, or 0 for a curve that declares none: its evaluation is then taken to be as
 // well conditioned as the rounding floors of the arc-length methods assume (a few eps of |P'|).
+// Optionally, `c.second_derivative_bound(a, b)` (a <= b in the domain) -> Real: an upper bound on
+// |P''(u)| over [a, b] such that the speed |P'| is Lipschitz with it there (+infinity: none, e.g.
+// across a knot where P' may jump); `second_derivative_bound(c, a, b)` returns it, or +infinity for
+// a curve that declares none. Newton inversion uses it to bound a step without integrating it.
 // Arc length, inversion and motion (arclength/, motion/) are written against this concept only.
 #pragma once
 
@@ -22,6 +26,7 @@
 
 #include <concepts>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -63,6 +68,22 @@ template <curve C>
     return c.rounding_bound(order);
   else
     return typename C::real_type(0);
+}
+
+/// A curve that bounds its second derivative over an interval (see the header).
+template <class C>
+concept declares_second_derivative_bound = curve<C> && requires(const C& c, const typename C::real_type& u) {
+  { c.second_derivative_bound(u, u) } -> std::convertible_to<typename C::real_type>;
+};
+
+/// c.second_derivative_bound(a, b) when c declares one, else +infinity (no bound known).
+template <curve C>
+[[nodiscard]] typename C::real_type second_derivative_bound(const C& c, const typename C::real_type& a,
+                                                            const typename C::real_type& b) {
+  if constexpr (declares_second_derivative_bound<C>)
+    return c.second_derivative_bound(a, b);
+  else
+    return std::numeric_limits<typename C::real_type>::infinity();
 }
 
 /// Throws std::domain_error unless u lies in the closed domain (NaN fails too):

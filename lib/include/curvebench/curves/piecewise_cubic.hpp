@@ -180,6 +180,35 @@ class piecewise_cubic {
     return rounding_bound_[static_cast<std::size_t>(order)];
   }
 
+  /// An upper bound of |P''(u)| (Euclidean norm) over u in [a, b] (a <= b, both in the domain) when
+  /// [a, b] lies in one segment's closed interval [u_i, u_{i+1}]: the speed |P'| is then Lipschitz
+  /// with it on [a, b] (core/curve.hpp). P''(u) = (2 a_2 + 6 a_3 t) / h_i^2 is affine in t, so its
+  /// norm is largest at an end: the larger of the two, each coordinate raised by 8 u (2 |a_2| +
+  /// 6 |a_3|) for the rounding of t (4 u, local_t) and of the sum (3 u), the result by 16 eps for
+  /// the norm, the scaling by h_i^-2 and h_i's own rounding. +inf when [a, b] crosses a knot, where
+  /// P' may jump. Throws std::domain_error for a or b outside the domain.
+  [[nodiscard]] CURVEBENCH_PC_HOT Real second_derivative_bound(const Real& a, const Real& b) const {
+    if (!(lo_ <= a && a <= hi_)) check_parameter(a, domain(), "a");
+    if (!(lo_ <= b && b <= hi_)) check_parameter(b, domain(), "b");
+    const std::size_t i = locate(a);
+    const segment_record& r = seg_[i];
+    if (!(a <= b && b <= r.lookup.right)) return std::numeric_limits<Real>::infinity();  // right: +inf at the end
+    using std::abs;
+    using std::max;
+    const std::array<point_type, 4>& c = r.power;
+    const Real slack = Real(4) * epsilon<Real>();  // 8 u
+    const Real ta = local_t(i, r.lookup, a), tb = local_t(i, r.lookup, b);
+    point_type wa, wb;
+    for (int d = 0; d < Dim; ++d) {
+      const Real two_a2 = Real(2) * c[2][d], six_a3 = Real(6) * c[3][d];
+      const Real room = slack * (abs(two_a2) + abs(six_a3));
+      wa[d] = abs(two_a2 + six_a3 * ta) + room;
+      wb[d] = abs(two_a2 + six_a3 * tb) + room;
+    }
+    const Real m = max(safe_norm(wa), safe_norm(wb)) * (Real(1) + Real(16) * epsilon<Real>());
+    return reciprocal_ ? per_h<true>(per_h<true>(m, r.lookup.inv_h), r.lookup.inv_h) : m / h_[i] / h_[i];
+  }
+
   // ---- the curve concept ----
   [[nodiscard]] interval<Real> domain() const { return {knots_.front(), knots_.back()}; }
   [[nodiscard]] std::span<const Real> breakpoints() const { return knots_; }

@@ -27,6 +27,10 @@ class cubic_family {
   [[nodiscard]] point_type derivative(const Real& u, int order) const { return engine_.derivative(u, order); }
   /// The engine's bound on its own rounding, the family's slope errors included (core/curve.hpp).
   [[nodiscard]] Real rounding_bound(int order) const { return engine_.rounding_bound(order); }
+  /// The engine's bound on |P''| over [a, b] within one segment (core/curve.hpp).
+  [[nodiscard]] Real second_derivative_bound(const Real& a, const Real& b) const {
+    return engine_.second_derivative_bound(a, b);
+  }
   /// The evaluation engine (algorithms, batched and sorted evaluation, per-segment data).
   [[nodiscard]] const engine_type& engine() const { return engine_; }
 
