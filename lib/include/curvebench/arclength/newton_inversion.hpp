@@ -22,7 +22,8 @@
 // Sources: seed 002 (find u2 with arclength(u1, u2) = s); Guenter & Parent (1990); Eberly (2008).
 // Cost: O(log segments) + 32 evaluations per long and 16 per short iteration; without the prefix
 // typically one long and two or three short, with it two short (one step and its check), or one
-// short and one speed where the step is bounded without its check (16 evaluations); at most
+// short and one speed where the step is bounded without its check (16 evaluations; the bound's
+// two values of P'' come from the curve's coefficients and are not counted); at most
 // max_evaluations (2^16) per query; no allocation per query. segment_lengths: at most
 // adaptive_options::max_evaluations (2^24) over the whole curve, plus a few per segment; the
 // prefix at most as many again (P panels of 2n + 1 evaluations per smooth segment).

@@ -11,10 +11,13 @@
 // index of 2n uniform buckets over the domain, built at construction by the same rounded map from u
 // to its bucket as the lookup uses, holds per bucket the number of interior knots below it and its
 // own (at most two compared without a branch, more searched): the segment is the same as a binary
-// search over all knots at every u. evaluate_batch and evaluate_sorted (non-decreasing parameters; the default power
-// evaluation walks the segments and, where the parameters are dense, runs a branch-free loop per
-// segment over its parameters, the coefficients hoisted; sparse ones go point by point; both
-// bit-identical to single calls) never allocate.
+// search over all knots at every u. Per segment one 64-byte-aligned record holds what an
+// evaluation reads (the lookup's fields and the power coefficients). evaluate_batch and
+// evaluate_sorted (non-decreasing parameters; the default power evaluation walks the segments and,
+// where the parameters are dense, runs a branch-free loop per segment over its parameters, the
+// coefficients hoisted; sparse ones go point by point; both bit-identical to single calls) never
+// allocate. second_derivative_bound bounds |P''| over an interval of one segment (Newton inversion
+// bounds its steps with it).
 // Sources: seeds 000, 001, 002 (basis matrices, T · M · G); Farin (2002) for de Casteljau.
 // Cost: O(1) per value after lookup. Accuracy: O(eps · scale), scale the coefficients' size (power)
 // or the control items' (matrix, bezier); de Casteljau the most stable.
