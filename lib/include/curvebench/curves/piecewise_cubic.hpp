@@ -209,7 +209,7 @@ class piecewise_cubic {
       wb[d] = abs(two_a2 + six_a3 * tb) + room;
     }
     const Real m = max(safe_norm(wa), safe_norm(wb)) * (Real(1) + Real(16) * epsilon<Real>());
-    return reciprocal_ ? per_h<true>(per_h<true>(m, r.lookup.inv_h), r.lookup.inv_h) : m / h_[i] / h_[i];
+    return per_h_i(per_h_i(m, i, r.lookup), i, r.lookup);
   }
 
   // ---- the curve concept ----
@@ -236,7 +236,7 @@ class piecewise_cubic {
       // The chain rule's factor fl(1 / h_i), computed once: no division per call (the divider,
       // shared with the speed's square root, is what limits the arc-length methods).
       const point_type dt = a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]));
-      return reciprocal_ ? per_h<true>(dt, r.inv_h) : per_h<false>(dt, h_[i]);
+      return per_h_i(dt, i, r);
     }
     return evaluate(u, order, cubic_algorithm::power);
   }
@@ -628,7 +628,15 @@ class piecewise_cubic {
   // normal (h_i beyond 1 / DBL_MIN, or subnormal) the curve divides: fl(fl(u - u_i) / h_i), 3 u.
   // At u = u_{i+1} (the last knot) t may round to 1 +- 2 u instead of 1: within the same bound.
   [[nodiscard]] CURVEBENCH_PC_HOT Real local_t(std::size_t i, const lookup_record& r, const Real& u) const {
-    return reciprocal_ ? per_h<true>(u - r.knot, r.inv_h) : per_h<false>(u - r.knot, h_[i]);
+    return per_h_i(Real(u - r.knot), i, r);
+  }
+
+  // x / h_i of segment i (r = seg_[i].lookup) the curve's way: by fl(1 / h_i) where every
+  // reciprocal is normal (reciprocal_), else divided. For t (local_t), the chain rule and
+  // second_derivative_bound.
+  template <class X>
+  [[nodiscard]] CURVEBENCH_PC_HOT X per_h_i(const X& x, std::size_t i, const lookup_record& r) const {
+    return reciprocal_ ? per_h<true>(x, r.inv_h) : per_h<false>(x, h_[i]);
   }
 
   // x / h_i, by the reciprocal (scale = fl(1 / h_i)) or by the division (scale = h_i): the one
