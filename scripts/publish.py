@@ -78,7 +78,8 @@ def targets(bench_rows, vocab):
         b, p = t["best"], t["best_peer"]
         out.append({"family": t["family"], "operation": t["operation"], "counter": t["counter"],
                     "target": t["target"],
-                    "best": None if b is None else f"{lib.display_algorithm(b, vocab)} {lib.args_text(lib.data_args(b, vocab))}".strip(),
+                    "best": (None if b is None else
+                             f"{lib.display_algorithm(b, vocab)} {lib.args_text(lib.data_args(b, vocab))}".strip()),
                     "best_ns": None if b is None else b["ns_per_op"],
                     "best_is_peer": None if b is None else vocab.is_peer(b["algorithm"]),
                     "peer": None if p is None else lib.display_algorithm(p, vocab),
@@ -135,8 +136,10 @@ def channel_summary(records, bench_rows):
     solvers = []
     for s in rc.solver_order(records_c):
         v64, case = rc.worst(records_c, "channel_value", s, 64)
-        solvers.append({"solver": s, "max64": v64, "case": case, "max32": rc.worst(records_c, "channel_value", s, 32)[0],
-                        "monotone": rc.total(records_c, "channel_monotone", s, 64) + rc.total(records_c, "channel_monotone", s, 32),
+        solvers.append({"solver": s, "max64": v64, "case": case,
+                        "max32": rc.worst(records_c, "channel_value", s, 32)[0],
+                        "monotone": (rc.total(records_c, "channel_monotone", s, 64)
+                                     + rc.total(records_c, "channel_monotone", s, 32)),
                         "ns": times.get((s, "64", 64, "single")), "ns_sorted": times.get((s, "64", 64, "sorted"))})
     goal = rc.goal_line(records_c)
     rotation = {}
@@ -227,7 +230,8 @@ def render_readme(h):
     uos = [t for t in h["targets"] if t["family"] == "u_of_s" and t["best"] is not None]
     if uos:
         lines.append("- **u(s), fastest reaching |ds| / L** (one curve, benchmarks): " + "; ".join(
-            f"{t['target']:g}: `{t['best']}` {fmt(t['best_ns'])} ns" + (f" (`{t['peer']}` {fmt(t['peer_ns'])} ns)" if t["peer"] else "")
+            f"{t['target']:g}: `{t['best']}` {fmt(t['best_ns'])} ns"
+            + (f" (`{t['peer']}` {fmt(t['peer_ns'])} ns)" if t["peer"] else "")
             for t in uos) + ".")
     if h["orders"]:
         lines.append("- **Observed convergence orders** (median over cases, theory in brackets): " + ", ".join(
@@ -277,9 +281,13 @@ def render_results(h, plots):
                       t["peer"] or "-", t["peer_ns"]] for t in h["targets"]]))
     md += ["", "## Arc length per case: fastest method reaching each relative error", "",
            "Per-case timings (`bench_arclength_cases`) joined with the accuracy sweep's errors.", ""]
+
+    def fastest(p, t):
+        best = p[f"{t:g}"]
+        return f"{best['method']} ({fmt(best['ns'])} ns)" if best else "none reached"
     md.append(table(["case"] + [f"at {t:g}" for t in lib.TARGETS],
-                    [[p["case"]] + [f"{p[f'{t:g}']['method']} ({fmt(p[f'{t:g}']['ns'])} ns)" if p[f"{t:g}"] else "none reached"
-                                    for t in lib.TARGETS] for p in h["pareto"]]) if h["pareto"] else "No per-case timings.")
+                    [[p["case"]] + [fastest(p, t) for t in lib.TARGETS] for p in h["pareto"]])
+              if h["pareto"] else "No per-case timings.")
     md += ["", "## Evaluation algorithms", "", "Max error in eps(double) x the curve's size against the 50-digit "
            "evaluation of the same data; cases with more than one algorithm, largest spread first.", ""]
     md.append(table(["case", "family", "errors per algorithm", "worst / best"],
@@ -298,8 +306,8 @@ def render_results(h, plots):
                "double). The complete tables are in REPORT.md's section \"Keyframe channels\".", ""]
         md.append(table(["solver", "max error, double", "worst case", "max error, float", "monotonicity violations",
                          "ns/value", "ns/value sorted"],
-                        [[x["solver"], x["max64"], x["case"] or "-", x["max32"], f"{x['monotone']:g}", x["ns"], x["ns_sorted"]]
-                         for x in ch["solvers"]]))
+                        [[x["solver"], x["max64"], x["case"] or "-", x["max32"], f"{x['monotone']:g}", x["ns"],
+                          x["ns_sorted"]] for x in ch["solvers"]]))
         if ch.get("rotation"):
             md += ["", "glTF rotation channels, max angle error in eps(double) radians: " +
                    ", ".join(f"`{m}` {fmt(v)}" for m, v in sorted(ch["rotation"].items())) + "."]
@@ -343,7 +351,8 @@ def atomic_write(path, text):
 
 def load_run(report_dir):
     vocab = lib.load_vocabulary(os.path.join(report_dir, "vocabulary.json"))
-    bench_context, bench_rows = lib.load_benchmark_files(sorted(glob.glob(os.path.join(report_dir, "bench_*.json"))), vocab)
+    bench_files = sorted(glob.glob(os.path.join(report_dir, "bench_*.json")))
+    bench_context, bench_rows = lib.load_benchmark_files(bench_files, vocab)
     with open(os.path.join(report_dir, "accuracy.json"), encoding="utf-8") as f:
         acc = json.load(f)
     run = {}

@@ -19,7 +19,6 @@ report_lib.py (tested by tests/python).
 import argparse
 import glob
 import json
-import math
 import os
 import sys
 from collections import defaultdict
@@ -43,6 +42,8 @@ SEED_001_TABLE = [
     ["natural", "yes", "no", "C2", "yes", "n/a", "n/a"],
     ["B-Splines", "no", "yes", "C2", "yes", "yes", "yes"],
 ]
+
+
 def atomic_write(path, text):
     tmp = path + ".tmp"
     with open(tmp, "w", encoding="utf-8") as f:
@@ -95,7 +96,8 @@ def speed_section(rows, vocab):
         for data, rs in sorted(entries, key=lambda e: natural_key(lib.args_text(e[0]))):
             fastest = min(r["ns_per_op"] for r in rs)
             for r in sorted(rs, key=lambda r: r["ns_per_op"]):
-                ratios = ", ".join(f"{p['algorithm']}: {fmt(r['ns_per_op'] / p['ns_per_op'])}" for p in pairs[r["name"]])
+                ratios = ", ".join(f"{p['algorithm']}: {fmt(r['ns_per_op'] / p['ns_per_op'])}"
+                                   for p in pairs[r["name"]])
                 kind, err = lib.error_of(r, vocab)
                 body.append([lib.args_text(data) or "-", lib.display_algorithm(r, vocab), r["ns_per_op"],
                              r["ns_per_op"] / fastest, ratios or "-", f"{kind} {fmt(err)}" if kind else "-"])
@@ -111,8 +113,10 @@ def floor_section(rows, vocab):
     FLOPs per operation (the flops counter, per evaluation, never per batch) and the FLOP rate."""
     floor_ids = {a for a in vocab.algorithms if a.startswith("floor_")}
     body = []
-    for (family, operation, data), rs in sorted(lib.speed_groups(rows, vocab).items(),
-                                                key=lambda kv: (kv[0][0], kv[0][1], natural_key(lib.args_text(kv[0][2])))):
+
+    def group_order(kv):
+        return (kv[0][0], kv[0][1], natural_key(lib.args_text(kv[0][2])))
+    for (family, operation, data), rs in sorted(lib.speed_groups(rows, vocab).items(), key=group_order):
         floors = [r for r in rs if r["algorithm"] in floor_ids]
         for r in sorted(rs, key=lambda r: (r["algorithm"] in floor_ids, natural_key(lib.display_algorithm(r, vocab)))):
             mine = [f for f in floors if f is not r and lib.variant_args(f, vocab) == lib.variant_args(r, vocab)]
@@ -233,7 +237,8 @@ def join_notes(unmatched_records, unmatched_times, without_error):
         md += [f"{len(unmatched_records)} length records have no per-case timing (settings the timed sweep "
                "does not run, or cases it skipped):", ""]
         md.append(table(["method", "setting", "cases without a timing"],
-                        [[m, st, len(cs)] for (m, st), cs in sorted(by.items(), key=lambda kv: (kv[0][0], natural_key(kv[0][1])))]))
+                        [[m, st, len(cs)]
+                         for (m, st), cs in sorted(by.items(), key=lambda kv: (kv[0][0], natural_key(kv[0][1])))]))
         md.append("")
     if unmatched_times:
         md += [f"{len(unmatched_times)} per-case timings have no length record:", ""]
@@ -366,8 +371,9 @@ def main():
             md += ["Headline ratios (our fastest with the peer's settings on the same data / the peer, per "
                    "operation; < 1 means faster than the peer):", ""]
             md.append(table(["family", "data", "ours", "peer", "ns per op (ours)", "ratio"],
-                            [[o["family"], lib.args_text(lib.data_args(o, vocab)) or "-", lib.display_algorithm(o, vocab),
-                              lib.display_algorithm(p, vocab), o["ns_per_op"], ratio] for o, p, ratio in headlines]))
+                            [[o["family"], lib.args_text(lib.data_args(o, vocab)) or "-",
+                              lib.display_algorithm(o, vocab), lib.display_algorithm(p, vocab), o["ns_per_op"], ratio]
+                             for o, p, ratio in headlines]))
             md.append("")
         md += ["", "### Fastest at an error target (benchmarks with a relative error counter)", ""]
         md.append(fastest_at_target(bench_rows, vocab))
@@ -432,9 +438,9 @@ def main():
         md.append("")
         md.append(table(["Cubic", "Interpolate?", "Local?", "Continuity", "Affine?", "Convex hull?", "VD?"],
                         SEED_001_TABLE))
-        md += ["", "Measured by `curvebench::analysis::audit_properties` on each 2D case of the suite (the family rebuilt "
-               "from perturbed control data; see docs/properties.md for how each column is measured and why "
-               "the answers differ from the seed's):", ""]
+        md += ["", "Measured by `curvebench::analysis::audit_properties` on each 2D case of the suite "
+               "(the family rebuilt from perturbed control data; see docs/properties.md for how each column is "
+               "measured and why the answers differ from the seed's):", ""]
         md.append("| Case (family) | Interpolates | Local control | Continuity | Affine invariant | Convex hull | "
                   "Variation diminishing |")
         md.append("|---|---|---|---|---|---|---|")

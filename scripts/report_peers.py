@@ -35,7 +35,8 @@ EVAL_FINDING_ULPS = 100.0
 # The optional peers scripts/peers.sh runs, by the driver name their peers_<driver>.json carries.
 OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
                     "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)",
-                    "chromium": "headless Chromium, CSS easing through the Web Animations API (scripts/peers/chromium_driver.py)",
+                    "chromium": ("headless Chromium, CSS easing through the Web Animations API "
+                                 "(scripts/peers/chromium_driver.py)"),
                     "penner": "d3-ease's Penner easings (scripts/peers/penner_driver.mjs)",
                     "blender": "real Blender F-curves (scripts/peers/blender_channels.py; needs blender on PATH)",
                     "three": "three.js's glTF interpolants (scripts/peers/gltf_driver.mjs)"}
@@ -263,12 +264,13 @@ def blender_lines(peer_files):
     md = ["", "### Real Blender F-curves", ""]
     data = next((d for _, d in peer_files if d.get("driver") == "blender"), None)
     if data is None:
-        return md + ["Not run: no reports/peers_blender.json (scripts/peers.sh runs Blender when `blender` is on PATH)."]
+        return md + ["Not run: no reports/peers_blender.json "
+                     "(scripts/peers.sh runs Blender when `blender` is on PATH)."]
     md += ["The channel cases a Blender F-curve can hold, evaluated by Blender itself (fcurve.evaluate, float) at the "
            "same times as curvebench's Blender model (float, `curvebench sample`); the exact keys are the keys and "
-           "handles Blender reports, their Bezier segments evaluated at 50 digits inside the key range (Blender corrects "
-           "overreaching handles before it evaluates; the exact keys do not, so a correction shows there). Absolute "
-           "value differences.", ""]
+           "handles Blender reports, their Bezier segments evaluated at 50 digits inside the key range (Blender "
+           "corrects overreaching handles before it evaluates; the exact keys do not, so a correction shows there). "
+           "Absolute value differences.", ""]
     md.append(lib.table(["case", "Blender", "times", "compared with exact keys", "max |Blender - curvebench model|",
                          "max |Blender - exact keys|"], blender_rows(data)))
     return md

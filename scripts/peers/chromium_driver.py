@@ -10,7 +10,8 @@ each easing the page animates a <div>'s opacity with a paused Animation of durat
 the easing as the effect's timing function, sets currentTime to x * 2^20 (exact: a power of two)
 for every query fraction x, and reads effect.getComputedTiming(): "progress" is the eased progress
 Blink computed, "localTime" the time it evaluated at (Blink converts times internally: localTime /
-duration can differ from x in its last bits, so the query fraction recorded is the former). The page writes the results as JSON into a
+duration can differ from x in its last bits, so the query fraction recorded is the former). The page writes the
+results as JSON into a
 <pre>, which --dump-dom prints once the page's script has run. Blink treats local times within
 0.001 ms of an interval's ends as the end (its time tolerance); with 2^20 ms that moves only
 fractions within 1e-9 of 0 or 1. The truth is taken where Blink evaluated.

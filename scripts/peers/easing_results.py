@@ -123,7 +123,8 @@ def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, ti
         spec = specs.get(case)
         if spec is None and "steps" not in run:
             raise EasingResultError(f"driver output: case {case} is not in the cases")
-        rec = {"case": case, "group": spec.get("group", "") if spec else "css steps", "quantity": "eval", "method": run["peer"], "setting": "",
+        rec = {"case": case, "group": spec.get("group", "") if spec else "css steps", "quantity": "eval",
+               "method": run["peer"], "setting": "",
                "estimate": None, "bounded": None, "status": "not_guaranteed", "peer": True,
                "library": _library(run["peer"], driver["versions"]),
                "counterpart": {"method": "curvebench css channel, solver exact", "setting": ""},
@@ -171,7 +172,8 @@ def _steps_notes(run):
     """A sentence naming the fractions where a steps() run is not the definition's value: the
     doubles just below a step boundary k / n whose product x n rounds up to k are the usual ones."""
     n, pos = run["steps"]
-    bad = [(x, v, steps_truth(n, pos, x)) for x, v in zip(run["times"], run["values"]) if v != float(steps_truth(n, pos, x))]
+    bad = [(x, v, steps_truth(n, pos, x)) for x, v in zip(run["times"], run["values"])
+           if v != float(steps_truth(n, pos, x))]
     if not bad:
         return []
     shown = "; ".join(f"x = {x!r} (x n = {fractions.Fraction(x) * n} exactly, {x * n!r} in double): {v!r} where "

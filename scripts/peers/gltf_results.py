@@ -239,8 +239,8 @@ def measure(run, spec, model=None):
                 row["vs_model"] = max(abs(v[0] - m) for v, m in zip(values, model))
                 model_err = max(abs(mpmath.mpf(m) - y) for m, y in zip(model, truths))
             row["model_error_eps64"] = float(model_err / (EPS64 * size))
-            rec.update({"vs_model": row["vs_model"], "counterpart": {"method": "curvebench gltf model (double)",
-                                                                      "setting": ""},
+            rec.update({"vs_model": row["vs_model"],
+                        "counterpart": {"method": "curvebench gltf model (double)", "setting": ""},
                         "counterpart_error": row["model_error_eps64"]})
     return row, rec
 

@@ -70,7 +70,8 @@ class Request(unittest.TestCase):
         self.assertEqual(ch["extrapolation"], "LINEAR")
         self.assertEqual(m["tool"], "blender")
         self.assertEqual(m["keys"][1]["handle_left_type"], "free")
-        self.assertEqual(bc.channel_of("c", dict(spec, after="cycle")), (None, "extrapolation before linear / after cycle"))
+        self.assertEqual(bc.channel_of("c", dict(spec, after="cycle")),
+                         (None, "extrapolation before linear / after cycle"))
 
     def test_blender_case_keeps_its_rules(self):
         ch, m = bc.channel_of("b", cases()["blender_auto_clamped"])

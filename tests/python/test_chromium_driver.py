@@ -150,7 +150,8 @@ class Measured(unittest.TestCase):
         self.assertIn("x = 0.3 ", note)
         findings = rp.findings(doc["peer_records"])
         self.assertTrue(any(f.startswith("peer_chromium_waapi on steps_5_jump_none: error") and
-                            "against CSS steps(5, jump-none) as CSS Easing defines it, at 50 digits" in f for f in findings))
+                            "against CSS steps(5, jump-none) as CSS Easing defines it, at 50 digits" in f
+                            for f in findings))
         self.assertFalse(any("steps_4_jump_end" in f for f in findings))
 
 

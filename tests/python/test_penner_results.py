@@ -87,8 +87,8 @@ class Penner(unittest.TestCase):
         self.assertIn("easeBackInOut", note)
         self.assertNotIn("easeQuadIn", note)
         f = rp.findings(doc["peer_records"])
-        self.assertTrue(any(x.startswith("peer_d3_ease on easeExpIn: error") and "against d3's documented exp in at 50 digits"
-                            in x for x in f), f)
+        self.assertTrue(any(x.startswith("peer_d3_ease on easeExpIn: error")
+                            and "against d3's documented exp in at 50 digits" in x for x in f), f)
         self.assertFalse(any("easeQuadIn" in x for x in f), f)
 
     def test_bad_input(self):

@@ -14,7 +14,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import publish  # noqa: E402
-import report_lib as lib  # noqa: E402
 
 FIXTURES = os.path.join(HERE, "fixtures")
 
@@ -27,6 +26,10 @@ def record(case, quantity, method, error, setting="", estimate=None, bounded=Non
     return r
 
 
+def order(case, observed):
+    return {"case": case, "quantity": "length", "method": "composite_gauss", "observed": observed, "theory": 6.0}
+
+
 def accuracy(quick=False):
     return {"context": {"compiler": "gcc 12.2.0", "flags": " -O3", "quick": quick, "revision": "abc1234",
                         "seconds": 12.5},
@@ -37,9 +40,7 @@ def accuracy(quick=False):
                         record("cr", "eval", "bezier", 1.5),
                         record("cr", "length", "gauss", 1e-9, "n=4", 1e-8, True, "converged"),
                         record("cr", "length", "gauss", 1e-7, "n=2", 1e-8, False, "converged")],
-            "orders": [{"case": "cr", "quantity": "length", "method": "composite_gauss", "observed": 5.0, "theory": 6.0},
-                       {"case": "deg20", "quantity": "length", "method": "composite_gauss", "observed": 7.0, "theory": 6.0},
-                       {"case": "x", "quantity": "length", "method": "composite_gauss", "observed": 6.5, "theory": 6.0}]}
+            "orders": [order("cr", 5.0), order("deg20", 7.0), order("x", 6.5)]}
 
 
 def make_run(directory, quick=False):
@@ -109,7 +110,8 @@ class ChannelHeadline(unittest.TestCase):
                    ch("s", "channel_monotone", "curvebench", 64, 0), ch("s", "channel_monotone", "closed_form", 32, 2),
                    ch("r", "channel_rotation", "rotation_slerp", 64, 5.0, rms=1.0, norm=1.0),
                    ch("q", "channel_rotation", "rotation_slerp", 64, 7.0, rms=1.0, norm=1.0)]
-        rows = [{"family": "channel_value", "algorithm": "curvebench", "args": [["keys", "64"], ["bits", "64"], ["calls", "single"]],
+        rows = [{"family": "channel_value", "algorithm": "curvebench",
+                 "args": [["keys", "64"], ["bits", "64"], ["calls", "single"]],
                  "ns_per_op": 80.0}]
         c = publish.channel_summary(records, rows)
         self.assertEqual(c["goal"], {"max64": 3.0, "case": "s", "monotone": 0, "accurate_others": []})
@@ -197,7 +199,7 @@ class CheckedIn(unittest.TestCase):
         size = sum(os.path.getsize(p) for p in glob.glob(os.path.join(ROOT, "docs", "results", "*")))
         self.assertLess(size + len(page.encode()), publish.MAX_PLOT_BYTES)
         # Same text as publish.py renders, whatever order the plots were chosen in.
-        shown = [line[len("![") : line.index("]")] for line in page.splitlines() if line.startswith("![")]
+        shown = [line[2:line.index("]")] for line in page.splitlines() if line.startswith("![")]
         self.assertEqual(page, publish.render_results(self.h, shown) + "\n")
 
 

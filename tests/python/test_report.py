@@ -68,7 +68,8 @@ class PerOperation(unittest.TestCase):
         self.assertGreater(sorted_["ns_per_iteration"], 100 * single["ns_per_iteration"])
         self.assertLess(sorted_["ns_per_op"], single["ns_per_op"])
         # 1e9 / items_per_second is the time per iteration over the items per iteration.
-        self.assertAlmostEqual(sorted_["ns_per_op"], sorted_["ns_per_iteration"] / 1024, delta=1e-6 * sorted_["ns_per_op"])
+        self.assertAlmostEqual(sorted_["ns_per_op"], sorted_["ns_per_iteration"] / 1024,
+                               delta=1e-6 * sorted_["ns_per_op"])
 
     def test_median_aggregate_kept_others_skipped(self):
         rows = rows_of("bench_batch.json")
@@ -137,7 +138,8 @@ class Vocabulary(unittest.TestCase):
         del ok["max_err_eps"]
         r = lib.benchmark_row(ok, v)
         self.assertEqual((r["case"], r["algorithm"], r["setting"]), ("runge", "gauss", "n=8"))
-        bad = dict(ok, name="arclength_case/runge/adaptive/tol=1e-10", run_name="arclength_case/runge/adaptive/tol=1e-10")
+        name = "arclength_case/runge/adaptive/tol=1e-10"
+        bad = dict(ok, name=name, run_name=name)
         self.assert_fails(bad, "arclength_case/runge/adaptive", "method 'adaptive'")
 
     def test_file_error_names_the_file(self):

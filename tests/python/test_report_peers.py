@@ -135,8 +135,8 @@ class Joins(unittest.TestCase):
 
     def test_versions_from_the_runner_and_the_driver_files(self):
         acc = load("accuracy_gsl.json")
-        rows = rp.version_rows(acc, [("/r/peers_scipy.json", {"driver": "scipy", "versions": {"SciPy": "1.10.1"},
-                                                               "peer_records": [{}, {}]})])
+        scipy = {"driver": "scipy", "versions": {"SciPy": "1.10.1"}, "peer_records": [{}, {}]}
+        rows = rp.version_rows(acc, [("/r/peers_scipy.json", scipy)])
         self.assertEqual(rows[0], ["GSL 2.7.1", "accuracy runner (always)", 20])
         self.assertEqual(rows[1], ["SciPy 1.10.1", "peers_scipy.json (scripts/peers.sh)", 2])
         self.assertEqual(rp.missing_drivers([("p", {"driver": "scipy"}), ("q", {"driver": "chromium"}),
@@ -195,7 +195,8 @@ class ScipyRecorded(unittest.TestCase):
     def test_quad_records_join_check_rows_in_order(self):
         recs = {(r["case"], r["setting"]): r for r in scipy_doc()["peer_records"] if r["method"] == "peer_scipy_quad"}
         check = read_check("natural_cubic_knot_ratio_1e4.peer_scipy_quad.lengths.csv")["checks"][0]
-        r6, r10 = recs[("natural_cubic_knot_ratio_1e4", "tol=1e-06")], recs[("natural_cubic_knot_ratio_1e4", "tol=1e-10")]
+        r6 = recs[("natural_cubic_knot_ratio_1e4", "tol=1e-06")]
+        r10 = recs[("natural_cubic_knot_ratio_1e4", "tol=1e-10")]
         self.assertEqual(r6["error"], check["rows"][0]["error"])
         self.assertEqual(r10["error"], check["rows"][1]["error"])
         # Recorded: QUADPACK's qags through quad misses the 1e-4-wide segments like GSL's.
@@ -211,7 +212,7 @@ class ScipyRecorded(unittest.TestCase):
         doc = scipy_doc()
         recs = {(r["case"], r["setting"]): r for r in doc["peer_records"] if r["quantity"] == "u_of_s"}
         self.assertEqual(sorted(recs), [(c, t) for c in ("natural_cubic_2d", "natural_cubic_knot_ratio_1e4")
-                                         for t in ("tol=1e-08", "tol=1e-12")])
+                                        for t in ("tol=1e-08", "tol=1e-12")])
         run = next(r for r in load(os.path.join("scipy", "scipy_driver.json"))["runs"]
                    if r["kind"] == "inverse" and r["case"] == "natural_cubic_2d" and r["setting"] == "tol=1e-12")
         check = read_check(run["csv"])["checks"][0]
@@ -245,7 +246,8 @@ class ScipyRecorded(unittest.TestCase):
         self.assertTrue(any(x.startswith("peer_scipy_make_interp_spline on natural_cubic_knot_ratio_1e4: error 661")
                             and "curvebench's default evaluation: 0.813" in x for x in f), f)
         self.assertFalse(any("peer_scipy_cubic_spline" in x and "eps(double)" in x for x in f), f)
-        d1 = [x for x in f if x.startswith("peer_scipy_make_interp_spline on natural_cubic_knot_ratio_1e4 (derivative=1)")]
+        prefix = "peer_scipy_make_interp_spline on natural_cubic_knot_ratio_1e4 (derivative=1)"
+        d1 = [x for x in f if x.startswith(prefix)]
         self.assertEqual(len(d1), 1, f)
         self.assertNotIn("curvebench's default evaluation", d1[0])  # a value's error is no derivative's peer
 
@@ -326,8 +328,9 @@ class EasingRecorded(unittest.TestCase):
         self.assertGreater(unit["abs_error"], unit["documented_tolerance"])
         for r in recs.values():
             self.assertLess(r["counterpart_error"], 64)  # curvebench with the exact solver
-            self.assertEqual(r["library"].split(" ")[1], {"peer_bezier_easing_3": "3.2.0", "peer_bezier_easing_2": "2.1.0",
-                                                          "peer_mapbox_unitbezier": "1.0.0"}[r["method"]])
+            versions = {"peer_bezier_easing_3": "3.2.0", "peer_bezier_easing_2": "2.1.0",
+                        "peer_mapbox_unitbezier": "1.0.0"}
+            self.assertEqual(r["library"].split(" ")[1], versions[r["method"]])
 
     def test_findings_and_table(self):
         doc = self.doc()
@@ -473,13 +476,15 @@ class ReportWithAndWithoutPeers(unittest.TestCase):
 
     def test_with_the_scipy_driver_joined(self):
         report = self.run_report(load("accuracy_gsl.json"), [("peers_scipy.json", scipy_doc())])
-        self.assertIn("| SciPy 1.10.1, NumPy 1.24.2, Python 3.11.2 | peers_scipy.json (scripts/peers.sh) | 18 |", report)
+        self.assertIn("| SciPy 1.10.1, NumPy 1.24.2, Python 3.11.2 | peers_scipy.json (scripts/peers.sh) | 18 |",
+                      report)
         self.assertIn("Optional peers that did not run (no reports/peers_<driver>.json; run scripts/peers.sh): "
                       "real Blender F-curves", report)
         self.assertIn("### Real Blender F-curves\n\nNot run: no reports/peers_blender.json", report)
         self.assertIn("### three.js glTF interpolants\n\nNot run: no reports/peers_three.json", report)
         self.assertIn("bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs), ", report)
-        self.assertIn("| natural_cubic_knot_ratio_1e4 | peer_scipy_make_interp_spline | 661 | default | 0.813 |", report)
+        self.assertIn("| natural_cubic_knot_ratio_1e4 | peer_scipy_make_interp_spline | 661 | default | 0.813 |",
+                      report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | tol=1e-10 | peer_scipy_quad | 5.35e-09 |", report)
 
     @unittest.skipUnless(importlib.util.find_spec("mpmath"), "the glTF truth needs python3-mpmath")

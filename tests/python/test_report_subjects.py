@@ -74,7 +74,8 @@ class ReportWithSubjects(unittest.TestCase):
         p, report = self.run_report(RECORDS)
         self.assertEqual(p.returncode, 0, p.stderr)
         self.assertIn("## Your implementations (subjects)", report)
-        self.assertIn("| cr | length | own_table | 2.00e-05 | adaptive_gk tol=1e-14 | 1.00e-15 | gauss n=8 (16 evals) |",
+        self.assertIn("| cr | length | own_table | 2.00e-05 | adaptive_gk tol=1e-14 | 1.00e-15 "
+                      "| gauss n=8 (16 evals) |",
                       report)
         p, report = self.run_report(RECORDS[:4])
         self.assertEqual(p.returncode, 0, p.stderr)
