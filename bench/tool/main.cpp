@@ -154,7 +154,7 @@ void length(const cb::io::field& spec, const length_args& a) {
     }
     nlohmann::json j{{"method", a.method},
                      {"value", r.value},
-                     {"error_estimate", std::isfinite(r.error_estimate) ? nlohmann::json(r.error_estimate) : nlohmann::json()},
+                     {"estimate", std::isfinite(r.error_estimate) ? nlohmann::json(r.error_estimate) : nlohmann::json()},
                      {"evaluations", r.evaluations},
                      {"status", std::string(al::to_string(r.status))}};
     std::cout << std::setw(2) << j << "\n";
@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
   auto* chk = tool::add_check(app, ca);
 
   length_args la;
-  auto* len = app.add_subcommand("length", "arc length of a curve spec: JSON value, error estimate, evaluations");
+  auto* len = app.add_subcommand("length", "arc length of a curve spec: JSON value, estimate, evaluations");
   len->add_option("spec", la.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
   const std::vector<std::string> length_ids = length_method_ids();
   std::string length_help;
