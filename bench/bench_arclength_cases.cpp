@@ -1,5 +1,6 @@
-// Arc-length speed per case: every length method x setting of the harness sweep (harness/sweep.hpp,
-// the quick settings, a subset of the full ones) timed on every case of the suite. The benchmark
+// Arc-length speed per case: every length method x setting of the length table
+// (harness/length_methods.hpp) over the harness sweep (harness/sweep.hpp, the quick settings, a
+// subset of the full ones) timed on every case of the suite. The benchmark
 // arclength_case/<case>/<method>/<setting> computes exactly what the accuracy runner's record
 // (case, "length", method, setting) measured, so report.py joins the two into error-vs-time Pareto
 // plots per case. Curves are the type-erased any_curve<double, Dim> the runner uses: every method
@@ -12,6 +13,7 @@
 // Operation: vocab::operations::length (one arc length of the whole curve, set-up included), one
 // per iteration. Counters: vocab::counters::evaluations (curve-derivative evaluations per length).
 #include "harness/cases.hpp"
+#include "harness/length_methods.hpp"
 #include "harness/sweep.hpp"
 #include "harness/vocabulary.hpp"
 

@@ -1,13 +1,19 @@
 // The CI gate names every breach, passes clean results, and fails on an injected regression.
 #include "harness/gate.hpp"
+#include "harness/record.hpp"
 
 #include "curvebench/core/error.hpp"
+#include "curvebench/io/registry.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 using nlohmann::json;
 using curvebench::harness::check_gate;
@@ -241,4 +247,62 @@ TEST(gate, a_rule_may_name_a_subject_of_the_results) {
   r["records"][3]["subject"] = true;
   EXPECT_THROW((void)check_gate(r, json::parse(R"({"rules": [{"quantity": "evals", "method": "my_engine",
       "max_error": 4}]})")), curvebench::invalid_input);
+}
+
+// The gate reads the families' evaluation algorithms from the vocabulary, not the registry: the
+// two lists must be the same, in the registry's order (each algorithm once), or a rule naming a
+// family's algorithm would be refused (or a removed one accepted).
+TEST(gate, the_vocabulary_lists_the_registrys_evaluation_algorithms) {
+  std::vector<std::string> registry;
+  for (const curvebench::io::family_descriptor& f : curvebench::io::families())
+    for (std::string_view a : f.algorithms)
+      if (std::find(registry.begin(), registry.end(), a) == registry.end()) registry.emplace_back(a);
+  std::vector<std::string> vocabulary;
+  for (const curvebench::harness::vocab::algorithm* a : curvebench::harness::vocab::eval_algorithms)
+    vocabulary.emplace_back(a->id);
+  EXPECT_EQ(vocabulary, registry);
+  for (const std::string& a : registry) EXPECT_NE(curvebench::harness::vocab::find_algorithm(a), nullptr) << a;
+}
+
+// One record type (harness/record.hpp): what the writer writes the reader reads back, field by
+// field, for a measured record, a subject's and a peer's; bounded is computed once, from the
+// numbers, and read as written (the gate judges a results file's own "bounded").
+TEST(record, the_reader_reads_what_the_writer_writes) {
+  namespace h = curvebench::harness;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  h::record m = h::record::measured("helix", "smooth", "length", "gauss", "n=4", 1e-9, 2e-9, 28, "converged");
+  ASSERT_TRUE(m.bounded.has_value());
+  EXPECT_TRUE(*m.bounded);
+  m.extra["rms"] = 0.5;
+  m.extra["not_a_number"] = nan;  // written as null, as every number that is not finite
+  const json mj = h::to_json(m);
+  EXPECT_EQ(mj["bounded"], true);
+  EXPECT_TRUE(mj["not_a_number"].is_null());
+  EXPECT_FALSE(mj.contains("subject") || mj.contains("peer"));
+  EXPECT_EQ(h::to_json(h::read_record(mj, "m")), mj);
+
+  h::record s = h::record::measured("arch", "subject", "eval", "mine", "", 3.5, nan, 11, "not_guaranteed");
+  s.subject = true;
+  const json sj = h::to_json(s);
+  EXPECT_TRUE(sj["estimate"].is_null());
+  EXPECT_TRUE(sj["bounded"].is_null());
+  EXPECT_EQ(sj["subject"], true);
+  EXPECT_EQ(h::to_json(h::read_record(sj, "s")), sj);
+
+  // An estimate below the error: bounded false (the gate's honesty breach).
+  h::record p = h::record::measured("arch", "smooth", "length", "peer_gsl_qag", "tol=1e-10", 2e-10, 1e-10, 45,
+                                    "converged");
+  p.peer = h::peer_fields{"GSL 2.7.1", "success", 120, "adaptive_gk", "tol=1e-10", 80, nan};
+  const json pj = h::to_json(p);
+  EXPECT_EQ(pj["bounded"], false);
+  EXPECT_EQ(pj["peer"], true);
+  EXPECT_EQ(pj["counterpart"], json({{"method", "adaptive_gk"}, {"setting", "tol=1e-10"}}));
+  EXPECT_FALSE(pj.contains("counterpart_error"));
+  EXPECT_EQ(h::to_json(h::read_record(pj, "p")), pj);
+
+  // A results file's bounded is read as written, not recomputed.
+  json dishonest = mj;
+  dishonest["bounded"] = false;
+  EXPECT_EQ(h::read_record(dishonest, "d").bounded, std::optional<bool>(false));
+  EXPECT_THROW((void)h::read_record(json{{"case", 3}}, "r"), curvebench::invalid_input);
 }

@@ -2,6 +2,7 @@
 // and declared setting keys and agree with the reference, run_accuracy's exit code reports a
 // failed case, the results name the real compiler, and the pool, writers and order fit do their jobs.
 #include "harness/accuracy.hpp"
+#include "harness/length_methods.hpp"
 #include "harness/order_fit.hpp"
 #include "harness/pool.hpp"
 #include "harness/setting.hpp"
@@ -11,19 +12,23 @@
 #include "harness/writers.hpp"
 
 #include "curvebench/arclength/result.hpp"
+#include "curvebench/io/spec.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 namespace hv = curvebench::harness::vocab;
 namespace fs = std::filesystem;
@@ -95,6 +100,152 @@ TEST(setting, rejects_undeclared_missing_and_reordered_keys) {
   EXPECT_THROW((void)setting(hv::methods::composite_gauss, {{"panels", 4}, {"n", 3}}), invalid_input);  // order
   EXPECT_THROW((void)setting(hv::methods::segments_adaptive, {{"n", 3}}), invalid_input);               // none declared
   EXPECT_THROW((void)curvebench::harness::parse_setting("n=3,panels"), invalid_input);
+}
+
+// ---- the method tables (harness/length_methods.hpp) --------------------------------------------
+
+namespace {
+namespace h = curvebench::harness;
+
+/// The ids of the vocabulary's methods with records of quantity q, in the vocabulary's order.
+std::vector<std::string> vocabulary_methods_of(const hv::quantity& q) {
+  std::vector<std::string> ids;
+  for (const hv::method* m : hv::all_methods)
+    if (hv::lists(m->quantities, q.id)) ids.emplace_back(m->id);
+  return ids;
+}
+
+// The parabola P(u) = (2u, 4u(1 - u)), the quadratic Bezier [[0,0],[1,2],[2,0]]: |P'| = sqrt(4 + t^2)
+// with t = 4 - 8u, so s(u) = (F(4) - F(4 - 8u)) / 8 with F(t) = t/2 sqrt(t^2 + 4) + 2 asinh(t/2),
+// and L = s(1) = sqrt(5) + asinh(2) / 2. In double each is a handful of correctly rounded
+// operations: within 16 eps of the length (the slack the checks below allow for it).
+const char* closed_form_parabola = R"({"type": "bezier", "points": [[0, 0], [1, 2], [2, 0]]})";
+double parabola_F(double t) { return t / 2 * std::sqrt(t * t + 4) + 2 * std::asinh(t / 2); }
+double parabola_s(double u) { return (parabola_F(4) - parabola_F(4 - 8 * u)) / 8; }
+constexpr double closed_form_slack = 16 * std::numeric_limits<double>::epsilon();
+}  // namespace
+
+TEST(method_table, rows_are_the_vocabularys_methods_with_its_setting_keys) {
+  std::vector<std::string> length_ids, u_of_s_ids;
+  h::for_each_row(h::length_methods, [&](const auto& row) {
+    length_ids.emplace_back(row.method->id);
+    // format_setting throws unless the row's keys are its method's declared ones, in order.
+    EXPECT_NO_THROW((void)h::format_setting(row, h::default_settings(row))) << row.method->id;
+  });
+  h::for_each_row(h::u_of_s_methods, [&](const auto& row) {
+    u_of_s_ids.emplace_back(row.method->id);
+    EXPECT_NO_THROW((void)h::format_setting(row, h::default_settings(row))) << row.method->id;
+  });
+  // The same methods (the records' order is the table's: forward_difference's u(s) comes last).
+  std::vector<std::string> length_vocabulary = vocabulary_methods_of(hv::quantities::length);
+  std::vector<std::string> u_of_s_vocabulary = vocabulary_methods_of(hv::quantities::u_of_s);
+  EXPECT_EQ(length_ids, length_vocabulary);
+  std::sort(u_of_s_ids.begin(), u_of_s_ids.end());
+  std::sort(u_of_s_vocabulary.begin(), u_of_s_vocabulary.end());
+  EXPECT_EQ(u_of_s_ids, u_of_s_vocabulary);
+  // Settings print as records and benchmark names always did: integers as integers.
+  EXPECT_EQ(h::format_setting(h::method_rows::composite_gauss, {{"n", 3}, {"panels", 16}}), "n=3,panels=16");
+  EXPECT_EQ(h::format_setting(h::method_rows::subdivision, {{"tol", 1e-6}}), "tol=1e-06");
+  EXPECT_EQ(h::format_setting(h::method_rows::forward_difference, {{"steps", 4096}}), "steps=4096");
+  EXPECT_THROW((void)h::format_setting(h::method_rows::composite_gauss, {{"n", 3}}), invalid_input);
+}
+
+TEST(method_table, rows_sharing_a_cli_option_share_its_default_and_limits) {
+  std::map<std::string, const h::setting_def*> by_option;
+  h::for_each_row(h::length_methods, [&](const auto& row) {
+    for (const h::setting_def& d : row.settings) {
+      if (d.option.empty()) continue;
+      const auto [it, added] = by_option.try_emplace(std::string(d.option), &d);
+      if (added) continue;
+      EXPECT_EQ(it->second->fallback, d.fallback) << d.option;
+      EXPECT_EQ(it->second->min, d.min) << d.option;
+      EXPECT_EQ(it->second->max, d.max) << d.option;
+      EXPECT_EQ(it->second->integer, d.integer) << d.option;
+    }
+  });
+  EXPECT_EQ(by_option.size(), 4u);  // --n, --panels, --tol, --steps
+}
+
+TEST(method_table, a_cost_known_before_the_work_is_refused_above_its_limit) {
+  const h::length_cost g = h::method_rows::gauss.cost({{"n", 200}}, 100000);  // 1.4e8 > 2^26
+  EXPECT_EQ(g.refusal, "--n 200: 100000 segments need 140000000 evaluations, more than the limit of 67108864");
+  EXPECT_EQ(h::method_rows::gauss.cost({{"n", 5}}, 3).budget, 105u);
+  EXPECT_EQ(h::method_rows::composite_gauss.cost({{"n", 5}, {"panels", 4}}, 3).budget, 60u);
+  EXPECT_THAT(h::method_rows::composite_gauss.cost({{"n", 200}, {"panels", 1000}}, 1000).refusal,
+              HasSubstr("--n 200 --panels 1000: 1000 segments need 200000000 evaluations"));
+  EXPECT_TRUE(h::method_rows::composite_gauss.cost({{"n", 200}, {"panels", 1000}}, 1).refusal.empty());
+  EXPECT_THAT(h::method_rows::richardson.cost({{"steps", 10000000}}, 2).refusal,
+              HasSubstr("--steps 10000000: 2 segments x 10000000 steps is more than the limit of 16777216"));
+  EXPECT_EQ(h::method_rows::forward_difference.cost({{"steps", 256}}, 2).budget, 513u);
+  EXPECT_TRUE(h::method_rows::adaptive_gk.cost({{"tol", 1e-12}}, 2).refusal.empty());
+}
+
+// Every length row, at the CLI's defaults and over the quick sweep, on a curve of known length:
+// a converged result lies within its estimate of the closed form (plus the closed form's own
+// rounding); the finest setting of each series and the CLI's default lie within 1e-5 of it (the
+// loosest of them, forward_difference at 256 steps, is a few 1e-6 off: O(h^2); the coarse ones,
+// e.g. composite_gauss with one panel at 7e-3, are held to their estimates only).
+TEST(method_table, every_length_row_measures_a_known_length_within_its_estimate) {
+  const json spec = json::parse(closed_form_parabola);
+  const auto c = curvebench::io::curve_from_spec<double, 2>(curvebench::io::root(spec, "parabola"));
+  const double L = std::sqrt(5.0) + std::asinh(2.0) / 2;
+  const h::sweep w = h::settings(true);
+  std::size_t runs = 0;
+  h::for_each_row(h::length_methods, [&](const auto& row) {
+    std::vector<h::setting_values> all = row.series(w, 1.0);
+    const std::size_t finest = all.size() - 1;
+    all.push_back(h::default_settings(row));
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      const h::setting_values& v = all[i];
+      for (const double reference : {0.0, L}) {  // the CLI's context, then the sweep's
+        h::run_context x;
+        x.reference_length = reference;
+        const auto r = row.prepare(c, v, x)();
+        const std::string what = std::string(row.method->id) + " " + h::format_setting(row, v);
+        ++runs;
+        ASSERT_TRUE(std::isfinite(r.value)) << what;
+        EXPECT_GT(r.evaluations, 0u) << what;
+        if (r.converged()) {
+          EXPECT_LE(std::abs(r.value - L), r.error_estimate + closed_form_slack * L) << what;
+        }
+        if (i >= finest) {
+          EXPECT_LE(std::abs(r.value - L), 1e-5 * L) << what;
+        }
+      }
+    }
+  });
+  EXPECT_GT(runs, 40u);
+}
+
+// Every u(s) row over the quick sweep on the same curve: u(s) at five targets against the closed
+// form s(u): |s(u) - s| / L within 1e-2 at every setting (the coarsest, a forward-difference
+// table of 8 steps, is 3e-3 off) and 1e-5 at the finest of each series (forward_difference at
+// 256 steps: 4e-6; the others far below), and within the row's estimate when it gives one (its
+// per-query bound or its table's) and says converged.
+TEST(method_table, every_u_of_s_row_inverts_a_known_arc_length) {
+  const json spec = json::parse(closed_form_parabola);
+  const auto c = curvebench::io::curve_from_spec<double, 2>(curvebench::io::root(spec, "parabola"));
+  const double L = parabola_s(1.0);
+  const h::sweep w = h::settings(true);
+  h::for_each_row(h::u_of_s_methods, [&](const auto& row) {
+    const std::vector<h::setting_values> series = row.series(w, 1.0);
+    ASSERT_FALSE(series.empty()) << row.method->id;
+    for (std::size_t i = 0; i < series.size(); ++i) {
+      const h::u_of_s_run run = row.prepare(c, series[i]);
+      const std::string what = std::string(row.method->id) + " " + h::format_setting(row, series[i]);
+      for (const double f : {0.0, 0.2, 0.5, 0.77, 1.0}) {
+        const double s = std::min(f * L, run.length);
+        const h::u_of_s_answer a = run.query(s);
+        ASSERT_TRUE(a.u >= 0 && a.u <= 1) << what << " at s = " << s;
+        const double ds = std::abs(parabola_s(a.u) - f * L) / L;
+        EXPECT_LE(ds, i + 1 == series.size() ? 1e-5 : 1e-2) << what << " at s = " << s;
+        const double bound = run.table_estimate ? *run.table_estimate : a.estimate;
+        if (row.estimate && a.status == curvebench::arclength::result_status::converged && std::isfinite(bound)) {
+          EXPECT_LE(ds, bound / L + closed_form_slack) << what << " at s = " << s;
+        }
+      }
+    }
+  });
 }
 
 TEST(vocabulary, json_lists_every_entry_with_its_fields) {

@@ -7,7 +7,7 @@
 #include "harness/sweeps.hpp"
 #include "harness/writers.hpp"
 
-#include "curvebench/io/families/channel.hpp"
+#include "curvebench/io/spec_data.hpp"
 #include "curvebench/io/spec.hpp"
 
 #include <algorithm>
@@ -100,7 +100,7 @@ json run_rotation(const case_info& info, bool quick) {
 }  // namespace
 
 json run_case(const case_info& c, bool quick) {
-  if (c.spec.value("type", "") == "channel" && io::detail::is_gltf_rotation(io::root(c.spec, c.name)))
+  if (c.spec.value("type", "") == "channel" && io::is_gltf_rotation(io::root(c.spec, c.name)))
     return run_rotation(c, quick);
   switch (c.dimension) {
     case 2: return run_dim<2>(c, quick);

@@ -2,6 +2,7 @@
 // case_reference, the summary and the records.
 #include "harness/check.hpp"
 
+#include "harness/record.hpp"
 #include "harness/reference.hpp"
 
 #include "curvebench/arclength/result.hpp"
@@ -278,8 +279,6 @@ std::vector<check_result> run_dim(const io::field& spec, const std::vector<check
   return out;
 }
 
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
-
 nlohmann::json row_json(const check_result& res, const check_row& r) {
   nlohmann::json j{{"line", r.line}};
   switch (res.kind) {
@@ -324,17 +323,12 @@ std::string_view to_string(check_kind k) {
 nlohmann::json subject_record(const std::string& case_name, const std::string& group, std::string_view quantity,
                               const std::string& method, const std::string& setting, double error,
                               double evaluations) {
-  return {{"case", case_name},
-          {"group", group},
-          {"quantity", std::string(quantity)},
-          {"method", method},
-          {"setting", setting},
-          {"error", finite_or_null(error)},
-          {"estimate", nullptr},
-          {"bounded", nullptr},
-          {"evaluations", evaluations},
-          {"status", std::string(arclength::to_string(arclength::result_status::not_guaranteed))},
-          {"subject", true}};
+  // A user's values carry no estimate: estimate and bounded are null.
+  record r = record::measured(case_name, group, quantity, method, setting, error,
+                              std::numeric_limits<double>::quiet_NaN(), evaluations,
+                              arclength::to_string(arclength::result_status::not_guaranteed));
+  r.subject = true;
+  return to_json(r);
 }
 
 std::vector<check_result> run_checks(const io::field& spec, const std::vector<check_input>& inputs,

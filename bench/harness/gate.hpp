@@ -17,7 +17,7 @@
 // case group disappeared. A rule naming a quantity or method that is not in the vocabulary is an
 // error (invalid_input naming the rule's index and the value): a misspelt or renamed id must not
 // silently turn into a rule that matches nothing. For quantity "eval" the methods are "default" and
-// the evaluation algorithms the families offer in the family registry (io/registry.hpp).
+// the evaluation algorithms the families offer (vocab::eval_algorithms, the family registry's).
 // Records of a user's own implementation (a "subject": `curvebench check`, harness/check.hpp) carry
 // "subject": true and the subject's name as "method"; a rule may name such a method when the
 // results hold a subject record of that name (the quantity must still be in the vocabulary).
@@ -25,20 +25,22 @@
 // must hold "rules", a non-empty array of objects with no key but those above, each with at least
 // one check (max_error, min_order or honest: true) and values of the right type; the results must
 // hold a "records" array (and "orders", when present, an array) of objects whose fields read here
-// have the types written by the accuracy runner. Anything else is invalid_input naming the file
-// (the names given to check_gate), the rule or record and the key.
+// have the types written by the accuracy runner (records are read by harness/record.hpp's reader).
+// Anything else is invalid_input naming the file (the names given to check_gate), the rule or
+// record and the key.
 #pragma once
 
+#include "harness/record.hpp"
 #include "harness/vocabulary.hpp"
 
 #include "curvebench/core/error.hpp"
 #include "curvebench/io/json_fields.hpp"
-#include "curvebench/io/registry.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -62,6 +64,17 @@ inline bool matches(const nlohmann::json& rule, const nlohmann::json& record) {
   }
   return true;
 }
+/// The record's field `key` (quantity, method, group, setting) as a rule matches it.
+inline const std::string& field_of(const record& r, std::string_view key) {
+  return key == "quantity" ? r.quantity : key == "method" ? r.method : key == "group" ? r.group : r.setting;
+}
+inline bool matches(const nlohmann::json& rule, const record& r) {
+  for (const char* key : {"quantity", "method", "group", "setting"}) {
+    const std::string want = rule.value(key, std::string("*"));
+    if (want != "*" && field_of(r, key) != want) return false;
+  }
+  return true;
+}
 inline std::string rule_name(const nlohmann::json& rule) {
   std::string name = rule.value("quantity", std::string("*")) + "/" + rule.value("method", std::string("*")) + "/" +
                      rule.value("group", std::string("*"));
@@ -69,11 +82,10 @@ inline std::string rule_name(const nlohmann::json& rule) {
   return name;
 }
 /// The methods of the subject records ("subject": true) among `records`.
-inline std::set<std::string> subject_methods(const nlohmann::json& records) {
+inline std::set<std::string> subject_methods(const std::vector<record>& records) {
   std::set<std::string> out;
-  for (const auto& r : records)
-    if (r.is_object() && r.value("subject", false) && r.contains("method") && r["method"].is_string())
-      out.insert(r["method"].get<std::string>());
+  for (const record& r : records)
+    if (r.subject) out.insert(r.method);
   return out;
 }
 inline constexpr std::array<std::string_view, 8> rule_keys{"quantity", "method",    "group",  "setting",
@@ -115,29 +127,23 @@ inline void check_thresholds_structure(const nlohmann::json& thresholds, const s
   }
 }
 
-/// Throws invalid_input naming `file` unless `results` holds a "records" array (and "orders", when
-/// present, an array) of objects whose fields read by the gate have the types the runner writes.
-inline void check_results_structure(const nlohmann::json& results, const std::string& file) {
+/// The records of `results`, read by read_record (harness/record.hpp). Throws invalid_input naming
+/// `file` unless `results` holds a "records" array (and "orders", when present, an array) of
+/// objects whose fields read by the gate have the types the runner writes.
+inline std::vector<record> read_results(const nlohmann::json& results, const std::string& file) {
+  std::vector<record> out;
   for (const char* list : {"records", "orders"}) {
     if (std::string_view(list) == "orders" && !results.contains(list)) continue;
     const nlohmann::json& rows = array_member(results, list, file);
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const std::string where = file + ": " + list + "[" + std::to_string(i) + "]";
-      const nlohmann::json& row = rows[i];
-      if (!row.is_object()) throw invalid_input(where + ": expected an object, got " + io::field::shown_value(row));
-      const auto expect = [&](const char* key, bool ok, const char* what) {
-        if (row.contains(key) && !ok)
-          throw invalid_input(where + "." + key + ": expected " + what + ", got " + io::field::shown_value(row[key]));
-      };
-      for (const char* key : {"case", "group", "quantity", "method", "setting"})
-        expect(key, row.contains(key) && row[key].is_string(), "a string");
-      for (const char* key : {"error", "estimate", "observed"})
-        expect(key, row.contains(key) && (row[key].is_number() || row[key].is_null()), "a number or null");
-      expect("bounded", row.contains("bounded") && (row["bounded"].is_boolean() || row["bounded"].is_null()),
-             "true, false or null");
-      expect("subject", row.contains("subject") && row["subject"].is_boolean(), "true or false");
+      if (std::string_view(list) == "records")
+        out.push_back(read_record(rows[i], where));
+      else
+        check_field_types(rows[i], where);
     }
   }
+  return out;
 }
 
 /// Throws invalid_input when rule `index` names a quantity outside the vocabulary, or a method that
@@ -153,11 +159,10 @@ inline void check_rule_ids(const nlohmann::json& rule, std::size_t index, const 
   if (quantity == vocab::quantities::eval.id) {
     if (method == vocab::methods::eval_default.id) return;
     std::string known;
-    for (const io::family_descriptor& f : io::families())
-      for (std::string_view a : f.algorithms) {
-        if (a == method) return;
-        if (known.find(std::string(a) + ",") == std::string::npos) known += std::string(a) + ",";
-      }
+    for (const vocab::algorithm* a : vocab::eval_algorithms) {
+      if (a->id == method) return;
+      known += std::string(a->id) + ",";
+    }
     known.pop_back();
     throw invalid_input(where + "method \"" + method + "\" is not an evaluation algorithm of any family (default, " +
                         known + ")");
@@ -188,10 +193,9 @@ inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohm
                                       const std::string& results_file = "results",
                                       const std::string& thresholds_file = "thresholds") {
   detail::check_thresholds_structure(thresholds, thresholds_file);
-  detail::check_results_structure(results, results_file);
+  const std::vector<record> records = detail::read_results(results, results_file);
   std::vector<breach> out;
   const nlohmann::json empty = nlohmann::json::array();
-  const nlohmann::json& records = results["records"];
   const std::set<std::string> subjects = detail::subject_methods(records);
   std::size_t index = 0;
   for (const auto& rule : thresholds.at("rules")) detail::check_rule_ids(rule, index++, subjects, thresholds_file);
@@ -202,25 +206,22 @@ inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohm
     std::size_t matched_records = 0;
     std::size_t matched_orders = 0;
     if (checks_records) {
-      for (const auto& r : records) {
+      for (const record& r : records) {
         if (!detail::matches(rule, r)) continue;
         ++matched_records;
-        const std::string where = "case " + r.value("case", std::string("?")) + " setting " +
-                                  r.value("setting", std::string("?"));
+        const std::string where = "case " + r.case_name + " setting " + r.setting;
         if (rule.contains("max_error")) {
           const double allowed = rule["max_error"].get<double>();
-          const bool has_error = r.contains("error") && r["error"].is_number();
-          const double err = has_error ? r["error"].get<double>() : 0.0;
-          if (!has_error || !(err <= allowed))  // NaN or missing error is a breach too
+          const bool has_error = !std::isnan(r.error);  // null or missing: NaN
+          if (!has_error || !(r.error <= allowed))     // NaN or missing error is a breach too
             out.push_back({name, where,
-                           has_error ? "error " + detail::number(err) + " > allowed " + detail::number(allowed)
+                           has_error ? "error " + detail::number(r.error) + " > allowed " + detail::number(allowed)
                                      : "no error measured (allowed " + detail::number(allowed) + ")"});
         }
-        if (rule.value("honest", false) && r.contains("bounded") && r["bounded"].is_boolean() &&
-            !r["bounded"].get<bool>())
+        if (rule.value("honest", false) && r.bounded && !*r.bounded)
           out.push_back({name, where,
-                         "estimate " + detail::number(detail::number_or_nan(r, "estimate")) + " < true error " +
-                             detail::number(detail::number_or_nan(r, "error")) + " (estimate not honest)"});
+                         "estimate " + detail::number(r.estimate) + " < true error " + detail::number(r.error) +
+                             " (estimate not honest)"});
       }
       if (matched_records == 0)
         out.push_back({name, "-", "rule matched no result record (method or case group missing)"});

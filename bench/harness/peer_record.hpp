@@ -1,10 +1,11 @@
 // What every peer of the accuracy runner shares (harness/sweep_peers.cpp: GSL;
-// harness/sweep_peers_boost_eigen.cpp: Boost.Math and Eigen): the record in the accuracy format,
+// harness/sweep_peers_boost_eigen.cpp: Boost.Math and Eigen): the peer's record (harness/record.hpp),
 // the back-to-back timing, and the evaluation records of a peer that evaluates a curve (values and
 // first derivative) at parameters inside the case's domain. Internal to the harness.
 #pragma once
 
 #include "harness/cases.hpp"
+#include "harness/record.hpp"
 #include "harness/reference.hpp"
 #include "harness/sweep.hpp"
 #include "harness/vocabulary.hpp"
@@ -29,8 +30,6 @@ namespace curvebench::harness::peers_detail {
 
 using json = nlohmann::json;
 inline constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-inline json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(); }
 
 /// Best of three batches of the time per call of f, each batch repeating f until 2 ms have passed.
 template <class F>
@@ -66,29 +65,28 @@ struct peer_record {
   double counterpart_ns_per_op;
 };
 
-/// The record as JSON; library: "<library> <version>". counterpart_error: curvebench's error
-/// measured here beside the peer's, on the same parameters, where curvebench's own sweeps keep no
-/// record of the same quantity (a derivative, a part of the domain); NaN: none, left out.
+/// The record (harness/record.hpp) of a peer; library: "<library> <version>". counterpart_error:
+/// curvebench's error measured here beside the peer's, on the same parameters, where curvebench's
+/// own sweeps keep no record of the same quantity (a derivative, a part of the domain); NaN: none,
+/// left out.
+inline record to_record(const case_info& info, const peer_record& r, const std::string& library,
+                        double counterpart_error = nan) {
+  record out = record::measured(info.name, info.group, r.quantity->id, r.peer->id, r.setting, r.error, r.estimate,
+                                r.evaluations, r.status);
+  out.peer = peer_fields{library,
+                         r.peer_status,
+                         r.ns_per_op,
+                         r.counterpart_algorithm,
+                         r.counterpart_setting,
+                         r.counterpart_ns_per_op,
+                         counterpart_error};
+  return out;
+}
+
+/// The record as accuracy.json holds it.
 inline json to_json(const case_info& info, const peer_record& r, const std::string& library,
                     double counterpart_error = nan) {
-  json j{{"case", info.name},
-         {"group", info.group},
-         {"quantity", std::string(r.quantity->id)},
-         {"method", std::string(r.peer->id)},
-         {"library", library},
-         {"peer", true},
-         {"setting", r.setting},
-         {"error", finite_or_null(r.error)},
-         {"estimate", finite_or_null(r.estimate)},
-         {"evaluations", r.evaluations},
-         {"status", r.status},
-         {"peer_status", r.peer_status},
-         {"ns_per_op", finite_or_null(r.ns_per_op)},
-         {"counterpart", {{"method", r.counterpart_algorithm}, {"setting", r.counterpart_setting}}},
-         {"counterpart_ns_per_op", finite_or_null(r.counterpart_ns_per_op)}};
-  j["bounded"] = std::isfinite(r.estimate) && std::isfinite(r.error) ? json(r.estimate >= r.error) : json();
-  if (std::isfinite(counterpart_error)) j["counterpart_error"] = counterpart_error;
-  return j;
+  return harness::to_json(to_record(info, r, library, counterpart_error));
 }
 
 /// eval records of a peer evaluating the case's curve at the parameters us: the values (setting

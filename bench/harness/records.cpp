@@ -10,24 +10,17 @@
 
 namespace curvebench::harness {
 
-namespace {
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
-}  // namespace
-
 void record_sink::push(std::string_view quantity, std::string_view method, const std::string& setting, double error,
                        double estimate, double evaluations, std::string_view status) {
-  nlohmann::json r{{"case", case_.name},
-                   {"group", case_.group},
-                   {"quantity", std::string(quantity)},
-                   {"method", std::string(method)},
-                   {"setting", setting},
-                   {"error", finite_or_null(error)},
-                   {"estimate", finite_or_null(estimate)},
-                   {"evaluations", evaluations},
-                   {"status", std::string(status)}};
-  r["bounded"] = std::isfinite(estimate) && std::isfinite(error) ? nlohmann::json(estimate >= error) : nlohmann::json();
-  records_.push_back(std::move(r));
+  records_.push_back(record::measured(case_.name, case_.group, quantity, method, setting, error, estimate, evaluations,
+                                      status));
   series_.emplace_back(evaluations, error);
+}
+
+nlohmann::json record_sink::records() const {
+  nlohmann::json out = nlohmann::json::array();
+  for (const record& r : records_) out.push_back(to_json(r));
+  return out;
 }
 
 void record_sink::add(const vocab::quantity& q, const vocab::method& m, const std::string& setting, double error,
@@ -42,7 +35,7 @@ void record_sink::add_eval(std::string_view algorithm, double error, double eval
 
 void record_sink::annotate(const nlohmann::json& fields) {
   if (records_.empty()) throw invalid_input("record_sink::annotate: no record yet");
-  for (const auto& [key, value] : fields.items()) records_.back()[key] = value.is_number() ? finite_or_null(value.get<double>()) : value;
+  for (const auto& [key, value] : fields.items()) records_.back().extra[key] = value;
 }
 
 void record_sink::end(const vocab::quantity& q, const vocab::method& m) {

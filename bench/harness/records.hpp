@@ -1,4 +1,5 @@
-// The records of one case and the orders fitted over its sweeps (formats: harness/gate.hpp).
+// The records of one case and the orders fitted over its sweeps (formats: harness/gate.hpp; the
+// record type and its JSON writer: harness/record.hpp).
 // Quantities and methods are vocabulary objects (harness/vocabulary.hpp), settings come from
 // harness/setting.hpp, statuses are result_status names (arclength/result.hpp): every id a record
 // carries is declared once. Eval records name the evaluation algorithm (vocab::methods::eval_default
@@ -7,6 +8,7 @@
 #pragma once
 
 #include "harness/cases.hpp"
+#include "harness/record.hpp"
 #include "harness/vocabulary.hpp"
 
 #include <nlohmann/json.hpp>
@@ -38,14 +40,15 @@ class record_sink {
   /// least 3 points lie in the fitting window, harness/order_fit.hpp). Then opens a new series.
   void end(const vocab::quantity& q, const vocab::method& m);
 
-  [[nodiscard]] const nlohmann::json& records() const { return records_; }
+  /// The records as accuracy.json holds them (harness/record.hpp's writer).
+  [[nodiscard]] nlohmann::json records() const;
   [[nodiscard]] const nlohmann::json& orders() const { return orders_; }
 
  private:
   void push(std::string_view quantity, std::string_view method, const std::string& setting, double error,
             double estimate, double evaluations, std::string_view status);
   const case_info& case_;
-  nlohmann::json records_ = nlohmann::json::array();
+  std::vector<record> records_;
   nlohmann::json orders_ = nlohmann::json::array();
   std::vector<std::pair<double, double>> series_;  // (cost, error) of the open series
 };

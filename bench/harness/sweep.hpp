@@ -1,99 +1,65 @@
 // The settings the harness sweeps, shared by the accuracy runner (errors, harness/sweep_*.cpp)
 // and the per-case arc-length benchmarks (times, bench/bench_arclength_cases.cpp), so that a
 // record's (case, method, setting) and a benchmark's name arclength_case/<case>/<method>/<setting>
-// denote the same computation and report.py can join error with time.
+// denote the same computation and report.py can join error with time. Which setting series each
+// method runs over is its row's `series` in the method tables (harness/length_methods.hpp).
 #pragma once
 
-#include "harness/setting.hpp"
+#include "harness/setting.hpp"  // the settings of records (kept for the sweeps that format their own)
 #include "harness/vocabulary.hpp"
 
-#include "curvebench/arclength/adaptive_subdivision.hpp"
-#include "curvebench/arclength/forward_difference.hpp"
-#include "curvebench/arclength/length.hpp"
-
 #include <cstddef>
-#include <string>
 #include <vector>
 
 namespace curvebench::harness {
 
 /// Settings of one run: the full sweep, or the quick one used by CI (each quick list is a subset
-/// of the full one, so quick and full records share keys).
+/// of the full one, so quick and full records share keys). Built by name (designated initialisers
+/// in settings()); the series are read by the method tables' rows and by the peers.
 struct sweep {
-  std::vector<int> gauss_n;
-  std::vector<int> panels;
-  std::vector<double> adaptive_tol;
-  std::vector<std::size_t> table_steps;
-  std::vector<double> subdivision_tol;
-  std::vector<std::size_t> table_intervals;
-  std::vector<double> newton_tol;
-  std::size_t params;       ///< s(u), u(s) sample count
-  std::size_t eval_params;  ///< evaluation-accuracy sample count
-  double max_table_evals;   ///< skip forward-difference settings above this many evaluations
-  std::size_t channel_times;  ///< keyframe-channel sample times (sorted; monotonicity is checked between them)
+  bool quick = false;                       ///< the quick sweep (a row with series of its own picks by it)
+  std::vector<int> gauss_n;                 ///< gauss: n
+  std::vector<int> panels;                  ///< composite_gauss: panels (n = composite_gauss_n)
+  std::vector<double> adaptive_tol;         ///< adaptive_gk (and its peers): relative tolerance
+  std::vector<std::size_t> table_steps;     ///< forward_difference, richardson: steps per segment
+  std::vector<double> subdivision_tol;      ///< subdivision: tolerance relative to the reference length
+  std::vector<std::size_t> table_intervals;  ///< linear_table, hermite_table(_polished): M
+  std::vector<double> newton_tol;           ///< newton (and its peers): relative tolerance
+  std::size_t params = 0;                   ///< s(u), u(s) sample count
+  std::size_t eval_params = 0;              ///< evaluation-accuracy sample count
+  double max_table_evals = 0;               ///< skip forward-difference settings above this many evaluations
+  std::size_t channel_times = 0;  ///< keyframe-channel sample times (sorted; monotonicity is checked between them)
 };
+
+/// The n of composite_gauss in the sweep: 3 points per panel (theory order 2n = 6).
+inline constexpr int composite_gauss_n = 3;
 
 inline sweep settings(bool quick) {
   if (quick)
-    return {{2, 4, 8, 16}, {1, 2, 4, 8, 16}, {1e-6, 1e-10, 1e-14}, {8, 16, 32, 64, 128, 256}, {1e-4, 1e-6, 1e-8},
-            {16, 64, 256, 1024}, {1e-8, 1e-12}, 9, 65, 2e5, 600};
-  return {{1, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20},
-          {1, 2, 4, 8, 16, 32, 64},
-          {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14},
-          {4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
-          {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9},
-          {16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
-          {1e-6, 1e-9, 1e-12, 1e-14},
-          33,
-          257,
-          4e6,
-          4000};
-}
-
-/// Calls f(method, setting, run) for every length method (a vocab::method; its `theory` is the
-/// convergence order in evaluations to fit over its series, 0 where none is fitted) and setting
-/// (harness/setting.hpp) of the sweep, in series: run() (which refers to c, so c must outlive it)
-/// computes the length of c once and returns its quadrature_result (evaluations include the
-/// set-up, e.g. a forward-difference table's). `length` scales the subdivision tolerances, which
-/// are absolute (tol * length).
-template <class C, class F>
-void for_each_length_method(const C& c, const sweep& w, double length, F&& f) {
-  namespace al = curvebench::arclength;
-  using result = al::quadrature_result<double>;
-  const double segments = static_cast<double>(c.breakpoints().size() - 1);
-  namespace m = vocab::methods;
-  for (int n : w.gauss_n)
-    f(m::gauss, setting(m::gauss, {{"n", n}}), [&c, n] { return al::gauss_length(c, n, al::fixed_estimate::nested); });
-  // The rule cache outlives every run (gauss_legendre returns a reference into it).
-  constexpr int composite_n = 3;
-  const al::gauss_legendre_rule<double>* rule = &al::gauss_legendre<double>(composite_n);
-  for (int p : w.panels)
-    f(m::composite_gauss, setting(m::composite_gauss, {{"n", composite_n}, {"panels", p}}),
-      [&c, p, rule] { return al::composite_gauss_length(c, p, *rule); });
-  for (double tol : w.adaptive_tol)
-    f(m::adaptive_gk, setting(m::adaptive_gk, {{"tol", tol}}), [&c, tol] {
-      al::adaptive_options<double> o;
-      o.relative_tolerance = tol;
-      return al::adaptive_length(c, o);
-    });
-  for (const vocab::method* table : {&m::forward_difference, &m::richardson})
-    for (std::size_t steps : w.table_steps) {
-      if (static_cast<double>(steps) * segments > w.max_table_evals) break;
-      const bool richardson = table == &m::richardson;
-      f(*table, setting(*table, {{"steps", steps}}), [&c, steps, richardson] {
-        const al::forward_difference_table<double> t(c, steps);
-        result r = richardson ? t.richardson_length() : t.length();
-        r.evaluations = t.evaluations();
-        return r;
-      });
-    }
-  for (double tol : w.subdivision_tol)
-    f(m::subdivision, setting(m::subdivision, {{"tol", tol}}), [&c, tol, length] {
-      al::subdivision_options<double> o;
-      o.tolerance = tol * length;
-      o.relative_tolerance = 0;  // tol is relative to the reference length, given absolute here
-      return al::subdivision_length(c, o);
-    });
+    return {.quick = true,
+            .gauss_n = {2, 4, 8, 16},
+            .panels = {1, 2, 4, 8, 16},
+            .adaptive_tol = {1e-6, 1e-10, 1e-14},
+            .table_steps = {8, 16, 32, 64, 128, 256},
+            .subdivision_tol = {1e-4, 1e-6, 1e-8},
+            .table_intervals = {16, 64, 256, 1024},
+            .newton_tol = {1e-8, 1e-12},
+            .params = 9,
+            .eval_params = 65,
+            .max_table_evals = 2e5,
+            .channel_times = 600};
+  return {.quick = false,
+          .gauss_n = {1, 2, 3, 4, 5, 6, 8, 10, 12, 16, 20},
+          .panels = {1, 2, 4, 8, 16, 32, 64},
+          .adaptive_tol = {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14},
+          .table_steps = {4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
+          .subdivision_tol = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9},
+          .table_intervals = {16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
+          .newton_tol = {1e-6, 1e-9, 1e-12, 1e-14},
+          .params = 33,
+          .eval_params = 257,
+          .max_table_evals = 4e6,
+          .channel_times = 4000};
 }
 
 }  // namespace curvebench::harness

@@ -1,25 +1,30 @@
-// The length sweep: every length method and setting of harness/sweep.hpp against the reference L.
+// The length sweep: every length method and setting of the length table
+// (harness/length_methods.hpp) against the reference L.
+#include "harness/length_methods.hpp"
 #include "harness/sweeps.hpp"
 
 #include "curvebench/arclength/result.hpp"
+
+#include <limits>
 
 namespace curvebench::harness {
 
 template <int Dim>
 void sweep_length(record_sink& k, const any_curve<double, Dim>& c, const case_reference<Dim>& ref, const sweep& w) {
   const double L = ref.length();
-  const vocab::method* current = nullptr;  // the method whose series is open
-  k.begin();
-  for_each_length_method(c, w, L, [&](const vocab::method& m, const std::string& setting, auto run) {
-    if (&m != current) {
-      if (current) k.end(vocab::quantities::length, *current);
-      current = &m;
+  const double segments = static_cast<double>(c.breakpoints().size() - 1);
+  run_context x;
+  x.reference_length = L;
+  for_each_row(length_methods, [&](const auto& row) {
+    k.begin();
+    for (const setting_values& v : row.series(w, segments)) {
+      const auto r = row.prepare(c, v, x)();
+      k.add(vocab::quantities::length, *row.method, format_setting(row, v), ref.length_error_of(r.value),
+            row.estimate ? r.error_estimate / L : std::numeric_limits<double>::quiet_NaN(),
+            static_cast<double>(r.evaluations), arclength::to_string(r.status));
     }
-    const auto r = run();
-    k.add(vocab::quantities::length, m, setting, ref.length_error_of(r.value), r.error_estimate / L,
-          static_cast<double>(r.evaluations), arclength::to_string(r.status));
+    k.end(vocab::quantities::length, *row.method);
   });
-  if (current) k.end(vocab::quantities::length, *current);
 }
 
 template void sweep_length<2>(record_sink&, const any_curve<double, 2>&, const case_reference<2>&, const sweep&);

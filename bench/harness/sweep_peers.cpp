@@ -39,7 +39,7 @@
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/arclength/result.hpp"
-#include "curvebench/io/family.hpp"
+#include "curvebench/io/spec_data.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
@@ -104,8 +104,8 @@ struct gsl_coordinate_splines {
     } else {
       return;  // clamped, not_a_knot: GSL has neither end condition
     }
-    const point_list<double, Dim> p = io::detail::spec_points<double, Dim>(spec);
-    const std::vector<double> x = io::detail::knots_or_uniform<double>(spec, p.size());
+    const point_list<double, Dim> p = io::points_of<double, Dim>(spec);
+    const std::vector<double> x = io::knots_of<double>(spec, p.size());
     std::vector<double> y(p.size());
     for (int d = 0; d < Dim; ++d) {
       for (std::size_t i = 0; i < p.size(); ++i) y[i] = p[i][d];

@@ -34,7 +34,7 @@
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/curves/bspline.hpp"
 #include "curvebench/curves/cardinal_spline.hpp"
-#include "curvebench/io/family.hpp"
+#include "curvebench/io/spec_data.hpp"
 
 #include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <boost/math/interpolators/catmull_rom.hpp>
@@ -160,7 +160,7 @@ void boost_catmull_rom(const case_info& info, json& out, const any_curve<double,
     return;  // Boost computes its own knots, with s = 1/2
   const std::string end = spec.has("end") ? spec.member("end").string() : "phantom";
   const double alpha = spec.has("alpha") ? spec.member("alpha").number() : 0.0;
-  const point_list<double, Dim> p = io::detail::spec_points<double, Dim>(spec);
+  const point_list<double, Dim> p = io::points_of<double, Dim>(spec);
   if (p.size() < 4) return;  // Boost's minimum
   using bpoint = std::array<double, Dim>;
   std::vector<bpoint> a(p.size());
@@ -193,9 +193,9 @@ template <int Dim>
 void boost_cubic_hermite(const case_info& info, json& out, const any_curve<double, Dim>& c, case_reference<Dim>& ref,
                          const sweep& w, const io::field& spec) {
   if (spec.member("type").string() != "hermite" || !spec.has("slopes")) return;
-  const point_list<double, Dim> p = io::detail::spec_points<double, Dim>(spec);
+  const point_list<double, Dim> p = io::points_of<double, Dim>(spec);
   const point_list<double, Dim> slopes = spec.member("slopes").points<double, Dim>();
-  const std::vector<double> x = io::detail::knots_or_uniform<double>(spec, p.size());
+  const std::vector<double> x = io::knots_of<double>(spec, p.size());
   using hermite = boost::math::interpolators::cubic_hermite<std::vector<double>>;
   std::vector<hermite> h;
   std::string refused;
@@ -221,13 +221,13 @@ void boost_cardinal_cubic_b_spline(const case_info& info, json& out, const any_c
                                    case_reference<Dim>& ref, const sweep& w, const io::field& spec) {
   if (spec.member("type").string() != "natural_cubic" || !spec.has("end") || spec.member("end").string() != "clamped")
     return;
-  const point_list<double, Dim> p = io::detail::spec_points<double, Dim>(spec);
-  const std::vector<double> x = io::detail::knots_or_uniform<double>(spec, p.size());
+  const point_list<double, Dim> p = io::points_of<double, Dim>(spec);
+  const std::vector<double> x = io::knots_of<double>(spec, p.size());
   const double h = (x.back() - x.front()) / static_cast<double>(x.size() - 1);
   for (std::size_t i = 0; i < x.size(); ++i)
     if (x[i] != x.front() + static_cast<double>(i) * h) return;  // Boost's knots are t0 + i h exactly
-  const point<double, Dim> start = io::detail::one_point<double, Dim>(spec.member("start_slope"));
-  const point<double, Dim> end = io::detail::one_point<double, Dim>(spec.member("end_slope"));
+  const point<double, Dim> start = io::point_of<double, Dim>(spec.member("start_slope"));
+  const point<double, Dim> end = io::point_of<double, Dim>(spec.member("end_slope"));
   using spline = boost::math::interpolators::cardinal_cubic_b_spline<double>;
   std::vector<spline> b;
   std::string refused;

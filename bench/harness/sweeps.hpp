@@ -37,7 +37,7 @@ inline std::vector<double> sample_parameters(double lo, double hi, std::size_t n
   return us;
 }
 
-/// length: every length method and setting of harness/sweep.hpp, |L_method - L| / L.
+/// length: every length method and setting of the length table (harness/length_methods.hpp), |L_method - L| / L.
 template <int Dim>
 void sweep_length(record_sink& k, const any_curve<double, Dim>& c, const case_reference<Dim>& ref, const sweep& w);
 
@@ -45,7 +45,7 @@ void sweep_length(record_sink& k, const any_curve<double, Dim>& c, const case_re
 template <int Dim>
 void sweep_s_of_u(record_sink& k, const any_curve<double, Dim>& c, case_reference<Dim>& ref, const sweep& w);
 
-/// u_of_s: the linear, Hermite and polished tables, Newton, and forward-difference tables, at
+/// u_of_s: every method and setting of the u(s) table (harness/length_methods.hpp), at
 /// w.params targets, measured by the anchored |s(u) - s| / L (case_reference::ds).
 template <int Dim>
 void sweep_u_of_s(record_sink& k, const any_curve<double, Dim>& c, case_reference<Dim>& ref, const sweep& w);

@@ -283,6 +283,10 @@ inline constexpr algorithm to_piecewise_cubic{"to_piecewise_cubic", "",
 inline constexpr algorithm de_casteljau{"de_casteljau", "", "Bezier: de Casteljau's algorithm, O(degree^2)"};
 inline constexpr algorithm bernstein_sum{"bernstein_sum", "", "Bezier: the Bernstein sum, O(degree)"};
 inline constexpr algorithm horner{"horner", "", "Bezier: Horner on power coefficients converted once, O(degree)"};
+inline constexpr algorithm barycentric{"barycentric", "",
+                                       "Lagrange: the second barycentric form (the spec's \"algorithm\" field)"};
+inline constexpr algorithm monomial{"monomial", "",
+                                    "Lagrange: Horner on monomial coefficients solved from the Vandermonde system"};
 inline constexpr algorithm de_boor{"de_boor", "",
                                    "B-spline/NURBS: de Boor's algorithm (NURBS: in homogeneous "
                                    "coordinates, derivatives by the quotient rule)"};
@@ -335,6 +339,8 @@ inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
                                                       &algorithms::de_casteljau,
                                                       &algorithms::bernstein_sum,
                                                       &algorithms::horner,
+                                                      &algorithms::barycentric,
+                                                      &algorithms::monomial,
                                                       &algorithms::de_boor,
                                                       &algorithms::basis_sum,
                                                       &algorithms::recursion,
@@ -354,6 +360,14 @@ inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
                                                       &algorithms::floor_soa_sorted,
                                                       &algorithms::floor_store_stream,
                                                       &algorithms::monotone_cubic};
+
+/// The evaluation algorithms the families offer besides their default (the eval records' methods
+/// other than methods::eval_default), each once, in the family registry's order (io/registry.hpp;
+/// test_gate checks the two agree): the gate reads them here without the registry.
+inline constexpr const algorithm* eval_algorithms[] = {
+    &algorithms::barycentric, &algorithms::monomial, &algorithms::de_casteljau, &algorithms::bernstein_sum,
+    &algorithms::horner,      &algorithms::de_boor,  &algorithms::basis_sum,    &algorithms::power,
+    &algorithms::matrix,      &algorithms::bezier};
 
 /// A benchmark-name key whose value picks a variant of how the algorithm is called, not the data
 /// or the method's setting: the report ranks rows that differ only in these keys and in settings

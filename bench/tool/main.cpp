@@ -19,12 +19,10 @@
 #include "harness/accuracy.hpp"
 #include "harness/cases.hpp"
 #include "harness/gate.hpp"
+#include "harness/length_methods.hpp"
 #include "harness/vocabulary.hpp"
 #include "harness/vocabulary_json.hpp"
 
-#include "curvebench/arclength/adaptive_subdivision.hpp"
-#include "curvebench/arclength/forward_difference.hpp"
-#include "curvebench/arclength/length.hpp"
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/io/spec.hpp"
 
@@ -48,23 +46,48 @@ namespace tool = curvebench::tool;
 
 namespace {
 
-/// The length methods `length --method` takes: every method of the vocabulary with length records.
+namespace h = curvebench::harness;
+
+/// The length methods `length --method` takes: the rows of the length table.
 std::vector<std::string> length_method_ids() {
   std::vector<std::string> ids;
-  for (const vocab::method* m : vocab::all_methods)
-    if (vocab::lists(m->quantities, vocab::quantities::length.id)) ids.emplace_back(m->id);
+  h::for_each_row(h::length_methods, [&](const auto& row) { ids.emplace_back(row.method->id); });
   return ids;
 }
 
 // ---- length ----------------------------------------------------------------------------------
 
+/// One option of `length`: a setting the length table's rows give a CLI option, once however many
+/// rows share it (they share its default and limits: test_harness checks it).
+struct length_option {
+  const h::setting_def* def = nullptr;
+  std::string help;  ///< each row's help, "method: help; method: help"
+  double real = 0;
+  long long integer = 0;
+  [[nodiscard]] double value() const { return def->integer ? static_cast<double>(integer) : real; }
+};
+
+/// The options of `length`, in the order of the table's rows and settings.
+std::vector<length_option> length_options() {
+  std::vector<length_option> out;
+  h::for_each_row(h::length_methods, [&](const auto& row) {
+    for (const h::setting_def& d : row.settings) {
+      if (d.option.empty()) continue;
+      auto it = std::find_if(out.begin(), out.end(), [&](const length_option& o) { return o.def->option == d.option; });
+      if (it == out.end()) {
+        out.push_back(length_option{&d, {}, d.fallback, static_cast<long long>(d.fallback)});
+        it = out.end() - 1;
+      }
+      it->help += (it->help.empty() ? "" : "; ") + std::string(row.method->id) + ": " + std::string(d.help);
+    }
+  });
+  return out;
+}
+
 struct length_args {
   std::string spec;
   std::string method{vocab::methods::adaptive_gk.id};
-  double tol = 1e-12;
-  int n = 5;
-  int panels = 4;
-  std::size_t steps = 256;
+  std::vector<length_option> options = length_options();
   bool quiet = false;
 };
 
@@ -98,74 +121,45 @@ struct counted_curve {
 template <int Dim>
 void length(const cb::io::field& spec, const length_args& a) {
   const cb::any_curve<double, Dim> plain = cb::io::curve_from_spec<double, Dim>(spec);
-  namespace m = vocab::methods;
-  // Progress: evaluations against the method's budget (fixed rules: their exact count).
   const std::size_t segments = plain.breakpoints().size() - 1;
-  std::size_t budget = 0;
-  if (a.method == m::gauss.id)
-    budget = 7 * static_cast<std::size_t>(a.n) * segments;
-  else if (a.method == m::composite_gauss.id)
-    budget = static_cast<std::size_t>(a.n) * static_cast<std::size_t>(a.panels) * segments;
-  else if (a.method == m::adaptive_gk.id)
-    budget = al::adaptive_options<double>{}.max_evaluations;
-  else if (a.method == m::subdivision.id)
-    budget = al::subdivision_options<double>{}.max_evaluations;
-  else
-    budget = a.steps * segments + 1;
-  const cb::any_curve<double, Dim> c(
-      counted_curve<Dim>{plain, std::make_shared<tool::progress>("length: evaluations (at most)", budget, a.quiet)},
-      plain.family());
-  // A fixed rule's cost is known before the work: refuse it above the limit, naming the options.
-  auto check_cost = [&](const std::string& options, double evaluations) {
-    if (evaluations > static_cast<double>(tool::max_length_evaluations))
-      throw cb::invalid_input(options + ": " + std::to_string(segments) + (segments == 1 ? " segment" : " segments") +
-                              " need " + cb::to_text(evaluations) + " evaluations, more than the limit of " +
-                              std::to_string(tool::max_length_evaluations));
-  };
-  al::quadrature_result<double> r;
-  if (a.method == m::gauss.id) {
-    check_cost("--n " + std::to_string(a.n), 7.0 * a.n * static_cast<double>(segments));
-    r = al::gauss_length(c, a.n, al::fixed_estimate::nested);
-  } else if (a.method == m::composite_gauss.id) {
-    check_cost("--n " + std::to_string(a.n) + " --panels " + std::to_string(a.panels),
-               static_cast<double>(a.n) * a.panels * static_cast<double>(segments));
-    r = al::composite_gauss_length(c, a.panels, al::gauss_legendre<double>(a.n));
-  } else if (a.method == m::adaptive_gk.id) {
-    al::adaptive_options<double> o;
-    o.relative_tolerance = a.tol;
-    r = al::adaptive_length(c, o);
-  } else if (a.method == m::forward_difference.id || a.method == m::richardson.id) {
-    if (a.steps > (al::max_forward_difference_evaluations - 1) / segments)
-      throw cb::invalid_input("--steps " + std::to_string(a.steps) + ": " + std::to_string(segments) +
-                              (segments == 1 ? " segment" : " segments") + " x " + std::to_string(a.steps) +
-                              " steps is more than the limit of " +
-                              std::to_string(al::max_forward_difference_evaluations) + " table nodes");
-    const al::forward_difference_table<double> t(c, a.steps);
-    r = a.method == m::richardson.id ? t.richardson_length() : t.length();
-  } else if (a.method == m::subdivision.id) {
-    al::subdivision_options<double> o;
-    o.tolerance = 0;
-    o.relative_tolerance = a.tol;  // relative to the curve's size (adaptive_subdivision.hpp)
-    r = al::subdivision_length(c, o);
-  } else {
-    throw cb::invalid_input("--method " + a.method + ": not a length method");
-  }
-  tool::require_finite(r.value, spec.path + ": length (" + a.method + ")", c);
-  // A length at most degenerate_length_eps eps of the curve's size (the largest |P| at its
-  // breakpoints) is rounding noise: the true length may be 0, so the estimate covers that level.
-  double size = 0;
-  for (const double b : c.breakpoints()) size = std::max(size, c(b).cwiseAbs().maxCoeff());
-  const double noise = al::degenerate_length_eps * std::numeric_limits<double>::epsilon() * size;
-  if (std::isfinite(r.value) && std::abs(r.value) <= noise) {
-    r.error_estimate = std::max(r.error_estimate, noise);
-    r.status = r.value == 0 && r.status == al::result_status::converged ? r.status : al::result_status::rounding_limited;
-  }
-  nlohmann::json j{{"method", a.method},
-                   {"value", r.value},
-                   {"error_estimate", std::isfinite(r.error_estimate) ? nlohmann::json(r.error_estimate) : nlohmann::json()},
-                   {"evaluations", r.evaluations},
-                   {"status", std::string(al::to_string(r.status))}};
-  std::cout << std::setw(2) << j << "\n";
+  bool found = false;
+  h::for_each_row(h::length_methods, [&](const auto& row) {
+    if (row.method->id != a.method) return;
+    found = true;
+    h::setting_values v;
+    for (const h::setting_def& d : row.settings) {
+      const auto o = std::find_if(a.options.begin(), a.options.end(),
+                                  [&](const length_option& x) { return !d.option.empty() && x.def->option == d.option; });
+      v[std::string(d.key)] = o == a.options.end() ? d.fallback : o->value();
+    }
+    // Progress: evaluations against the method's budget (fixed rules: their exact count). A cost
+    // known before the work is refused above its limit, naming the options.
+    const h::length_cost cost = row.cost(v, segments);
+    const cb::any_curve<double, Dim> c(
+        counted_curve<Dim>{plain, std::make_shared<tool::progress>("length: evaluations (at most)", cost.budget, a.quiet)},
+        plain.family());
+    if (!cost.refusal.empty()) throw cb::invalid_input(cost.refusal);
+    al::quadrature_result<double> r = row.prepare(c, v, h::run_context{})();
+    if (!row.estimate) r.error_estimate = std::numeric_limits<double>::quiet_NaN();
+    tool::require_finite(r.value, spec.path + ": length (" + a.method + ")", c);
+    // A length at most degenerate_length_eps eps of the curve's size (the largest |P| at its
+    // breakpoints) is rounding noise: the true length may be 0, so the estimate covers that level.
+    double size = 0;
+    for (const double b : c.breakpoints()) size = std::max(size, c(b).cwiseAbs().maxCoeff());
+    const double noise = al::degenerate_length_eps * std::numeric_limits<double>::epsilon() * size;
+    if (std::isfinite(r.value) && std::abs(r.value) <= noise) {
+      r.error_estimate = std::max(r.error_estimate, noise);
+      r.status =
+          r.value == 0 && r.status == al::result_status::converged ? r.status : al::result_status::rounding_limited;
+    }
+    nlohmann::json j{{"method", a.method},
+                     {"value", r.value},
+                     {"estimate", std::isfinite(r.error_estimate) ? nlohmann::json(r.error_estimate) : nlohmann::json()},
+                     {"evaluations", r.evaluations},
+                     {"status", std::string(al::to_string(r.status))}};
+    std::cout << std::setw(2) << j << "\n";
+  });
+  if (!found) throw cb::invalid_input("--method " + a.method + ": not a length method");
 }
 
 }  // namespace
@@ -198,26 +192,25 @@ int main(int argc, char** argv) {
   auto* chk = tool::add_check(app, ca);
 
   length_args la;
-  auto* len = app.add_subcommand("length", "arc length of a curve spec: JSON value, error estimate, evaluations");
+  auto* len = app.add_subcommand("length", "arc length of a curve spec: JSON value, estimate, evaluations");
   len->add_option("spec", la.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
   const std::vector<std::string> length_ids = length_method_ids();
   std::string length_help;
   for (const auto& id : length_ids) length_help += (length_help.empty() ? "" : ", ") + id;
   len->add_option("--method", la.method, length_help)->check(CLI::IsMember(length_ids));
-  const std::string limit = std::to_string(tool::max_length_evaluations);
-  len->add_option("--tol", la.tol,
-                  "relative tolerance (adaptive_gk: of the length; subdivision: of the curve's size, the polygon "
-                  "through breakpoints and midpoints); adaptive_gk stops at 2^24 evaluations, subdivision at 2^22, with status cap_hit")
-      ->check(tool::positive_finite());
-  len->add_option("--n", la.n, "Gauss points per panel (gauss: n x 7 x segments evaluations, at most " + limit + ")")
-      ->check(CLI::Range(1, 200));
-  len->add_option("--panels", la.panels,
-                  "panels per segment (composite_gauss: n x panels x segments evaluations, at most " + limit + ")")
-      ->check(CLI::Range(1, 1000000));
-  len->add_option("--steps", la.steps,
-                  "table steps per segment (forward_difference, richardson: steps x segments, at most " +
-                      std::to_string(al::max_forward_difference_evaluations) + ")")
-      ->check(CLI::Range(1, 10000000));
+  for (length_option& o : la.options) {
+    const h::setting_def& d = *o.def;
+    if (d.integer) {
+      len->add_option(std::string(d.option), o.integer, o.help)
+          ->check(CLI::Range(static_cast<long long>(d.min), static_cast<long long>(d.max)));
+    } else {
+      auto* opt = len->add_option(std::string(d.option), o.real, o.help);
+      if (d.min == 0 && d.max == std::numeric_limits<double>::infinity())
+        opt->check(tool::positive_finite());
+      else
+        opt->check(CLI::Range(d.min, d.max));
+    }
+  }
   len->add_flag("--quiet", la.quiet,
                 "no progress lines on stderr (evaluations against the method's budget, once a run takes over a second)");
   len->footer(tool::example("curvebench length arch.json --method gauss --n 8"));

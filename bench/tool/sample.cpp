@@ -8,7 +8,7 @@
 
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/channel/channel.hpp"
-#include "curvebench/io/families/channel.hpp"
+#include "curvebench/io/spec_data.hpp"
 #include "curvebench/motion/distance_time.hpp"
 
 #include <cmath>
@@ -301,7 +301,7 @@ void sample_times(const io::field& spec, const sample_args& a) {
   if (a.derivatives > 2)
     throw invalid_input("--derivatives " + std::to_string(a.derivatives) +
                         ": a channel's time derivatives go to order 2 (d2value)");
-  if (io::detail::is_gltf_rotation(spec)) return sample_rotation(spec, a, given);
+  if (io::is_gltf_rotation(spec)) return sample_rotation(spec, a, given);
   const io::channel_model<double> ch = io::channel_model_of_spec<double>(spec);
   std::cout << "t,value";
   for (int k = 1; k <= a.derivatives; ++k) std::cout << (k == 1 ? ",dvalue" : ",d2value");

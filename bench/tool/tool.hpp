@@ -63,10 +63,6 @@ class progress {
   std::chrono::steady_clock::time_point start_, next_;
 };
 
-/// The most evaluations `length` spends on a fixed rule (gauss, composite_gauss), checked before
-/// the work: --n x --panels x segments (x 7 for gauss's nested estimate).
-inline constexpr std::size_t max_length_evaluations = std::size_t(1) << 26;
-
 /// The footer of a subcommand's --help: one example.
 std::string example(const std::string& command);
 

@@ -1,9 +1,10 @@
 // The spec target (targets.hpp): a JSON curve spec through everything the tool's `length` and
-// `sample` do with it, in double, with the tool's default options where they scale the work only
+// `sample` do with it, in double: every length method of the length table
+// (harness/length_methods.hpp), with the tool's default options where they scale the work only
 // with the curve (adaptive tolerance 1e-12), the library's default subdivision tolerance (1e-6 of
-// the curve's size) with a budget of 2^19 evaluations, and small fixed options where they scale the
-// work by themselves (gauss n = 5, 4 panels, 64 table steps, a u(s) table of at most 1024
-// intervals), so that the time an input takes comes from the input.
+// the curve's size), a budget of 2^19 evaluations for both adaptive methods, and small fixed
+// options where they scale the work by themselves (gauss n = 5, 4 panels, 64 table steps, a u(s)
+// table of at most 1024 intervals), so that the time an input takes comes from the input.
 //
 // Properties, each a distinct name in the violation message:
 //   documented exceptions only   parse and build refuse with invalid_input / io::spec_error only
@@ -32,6 +33,8 @@
 // Curves of more than 1000 segments are built and evaluated only (see max_segments).
 #include "guard.hpp"
 #include "targets.hpp"
+
+#include "harness/length_methods.hpp"
 
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
@@ -166,31 +169,26 @@ void check_curve(const any_curve<double, Dim>& built) {
   // null lengths for coordinates near 1e200, whose evaluations are all finite.
   if (out_of_range || !measure) return;
 
-  // Length by every method of `curvebench length`.
+  // Length by every method of the length table (harness/length_methods.hpp), as `curvebench
+  // length` runs them, at its defaults but for the settings that scale the work by themselves
+  // (table steps: 64) and subdivision's tolerance (the library's default, 1e-6 of the curve's
+  // size). A cap of 2^19 evaluations on the adaptive methods (their defaults, 2^22 and 2^24, are
+  // above this target's meter): that the cap is honoured is what "bounded work" checks here.
   std::vector<std::pair<std::string, al::quadrature_result<double>>> lengths;
-  const auto length_step = [&](const std::string& method, auto&& compute) {
+  harness::run_context context;
+  context.max_evaluations = std::size_t(1) << 19;
+  harness::for_each_row(harness::length_methods, [&](const auto& row) {
+    harness::setting_values v = harness::default_settings(row);
+    if (v.count("steps")) v["steps"] = 64;
+    if (row.method == &harness::vocab::methods::subdivision)
+      v["tol"] = al::subdivision_options<double>{}.relative_tolerance;
+    const std::string method(row.method->id);
     m->begin("length " + method);
     run_step(name, "length " + method, domain_errors::violation, [&] {
-      const al::quadrature_result<double> r = compute();
+      const al::quadrature_result<double> r = row.prepare(c, v, context)();
       check_result(method, r);
       lengths.emplace_back(method, r);
     });
-  };
-  length_step("adaptive_gk", [&] {
-    al::adaptive_options<double> o;
-    o.relative_tolerance = 1e-12;
-    return al::adaptive_length(c, o);
-  });
-  length_step("gauss", [&] { return al::gauss_length(c, 5, al::fixed_estimate::nested); });
-  length_step("composite_gauss", [&] { return al::composite_gauss_length(c, 4, al::gauss_legendre<double>(5)); });
-  length_step("forward_difference", [&] { return al::forward_difference_table<double>(c, 64).length(); });
-  length_step("richardson", [&] { return al::forward_difference_table<double>(c, 64).richardson_length(); });
-  // A budget of 2^19 (the default 2^22 is above this target's meter): that the cap is honoured is
-  // what "bounded work" checks here.
-  length_step("subdivision", [&] {
-    al::subdivision_options<double> o;
-    o.max_evaluations = std::size_t(1) << 19;
-    return al::subdivision_length(c, o);
   });
   // The polygon through P(us) is never longer than the curve: a length (with its estimate) below
   // it is wrong, whatever its status says. stableNorm: the chords of 1e-170 coordinates must not

@@ -227,6 +227,29 @@ class ToolCli(unittest.TestCase):
         self.assertNotIn("elapsed", c.stdout)
         self.assertEqual(run("check", bezier, "--values", values, "--quiet").stderr, "")
 
+    def test_length_names_its_fields_as_the_records_do_for_every_method(self):
+        # The length output and the accuracy records share their field names ("estimate", not
+        # "error_estimate"); every method of the table runs, with its options, within its estimate
+        # of the arch's length when it converges (adaptive_gk at 1e-14 as the yardstick).
+        spec = os.path.join(CASES, "arch_cubic_bezier.json")
+        ref = json.loads(run("length", spec, "--tol", "1e-14").stdout)
+        methods = {"gauss": ("--n", "8"), "composite_gauss": ("--n", "5", "--panels", "8"),
+                   "adaptive_gk": ("--tol", "1e-10"), "forward_difference": ("--steps", "512"),
+                   "richardson": ("--steps", "512"), "subdivision": ("--tol", "1e-8")}
+        for method, options in methods.items():
+            p = run("length", spec, "--method", method, *options)
+            self.assertEqual(p.returncode, 0, p.stderr)
+            out = json.loads(p.stdout)
+            self.assertEqual(sorted(out), ["estimate", "evaluations", "method", "status", "value"], method)
+            self.assertEqual(out["method"], method)
+            self.assertGreater(out["evaluations"], 0, method)
+            if out["status"] == "converged":
+                self.assertLessEqual(abs(out["value"] - ref["value"]), out["estimate"] + ref["estimate"], method)
+        # A fixed rule's cost is refused before the work, naming the options.
+        many = os.path.join(CASES, "lissajous_many_segments_1e5.json")
+        self.assert_error(run("length", many, "--method", "gauss", "--n", "200"), "--n 200: ", " segments need ",
+                          "more than the limit of 67108864")
+
     def test_channel_specs_sample_at_times(self):
         # Issue 12: --at, --frames and --range give times for channel specs: t, value, dvalue, d2value.
         spec = os.path.join(CASES, "channel_regression_limit.json")

@@ -1,0 +1,448 @@
+// The method tables: every arc-length method and every u(s) method of the harness, each declared
+// once, as one row: its vocabulary method (id, setting keys, fitted theory order), its settings by
+// name (the CLI's default and limits, and the `curvebench length` option that sets each), the
+// setting series the accuracy sweep runs it over, for a length method its cost before the work
+// (the CLI's progress budget and its refusal above the limit), whether it carries an error
+// estimate, and its run on a curve.
+//
+// Iterated by the accuracy sweeps (harness/sweep_length.cpp, harness/sweep_u_of_s.cpp), the
+// per-case benchmarks (bench/bench_arclength_cases.cpp, through for_each_length_method),
+// `curvebench length` (bench/tool/main.cpp: its --method list, options, budget and dispatch) and
+// the spec fuzz target (tests/fuzz/targets_spec.cpp). Adding a method is its library header, its
+// row here with its entry in length_methods or u_of_s_methods, and its test.
+//
+// A row's run is prepared in two steps, prepare(curve, settings, context) -> a callable returning
+// the result: what does not belong to the timed work (a rule looked up in a cache) happens in
+// prepare, the work (set-up included) in the call, which bench_arclength_cases times. The callable
+// refers to the curve, which must outlive it.
+#pragma once
+
+#include "harness/setting.hpp"
+#include "harness/sweep.hpp"
+#include "harness/vocabulary.hpp"
+
+#include "curvebench/arclength/adaptive_subdivision.hpp"
+#include "curvebench/arclength/forward_difference.hpp"
+#include "curvebench/arclength/length.hpp"
+#include "curvebench/arclength/parameterization.hpp"
+#include "curvebench/arclength/result.hpp"
+#include "curvebench/core/error.hpp"
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <vector>
+
+namespace curvebench::harness {
+
+/// One setting of a method, by its key.
+struct setting_def {
+  std::string_view key;     ///< its key in records and benchmark names (the vocab method's `settings`, in order)
+  std::string_view option;  ///< the `curvebench length` option that sets it ("--n"); "" when the CLI does not
+  double fallback;          ///< the CLI's default (methods sharing an option share it)
+  double min, max;          ///< the CLI's limits, inclusive (a real setting: > min when min is 0)
+  bool integer;             ///< printed as an integer ("n=8"); the CLI takes integers only
+  std::string_view help;    ///< what it does for this method (the CLI's help of its option)
+};
+
+/// A method's setting values by key.
+using setting_values = std::map<std::string, double, std::less<>>;
+
+/// The value of `key` in v; invalid_input naming the method and the key when v has none.
+inline double value_of(const setting_values& v, std::string_view key, std::string_view method) {
+  const auto it = v.find(key);
+  if (it == v.end()) throw invalid_input("setting of method " + std::string(method) + ": no value for key \"" +
+                                         std::string(key) + "\"");
+  return it->second;
+}
+
+/// A setting value as records and benchmark names print it: integers as integers ("256"), reals
+/// through fmt ("1e-06").
+inline std::string setting_text(const setting_def& d, double value) {
+  return d.integer ? std::to_string(static_cast<long long>(value)) : fmt(value);
+}
+
+/// The record setting of a row's values, "key=value[,key=value]" in the row's order. Throws
+/// invalid_input when the row's keys are not its vocabulary method's declared `settings`.
+template <class Row>
+std::string format_setting(const Row& row, const setting_values& v) {
+  std::string out, keys;
+  for (const setting_def& d : row.settings) {
+    keys += (keys.empty() ? "" : " ") + std::string(d.key);
+    out += (out.empty() ? "" : ",") + std::string(d.key) + "=" + setting_text(d, value_of(v, d.key, row.method->id));
+  }
+  if (keys != row.method->settings)
+    throw invalid_input("method table row " + std::string(row.method->id) + ": setting keys \"" + keys +
+                        "\" are not the vocabulary's \"" + std::string(row.method->settings) + "\"");
+  return out;
+}
+
+/// The row's CLI options with their values, as a refusal names them: "--n 5 --panels 4".
+template <class Row>
+std::string options_text(const Row& row, const setting_values& v) {
+  std::string out;
+  for (const setting_def& d : row.settings)
+    if (!d.option.empty())
+      out += (out.empty() ? "" : " ") + std::string(d.option) + " " + setting_text(d, value_of(v, d.key, row.method->id));
+  return out;
+}
+
+/// The row's settings at their CLI defaults.
+template <class Row>
+setting_values default_settings(const Row& row) {
+  setting_values v;
+  for (const setting_def& d : row.settings) v[std::string(d.key)] = d.fallback;
+  return v;
+}
+
+/// How a run reads its settings beyond their values.
+struct run_context {
+  /// > 0: a tolerance relative to the length is tol x this length, absolute (the sweep gives the
+  /// reference L, so that a setting means the same on every case); 0: the method's own relative
+  /// measure, as `curvebench length` runs it (subdivision: relative to the curve's size).
+  double reference_length = 0;
+  /// The adaptive methods' cap on evaluations (0: the library's default).
+  std::size_t max_evaluations = 0;
+};
+
+/// What a length method costs before the work, on a curve of `segments` segments.
+struct length_cost {
+  std::size_t budget = 0;  ///< the most evaluations it spends (the CLI's progress total)
+  std::string refusal;     ///< "" or why the CLI refuses the setting (above its limit), naming the options
+};
+
+/// The most evaluations `curvebench length` spends on a fixed rule (gauss, composite_gauss),
+/// checked before the work: --n x --panels x segments (x 7 for gauss's nested estimate).
+inline constexpr std::size_t max_fixed_rule_evaluations = std::size_t(1) << 26;
+
+/// The cost of a fixed rule of `evaluations` evaluations: refused above max_fixed_rule_evaluations.
+inline length_cost fixed_rule_cost(const std::string& options, double evaluations, std::size_t segments) {
+  length_cost c;
+  if (evaluations > static_cast<double>(max_fixed_rule_evaluations)) {
+    c.refusal = options + ": " + std::to_string(segments) + (segments == 1 ? " segment" : " segments") + " need " +
+                to_text(evaluations) + " evaluations, more than the limit of " +
+                std::to_string(max_fixed_rule_evaluations);
+    return c;
+  }
+  c.budget = static_cast<std::size_t>(evaluations);
+  return c;
+}
+
+/// A row of the length table. series(const sweep&, double segments) -> std::vector<setting_values>;
+/// cost(const setting_values&, std::size_t segments) -> length_cost; prepare(const Curve&, const
+/// setting_values&, const run_context&) -> a callable () -> arclength::quadrature_result<double>
+/// (evaluations include the set-up, e.g. a forward-difference table's).
+template <std::size_t N, class Series, class Cost, class Prepare>
+struct length_method {
+  const vocab::method* method;
+  std::array<setting_def, N> settings;
+  bool estimate;  ///< whether its result carries an error estimate (else the estimate is not read)
+  Series series;
+  Cost cost;
+  Prepare prepare;
+};
+template <std::size_t N, class Series, class Cost, class Prepare>
+length_method(const vocab::method*, std::array<setting_def, N>, bool, Series, Cost, Prepare)
+    -> length_method<N, Series, Cost, Prepare>;
+
+/// The answer of a u(s) method at one target.
+struct u_of_s_answer {
+  double u = 0;
+  double estimate = std::numeric_limits<double>::quiet_NaN();  ///< its |s(u) - s| bound, when per query
+  double evaluations = 0;                                        ///< the query's own (set-up excluded)
+  arclength::result_status status = arclength::result_status::converged;
+};
+
+/// A u(s) method built on a curve.
+struct u_of_s_run {
+  double length = 0;                    ///< its own L: targets are clamped to it (u(s) rejects s > L)
+  double construction_evaluations = 0;  ///< evaluations of the set-up (tables, segment lengths)
+  std::optional<double> table_estimate;  ///< its |s(u) - s| bound over the whole table, when not per query
+  std::function<u_of_s_answer(double)> query;
+};
+
+/// A row of the u(s) table. series as a length row's; prepare(const Curve&, const setting_values&)
+/// -> u_of_s_run.
+template <std::size_t N, class Series, class Prepare>
+struct u_of_s_method {
+  const vocab::method* method;
+  std::array<setting_def, N> settings;
+  bool estimate;  ///< whether it carries an error estimate (else the records' estimate is null)
+  Series series;
+  Prepare prepare;
+};
+template <std::size_t N, class Series, class Prepare>
+u_of_s_method(const vocab::method*, std::array<setting_def, N>, bool, Series, Prepare)
+    -> u_of_s_method<N, Series, Prepare>;
+
+namespace method_rows {
+
+namespace al = curvebench::arclength;
+
+/// The table steps of the sweep that stay within its budget of w.max_table_evals on `segments`.
+inline std::vector<setting_values> table_steps_series(const sweep& w, double segments) {
+  std::vector<setting_values> out;
+  for (std::size_t steps : w.table_steps) {
+    if (static_cast<double>(steps) * segments > w.max_table_evals) break;
+    out.push_back({{"steps", static_cast<double>(steps)}});
+  }
+  return out;
+}
+
+/// One setting of each value of `values` under `key`.
+template <class T>
+std::vector<setting_values> series_of(std::string_view key, const std::vector<T>& values) {
+  std::vector<setting_values> out;
+  for (const T& x : values) out.push_back({{std::string(key), static_cast<double>(x)}});
+  return out;
+}
+
+inline constexpr setting_def tol_of_length{
+    "tol", "--tol", 1e-12, 0, std::numeric_limits<double>::infinity(), false,
+    "relative tolerance of the length; stops at 2^24 evaluations with status cap_hit"};
+inline constexpr setting_def steps_per_segment{"steps", "--steps", 256, 1, 10000000, true,
+                                               "table steps per segment (steps x segments nodes, at most 2^24)"};
+
+/// The refusal of a forward-difference table above its node limit.
+inline length_cost table_cost(const setting_values& v, std::size_t segments) {
+  const auto steps = static_cast<std::size_t>(value_of(v, "steps", vocab::methods::forward_difference.id));
+  length_cost c;
+  if (steps > (al::max_forward_difference_evaluations - 1) / segments) {
+    c.refusal = "--steps " + std::to_string(steps) + ": " + std::to_string(segments) +
+                (segments == 1 ? " segment" : " segments") + " x " + std::to_string(steps) +
+                " steps is more than the limit of " + std::to_string(al::max_forward_difference_evaluations) +
+                " table nodes";
+    return c;
+  }
+  c.budget = steps * segments + 1;
+  return c;
+}
+
+inline constexpr length_method gauss{
+    &vocab::methods::gauss,
+    std::array{setting_def{"n", "--n", 5, 1, 200, true, "Gauss points (n x 7 x segments evaluations, at most 2^26)"}},
+    true,
+    [](const sweep& w, double) { return series_of("n", w.gauss_n); },
+    [](const setting_values& v, std::size_t segments) {
+      const double n = value_of(v, "n", "gauss");
+      return fixed_rule_cost("--n " + std::to_string(static_cast<long long>(n)), 7.0 * n * static_cast<double>(segments),
+                             segments);
+    },
+    [](const auto& c, const setting_values& v, const run_context&) {
+      const int n = static_cast<int>(value_of(v, "n", "gauss"));
+      return [&c, n] { return al::gauss_length(c, n, al::fixed_estimate::nested); };
+    }};
+
+inline constexpr length_method composite_gauss{
+    &vocab::methods::composite_gauss,
+    std::array{setting_def{"n", "--n", 5, 1, 200, true, "Gauss points per panel"},
+               setting_def{"panels", "--panels", 4, 1, 1000000, true,
+                           "panels per segment (n x panels x segments evaluations, at most 2^26)"}},
+    true,
+    [](const sweep& w, double) {
+      std::vector<setting_values> out;
+      for (int p : w.panels) out.push_back({{"n", composite_gauss_n}, {"panels", static_cast<double>(p)}});
+      return out;
+    },
+    [](const setting_values& v, std::size_t segments) {
+      const double n = value_of(v, "n", "composite_gauss"), panels = value_of(v, "panels", "composite_gauss");
+      return fixed_rule_cost("--n " + std::to_string(static_cast<long long>(n)) + " --panels " +
+                                 std::to_string(static_cast<long long>(panels)),
+                             n * panels * static_cast<double>(segments), segments);
+    },
+    [](const auto& c, const setting_values& v, const run_context&) {
+      const int p = static_cast<int>(value_of(v, "panels", "composite_gauss"));
+      // The rule cache outlives every run (gauss_legendre returns a reference into it).
+      const al::gauss_legendre_rule<double>* rule =
+          &al::gauss_legendre<double>(static_cast<int>(value_of(v, "n", "composite_gauss")));
+      return [&c, p, rule] { return al::composite_gauss_length(c, p, *rule); };
+    }};
+
+inline constexpr length_method adaptive_gk{
+    &vocab::methods::adaptive_gk,
+    std::array{tol_of_length},
+    true,
+    [](const sweep& w, double) { return series_of("tol", w.adaptive_tol); },
+    [](const setting_values&, std::size_t) { return length_cost{al::adaptive_options<double>{}.max_evaluations, {}}; },
+    [](const auto& c, const setting_values& v, const run_context& x) {
+      al::adaptive_options<double> o;
+      o.relative_tolerance = value_of(v, "tol", "adaptive_gk");
+      if (x.max_evaluations > 0) o.max_evaluations = x.max_evaluations;
+      return [&c, o] { return al::adaptive_length(c, o); };
+    }};
+
+inline constexpr length_method forward_difference{
+    &vocab::methods::forward_difference,
+    std::array{steps_per_segment},
+    true,
+    table_steps_series,
+    table_cost,
+    [](const auto& c, const setting_values& v, const run_context&) {
+      const auto steps = static_cast<std::size_t>(value_of(v, "steps", "forward_difference"));
+      return [&c, steps] {
+        const al::forward_difference_table<double> t(c, steps);
+        return t.length();
+      };
+    }};
+
+inline constexpr length_method richardson{
+    &vocab::methods::richardson,
+    std::array{steps_per_segment},
+    true,
+    table_steps_series,
+    table_cost,
+    [](const auto& c, const setting_values& v, const run_context&) {
+      const auto steps = static_cast<std::size_t>(value_of(v, "steps", "richardson"));
+      return [&c, steps] {
+        const al::forward_difference_table<double> t(c, steps);
+        return t.richardson_length();
+      };
+    }};
+
+inline constexpr length_method subdivision{
+    &vocab::methods::subdivision,
+    std::array{setting_def{"tol", "--tol", 1e-12, 0, std::numeric_limits<double>::infinity(), false,
+                           "relative tolerance of the curve's size (the polygon through breakpoints and midpoints); "
+                           "stops at 2^22 evaluations with status cap_hit"}},
+    true,
+    [](const sweep& w, double) { return series_of("tol", w.subdivision_tol); },
+    [](const setting_values&, std::size_t) {
+      return length_cost{al::subdivision_options<double>{}.max_evaluations, {}};
+    },
+    [](const auto& c, const setting_values& v, const run_context& x) {
+      const double tol = value_of(v, "tol", "subdivision");
+      al::subdivision_options<double> o;
+      if (x.reference_length > 0) {
+        o.tolerance = tol * x.reference_length;
+        o.relative_tolerance = 0;  // tol is relative to the reference length, given absolute here
+      } else {
+        o.tolerance = 0;
+        o.relative_tolerance = tol;  // relative to the curve's size (adaptive_subdivision.hpp)
+      }
+      if (x.max_evaluations > 0) o.max_evaluations = x.max_evaluations;
+      return [&c, o] { return al::subdivision_length(c, o); };
+    }};
+
+/// A u(s) table of M intervals (setting M): linear or Hermite, optionally polished by one Newton step.
+inline constexpr setting_def table_intervals{"M", "", 0, 1, 1 << 16, true, "table intervals in s"};
+
+template <al::inversion_method Method, bool Polish>
+inline constexpr auto table_prepare = [](const auto& c, const setting_values& v) {
+  using curve = std::decay_t<decltype(c)>;
+  al::parameterization_options<double> o;
+  o.method = Method;
+  o.table_intervals = static_cast<std::size_t>(value_of(v, "M", "u(s) table"));
+  o.newton_polish = Polish;
+  const auto p = std::make_shared<const al::parameterization<curve>>(c, o);
+  u_of_s_run r;
+  r.length = p->length();
+  r.construction_evaluations = static_cast<double>(p->construction_evaluations());
+  if (Method == al::inversion_method::hermite_table && !Polish) r.table_estimate = p->table_error();
+  r.query = [p](double s) {
+    u_of_s_answer a;
+    if constexpr (Polish) {
+      const auto q = p->invert(s, Method);
+      a.u = q.u;
+      a.estimate = q.s_error_estimate;
+      a.evaluations = static_cast<double>(q.evaluations);
+    } else {
+      a.u = p->u(s, Method);
+    }
+    a.status = p->table_status();  // the record's status is the table's
+    return a;
+  };
+  return r;
+};
+
+inline constexpr auto table_intervals_series = [](const sweep& w, double) {
+  return series_of("M", w.table_intervals);
+};
+
+inline constexpr u_of_s_method linear_table{&vocab::methods::linear_table, std::array{table_intervals}, false,
+                                            table_intervals_series,
+                                            table_prepare<al::inversion_method::linear_table, false>};
+inline constexpr u_of_s_method hermite_table{&vocab::methods::hermite_table, std::array{table_intervals}, true,
+                                             table_intervals_series,
+                                             table_prepare<al::inversion_method::hermite_table, false>};
+inline constexpr u_of_s_method hermite_table_polished{&vocab::methods::hermite_table_polished,
+                                                      std::array{table_intervals}, true, table_intervals_series,
+                                                      table_prepare<al::inversion_method::hermite_table, true>};
+
+inline constexpr u_of_s_method newton{
+    &vocab::methods::newton,
+    std::array{setting_def{"tol", "", 1e-12, 0, std::numeric_limits<double>::infinity(), false,
+                           "relative tolerance of s"}},
+    true,
+    [](const sweep& w, double) { return series_of("tol", w.newton_tol); },
+    [](const auto& c, const setting_values& v) {
+      using curve = std::decay_t<decltype(c)>;
+      al::parameterization_options<double> o;
+      o.method = al::inversion_method::newton;
+      o.newton.relative_tolerance = value_of(v, "tol", "newton");
+      const auto p = std::make_shared<const al::parameterization<curve>>(c, o);
+      u_of_s_run r;
+      r.length = p->length();
+      r.construction_evaluations = static_cast<double>(p->construction_evaluations());
+      r.query = [p](double s) {
+        const auto q = p->invert(s, al::inversion_method::newton);
+        return u_of_s_answer{q.u, q.s_error_estimate, static_cast<double>(q.evaluations), q.status};
+      };
+      return r;
+    }};
+
+inline constexpr u_of_s_method forward_difference_u_of_s{
+    &vocab::methods::forward_difference, std::array{steps_per_segment}, false, table_steps_series,
+    [](const auto& c, const setting_values& v) {
+      const auto t = std::make_shared<const al::forward_difference_table<double>>(
+          c, static_cast<std::size_t>(value_of(v, "steps", "forward_difference")));
+      u_of_s_run r;
+      r.length = t->length().value;
+      r.construction_evaluations = static_cast<double>(t->evaluations());
+      r.query = [t](double s) {
+        return u_of_s_answer{t->u(s), std::numeric_limits<double>::quiet_NaN(), 0,
+                             al::result_status::not_guaranteed};
+      };
+      return r;
+    }};
+
+}  // namespace method_rows
+
+/// The length methods, in the order of the records and benchmarks.
+inline constexpr auto length_methods =
+    std::tuple{method_rows::gauss,      method_rows::composite_gauss, method_rows::adaptive_gk,
+               method_rows::forward_difference, method_rows::richardson, method_rows::subdivision};
+
+/// The u(s) methods, in the order of the records.
+inline constexpr auto u_of_s_methods =
+    std::tuple{method_rows::linear_table, method_rows::hermite_table, method_rows::hermite_table_polished,
+               method_rows::newton, method_rows::forward_difference_u_of_s};
+
+/// Calls f(row) for every row of a table (length_methods, u_of_s_methods), in order.
+template <class Table, class F>
+void for_each_row(const Table& table, F&& f) {
+  std::apply([&f](const auto&... row) { (f(row), ...); }, table);
+}
+
+/// Calls f(method, setting, run) for every length method (a vocab::method; its `theory` is the
+/// convergence order in evaluations to fit over its series, 0 where none is fitted) and setting of
+/// the sweep, in series: run() (which refers to c, so c must outlive it) computes the length of c
+/// once and returns its quadrature_result. `length` scales the tolerances relative to the length
+/// (run_context::reference_length).
+template <class C, class F>
+void for_each_length_method(const C& c, const sweep& w, double length, F&& f) {
+  const double segments = static_cast<double>(c.breakpoints().size() - 1);
+  run_context x;
+  x.reference_length = length;
+  for_each_row(length_methods, [&](const auto& row) {
+    for (const setting_values& v : row.series(w, segments)) f(*row.method, format_setting(row, v), row.prepare(c, v, x));
+  });
+}
+
+}  // namespace curvebench::harness
