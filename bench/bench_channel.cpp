@@ -9,9 +9,11 @@
 // value range (counter max_err_range_eps) against the same keys at 50 digits with the exact
 // inversion (float keys are the double keys rounded, so the rounding of the data counts, as in a
 // float runtime), and the solver's mean iterations per value (counter iterations).
-// The tools' models of the 64 keys (harness/channel_models.hpp: Maya, USD, Blender in float,
-// glTF) are timed with calls:single beside them.
-// Names: channel_value/<solver | tool model>/keys:N/bits:B/calls:<single | sorted>/timing:throughput.
+// The tools' models of the 64 keys (harness/channel_models.hpp: every tool of io::all_tools that
+// can hold them, each in its storage precision: glTF, Maya, Blender in float, USD) are timed with
+// calls:single beside them, named by the tool (its vocabulary entry: the "tools" of
+// `curvebench list vocabulary --json`).
+// Names: channel_value/<solver | tool>/keys:N/bits:B/calls:<single | sorted>/timing:throughput.
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/reference/multiprecision.hpp"
 
@@ -131,14 +133,6 @@ void model_benchmark(benchmark::State& state, const curvebench::harness::channel
   cbb::per_operation(state, vocab::operations::channel_value, static_cast<double>(ts.size()));
 }
 
-const vocab::algorithm* model_algorithm(const std::string& tool) {
-  namespace a = vocab::algorithms;
-  if (tool == "maya") return &a::maya_animcurve;
-  if (tool == "usd") return &a::usd_spline;
-  if (tool == "blender") return &a::blender_fcurve;
-  return &a::gltf_sampler;
-}
-
 const int registered = [] {
   const std::vector<cbc::key<double>> k64 = keys64(), ease = css_ease();
   for (const auto* data : {&k64, &ease}) {
@@ -158,9 +152,9 @@ const int registered = [] {
   nlohmann::json skipped;
   const std::vector<double> ts = random_times(k64);
   for (const auto& model : curvebench::harness::tool_models(k64, skipped))
-    cbb::register_benchmark(cbb::benchmark_name(family, *model_algorithm(model.name))
+    cbb::register_benchmark(cbb::benchmark_name(family, vocab::algorithm{model.name, "bits", ""})
                                 .arg("keys", static_cast<long long>(k64.size()))
-                                .arg("bits", model.name == "blender" ? 32 : 64)
+                                .arg("bits", model.storage_bits)
                                 .variant(vocab::variant_keys::calls, "single")
                                 .variant(vocab::variant_keys::timing, "throughput"),
                             [at = model.at, ts](benchmark::State& st) { model_benchmark(st, at, ts); });

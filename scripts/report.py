@@ -407,7 +407,7 @@ def main():
     else:
         md.append("No results.")
 
-    md += report_channel.channel_section(acc, bench_rows, plot_dir, plt, atomic_savefig)
+    md += report_channel.channel_section(acc, bench_rows, plot_dir, plt, atomic_savefig, report_channel.tool_names(vocab))
 
     if subjects:
         md += ["", "## Your implementations (subjects) beside curvebench's methods", ""]

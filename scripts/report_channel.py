@@ -4,7 +4,9 @@ Inputs: the accuracy runner's channel records (quantities channel_value, channel
 channel_monotone, channel_time; one method per time solver; setting bits=32 or bits=64), the
 "channel" summary of each channel case (value range, picture, the tools' models and their
 disagreement) and the bench_channel rows (family channel_value: ns per value, error counter
-max_err_range_eps). The pure functions (tables) are tested by tests/python/test_report_channel.py;
+max_err_range_eps). The tools are the vocabulary's ("tools" of `curvebench list vocabulary --json`,
+io::all_tools): their names are the disagreement table's columns and the algorithms of their
+benchmark rows. The pure functions (tables) are tested by tests/python/test_report_channel.py;
 the plots need matplotlib.
 """
 import math
@@ -15,7 +17,13 @@ import report_lib as lib
 
 CHANNEL_QUANTITIES = ("channel_value", "channel_keys", "channel_monotone", "channel_time")
 BENCH_FAMILY = "channel_value"
-TOOL_MODELS = ("maya_animcurve", "usd_spline", "blender_fcurve", "gltf_sampler")
+REFERENCE_TOOL = "exact"  # the keys as given: the disagreement table's reference, not a column
+
+
+def tool_names(vocab):
+    """The tools of the vocabulary (a report_lib.Vocabulary or its JSON), in its order."""
+    tools = vocab.get("tools", []) if isinstance(vocab, dict) else getattr(vocab, "tools", {}).values()
+    return [t["id"] for t in tools]
 
 
 def channel_records(records):
@@ -97,12 +105,11 @@ def case_matrix(records, bits=64):
     return solvers, [[case] + [cells[case].get(s) for s in solvers] for case in sorted(cells)]
 
 
-TOOLS = ("maya", "usd", "blender", "gltf")
-
-
-def disagreement_rows(cases):
-    """Per exact-tool case: each tool's largest difference from the exact keys, the largest between
-    two tools, and the tools that cannot hold the keys (with the reason)."""
+def disagreement_rows(cases, tools):
+    """Per exact-tool case: each tool's largest difference from the exact keys (one column per tool
+    of `tools` but the reference), the largest between two tools, and the tools that cannot hold
+    the keys (with the reason)."""
+    columns = [t for t in tools if t != REFERENCE_TOOL]
     rows, notes = [], []
     for c in cases:
         m = (c.get("channel") or {}).get("models")
@@ -111,7 +118,7 @@ def disagreement_rows(cases):
         vs_exact = {d["b"]: d["max"] for d in m["disagreement"] if d["a"] == "exact"}
         among = [d for d in m["disagreement"] if d["a"] != "exact"]
         top = max(among, key=lambda d: d["max"]) if among else None
-        rows.append([c["name"]] + [vs_exact.get(t, "n/a") for t in TOOLS] +
+        rows.append([c["name"]] + [vs_exact.get(t, "n/a") for t in columns] +
                     [f"{top['a']} vs {top['b']}: {lib.fmt(top['max'])}" if top else "-"])
         for tool, why in sorted(m.get("skipped", {}).items()):
             notes.append(f"{c['name']}, {tool}: {why}")
@@ -220,8 +227,8 @@ def pictures_plot(cases, plot_dir, plt, save):
     return os.path.relpath(path, os.path.dirname(plot_dir))
 
 
-def channel_section(acc, bench_rows, plot_dir, plt, save):
-    """The markdown lines of the keyframe-channel section."""
+def channel_section(acc, bench_rows, plot_dir, plt, save, tools):
+    """The markdown lines of the keyframe-channel section; `tools` the vocabulary's tool names."""
     records = channel_records(acc.get("records", []))
     cases = [c for c in acc.get("cases", []) if c.get("channel")]
     md = ["", "## Keyframe channels: time solvers and tool models", ""]
@@ -281,18 +288,20 @@ def channel_section(acc, bench_rows, plot_dir, plt, save):
         md.append(lib.table(["case", "method", "max angle error, double", "RMS, double", "unit, double",
                              "max angle error, float", "unit, float"], rotations))
     md += ["", "### Where the tools disagree on the same keys", ""]
-    md += ["The keys of each `exact` case imported into each tool's model (bench/harness/channel_models.hpp: "
+    md += ["The keys of each `exact` case imported into each tool's model (channel/tools/<tool>.hpp, from_keys: "
            "Maya's weighted fixed tangents with its correction of regressive handles, USD's keep_ratio anti-regression, "
            "Blender's float32 free handles with its per-handle limit, glTF's cubicspline slopes without the "
-           "handle lengths), each evaluated by its own solver; the largest difference of each pair over "
-           "the keyed range, in value ranges (exact is the 50-digit truth of the keys as given):", ""]
-    rows, notes = disagreement_rows(cases)
-    md.append(lib.table(["case"] + [f"{t} vs exact" for t in TOOLS] + ["largest between two tools"], rows)
+           "handle lengths, CSS's cubic-bezier or linear() on [0, 1]), each evaluated by its own solver; the largest "
+           "difference of each pair over the keyed range, in value ranges (exact is the 50-digit truth of the keys "
+           "as given):", ""]
+    rows, notes = disagreement_rows(cases, tools)
+    columns = [t for t in tools if t != REFERENCE_TOOL]
+    md.append(lib.table(["case"] + [f"{t} vs exact" for t in columns] + ["largest between two tools"], rows)
               if rows else "No exact-tool cases.")
     if notes:
         md += ["", "n/a: the tool cannot hold these keys:", ""] + [f"- {n}" for n in notes]
     models = [[a, bits, ns] for (a, keys, bits, calls), ns in sorted(times.items())
-              if keys == "64" and a in TOOL_MODELS]
+              if keys == "64" and a in tools and a != REFERENCE_TOOL]
     if models:
         md += ["", "The tools' models of the 64 benchmark keys, timed in the same run (ns per value):", ""]
         md.append(lib.table(["model", "bits", "ns/value"], models))

@@ -7,9 +7,10 @@ The vocabulary is the JSON of `curvebench list vocabulary --json` (bench/harness
   {"quantities": [{"id", "doc"}], "methods": [{"id", "quantities", "settings", "theory", "doc"}],
    "peers": [{"id", "library", "doc"}], "operations": [{"id", "doc"}],
    "counters": [{"name", "kind", "doc"}], "algorithms": [{"id", "settings", "doc"}],
-   "variant_keys": [{"id", "values", "doc"}]}
-A benchmark name is family/algorithm[/key:value]..., the algorithm a method, a peer or an algorithm
-id; the per-case arc-length benchmarks are arclength_case/<case>/<method>/<setting>. Every
+   "variant_keys": [{"id", "values", "doc"}],
+   "tools": [{"id", "storage_bits", "default_solver", "settings", "doc", "rules"}]}
+A benchmark name is family/algorithm[/key:value]..., the algorithm a method, a peer, an algorithm
+or a tool id; the per-case arc-length benchmarks are arclength_case/<case>/<method>/<setting>. Every
 benchmark labels the operation it times and sets items processed, so its time per operation is
 1e9 / items_per_second ns, whatever the number of operations per iteration.
 """
@@ -69,6 +70,7 @@ class Vocabulary:
             self.counters = {c["name"]: c for c in data["counters"]}
             self.algorithms = {a["id"]: a for a in data.get("algorithms", [])}
             self.variant_keys = {k["id"]: set(k["values"]) for k in data.get("variant_keys", [])}
+            self.tools = {t["id"]: t for t in data.get("tools", [])}
         except (KeyError, TypeError) as e:
             raise ReportError(f"vocabulary: malformed ({e!r} missing or wrong)") from e
         for p in self.peers:
@@ -77,7 +79,7 @@ class Vocabulary:
         # Keys naming a method's or an algorithm's setting: rows differing only in these (and in
         # variant keys) are ranked together; the remaining keys describe the data.
         self.setting_keys = set()
-        for x in list(self.methods.values()) + list(self.algorithms.values()):
+        for x in list(self.methods.values()) + list(self.algorithms.values()) + list(self.tools.values()):
             self.setting_keys.update(x.get("settings", []))
 
     def error_counters(self):
@@ -122,9 +124,10 @@ def parse_benchmark_name(name, vocab):
             raise ReportError(f"benchmark {name}: method '{parts[2]}' is not in the vocabulary")
     else:
         algorithm = parts[1]
-        if algorithm not in vocab.methods and algorithm not in vocab.peers and algorithm not in vocab.algorithms:
-            raise ReportError(f"benchmark {name}: algorithm '{algorithm}' is neither a method, a peer nor an "
-                              "algorithm of the vocabulary")
+        if (algorithm not in vocab.methods and algorithm not in vocab.peers and algorithm not in vocab.algorithms
+                and algorithm not in vocab.tools):
+            raise ReportError(f"benchmark {name}: algorithm '{algorithm}' is neither a method, a peer, an "
+                              "algorithm nor a tool of the vocabulary")
         row.update(algorithm=algorithm, args=parse_args(name, parts[2:]))
         for key, value in row["args"]:
             if key in vocab.variant_keys and value not in vocab.variant_keys[key]:

@@ -7,6 +7,7 @@
 #include "harness/channel_models.hpp"
 #include "harness/setting.hpp"
 #include "harness/vocabulary.hpp"
+#include "harness/vocabulary_json.hpp"
 
 #include <gtest/gtest.h>
 
@@ -141,9 +142,9 @@ double max_difference(const curvebench::harness::channel_evaluator& f, const cbc
   return d;
 }
 
-std::map<std::string, curvebench::harness::tool_model> by_name(const std::vector<curvebench::harness::tool_model>& v) {
-  std::map<std::string, curvebench::harness::tool_model> m;
-  for (const auto& x : v) m.emplace(x.name, x);
+std::map<std::string, curvebench::harness::keys_model> by_name(const std::vector<curvebench::harness::keys_model>& v) {
+  std::map<std::string, curvebench::harness::keys_model> m;
+  for (const auto& x : v) m.emplace(std::string(x.name), x);
   return m;
 }
 
@@ -170,7 +171,13 @@ TEST(channel_models, agree_with_the_exact_keys_where_no_rule_changes_them) {
                                    cbc::time_solver::exact);
   json skipped = json::object();
   const auto m = by_name(curvebench::harness::tool_models(keys, skipped));
-  EXPECT_EQ(skipped.size(), 0u) << skipped.dump();
+  // Every tool but CSS (an easing on [0, 1]) holds them; exact is the reference, not a model.
+  EXPECT_EQ(skipped.size(), 1u) << skipped.dump();
+  EXPECT_NE(skipped["css"].get<std::string>().find("from time 0 to time 1"), std::string::npos) << skipped.dump();
+  EXPECT_EQ(m.size() + skipped.size() + 1, curvebench::io::all_tools::size);
+  EXPECT_EQ(m.count("exact"), 0u);
+  EXPECT_EQ(m.at("blender").storage_bits, 32);
+  EXPECT_EQ(m.at("maya").storage_bits, 64);
   // Value range about 2: Maya (isolate_brent) and USD (closed form, measured up to 58 ulps on the
   // stress corpus) in double within 1e-13; Blender in float within 64 float ulps of the range.
   EXPECT_LE(max_difference(m.at("maya").at, exact, 0, 4), 1e-13);
@@ -228,8 +235,9 @@ TEST(channel_models, keys_a_tool_cannot_hold_are_named_with_the_reason) {
   keys[1].interp = cbc::interpolation::hermite;
   json skipped = json::object();
   EXPECT_TRUE(curvebench::harness::tool_models(keys, skipped).empty());
-  EXPECT_EQ(skipped.size(), 4u);
-  EXPECT_NE(skipped["maya"].get<std::string>().find("keys[1] is hermite"), std::string::npos);
+  EXPECT_EQ(skipped.size(), curvebench::io::all_tools::size - 1);  // all but exact, the keys themselves
+  for (const char* tool : {"maya", "usd", "blender", "gltf", "css"})
+    EXPECT_NE(skipped[tool].get<std::string>().find("keys[1] is hermite"), std::string::npos) << tool;
   auto vertical = tame_keys(0.4, 0.5);
   vertical[0].out = {0, 0.5};
   skipped = json::object();
@@ -237,4 +245,20 @@ TEST(channel_models, keys_a_tool_cannot_hold_are_named_with_the_reason) {
   EXPECT_EQ(m.count("blender"), 1u);
   EXPECT_NE(skipped["usd"].get<std::string>().find("vertical"), std::string::npos);
   EXPECT_NE(skipped["maya"].get<std::string>().find("keys[0]"), std::string::npos);
+}
+
+TEST(channel_models, the_vocabulary_carries_every_tool_by_its_one_name) {
+  const json v = curvebench::harness::vocabulary_json();
+  ASSERT_EQ(v["tools"].size(), curvebench::io::all_tools::size);
+  for (std::size_t i = 0; i < curvebench::io::all_tool_names.size(); ++i) {
+    EXPECT_EQ(v["tools"][i]["id"], std::string(curvebench::io::all_tool_names[i]));
+    EXPECT_EQ(v["tools"][i]["settings"], json::array({"bits"}));
+  }
+  EXPECT_EQ(v["tools"][4]["id"], "blender");
+  EXPECT_EQ(v["tools"][4]["storage_bits"], 32);
+  EXPECT_EQ(v["tools"][3]["storage_bits"], 64);
+  EXPECT_EQ(v["tools"][3]["default_solver"], "isolate_brent");
+  // The tools are not algorithms of their own besides (one name, one entry).
+  for (const auto& a : v["algorithms"])
+    for (const auto& t : v["tools"]) EXPECT_NE(a["id"], t["id"]);
 }

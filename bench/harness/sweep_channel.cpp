@@ -3,6 +3,7 @@
 // the case's channel summary for the report (the value range, the models of the tools on the same
 // keys and where they disagree, a picture of the keys and handles). See sweeps.hpp for what each
 // record measures. This unit instantiates the channel at real50 (the truth) besides reference.cpp.
+// The tools compared on an exact case's keys are io::all_tools (harness/channel_models.hpp).
 #include "harness/channel_models.hpp"
 #include "harness/sweeps.hpp"
 
@@ -228,7 +229,7 @@ json sweep_rotation(record_sink& k, const case_info& info, const sweep& w) {
       refused[std::string(method->id)] = std::string("float: ") + x.what();
     }
   }
-  return {{"tool", "gltf"},
+  return {{"tool", channel::tools::gltf::name},
           {"path", "rotation"},
           {"interpolation", g::to_string(plain.mode())},
           {"keys", plain.key_count()},
@@ -279,11 +280,11 @@ json sweep_channel(record_sink& k, const case_info& info, const sweep& w) {
            {"refused", refused},
            {"picture", picture(plain, ts.front(), ts.back())}};
   // Where the tools disagree on the same keys: max |a - b| over the keyed range / value range.
-  if (spec.value("tool", "") == "exact") {
+  if (spec.value("tool", "") == channel::tools::exact::name) {
     json skipped = json::object();
     const std::vector<channel::key<double>> kv(keys.begin(), keys.end());
-    std::vector<tool_model> models = tool_models(kv, skipped);
-    models.insert(models.begin(), {"exact", "the keys as given, inverted at 50 digits",
+    std::vector<keys_model> models = tool_models(kv, skipped);
+    models.insert(models.begin(), {channel::tools::exact::name, "the keys as given, inverted at 50 digits", 64,
                                    [&truth](double t) { return static_cast<double>(truth.at(real50(t), 0)); }});
     std::vector<double> inside;
     for (double t : ts)
@@ -296,10 +297,10 @@ json sweep_channel(record_sink& k, const case_info& info, const sweep& w) {
       for (std::size_t b = a + 1; b < models.size(); ++b) {
         double d = 0;
         for (std::size_t j = 0; j < inside.size(); ++j) d = std::max(d, std::abs(values[a][j] - values[b][j]));
-        pairs.push_back({{"a", models[a].name}, {"b", models[b].name}, {"max", d / range}});
+        pairs.push_back({{"a", std::string(models[a].name)}, {"b", std::string(models[b].name)}, {"max", d / range}});
       }
     json rules = json::object();
-    for (const auto& m : models) rules[m.name] = m.rules;
+    for (const auto& m : models) rules[std::string(m.name)] = std::string(m.rules);
     out["models"] = {{"rules", rules}, {"skipped", skipped}, {"disagreement", pairs}};
   }
   return out;

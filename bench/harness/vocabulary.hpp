@@ -306,15 +306,6 @@ inline constexpr algorithm ease_distance_keys{"distance_keys", "",
                                               "ease: monotone interpolation of (time, distance) keys"};
 inline constexpr algorithm ease_speed_curve{"speed_curve", "interpolation",
                                             "ease: the integral of an interpolated speed curve"};
-inline constexpr algorithm maya_animcurve{"maya_animcurve", "bits",
-                                          "channel: Maya's model of the keys (weighted fixed tangents, "
-                                          "isolate_brent; harness/channel_models.hpp)"};
-inline constexpr algorithm usd_spline{"usd_spline", "bits",
-                                      "channel: OpenUSD Ts model of the keys (keep_ratio, closed-form solver)"};
-inline constexpr algorithm blender_fcurve{"blender_fcurve", "bits",
-                                          "channel: Blender's F-curve model of the keys (free handles, float32)"};
-inline constexpr algorithm gltf_sampler{"gltf_sampler", "bits",
-                                        "channel: a glTF cubicspline sampler with the keys' handle slopes"};
 // Floors (ids start with "floor_"): the simplest correct hand-written kernel for the same work,
 // timed in the same run beside the library's rows; the report gives each row's ratio to them.
 inline constexpr algorithm floor_horner{"floor_horner", "",
@@ -352,10 +343,6 @@ inline constexpr const algorithm* all_algorithms[] = {&algorithms::power,
                                                       &algorithms::ease_smootherstep,
                                                       &algorithms::ease_distance_keys,
                                                       &algorithms::ease_speed_curve,
-                                                      &algorithms::maya_animcurve,
-                                                      &algorithms::usd_spline,
-                                                      &algorithms::blender_fcurve,
-                                                      &algorithms::gltf_sampler,
                                                       &algorithms::floor_horner,
                                                       &algorithms::floor_soa_sorted,
                                                       &algorithms::floor_store_stream,

@@ -2,6 +2,9 @@
 
 #include "harness/vocabulary.hpp"
 
+#include "curvebench/channel/tool_model.hpp"
+#include "curvebench/io/tools/all.hpp"
+
 #include <string>
 #include <string_view>
 
@@ -28,7 +31,8 @@ nlohmann::json vocabulary_json() {
                    {"operations", nlohmann::json::array()},
                    {"counters", nlohmann::json::array()},
                    {"algorithms", nlohmann::json::array()},
-                   {"variant_keys", nlohmann::json::array()}};
+                   {"variant_keys", nlohmann::json::array()},
+                   {"tools", nlohmann::json::array()}};
   for (const vocab::quantity* q : vocab::all_quantities) v["quantities"].push_back({{"id", str(q->id)}, {"doc", str(q->doc)}});
   for (const vocab::method* m : vocab::all_methods)
     v["methods"].push_back({{"id", str(m->id)},
@@ -46,6 +50,17 @@ nlohmann::json vocabulary_json() {
     v["algorithms"].push_back({{"id", str(a->id)}, {"settings", words(a->settings)}, {"doc", str(a->doc)}});
   for (const vocab::variant_key* k : vocab::all_variant_keys)
     v["variant_keys"].push_back({{"id", str(k->id)}, {"values", words(k->values)}, {"doc", str(k->doc)}});
+  // The keyframe tools (io::all_tools): the name is the spec's "tool", the benchmark's algorithm of
+  // the tool's model (setting bits, its storage precision) and the report's column.
+  io::for_each_tool([&](auto t) {
+    using T = typename decltype(t)::type;
+    v["tools"].push_back({{"id", str(T::name)},
+                          {"storage_bits", channel::storage_bits_of<typename T::storage_type>},
+                          {"default_solver", channel::to_string(T::default_solver)},
+                          {"settings", words("bits")},
+                          {"doc", str(T::summary)},
+                          {"rules", str(T::rules)}});
+  });
   return v;
 }
 

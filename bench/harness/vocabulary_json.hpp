@@ -4,7 +4,12 @@
 //    "methods":    [{"id", "quantities": [ids], "settings": [keys], "theory" (0: none fitted), "doc"}],
 //    "peers":      [{"id", "library", "doc"}],
 //    "operations": [{"id", "doc"}],
-//    "counters":   [{"name", "kind", "doc"}]}
+//    "counters":   [{"name", "kind", "doc"}],
+//    "algorithms": [{"id", "settings", "doc"}],
+//    "variant_keys": [{"id", "values", "doc"}],
+//    "tools":      [{"id", "storage_bits", "default_solver", "settings", "doc", "rules"}]}
+// The tools are io::all_tools (io/tools/all.hpp): a channel spec's "tool", the algorithm of the
+// tool model's benchmarks (bench_channel) and the report's columns.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // curvebench: the command-line tool. main.cpp wires the subcommands and holds list, length,
 // accuracy and gate; sample.cpp and check.cpp the two that take a user's parameters and values.
 //   curvebench --version                                                                   version and git revision
-//   curvebench list [families|methods|cases|vocabulary] [--json]
+//   curvebench list [families|tools|methods|cases|vocabulary] [--json]
 //   curvebench sample SPEC.json [--count N] [--by u|arclength] [--method ...] [--ease ...]   CSV on stdout
 //   curvebench sample SPEC.json --at V1,V2,... | --at-file FILE | --range A:B:STEP [--derivatives K]
 //   curvebench check SPEC.json --values FILE [--lengths FILE] [--inverse FILE] [--name NAME]
@@ -177,10 +177,12 @@ int main(int argc, char** argv) {
 
   std::string list_what = "all";
   bool list_json = false;
-  auto* list = app.add_subcommand("list", "list curve families (spec types), methods, cases or the vocabulary");
-  list->add_option("what", list_what, "families, methods, cases, vocabulary or all")
-      ->check(CLI::IsMember({"families", "methods", "cases", "vocabulary", "all"}));
-  list->add_flag("--json", list_json, "vocabulary: as JSON (quantities, methods, peers, operations, counters)");
+  auto* list =
+      app.add_subcommand("list", "list curve families (spec types), keyframe tools, methods, cases or the vocabulary");
+  list->add_option("what", list_what, "families, tools, methods, cases, vocabulary or all")
+      ->check(CLI::IsMember({"families", "tools", "methods", "cases", "vocabulary", "all"}));
+  list->add_flag("--json", list_json,
+                 "vocabulary: as JSON (quantities, methods, peers, operations, counters, algorithms, tools)");
   std::string cases_dir = tool::default_cases_dir();
   list->add_option("--cases", cases_dir, "case directory (default " + cases_dir + ")")->check(CLI::ExistingDirectory);
   list->footer(tool::example("curvebench list families"));
@@ -256,6 +258,15 @@ int main(int argc, char** argv) {
         for (const cb::io::family_descriptor& f : cb::io::families())
           std::cout << "  " << std::left << std::setw(18) << f.type << f.summary << "\n"
                     << "  " << std::setw(18) << "" << "fields: " << cb::io::fields_line(f) << "\n";
+      }
+      if (list_what == "tools" || list_what == "all" || list_what == "vocabulary") {
+        std::cout << "tools (a channel spec's \"tool\"; name, storage bits, default time solver):\n";
+        cb::io::for_each_tool([](auto t) {
+          using T = typename decltype(t)::type;
+          std::cout << "  " << std::left << std::setw(10) << T::name << std::setw(4)
+                    << cb::channel::storage_bits_of<typename T::storage_type> << std::setw(16)
+                    << cb::channel::to_string(T::default_solver) << T::summary << "\n";
+        });
       }
       if (list_what == "methods" || list_what == "all") {
         std::cout << "methods (length --method takes those with length records; sample --method linear_table, "

@@ -89,9 +89,17 @@ class ChannelSection(unittest.TestCase):
                              {"a": "maya", "b": "usd", "max": 0.2}, {"a": "maya", "b": "blender", "max": 0.3}],
             "skipped": {"gltf": "a vertical handle"}}}},
             {"name": "css", "channel": {"tool": "css"}}]
-        rows, notes = rc.disagreement_rows(cases)
+        rows, notes = rc.disagreement_rows(cases, ["exact", "maya", "usd", "blender", "gltf"])
         self.assertEqual(rows, [["s", 0.2, 1e-16, "n/a", "n/a", "maya vs blender: 0.3"]])
         self.assertEqual(notes, ["s, gltf: a vertical handle"])
+        # The columns are the tools given, in their order, the reference (exact) left out.
+        rows, _ = rc.disagreement_rows(cases, ["exact", "usd", "css", "maya"])
+        self.assertEqual(rows, [["s", 1e-16, "n/a", 0.2, "maya vs blender: 0.3"]])
+
+    def test_tool_names_come_from_the_vocabulary(self):
+        data = {"tools": [{"id": "exact"}, {"id": "gltf"}, {"id": "maya"}]}
+        self.assertEqual(rc.tool_names(data), ["exact", "gltf", "maya"])
+        self.assertEqual(rc.tool_names({}), [])
 
     def test_rotation_rows_pair_the_precisions_per_case_and_method(self):
         records = RECORDS + [

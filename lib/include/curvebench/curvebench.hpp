@@ -57,6 +57,13 @@
 #include "curvebench/channel/maya.hpp"
 #include "curvebench/channel/penner.hpp"
 #include "curvebench/channel/time_solver.hpp"
+#include "curvebench/channel/tool_model.hpp"
+#include "curvebench/channel/tools/blender.hpp"
+#include "curvebench/channel/tools/css.hpp"
+#include "curvebench/channel/tools/exact.hpp"
+#include "curvebench/channel/tools/gltf.hpp"
+#include "curvebench/channel/tools/maya.hpp"
+#include "curvebench/channel/tools/usd.hpp"
 #include "curvebench/channel/usd.hpp"
 
 #include "curvebench/motion/distance_time.hpp"

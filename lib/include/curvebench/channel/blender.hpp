@@ -81,12 +81,14 @@
 #include "curvebench/channel/time_solver.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/real.hpp"
+#include "curvebench/curves/detail/tridiagonal.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -295,78 +297,44 @@ void validate_fcurve(const blender_fcurve<Real>& c) {
   }
 }
 
-/// Solves the tridiagonal system a[i] x[i-1] + b[i] x[i] + c[i] x[i+1] = d[i] (Thomas; the
-/// systems here are diagonally dominant).
+/// Whether the Cycles modifier makes the curve cyclic for the handle rules: an infinite repeat
+/// (repeat or repeat_offset) on both sides makes key 0 and key n-1 one key (see the header).
 template <class Real>
-std::vector<Real> solve_tridiagonal(std::vector<Real> a, std::vector<Real> b, std::vector<Real> c,
-                                    std::vector<Real> d) {
-  const std::size_t n = b.size();
-  for (std::size_t i = 1; i < n; ++i) {
-    const Real w = a[i] / b[i - 1];
-    b[i] -= w * c[i - 1];
-    d[i] -= w * d[i - 1];
-  }
-  std::vector<Real> x(n);
-  x[n - 1] = d[n - 1] / b[n - 1];
-  for (std::size_t i = n - 1; i-- > 0;) x[i] = (d[i] - c[i] * x[i + 1]) / b[i];
-  return x;
-}
-
-/// The cyclic tridiagonal system: as solve_tridiagonal with a[0] multiplying x[n-1] and c[n-1]
-/// multiplying x[0] (Sherman-Morrison on two tridiagonal solves; n >= 1).
-template <class Real>
-std::vector<Real> solve_cyclic_tridiagonal(std::vector<Real> a, std::vector<Real> b, std::vector<Real> c,
-                                           std::vector<Real> d) {
-  const std::size_t n = b.size();
-  if (n == 1) return {Real(d[0] / (b[0] + a[0] + c[0]))};
-  const Real alpha = c[n - 1], beta = a[0];
-  const Real gamma = -b[0];
-  std::vector<Real> bb = b;
-  bb[0] = b[0] - gamma;
-  bb[n - 1] = b[n - 1] - alpha * beta / gamma;
-  std::vector<Real> u(n, Real(0));
-  u[0] = gamma;
-  u[n - 1] = alpha;
-  const std::vector<Real> x = solve_tridiagonal(a, bb, c, d);
-  const std::vector<Real> z = solve_tridiagonal(a, bb, c, u);
-  const Real fact = (x[0] + beta * x[n - 1] / gamma) / (Real(1) + z[0] + beta * z[n - 1] / gamma);
-  std::vector<Real> out(n);
-  for (std::size_t i = 0; i < n; ++i) out[i] = x[i] - fact * z[i];
-  return out;
-}
-
-}  // namespace detail
-
-/// The keys with Blender's handle rules applied (see the header): auto, auto_clamped, vector and
-/// aligned handles recomputed, free handles as given. Validates the description.
-template <class Real>
-[[nodiscard]] std::vector<blender_key<Real>> blender_handles(const blender_fcurve<Real>& c) {
-  using std::abs;
-  using std::min;
-  using std::sqrt;
-  detail::validate_fcurve(c);
-  std::vector<blender_key<Real>> k = c.keys;
-  const std::size_t n = k.size();
-  if (n < 2) return k;
-  const bool accel = c.smoothing == auto_smoothing::cont_accel;
-  const bool linear = c.extrapolation == blender_extrapolation::linear;
-  const Real f = accel ? Real(1) / Real(3) : Real(10000) / Real(25614);
-  // Cyclic: an infinite Cycles modifier repeating on both sides (repeat or repeat_offset) makes
-  // Blender treat key 0 and key n-1 as one key whose neighbours are key n-2 moved back and key 1
-  // moved on by the period T and the offset v_last - v_first (also under repeat; measured).
+[[nodiscard]] bool blender_cyclic(const blender_fcurve<Real>& c) {
   const auto repeats = [](cycles_mode m) { return m == cycles_mode::repeat || m == cycles_mode::repeat_offset; };
-  const bool cyclic = c.cycles.enabled && repeats(c.cycles.mode_before) && repeats(c.cycles.mode_after) &&
-                      c.cycles.cycles_before == 0 && c.cycles.cycles_after == 0;
-  if (cyclic && accel && std::any_of(k.begin(), k.end(), [](const blender_key<Real>& x) {
-        return x.handle_left_type == handle_type::auto_clamped || x.handle_right_type == handle_type::auto_clamped;
-      }))
-    validate::fail(
-        "cycles: a cyclic curve (repeat or repeat_offset on both sides, no count) with auto_clamped keys "
-        "under smoothing cont_accel is not modelled (Blender's end-key handles there are recorded in "
-        "tests/data/blender_fcurves.json but their rule is not yet derived)");
-  const Real period = k[n - 1].time - k[0].time, offset = k[n - 1].value - k[0].value;
-  // The neighbour before / after key i, false at an end of a non-cyclic curve.
-  const auto prev = [&](std::size_t i, blender_point<Real>& p) {
+  return c.cycles.enabled && repeats(c.cycles.mode_before) && repeats(c.cycles.mode_after) &&
+         c.cycles.cycles_before == 0 && c.cycles.cycles_after == 0;
+}
+
+template <class Real>
+[[nodiscard]] bool blender_clamped(const blender_key<Real>& x) {
+  return x.handle_left_type == handle_type::auto_clamped || x.handle_right_type == handle_type::auto_clamped;
+}
+
+/// What the handle rules read around each key of a curve with n >= 2 keys: its neighbours (on a
+/// cyclic curve key n-2 moved back and key 1 moved on by the period T and the offset v_last -
+/// v_first, also under repeat; measured), its intervals, the auto handles' time lengths and
+/// auto_clamped's bound on a slope. The keys' times and values only are read.
+template <class Real>
+struct blender_neighbours {
+  const std::vector<blender_key<Real>>& k;
+  bool cyclic, accel;
+  Real period, offset;
+  Real f;  ///< the auto handles' length as a fraction of the interval
+
+  blender_neighbours(const std::vector<blender_key<Real>>& keys, bool is_cyclic, bool cont_accel)
+      : k(keys),
+        cyclic(is_cyclic),
+        accel(cont_accel),
+        period(keys.back().time - keys.front().time),
+        offset(keys.back().value - keys.front().value),
+        f(cont_accel ? Real(1) / Real(3) : Real(10000) / Real(25614)) {}
+
+  [[nodiscard]] std::size_t size() const { return k.size(); }
+
+  /// The neighbour before key i; false at the start of a non-cyclic curve.
+  bool prev(std::size_t i, blender_point<Real>& p) const {
+    const std::size_t n = k.size();
     if (i > 0)
       p = {k[i - 1].time, k[i - 1].value};
     else if (cyclic)
@@ -374,8 +342,10 @@ template <class Real>
     else
       return false;
     return true;
-  };
-  const auto next = [&](std::size_t i, blender_point<Real>& p) {
+  }
+  /// The neighbour after key i; false at the end of a non-cyclic curve.
+  bool next(std::size_t i, blender_point<Real>& p) const {
+    const std::size_t n = k.size();
     if (i + 1 < n)
       p = {k[i + 1].time, k[i + 1].value};
     else if (cyclic)
@@ -383,14 +353,21 @@ template <class Real>
     else
       return false;
     return true;
-  };
-  const auto interval = [&](std::size_t i, bool left) {
+  }
+  /// The key's own interval on one side (an end key's missing side: its only interval).
+  [[nodiscard]] Real interval(std::size_t i, bool left) const {
+    const std::size_t n = k.size();
     if (left) return i > 0 ? k[i].time - k[i - 1].time : k[1].time - k[0].time;
     return i + 1 < n ? k[i + 1].time - k[i].time : k[n - 1].time - k[n - 2].time;
-  };
-  const auto chord = [&](std::size_t i) { return (k[i + 1].value - k[i].value) / (k[i + 1].time - k[i].time); };
-  // Handle time lengths of the auto types.
-  const auto auto_lengths = [&](std::size_t i) {
+  }
+  /// The chord slope of segment i.
+  [[nodiscard]] Real chord(std::size_t i) const {
+    return (k[i + 1].value - k[i].value) / (k[i + 1].time - k[i].time);
+  }
+  /// The time lengths (left, right) of key i's auto handles: f times the intervals, each limited
+  /// to 5 times the other under smoothing none.
+  [[nodiscard]] std::pair<Real, Real> auto_lengths(std::size_t i) const {
+    using std::min;
     blender_point<Real> p, q;
     // cont_accel keeps an end key's own interval on both sides even on a cyclic curve (measured).
     Real l = !accel && prev(i, p) ? Real(k[i].time - p.time) : interval(i, true);
@@ -400,9 +377,12 @@ template <class Real>
       l = min(l, r5);
       r = min(r, l5);
     }
-    return std::pair<Real, Real>{Real(f * l), Real(f * r)};
-  };
-  const auto clamp = [&](std::size_t i, Real m) {
+    return {Real(f * l), Real(f * r)};
+  }
+  /// auto_clamped's rule on the slope m of interior key i: 0 at a local extremum or against the
+  /// neighbours' direction, else reduced until neither handle passes its neighbour's value.
+  [[nodiscard]] Real clamp(std::size_t i, Real m) const {
+    using std::abs;
     blender_point<Real> p, q;
     if (!prev(i, p) || !next(i, q)) return m;
     const Real vp = p.value, v = k[i].value, vn = q.value;
@@ -412,114 +392,155 @@ template <class Real>
     if (abs(m * dr) > abs(vn - v)) m = (vn - v) / dr;
     if (abs(m * dl) > abs(v - vp)) m = (v - vp) / dl;
     return m;
-  };
-  const auto clamped = [](const blender_key<Real>& x) {
-    return x.handle_left_type == handle_type::auto_clamped || x.handle_right_type == handle_type::auto_clamped;
-  };
+  }
+};
+
+/// The auto slopes under smoothing none: the mean of the chord slopes at interior keys, the end
+/// chord (linear extrapolation) or 0 (constant) at the ends; auto_clamped keys clamped.
+template <class Real>
+[[nodiscard]] std::vector<Real> blender_slopes_none(const blender_neighbours<Real>& nb, bool linear) {
+  const auto& k = nb.k;
+  const std::size_t n = k.size();
   std::vector<Real> slope(n, Real(0));
-  if (accel) {
-    // Unknowns m_0 .. m_{u-1}; cyclic: u = n - 1 and m_{n-1} = m_0.
-    const std::size_t u = cyclic ? n - 1 : n;
-    // auto_clamped extrema are flat before anything is solved; other clamped keys are fixed round
-    // by round (measured: the extrema never take part in the solve).
-    std::vector<bool> fixed(u, false);
-    std::vector<Real> m(u, Real(0));
-    for (std::size_t i = 0; i < u; ++i) {
-      blender_point<Real> p, q;
-      if (clamped(k[i]) && prev(i, p) && next(i, q)) {
-        const Real v = k[i].value;
-        fixed[i] = (v >= p.value && v >= q.value) || (v <= p.value && v <= q.value);
-      }
-    }
-    // The equations of the free slopes (row i: ra m_{i-1} + rb m_i + rc m_{i+1} = rd, cyclic indices).
-    std::vector<Real> ra(u, Real(0)), rb(u, Real(1)), rc(u, Real(0)), rd(u, Real(0));
-    for (std::size_t i = 0; i < u; ++i) {
-      blender_point<Real> p, q;
-      if (prev(i, p) && next(i, q)) {
-        const Real hl = k[i].time - p.time, hr = q.time - k[i].time;
-        ra[i] = hr;
-        rb[i] = Real(2) * (hl + hr);
-        rc[i] = hl;
-        rd[i] = Real(3) * (hr * (k[i].value - p.value) / hl + hl * (q.value - k[i].value) / hr);
-      } else if (linear) {  // natural end: 2 m_end + m_neighbour = 3 s
-        rb[i] = Real(2);
-        (i == 0 ? rc[i] : ra[i]) = Real(1);
-        rd[i] = Real(3) * chord(i == 0 ? 0 : n - 2);
-      }  // else constant extrapolation: m = 0
-    }
-    const std::vector<bool> extremum = fixed;
-    // Active set: clamp the keys whose solved slope breaks their bound, release a clamped key whose
-    // own equation, given its neighbours, is back inside the bound; until nothing changes.
-    for (std::size_t round = 0; round <= 4 * u + 4; ++round) {
-      std::vector<Real> a = ra, bb = rb, cc = rc, d = rd;
-      for (std::size_t i = 0; i < u; ++i)
-        if (fixed[i]) {
-          a[i] = cc[i] = Real(0);
-          bb[i] = Real(1);
-          d[i] = m[i];
-        }
-      m = cyclic ? detail::solve_cyclic_tridiagonal(a, bb, cc, d) : detail::solve_tridiagonal(a, bb, cc, d);
-      bool changed = false;
-      for (std::size_t i = 0; i < u; ++i) {
-        if (extremum[i] || !clamped(k[i])) continue;
-        if (!fixed[i]) {
-          const Real mc = clamp(i, m[i]);
-          if (mc != m[i]) {
-            m[i] = mc;
-            fixed[i] = true;
-            changed = true;
-          }
-        } else {
-          const Real ml = m[i > 0 ? i - 1 : u - 1], mr = m[i + 1 < u ? i + 1 : 0];
-          const Real free_m = (rd[i] - ra[i] * ml - rc[i] * mr) / rb[i];
-          if (clamp(i, free_m) == free_m) {
-            fixed[i] = false;
-            changed = true;
-          }
-        }
-      }
-      if (!changed) break;
-    }
-    for (std::size_t i = 0; i < n; ++i) slope[i] = m[i < u ? i : 0];
-  } else {
-    for (std::size_t i = 0; i < n; ++i) {
-      blender_point<Real> p, q;
-      const bool hp = prev(i, p), hn = next(i, q);
-      Real mi;
-      if (hp && hn)
-        mi = ((k[i].value - p.value) / (k[i].time - p.time) + (q.value - k[i].value) / (q.time - k[i].time)) / Real(2);
-      else if (!hp)
-        mi = linear ? chord(0) : Real(0);
-      else
-        mi = linear ? chord(n - 2) : Real(0);
-      slope[i] = clamped(k[i]) ? clamp(i, mi) : mi;
-    }
-  }
   for (std::size_t i = 0; i < n; ++i) {
-    blender_key<Real>& key = k[i];
-    if (detail::is_auto(key.handle_left_type) || detail::is_auto(key.handle_right_type)) {
-      const auto [dl, dr] = auto_lengths(i);
-      if (detail::is_auto(key.handle_left_type))
-        key.handle_left = {Real(key.time - dl), Real(key.value - slope[i] * dl)};
-      if (detail::is_auto(key.handle_right_type))
-        key.handle_right = {Real(key.time + dr), Real(key.value + slope[i] * dr)};
-    } else if (key.handle_left_type == handle_type::aligned) {
-      const Real lx = key.time - key.handle_left.time, ly = key.value - key.handle_left.value;
-      const Real rx = key.handle_right.time - key.time, ry = key.handle_right.value - key.value;
-      const Real ll = sqrt(lx * lx + ly * ly), lr = sqrt(rx * rx + ry * ry);
-      if (ll > Real(0)) key.handle_right = {Real(key.time + lx * lr / ll), Real(key.value + ly * lr / ll)};
+    blender_point<Real> p, q;
+    const bool hp = nb.prev(i, p), hn = nb.next(i, q);
+    Real mi;
+    if (hp && hn)
+      mi = ((k[i].value - p.value) / (k[i].time - p.time) + (q.value - k[i].value) / (q.time - k[i].time)) / Real(2);
+    else if (!hp)
+      mi = linear ? nb.chord(0) : Real(0);
+    else
+      mi = linear ? nb.chord(n - 2) : Real(0);
+    slope[i] = blender_clamped(k[i]) ? nb.clamp(i, mi) : mi;
+  }
+  return slope;
+}
+
+/// The rows of cont_accel's C2 conditions on the unknown slopes m_0 .. m_{u-1} (u = n, or n - 1 on
+/// a cyclic curve where m_{n-1} = m_0): ra m_{i-1} + rb m_i + rc m_{i+1} = rd with cyclic indices;
+/// an end row is the natural end 2 m_end + m_neighbour = 3 s (linear extrapolation) or m = 0.
+template <class Real>
+struct blender_c2_rows {
+  std::vector<Real> ra, rb, rc, rd;
+};
+
+template <class Real>
+[[nodiscard]] blender_c2_rows<Real> blender_c2_system(const blender_neighbours<Real>& nb, std::size_t u, bool linear) {
+  const auto& k = nb.k;
+  const std::size_t n = k.size();
+  blender_c2_rows<Real> r{std::vector<Real>(u, Real(0)), std::vector<Real>(u, Real(1)), std::vector<Real>(u, Real(0)),
+                          std::vector<Real>(u, Real(0))};
+  for (std::size_t i = 0; i < u; ++i) {
+    blender_point<Real> p, q;
+    if (nb.prev(i, p) && nb.next(i, q)) {
+      const Real hl = k[i].time - p.time, hr = q.time - k[i].time;
+      r.ra[i] = hr;
+      r.rb[i] = Real(2) * (hl + hr);
+      r.rc[i] = hl;
+      r.rd[i] = Real(3) * (hr * (k[i].value - p.value) / hl + hl * (q.value - k[i].value) / hr);
+    } else if (linear) {
+      r.rb[i] = Real(2);
+      (i == 0 ? r.rc[i] : r.ra[i]) = Real(1);
+      r.rd[i] = Real(3) * nb.chord(i == 0 ? 0 : n - 2);
+    }  // else constant extrapolation: m = 0
+  }
+  return r;
+}
+
+/// The auto slopes under smoothing cont_accel: the C2 spline of blender_c2_system, with
+/// auto_clamped keys fixed by an active set (see the header).
+template <class Real>
+[[nodiscard]] std::vector<Real> blender_slopes_cont_accel(const blender_neighbours<Real>& nb, bool linear) {
+  const auto& k = nb.k;
+  const std::size_t n = k.size();
+  const std::size_t u = nb.cyclic ? n - 1 : n;
+  // auto_clamped extrema are flat before anything is solved; other clamped keys are fixed round
+  // by round (measured: the extrema never take part in the solve).
+  std::vector<bool> fixed(u, false);
+  std::vector<Real> m(u, Real(0));
+  for (std::size_t i = 0; i < u; ++i) {
+    blender_point<Real> p, q;
+    if (blender_clamped(k[i]) && nb.prev(i, p) && nb.next(i, q)) {
+      const Real v = k[i].value;
+      fixed[i] = (v >= p.value && v >= q.value) || (v <= p.value && v <= q.value);
     }
   }
-  // Vector handles: along the chord to the neighbour key (an end key's missing side mirrors it).
+  const blender_c2_rows<Real> rows = blender_c2_system(nb, u, linear);
+  const std::vector<bool> extremum = fixed;
+  // Active set: clamp the keys whose solved slope breaks their bound, release a clamped key whose
+  // own equation, given its neighbours, is back inside the bound; until nothing changes.
+  for (std::size_t round = 0; round <= 4 * u + 4; ++round) {
+    std::vector<Real> a = rows.ra, bb = rows.rb, cc = rows.rc;
+    for (std::size_t i = 0; i < u; ++i)
+      if (fixed[i]) {
+        a[i] = cc[i] = Real(0);
+        bb[i] = Real(1);
+      } else {
+        m[i] = rows.rd[i];
+      }
+    // m holds the right-hand side (the fixed slopes stay as they are) and becomes the solution.
+    if (nb.cyclic)
+      curvebench::detail::solve_cyclic_tridiagonal<Real, Real>(a, bb, cc, std::span<Real>(m));
+    else
+      curvebench::detail::solve_tridiagonal<Real, Real>(a, bb, cc, std::span<Real>(m));
+    bool changed = false;
+    for (std::size_t i = 0; i < u; ++i) {
+      if (extremum[i] || !blender_clamped(k[i])) continue;
+      if (!fixed[i]) {
+        const Real mc = nb.clamp(i, m[i]);
+        if (mc != m[i]) {
+          m[i] = mc;
+          fixed[i] = true;
+          changed = true;
+        }
+      } else {
+        const Real ml = m[i > 0 ? i - 1 : u - 1], mr = m[i + 1 < u ? i + 1 : 0];
+        const Real free_m = (rows.rd[i] - rows.ra[i] * ml - rows.rc[i] * mr) / rows.rb[i];
+        if (nb.clamp(i, free_m) == free_m) {
+          fixed[i] = false;
+          changed = true;
+        }
+      }
+    }
+    if (!changed) break;
+  }
+  std::vector<Real> slope(n);
+  for (std::size_t i = 0; i < n; ++i) slope[i] = m[i < u ? i : 0];
+  return slope;
+}
+
+/// auto and auto_clamped: the handles along the key's slope, of the auto time lengths.
+template <class Real>
+void blender_place_auto(blender_key<Real>& key, const Real& slope, const std::pair<Real, Real>& lengths) {
+  const auto [dl, dr] = lengths;
+  if (is_auto(key.handle_left_type)) key.handle_left = {Real(key.time - dl), Real(key.value - slope * dl)};
+  if (is_auto(key.handle_right_type)) key.handle_right = {Real(key.time + dr), Real(key.value + slope * dr)};
+}
+
+/// aligned: the left handle kept, the right one keeps its length and takes the opposite direction.
+template <class Real>
+void blender_align(blender_key<Real>& key) {
+  using std::sqrt;
+  const Real lx = key.time - key.handle_left.time, ly = key.value - key.handle_left.value;
+  const Real rx = key.handle_right.time - key.time, ry = key.handle_right.value - key.value;
+  const Real ll = sqrt(lx * lx + ly * ly), lr = sqrt(rx * rx + ry * ry);
+  if (ll > Real(0)) key.handle_right = {Real(key.time + lx * lr / ll), Real(key.value + ly * lr / ll)};
+}
+
+/// vector: a third of its side's interval along the chord to the neighbour key (an end key's
+/// missing side mirrors the other, pointing away from it).
+template <class Real>
+void blender_vector_handles(std::vector<blender_key<Real>>& k, const blender_neighbours<Real>& nb) {
+  const std::size_t n = k.size();
   for (std::size_t i = 0; i < n; ++i) {
     for (bool left : {true, false}) {
       blender_key<Real>& key = k[i];
       if ((left ? key.handle_left_type : key.handle_right_type) != handle_type::vector) continue;
       const bool to_left = (left && i > 0) || (!left && i + 1 == n);
       const blender_key<Real>& target = k[to_left ? i - 1 : i + 1];
-      // Along the line from the key to the target (an end key's mirrored side points away from it).
       const Real s = (target.value - key.value) / (target.time - key.time);
-      const Real out_dt = left ? Real(-interval(i, left) / Real(3)) : Real(interval(i, left) / Real(3));
+      const Real out_dt = left ? Real(-nb.interval(i, left) / Real(3)) : Real(nb.interval(i, left) / Real(3));
       const Real out_dv = s * out_dt;
       const blender_point<Real> p{Real(key.time + out_dt), Real(key.value + out_dv)};
       if (left)
@@ -528,6 +549,36 @@ template <class Real>
         key.handle_right = p;
     }
   }
+}
+
+}  // namespace detail
+
+/// The keys with Blender's handle rules applied (see the header): auto, auto_clamped, vector and
+/// aligned handles recomputed, free handles as given. Validates the description.
+template <class Real>
+[[nodiscard]] std::vector<blender_key<Real>> blender_handles(const blender_fcurve<Real>& c) {
+  detail::validate_fcurve(c);
+  std::vector<blender_key<Real>> k = c.keys;
+  if (k.size() < 2) return k;
+  const bool accel = c.smoothing == auto_smoothing::cont_accel;
+  const bool linear = c.extrapolation == blender_extrapolation::linear;
+  const bool cyclic = detail::blender_cyclic(c);
+  if (cyclic && accel && std::any_of(k.begin(), k.end(), detail::blender_clamped<Real>))
+    validate::fail(
+        "cycles: a cyclic curve (repeat or repeat_offset on both sides, no count) with auto_clamped keys "
+        "under smoothing cont_accel is not modelled (Blender's end-key handles there are recorded in "
+        "tests/data/blender_fcurves.json but their rule is not yet derived)");
+  // The rules read only times and values, which the handles below leave unchanged.
+  const detail::blender_neighbours<Real> nb(k, cyclic, accel);
+  const std::vector<Real> slope =
+      accel ? detail::blender_slopes_cont_accel(nb, linear) : detail::blender_slopes_none(nb, linear);
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    if (detail::is_auto(k[i].handle_left_type) || detail::is_auto(k[i].handle_right_type))
+      detail::blender_place_auto(k[i], slope[i], nb.auto_lengths(i));
+    else if (k[i].handle_left_type == handle_type::aligned)
+      detail::blender_align(k[i]);
+  }
+  detail::blender_vector_handles(k, nb);
   return k;
 }
 

@@ -1,0 +1,76 @@
+// The "blender" tool: a Blender F-curve (channel/blender.hpp: blender_fcurve, the handle rules,
+// Penner easing, the Cycles modifier and blender_evaluator) as Blender evaluates it; Blender
+// stores and evaluates in float32 (storage_bits 32), solver exact. The view is the channel of the
+// keys after the handle rules, each handle limited to its segment's duration; an eased segment
+// appears there as its chord (its values are Penner's, not the view's).
+// from_keys: free handles at the absolute positions key + handle (computed in double, then
+// rounded to Real), the segments' interpolations, smoothing none; Blender limits each handle to
+// its segment's duration when it evaluates.
+#pragma once
+
+#include "curvebench/channel/blender.hpp"
+#include "curvebench/channel/channel.hpp"
+#include "curvebench/channel/tool_model.hpp"
+
+#include <span>
+#include <string_view>
+
+namespace curvebench::channel::tools {
+
+struct blender {
+  static constexpr std::string_view name = "blender";
+  static constexpr std::string_view summary =
+      "a Blender F-curve: absolute handles and handle types, constant / linear / bezier / Penner "
+      "interpolation, extrapolation, auto-handle smoothing, the Cycles modifier; float32";
+  static constexpr std::string_view rules = "free handles in float32; each handle limited to its segment's duration";
+  using storage_type = float;
+  static constexpr time_solver default_solver = time_solver::exact;
+
+  template <class Real>
+  class model {
+   public:
+    using real_type = Real;
+    using tool_type = blender;
+    static constexpr std::string_view name = blender::name;
+    static constexpr int storage_bits = storage_bits_of<blender::storage_type>;
+
+    explicit model(const blender_fcurve<Real>& c, time_solver solver = default_solver) : evaluator_(c, solver) {}
+
+    [[nodiscard]] Real value(const Real& t) const { return evaluator_.value(t); }
+    [[nodiscard]] Real derivative(const Real& t, int order) const { return evaluator_.derivative(t, order); }
+    [[nodiscard]] const channel<Real>& view() const { return evaluator_.underlying(); }
+    /// The keys after the handle rules.
+    [[nodiscard]] const std::vector<blender_key<Real>>& keys() const { return evaluator_.keys(); }
+
+   private:
+    blender_evaluator<Real> evaluator_;
+  };
+
+  /// The F-curve Blender holds for the keys, in Real (see the header).
+  template <class Real>
+  [[nodiscard]] static blender_fcurve<Real> fcurve_of_keys(std::span<const key<double>> keys) {
+    curvebench::channel::detail::require_constant_linear_bezier(keys);
+    blender_fcurve<Real> f;
+    f.smoothing = auto_smoothing::none;
+    for (const auto& k : keys) {
+      blender_key<Real> b;
+      b.time = static_cast<Real>(k.time);
+      b.value = static_cast<Real>(k.value);
+      b.handle_left = {static_cast<Real>(k.time + k.in.dt), static_cast<Real>(k.value + k.in.dv)};
+      b.handle_right = {static_cast<Real>(k.time + k.out.dt), static_cast<Real>(k.value + k.out.dv)};
+      b.handle_left_type = b.handle_right_type = handle_type::free;
+      b.interpolation = k.interp == interpolation::bezier   ? blender_interpolation::bezier
+                        : k.interp == interpolation::linear ? blender_interpolation::linear
+                                                            : blender_interpolation::constant;
+      f.keys.push_back(b);
+    }
+    return f;
+  }
+
+  template <class Real>
+  [[nodiscard]] static model<Real> from_keys(std::span<const key<double>> keys) {
+    return model<Real>(fcurve_of_keys<Real>(keys));
+  }
+};
+
+}  // namespace curvebench::channel::tools
