@@ -3,6 +3,7 @@
 #pragma once
 
 #include "curvebench/core/real.hpp"
+#include "curvebench/core/result_status.hpp"
 
 #include <cmath>
 #include <limits>
@@ -58,13 +59,13 @@ template <class Real>
 }
 
 /// The result of brent_root: the root estimate, iterations and function evaluations spent, and
-/// whether the tolerance was met before the iteration cap.
+/// converged when the tolerance was met before the iteration cap (cap_hit otherwise).
 template <class Real>
 struct brent_result {
   Real root;
   int iterations;
   int evaluations;
-  bool converged;
+  result_status status;
 };
 
 /// Brent's method (R. P. Brent, Algorithms for Minimization without Derivatives, 1973, chapter 4:
@@ -78,8 +79,8 @@ template <class Real, class F>
   using std::abs;
   const Real eps = epsilon<Real>();
   int evaluations = 0;
-  if (fa == Real(0)) return {a, 0, 0, true};
-  if (fb == Real(0)) return {b, 0, 0, true};
+  if (fa == Real(0)) return {a, 0, 0, result_status::converged};
+  if (fb == Real(0)) return {b, 0, 0, result_status::converged};
   Real c = a, fc = fa, d = b - a, e = d;
   for (int it = 1; it <= max_iterations; ++it) {
     if ((fb > Real(0)) == (fc > Real(0))) {  // keep the root between b and c
@@ -98,7 +99,7 @@ template <class Real, class F>
     }
     const Real tol1 = Real(2) * eps * abs(b) + tol / Real(2);
     const Real m = (c - b) / Real(2);
-    if (abs(m) <= tol1 || fb == Real(0)) return {b, it - 1, evaluations, true};
+    if (abs(m) <= tol1 || fb == Real(0)) return {b, it - 1, evaluations, result_status::converged};
     if (abs(e) >= tol1 && abs(fa) > abs(fb)) {
       Real p, q;
       const Real s = fb / fa;
@@ -131,7 +132,7 @@ template <class Real, class F>
     fb = f(b);
     ++evaluations;
   }
-  return {b, max_iterations, evaluations, false};
+  return {b, max_iterations, evaluations, result_status::cap_hit};
 }
 
 }  // namespace curvebench::channel::detail
