@@ -1,7 +1,9 @@
-// Private helpers of channel/time_solver.hpp: the cubic Bernstein polynomial of a segment's times,
-// its derivative, and Brent's root finder. Not part of the public interface.
+// Private helpers of channel/time_solver.hpp: the cubic Bernstein polynomial of a segment's times
+// and its derivative (the channel's names for the shared kernels of basis/detail/cubic_bernstein.hpp),
+// the regression test of the time handles, and Brent's root finder. Not part of the public interface.
 #pragma once
 
+#include "curvebench/basis/detail/cubic_bernstein.hpp"
 #include "curvebench/core/real.hpp"
 #include "curvebench/core/result_status.hpp"
 
@@ -10,25 +12,19 @@
 
 namespace curvebench::channel::detail {
 
-/// de Casteljau value of the cubic with Bernstein coefficients b0..b3 at u in [0, 1].
+/// The value at u in [0, 1] of the cubic with Bernstein coefficients b0..b3: the shared kernel
+/// (basis/detail/cubic_bernstein.hpp) in the affine form the channel's recorded values use.
 template <class Real>
 [[nodiscard]] Real bernstein3(const Real& b0, const Real& b1, const Real& b2, const Real& b3, const Real& u) {
-  const Real a0 = b0 + u * (b1 - b0);
-  const Real a1 = b1 + u * (b2 - b1);
-  const Real a2 = b2 + u * (b3 - b2);
-  const Real c0 = a0 + u * (a1 - a0);
-  const Real c1 = a1 + u * (a2 - a1);
-  return c0 + u * (c1 - c0);
+  return basis::detail::cubic_value<basis::detail::cubic_form::affine>(b0, b1, b2, b3, u);
 }
 
-/// d/du of the cubic with Bernstein coefficients b0..b3: 3 times the quadratic of the differences.
+/// d/du of the cubic with Bernstein coefficients b0..b3: 3 times the quadratic of the differences
+/// (the shared kernel, affine form).
 template <class Real>
 [[nodiscard]] Real bernstein3_derivative(const Real& b0, const Real& b1, const Real& b2, const Real& b3,
                                          const Real& u) {
-  const Real d0 = b1 - b0, d1 = b2 - b1, d2 = b3 - b2;
-  const Real e0 = d0 + u * (d1 - d0);
-  const Real e1 = d1 + u * (d2 - d1);
-  return Real(3) * (e0 + u * (e1 - e0));
+  return basis::detail::cubic_first_derivative<basis::detail::cubic_form::affine>(b0, b1, b2, b3, u);
 }
 
 /// Whether the time handles of a segment with t0 < t3, t1 >= t0 and t2 <= t3 let x(u) decrease
