@@ -116,7 +116,7 @@ solver_figures measure_solver(const io::channel_model<Real>& m, const std::vecto
                                             (static_cast<double>(std::numeric_limits<Real>::epsilon()) * h));
     iterations += s.iterations;
     f.iterations_max = std::max(f.iterations_max, static_cast<double>(s.iterations));
-    f.not_converged += s.converged ? 0 : 1;
+    f.not_converged += s.status == result_status::cap_hit ? 1 : 0;  // stopped by its iteration cap
     f.evaluations += s.evaluations;
     ++solved;
   }

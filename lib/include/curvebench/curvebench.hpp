@@ -1,8 +1,8 @@
 // curvebench.hpp: the whole reference library in one include.
 //
 // What: every public header of curvebench::curvebench - core (points, the curve concept, errors,
-// Real utilities, any_curve), basis (Bernstein, cubic basis matrices, constraint solver), curves
-// (one family per header), the property audit, arclength (quadrature, lengths, inversion,
+// Real utilities, any_curve, result statuses), basis (Bernstein, cubic basis matrices, constraint
+// solver), curves (one family per header), the property audit, arclength (quadrature, lengths, inversion,
 // parameterization), channel (keyframe channels: keys, segments, extrapolation and the curve
 // view; the time solvers of a Bezier segment; the tool models: CSS easing, glTF 2.0 samplers,
 // Penner's easing equations as Blender applies them, Blender's F-curves, Maya's animCurves, USD's
@@ -21,6 +21,7 @@
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/point.hpp"
 #include "curvebench/core/real.hpp"
+#include "curvebench/core/result_status.hpp"
 
 #include "curvebench/basis/bernstein.hpp"
 #include "curvebench/basis/constraints.hpp"

@@ -2,8 +2,11 @@
 //
 // DESIGN.md: "Results of numerical methods carry what they cost and how sure they are: the value,
 // an error estimate, and the number of curve/derivative evaluations." Iterative methods have caps
-// and say when they hit them. The status vocabulary is shared by quadrature, length methods and
-// inversion:
+// and say when they hit them. The status vocabulary (converged, cap_hit, rounding_limited,
+// not_guaranteed) is curvebench's one result_status (core/result_status.hpp, shared with the time
+// solvers of channel/time_solver.hpp); arclength::result_status, arclength::to_string and
+// arclength::worst name the same type and functions, so code written against this header compiles
+// unchanged. For quadrature, lengths and inversion:
 //   converged       the error estimate is <= the requested tolerance (and, for the adaptive
 //                   methods, the estimate is an upper bound on every test curve of the suite);
 //   cap_hit         an iteration / interval / depth / table-size cap stopped the method first;
@@ -16,6 +19,8 @@
 // Cost: O(1); these are plain aggregates.
 #pragma once
 
+#include "curvebench/core/result_status.hpp"
+
 #include <algorithm>
 #include <cstddef>
 #include <limits>
@@ -23,32 +28,11 @@
 
 namespace curvebench::arclength {
 
-enum class result_status { converged, cap_hit, rounding_limited, not_guaranteed };
-
-/// "converged", "cap_hit", "rounding_limited", "not_guaranteed".
-[[nodiscard]] constexpr std::string_view to_string(result_status s) {
-  switch (s) {
-    case result_status::converged: return "converged";
-    case result_status::cap_hit: return "cap_hit";
-    case result_status::rounding_limited: return "rounding_limited";
-    case result_status::not_guaranteed: return "not_guaranteed";
-  }
-  return "unknown";
-}
-
-/// The less certain of two statuses (converged < rounding_limited < cap_hit < not_guaranteed).
-[[nodiscard]] constexpr result_status worst(result_status a, result_status b) {
-  auto rank = [](result_status s) {
-    switch (s) {
-      case result_status::converged: return 0;
-      case result_status::rounding_limited: return 1;
-      case result_status::cap_hit: return 2;
-      case result_status::not_guaranteed: return 3;
-    }
-    return 3;
-  };
-  return rank(a) >= rank(b) ? a : b;
-}
+/// The status vocabulary of core/result_status.hpp under its arc-length name (the same type).
+using result_status = ::curvebench::result_status;
+using ::curvebench::result_status_from_string;
+using ::curvebench::to_string;
+using ::curvebench::worst;
 
 /// An integral or a length: value, error estimate (an intended upper bound on |value - exact|),
 /// curve-derivative (or position) evaluations, status.

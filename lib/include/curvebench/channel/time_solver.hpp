@@ -19,10 +19,11 @@
 //
 // Solvers (each derived from its published description; no code is taken from the tools):
 // - closed_form: Cardano's / the trigonometric solution of the cubic in power form on the
-//   normalized segment (as Blender, USD and Unreal do), the root in [0, 1] (within 1e-6, then
-//   clamped); a leading coefficient below 16 eps of the others makes it a quadratic or a linear
-//   equation. Cost: one cbrt or acos + cos, no iteration. Accuracy: the formula cancels near
-//   multiple roots; measured in tests/test_time_solvers.cpp.
+//   normalized segment (as Blender, USD and Unreal do), the root in [0, 1] (or the nearest one,
+//   clamped into it: rounding can push a root at an end just outside); a leading coefficient below
+//   16 eps of the others makes it a quadratic or a linear equation. Cost: one cbrt or acos + cos,
+//   no iteration. Accuracy: the formula cancels near multiple roots; measured in
+//   tests/test_time_solvers.cpp.
 // - table_newton: the WebKit / Chromium scheme on the normalized cubic: x sampled at u = 0, 0.1,
 //   ..., 1 picks the interval and a linear interpolation the start, at most 4 Newton steps, then
 //   bisection of that interval. epsilon 1e-7 applies to the residual |x(u) - s| in normalized
@@ -58,8 +59,15 @@
 // curvebench about 4; exact about 6 (tests/test_time_solvers.cpp prints times and counts).
 // Accuracy: as stated per solver; the measured maximum errors of each in float and double on the
 // stress set are tabled in tests/test_time_solvers.cpp with the bounds asserted there.
-// Every iterative solver reports iterations, residual evaluations and whether it stopped by its
-// own criterion (converged) or by its cap (converged == false, the best iterate returned).
+// Every solver reports iterations, residual evaluations and a result_status (core/result_status.hpp):
+// converged when it stopped by its own criterion (the residual test of table_newton and
+// newton_bisection, Brent's bracket for isolate_brent, the full-precision stop of curvebench and
+// exact); cap_hit when its iteration cap stopped it first (the best iterate returned);
+// rounding_limited when a residual-tolerance scheme's bisection bracket could not shrink in Real
+// before the residual met the tolerance (the tolerance is below what Real resolves there);
+// not_guaranteed for the schemes with no test of their answer (closed_form, whose formula cancels
+// near multiple roots, also when it finds no root within 1e-6 of [0, 1]; bisection12 and
+// bisection30, a fixed number of halvings with no residual check).
 // Errors: a segment with non-finite times, t3 <= t0, a span t3 - t0 too narrow to be resolved
 // (validate::resolvable), t1 < t0 or t2 > t3 (a handle pointing backwards in time), or handles that
 // regress (x decreasing somewhere: the condition above) -> invalid_input naming the fields and
@@ -71,6 +79,7 @@
 #include "curvebench/channel/detail/cubic_time.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/real.hpp"
+#include "curvebench/core/result_status.hpp"
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/cbrt.hpp>
@@ -160,14 +169,16 @@ inline constexpr std::array<time_solver, 8> all_time_solvers{
   validate::fail("time solver = \"" + std::string(id) + "\": unknown, expected one of " + ids);
 }
 
-/// u with x(u) ~ t, the solver's iterations and residual evaluations, and converged == false when
-/// an iteration cap stopped it (then u is its best iterate).
+/// u with x(u) ~ t, the solver's iterations and residual evaluations, and how sure the solver is
+/// (see the header: cap_hit when an iteration cap stopped it, then u is its best iterate).
 template <class Real>
 struct time_solution {
   Real u;
   int iterations;
   int evaluations;
-  bool converged;
+  result_status status;
+
+  [[nodiscard]] bool converged() const { return status == result_status::converged; }
 };
 
 /// Throws std::domain_error unless t0 <= t <= t3: "t = 2 is outside the segment's time interval [0, 1]".
@@ -211,14 +222,15 @@ time_solution<Real> bisect_to_residual(const unit_cubic<Real>& q, Real lo, Real 
     const Real x = q.value(u);
     ++evaluations;
     ++iterations;
-    if (abs(x - q.s) < tol) return {u, iterations, evaluations, true};
-    if (u == lo || u == hi) return {u, iterations, evaluations, true};  // the bracket cannot shrink
+    if (abs(x - q.s) < tol) return {u, iterations, evaluations, result_status::converged};
+    // The bracket cannot shrink in Real before the residual met tol.
+    if (u == lo || u == hi) return {u, iterations, evaluations, result_status::rounding_limited};
     if (x < q.s)
       lo = u;
     else
       hi = u;
   }
-  return {lo + (hi - lo) / Real(2), iterations, evaluations, false};
+  return {lo + (hi - lo) / Real(2), iterations, evaluations, result_status::cap_hit};
 }
 
 template <class Real>
@@ -229,16 +241,15 @@ time_solution<Real> solve_closed_form(const time_cubic<Real>& c, const Real& t) 
   using std::sqrt;
   const unit_cubic<Real> q = normalize(c, t);
   // The ends directly: there x(u) - s may have a double root (a zero-length handle) that the
-  // formula only approximates.
-  if (q.s <= Real(0)) return {Real(0), 0, 0, true};
-  if (q.s >= Real(1)) return {Real(1), 0, 0, true};
+  // formula only approximates. The ends are exact roots (x(0) = 0, x(1) = 1).
+  if (q.s <= Real(0)) return {Real(0), 0, 0, result_status::converged};
+  if (q.s >= Real(1)) return {Real(1), 0, 0, result_status::converged};
   // x(u) - s = A u^3 + B u^2 + C u + D.
   const Real A = Real(1) + Real(3) * q.x1 - Real(3) * q.x2;
   const Real B = Real(3) * q.x2 - Real(6) * q.x1;
   const Real C = Real(3) * q.x1;
   const Real D = -q.s;
   const Real eps = epsilon<Real>();
-  const Real slack = Real(1) / Real(1000000);  // roots within 1e-6 of [0, 1] are clamped into it
   std::array<Real, 3> roots{};
   int n = 0;
   if (abs(A) <= Real(16) * eps * (abs(B) + abs(C))) {
@@ -274,7 +285,8 @@ time_solution<Real> solve_closed_form(const time_cubic<Real>& c, const Real& t) 
       for (int k = 0; k < 3; ++k) roots[n++] = m * cos(phi - Real(k) * two_pi_3) + shift;
     }
   }
-  // The root in [0, 1]; else the nearest one within the slack, clamped; else none (not converged).
+  // The root in [0, 1]; else the nearest one within the slack, clamped; else the nearest root,
+  // clamped. No residual is tested either way: not_guaranteed.
   Real best = q.s;
   Real best_distance = std::numeric_limits<Real>::infinity();
   for (int i = 0; i < n; ++i) {
@@ -285,7 +297,7 @@ time_solution<Real> solve_closed_form(const time_cubic<Real>& c, const Real& t) 
       best = std::clamp(r, Real(0), Real(1));
     }
   }
-  return {best, 0, 0, best_distance <= slack};
+  return {best, 0, 0, result_status::not_guaranteed};
 }
 
 template <class Real>
@@ -307,7 +319,7 @@ time_solution<Real> solve_table_newton(const time_cubic<Real>& c, const Real& t)
   for (int k = 0; k < 4; ++k) {
     const Real r = q.value(u) - q.s;
     ++evaluations;
-    if (abs(r) < tol) return {u, iterations, evaluations, true};
+    if (abs(r) < tol) return {u, iterations, evaluations, result_status::converged};
     const Real d = q.slope(u);
     if (abs(d) < tol) break;
     ++iterations;
@@ -327,7 +339,7 @@ time_solution<Real> solve_newton_bisection(const time_cubic<Real>& c, const Real
   for (int k = 0; k < 8; ++k) {
     const Real r = q.value(u) - q.s;
     ++evaluations;
-    if (abs(r) < tol) return {u, iterations, evaluations, true};
+    if (abs(r) < tol) return {u, iterations, evaluations, result_status::converged};
     const Real d = q.slope(u);
     if (abs(d) < tol) break;
     ++iterations;
@@ -348,7 +360,7 @@ time_solution<Real> solve_bisection(const time_cubic<Real>& c, const Real& t, in
     else
       hi = u;
   }
-  return {lo + (hi - lo) / Real(2), steps, steps, true};
+  return {lo + (hi - lo) / Real(2), steps, steps, result_status::not_guaranteed};  // no residual test
 }
 
 template <class Real>
@@ -390,12 +402,12 @@ time_solution<Real> solve_isolate_brent(const time_cubic<Real>& c, const Real& t
     if (i != n - 1) ++evaluations;
     if (fhi >= Real(0) || i == n - 1) {
       const auto r = brent_root(f, lo, hi, flo, fhi, Real(0), 200);
-      return {r.root, r.iterations, evaluations + r.evaluations, r.converged};
+      return {r.root, r.iterations, evaluations + r.evaluations, r.status};
     }
     lo = hi;
     flo = fhi;
   }
-  return {Real(1), 0, evaluations, false};  // not reached: the last piece ends at x(1) - t >= 0
+  return {Real(1), 0, evaluations, result_status::not_guaranteed};  // not reached: x(1) - t >= 0
 }
 
 /// Safeguarded Newton-bisection on f(u) = x(u) - t over [lo, hi] with f(lo) < 0 < f(hi) certain.
@@ -411,7 +423,7 @@ time_solution<Real> rtsafe(const time_cubic<Real>& c, F&& residual, const Real& 
   for (int k = 0; k < cap; ++k) {
     const Real f = residual(u);
     ++evaluations;
-    if (abs(f) <= noise) return {u, iterations, evaluations, true};
+    if (abs(f) <= noise) return {u, iterations, evaluations, result_status::converged};
     if (f < Real(0))
       lo = u;
     else
@@ -419,31 +431,31 @@ time_solution<Real> rtsafe(const time_cubic<Real>& c, F&& residual, const Real& 
     const Real d = bernstein3_derivative(c.t0, c.t1, c.t2, c.t3, u);
     ++iterations;
     const Real newton = u - f / d;
-    if (d > Real(0) && newton == u) return {u, iterations, evaluations, true};  // the step is below u's ulp
+    if (d > Real(0) && newton == u) return {u, iterations, evaluations, result_status::converged};  // step < ulp(u)
     if (!(d > Real(0)) || !(newton > lo && newton < hi) || abs(Real(2) * f) > abs(dx_old * d)) {
       dx_old = dx;
       dx = (hi - lo) / Real(2);
       u = lo + dx;
       if (u == lo || u == hi) {
         stalled = true;
-        return {u, iterations, evaluations, true};
+        return {u, iterations, evaluations, result_status::converged};  // full precision: the bracket is 1 ulp
       }
     } else {
       dx_old = dx;
       dx = f / d;
       u = newton;
     }
-    if (abs(dx) <= step_tol) return {u, iterations, evaluations, true};
+    if (abs(dx) <= step_tol) return {u, iterations, evaluations, result_status::converged};
   }
-  return {u, iterations, evaluations, false};
+  return {u, iterations, evaluations, result_status::cap_hit};
 }
 
 template <class Real>
 time_solution<Real> solve_curvebench(const time_cubic<Real>& c, const Real& t) {
   using std::abs;
   using std::ldexp;
-  if (t == c.t0) return {Real(0), 0, 0, true};
-  if (t == c.t3) return {Real(1), 0, 0, true};
+  if (t == c.t0) return {Real(0), 0, 0, result_status::converged};
+  if (t == c.t3) return {Real(1), 0, 0, result_status::converged};
   // Phase 1: Halley's iteration on the power form x(u) - t = ((c3 u + c2) u + c1) u + c0 (three
   // multiply-adds in a chain, its two derivatives beside them), from u = s inside the bracket
   // [0, 1], bisecting when a step leaves it; until a step is below 2^-(digits / 3), after which
@@ -492,7 +504,7 @@ time_solution<Real> solve_curvebench(const time_cubic<Real>& c, const Real& t) {
     if (f == Real(0) || !(d > Real(0))) break;
     const Real step = f / d;
     const Real next = std::clamp(u - step, Real(0), Real(1));
-    if (abs(step) <= Real(4) * eps * u || next == u) return {next, iterations, evaluations, true};
+    if (abs(step) <= Real(4) * eps * u || next == u) return {next, iterations, evaluations, result_status::converged};
     u = next;
     if (k == 2) {
       bool stalled = false;
@@ -500,13 +512,13 @@ time_solution<Real> solve_curvebench(const time_cubic<Real>& c, const Real& t) {
       return rtsafe(c, residual, Real(0), l, h, u, Real(0), cap, iterations, evaluations, stalled);
     }
   }
-  return {u, iterations, evaluations, true};
+  return {u, iterations, evaluations, result_status::converged};
 }
 
 template <class Real>
 time_solution<Real> solve_exact(const time_cubic<Real>& c, const Real& t) {
-  if (t == c.t0) return {Real(0), 0, 0, true};
-  if (t == c.t3) return {Real(1), 0, 0, true};
+  if (t == c.t0) return {Real(0), 0, 0, result_status::converged};
+  if (t == c.t3) return {Real(1), 0, 0, result_status::converged};
   Real lo(0), hi(1);
   bool stalled = false;
   // The residual as the cubic of t_i - t (each difference exact when t_i and t are within a factor

@@ -38,6 +38,7 @@
 #pragma once
 
 #include "curvebench/basis/cubic_matrices.hpp"
+#include "curvebench/basis/detail/cubic_bernstein.hpp"
 #include "curvebench/core/curve.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/point.hpp"
@@ -580,7 +581,7 @@ class piecewise_cubic {
   }
 
   [[nodiscard]] std::size_t locate_binary(const Real& u) const {
-    // First interior knot > u, minus one; u_n maps to the last segment.
+    // core/detail/segment_lookup.hpp's rule over the interior knots only: u_n -> the last segment.
     const auto it = std::upper_bound(knots_.begin() + 1, knots_.end() - 1, u);
     return static_cast<std::size_t>(it - knots_.begin()) - 1;
   }
@@ -714,22 +715,9 @@ class piecewise_cubic {
   }
 
   [[nodiscard]] static point_type eval_bezier(const std::array<point_type, 4>& b, const Real& t, int order) {
-    const Real s = Real(1) - t;
-    if (order == 3) return Real(6) * ((b[3] - b[0]) + Real(3) * (b[1] - b[2]));
-    if (order == 2) {
-      // P'' = 6 Σ B_k^1 Δ²b_k: the second differences blended linearly.
-      const point_type d0 = (b[2] - b[1]) - (b[1] - b[0]);
-      const point_type d1 = (b[3] - b[2]) - (b[2] - b[1]);
-      return Real(6) * (s * d0 + t * d1);
-    }
-    // de Casteljau: three levels of convex combinations.
-    const point_type r0 = s * b[0] + t * b[1];
-    const point_type r1 = s * b[1] + t * b[2];
-    const point_type r2 = s * b[2] + t * b[3];
-    const point_type q0 = s * r0 + t * r1;
-    const point_type q1 = s * r1 + t * r2;
-    if (order == 1) return Real(3) * (q1 - q0);
-    return s * q0 + t * q1;
+    // de Casteljau's three levels of convex combinations (the shared kernel, convex form); the first
+    // derivative from the triangle, the second from the second differences blended linearly.
+    return basis::detail::cubic_derivative<basis::detail::cubic_form::convex>(b, t, order);
   }
 
   std::vector<Real> knots_;

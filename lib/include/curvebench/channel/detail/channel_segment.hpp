@@ -3,6 +3,7 @@
 // the limit of dv/dt where x'(w) vanishes. Not part of the public interface.
 #pragma once
 
+#include "curvebench/basis/detail/cubic_bernstein.hpp"
 #include "curvebench/channel/detail/cubic_time.hpp"
 #include "curvebench/channel/time_solver.hpp"
 #include "curvebench/core/real.hpp"
@@ -23,19 +24,12 @@ enum class interpolation : std::uint8_t { constant, step_next, linear, bezier, h
 
 namespace curvebench::channel::detail {
 
-/// The order-th derivative in w of the cubic with Bernstein coefficients b (any order >= 0).
+/// The order-th derivative in w of the cubic with Bernstein coefficients b (any order >= 0; above 3
+/// zero): the shared kernel (basis/detail/cubic_bernstein.hpp), affine form.
 template <class Real>
 [[nodiscard]] Real bernstein3_any(const std::array<Real, 4>& b, const Real& w, int order) {
-  switch (order) {
-    case 0: return bernstein3(b[0], b[1], b[2], b[3], w);
-    case 1: return bernstein3_derivative(b[0], b[1], b[2], b[3], w);
-    case 2: {
-      const Real d0 = b[2] - Real(2) * b[1] + b[0], d1 = b[3] - Real(2) * b[2] + b[1];
-      return Real(6) * (d0 + w * (d1 - d0));
-    }
-    case 3: return Real(6) * ((b[3] - b[0]) - Real(3) * (b[2] - b[1]));
-    default: return Real(0);
-  }
+  if (order > 3) return Real(0);
+  return basis::detail::cubic_derivative<basis::detail::cubic_form::affine>(b, w, order);
 }
 
 /// One segment [t[0], t[3]]: for bezier the control times and values of the cubic Bezier; for

@@ -1,33 +1,30 @@
-// Private helpers of channel/time_solver.hpp: the cubic Bernstein polynomial of a segment's times,
-// its derivative, and Brent's root finder. Not part of the public interface.
+// Private helpers of channel/time_solver.hpp: the cubic Bernstein polynomial of a segment's times
+// and its derivative (the channel's names for the shared kernels of basis/detail/cubic_bernstein.hpp),
+// the regression test of the time handles, and Brent's root finder. Not part of the public interface.
 #pragma once
 
+#include "curvebench/basis/detail/cubic_bernstein.hpp"
 #include "curvebench/core/real.hpp"
+#include "curvebench/core/result_status.hpp"
 
 #include <cmath>
 #include <limits>
 
 namespace curvebench::channel::detail {
 
-/// de Casteljau value of the cubic with Bernstein coefficients b0..b3 at u in [0, 1].
+/// The value at u in [0, 1] of the cubic with Bernstein coefficients b0..b3: the shared kernel
+/// (basis/detail/cubic_bernstein.hpp) in the affine form the channel's recorded values use.
 template <class Real>
 [[nodiscard]] Real bernstein3(const Real& b0, const Real& b1, const Real& b2, const Real& b3, const Real& u) {
-  const Real a0 = b0 + u * (b1 - b0);
-  const Real a1 = b1 + u * (b2 - b1);
-  const Real a2 = b2 + u * (b3 - b2);
-  const Real c0 = a0 + u * (a1 - a0);
-  const Real c1 = a1 + u * (a2 - a1);
-  return c0 + u * (c1 - c0);
+  return basis::detail::cubic_value<basis::detail::cubic_form::affine>(b0, b1, b2, b3, u);
 }
 
-/// d/du of the cubic with Bernstein coefficients b0..b3: 3 times the quadratic of the differences.
+/// d/du of the cubic with Bernstein coefficients b0..b3: 3 times the quadratic of the differences
+/// (the shared kernel, affine form).
 template <class Real>
 [[nodiscard]] Real bernstein3_derivative(const Real& b0, const Real& b1, const Real& b2, const Real& b3,
                                          const Real& u) {
-  const Real d0 = b1 - b0, d1 = b2 - b1, d2 = b3 - b2;
-  const Real e0 = d0 + u * (d1 - d0);
-  const Real e1 = d1 + u * (d2 - d1);
-  return Real(3) * (e0 + u * (e1 - e0));
+  return basis::detail::cubic_first_derivative<basis::detail::cubic_form::affine>(b0, b1, b2, b3, u);
 }
 
 /// Whether the time handles of a segment with t0 < t3, t1 >= t0 and t2 <= t3 let x(u) decrease
@@ -58,13 +55,13 @@ template <class Real>
 }
 
 /// The result of brent_root: the root estimate, iterations and function evaluations spent, and
-/// whether the tolerance was met before the iteration cap.
+/// converged when the tolerance was met before the iteration cap (cap_hit otherwise).
 template <class Real>
 struct brent_result {
   Real root;
   int iterations;
   int evaluations;
-  bool converged;
+  result_status status;
 };
 
 /// Brent's method (R. P. Brent, Algorithms for Minimization without Derivatives, 1973, chapter 4:
@@ -78,8 +75,8 @@ template <class Real, class F>
   using std::abs;
   const Real eps = epsilon<Real>();
   int evaluations = 0;
-  if (fa == Real(0)) return {a, 0, 0, true};
-  if (fb == Real(0)) return {b, 0, 0, true};
+  if (fa == Real(0)) return {a, 0, 0, result_status::converged};
+  if (fb == Real(0)) return {b, 0, 0, result_status::converged};
   Real c = a, fc = fa, d = b - a, e = d;
   for (int it = 1; it <= max_iterations; ++it) {
     if ((fb > Real(0)) == (fc > Real(0))) {  // keep the root between b and c
@@ -98,7 +95,7 @@ template <class Real, class F>
     }
     const Real tol1 = Real(2) * eps * abs(b) + tol / Real(2);
     const Real m = (c - b) / Real(2);
-    if (abs(m) <= tol1 || fb == Real(0)) return {b, it - 1, evaluations, true};
+    if (abs(m) <= tol1 || fb == Real(0)) return {b, it - 1, evaluations, result_status::converged};
     if (abs(e) >= tol1 && abs(fa) > abs(fb)) {
       Real p, q;
       const Real s = fb / fa;
@@ -131,7 +128,7 @@ template <class Real, class F>
     fb = f(b);
     ++evaluations;
   }
-  return {b, max_iterations, evaluations, false};
+  return {b, max_iterations, evaluations, result_status::cap_hit};
 }
 
 }  // namespace curvebench::channel::detail
