@@ -4,6 +4,7 @@
 #include "harness/accuracy.hpp"
 #include "harness/length_methods.hpp"
 #include "harness/order_fit.hpp"
+#include "harness/peers.hpp"
 #include "harness/pool.hpp"
 #include "harness/setting.hpp"
 #include "harness/sweep.hpp"
@@ -275,6 +276,10 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
   const auto cases = curvebench::harness::load_cases(dir.path.string());
   ASSERT_EQ(cases.size(), 1u);
   const json out = curvebench::harness::run_case(cases[0], true);
+  // Without peer libraries (the installed harness: the subject API), no peer records; with them,
+  // the same case has GSL's and Boost's.
+  EXPECT_TRUE(out["peer_records"].empty());
+  EXPECT_FALSE(curvebench::harness::run_case(cases[0], true, &curvebench::harness::library_peers())["peer_records"].empty());
   std::set<std::pair<std::string, std::string>> seen;  // (quantity, method)
   for (const auto& r : out["records"]) {
     const std::string q = r["quantity"], method = r["method"], setting = r["setting"], status = r["status"];
@@ -344,7 +349,7 @@ TEST(run_case, gsl_u_of_s_records_pair_newton_and_keep_refusals_valueless) {
   dir.add("arch", arch);
   const auto cases = curvebench::harness::load_cases(dir.path.string());
   ASSERT_EQ(cases.size(), 1u);
-  const json out = curvebench::harness::run_case(cases[0], false);
+  const json out = curvebench::harness::run_case(cases[0], false, &curvebench::harness::library_peers());
   std::map<std::string, json> by_setting;
   for (const auto& r : out["peer_records"])
     if (r["quantity"] == "u_of_s") by_setting[r["setting"].get<std::string>()] = r;
@@ -403,7 +408,7 @@ TEST(run_case, boost_and_eigen_peers_measure_the_cases_they_represent) {
   // (case, method, setting) -> record, the eval peers only
   std::map<std::tuple<std::string, std::string, std::string>, json> eval;
   for (const auto& c : cases) {
-    const json out = curvebench::harness::run_case(c, true);
+    const json out = curvebench::harness::run_case(c, true, &curvebench::harness::library_peers());
     std::map<std::string, int> lengths;  // Boost length records per peer
     for (const auto& r : out["peer_records"]) {
       const std::string method = r["method"];

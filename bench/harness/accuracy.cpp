@@ -24,7 +24,7 @@ namespace {
 using json = nlohmann::json;
 
 template <int Dim>
-json run_dim(const case_info& info, bool quick) {
+json run_dim(const case_info& info, bool quick, const peer_sweeps* peers) {
   const auto t0 = std::chrono::steady_clock::now();
   const sweep w = settings(quick);
   const io::field spec = io::root(info.spec, info.name);
@@ -38,11 +38,15 @@ json run_dim(const case_info& info, bool quick) {
   json properties, channel;
   if constexpr (Dim == 2) properties = sweep_audit(info);
   if (info.spec.value("type", "") == "channel") channel = sweep_channel(k, info, w);
-  json peers = sweep_peers<Dim>(info, c, ref, w);
+  json peer_records = json::array();
+  if (peers != nullptr) {
+    if constexpr (Dim == 2) peer_records = peers->dim2(info, c, ref, w);
+    if constexpr (Dim == 3) peer_records = peers->dim3(info, c, ref, w);
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return {{"records", k.records()},
           {"orders", k.orders()},
-          {"peer_records", std::move(peers)},
+          {"peer_records", std::move(peer_records)},
           {"case",
            {{"name", info.name},
             {"group", info.group},
@@ -99,12 +103,12 @@ json run_rotation(const case_info& info, bool quick) {
 
 }  // namespace
 
-json run_case(const case_info& c, bool quick) {
+json run_case(const case_info& c, bool quick, const peer_sweeps* peers) {
   if (c.spec.value("type", "") == "channel" && io::is_gltf_rotation(io::root(c.spec, c.name)))
     return run_rotation(c, quick);
   switch (c.dimension) {
-    case 2: return run_dim<2>(c, quick);
-    case 3: return run_dim<3>(c, quick);
+    case 2: return run_dim<2>(c, quick, peers);
+    case 3: return run_dim<3>(c, quick, peers);
     default:
       throw invalid_input(c.file + ": the accuracy runner takes 2D and 3D cases, this one is " +
                           std::to_string(c.dimension) + "D");
@@ -132,7 +136,7 @@ int run_accuracy(const accuracy_options& opt) {
       order, threads,
       [&](std::size_t i) {
         try {
-          results[i] = run_case(cases[i], opt.quick);
+          results[i] = run_case(cases[i], opt.quick, opt.peers);
         } catch (const std::exception& e) {
           failures[i] = cases[i].name + ": " + e.what();
         }
@@ -165,7 +169,7 @@ int run_accuracy(const accuracy_options& opt) {
                     {"flags", CURVEBENCH_FLAGS},
                     {"quick", opt.quick},
                     {"threads", threads},
-                    {"peers", peer_versions()},
+                    {"peers", opt.peers != nullptr ? opt.peers->versions() : json::object()},
                     {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
   write_results(out, opt.out);
   std::size_t failed = 0;

@@ -36,11 +36,28 @@
 #include "harness/cases.hpp"
 #include "harness/order_fit.hpp"
 
+#include "curvebench/core/any_curve.hpp"
+
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
 
 namespace curvebench::harness {
+
+template <int Dim>
+class case_reference;
+struct sweep;
+
+/// Libraries measured beside curvebench's methods on each case, into "peer_records": for a 2D and
+/// a 3D case (the case, its curve, its reference, the sweep's settings) and the libraries'
+/// versions (context.peers). The tool passes GSL, Boost.Math and Eigen (harness/peers.hpp,
+/// library_peers(), the curvebench_peers library); without them the results have no peer records.
+struct peer_sweeps {
+  std::function<nlohmann::json(const case_info&, const any_curve<double, 2>&, case_reference<2>&, const sweep&)> dim2;
+  std::function<nlohmann::json(const case_info&, const any_curve<double, 3>&, case_reference<3>&, const sweep&)> dim3;
+  std::function<nlohmann::json()> versions;
+};
 
 /// Set-up cost of tables and segment lengths is spread over this many queries in s_of_u/u_of_s costs.
 inline constexpr double amortized_queries = 1000;
@@ -52,6 +69,7 @@ struct accuracy_options {
   unsigned threads = 0;           ///< 0: all cores
   std::string only;               ///< run only cases whose name contains this text
   bool quiet = false;             ///< no progress lines on stderr (failures and the summary still)
+  const peer_sweeps* peers = nullptr;  ///< the peer libraries to run on each case (none: no peer records)
 };
 
 /// Runs every selected case (on opt.threads threads) and writes `out` (JSON) and the same path
@@ -62,7 +80,8 @@ int run_accuracy(const accuracy_options& opt);
 
 /// One case's records and orders: {"records": [...], "orders": [...], "case": {...}}.
 /// Throws invalid_input for a case that is not 2D or 3D (or whose spec is invalid).
-nlohmann::json run_case(const case_info& c, bool quick);
+/// peers: as accuracy_options::peers.
+nlohmann::json run_case(const case_info& c, bool quick, const peer_sweeps* peers = nullptr);
 
 /// The compiler that built the harness, "gcc 12.2.0" or "clang 16.0.6" (its __VERSION__ for others).
 std::string compiler_id();

@@ -30,6 +30,7 @@
 // counterpart, measured back to back on the same thread (best of three batches; the runner's
 // other threads share the machine, so compare the ratio, not the absolute times), and the
 // counterpart's method and setting so the report joins its error record.
+#include "harness/peers.hpp"
 #include "harness/sweeps.hpp"
 
 #include "harness/peer_record.hpp"
@@ -382,5 +383,10 @@ json sweep_peers(const case_info& info, const any_curve<double, Dim>& c, case_re
 
 template json sweep_peers<2>(const case_info&, const any_curve<double, 2>&, case_reference<2>&, const sweep&);
 template json sweep_peers<3>(const case_info&, const any_curve<double, 3>&, case_reference<3>&, const sweep&);
+
+const peer_sweeps& library_peers() {
+  static const peer_sweeps peers{sweep_peers<2>, sweep_peers<3>, peer_versions};
+  return peers;
+}
 
 }  // namespace curvebench::harness

@@ -27,6 +27,7 @@
 //           Boost and Eigen report no status; an exception (Boost's domain errors) is the record's
 //           peer_status and leaves it without a value.
 #include "harness/peer_record.hpp"
+#include "harness/peers.hpp"
 #include "harness/sweeps.hpp"
 
 #include "harness/setting.hpp"

@@ -56,21 +56,6 @@ template <int Dim>
 void sweep_eval(record_sink& k, const any_curve<double, Dim>& c, case_reference<Dim>& ref, const sweep& w,
                 const nlohmann::json& spec);
 
-/// The peers (harness/sweep_peers.cpp: GSL's splines and QUADPACK integrators;
-/// harness/sweep_peers_boost_eigen.cpp: Boost.Math's quadratures and interpolators, Eigen's
-/// splines) on the case's data,
-/// against the same reference: records in the accuracy format plus "peer": true, "library",
-/// "peer_status" (the library's own status), "ns_per_op" and the curvebench counterpart's
-/// "counterpart" {method, setting} and "counterpart_ns_per_op" (timed back to back). Empty when
-/// no peer represents the case.
-template <int Dim>
-nlohmann::json sweep_peers(const case_info& info, const any_curve<double, Dim>& c, case_reference<Dim>& ref,
-                           const sweep& w);
-
-/// The versions of the peer libraries the harness was built against, by library name:
-/// {"GSL": "2.7.1", "Boost.Math": "1.74.0", "Eigen": "3.4.0"}.
-nlohmann::json peer_versions();
-
 /// channel (cases of type "channel"): per time solver (vocab::time_solver_methods) in float and
 /// double (setting bits=32 / bits=64), records of channel_value, channel_keys, channel_monotone and
 /// channel_time against the same spec evaluated at real50 with the exact inversion, at

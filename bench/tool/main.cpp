@@ -20,6 +20,7 @@
 #include "harness/cases.hpp"
 #include "harness/gate.hpp"
 #include "harness/length_methods.hpp"
+#include "harness/peers.hpp"
 #include "harness/vocabulary.hpp"
 #include "harness/vocabulary_json.hpp"
 
@@ -218,6 +219,7 @@ int main(int argc, char** argv) {
   len->footer(tool::example("curvebench length arch.json --method gauss --n 8"));
 
   cb::harness::accuracy_options ao;
+  ao.peers = &cb::harness::library_peers();  // GSL, Boost.Math and Eigen beside curvebench's methods
   ao.cases_dir = cases_dir;
   auto* acc = app.add_subcommand("accuracy", "run the accuracy sweep against 50-digit references");
   acc->add_flag("--quick", ao.quick, "fewer cases and settings (a few minutes)");
