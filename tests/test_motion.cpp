@@ -378,10 +378,10 @@ TYPED_TEST(seed_002_test, positions_speeds_and_distance_per_frame) {
   }
 }
 
-// The README example (the lead copies this block into README.md; keep them identical).
+// The example of docs/motion.md (the lead copies this block there; keep them identical).
 namespace readme {
 void seed_002_example() {
-  // ---- README snippet begins ----
+  // ---- docs/motion.md snippet begins ----
   namespace cb = curvebench;
   using point3 = cb::point<double, 3>;
 
@@ -399,7 +399,7 @@ void seed_002_example() {
     const double per_frame = motion.speed_at_frame(f) / 24.0;     // 20/61 while cruising
     std::printf("frame %2lld  x = %9.5f  speed = %.5f per frame\n", f, p.x(), per_frame);
   }
-  // ---- README snippet ends ----
+  // ---- docs/motion.md snippet ends ----
 }
 }  // namespace readme
 

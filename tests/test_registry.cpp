@@ -1,6 +1,6 @@
 // The family registry (io/registry.hpp): every spec type has a case file, documented fields,
 // examples that build in double and real50 to the same curve, evaluation algorithms that agree
-// with the default evaluation, audit hooks that rebuild the spec, and the README's spec section
+// with the default evaluation, audit hooks that rebuild the spec, and docs/specs.md's spec section
 // is the registry's generated text.
 #include "support/accuracy.hpp"
 #include "tools/families_section.hpp"
@@ -271,9 +271,9 @@ TEST(registry, audit_items_rebuild_the_spec) {
 }
 
 TEST(registry, readme_spec_section_is_generated_from_the_registry) {
-  const std::string readme = read_text(source_dir + "/README.md");
+  const std::string readme = read_text(source_dir + "/docs/specs.md");
   EXPECT_EQ(cb::docs::families_section(readme), io::families_markdown())
-      << "README.md's families section differs from the registry; regenerate it with\n  "
+      << "docs/specs.md's families section differs from the registry; regenerate it with\n  "
       << cb::docs::regenerate_command;
   EXPECT_THROW((void)cb::docs::families_section("no markers"), cb::invalid_input);
 }

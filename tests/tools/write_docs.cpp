@@ -1,4 +1,4 @@
-// curvebench_docs [README.md]: rewrites the README's spec section (between the families markers)
+// curvebench_docs [docs/specs.md]: rewrites docs/specs.md's spec section (between the families markers)
 // from the family registry, io::families_markdown(). tests/test_registry.cpp fails until it is run
 // after a registry entry changes. Exit status 0, or 1 with the reason on stderr.
 #include "tools/families_section.hpp"
@@ -9,7 +9,7 @@
 #include <sstream>
 
 int main(int argc, char** argv) {
-  const std::string path = argc > 1 ? argv[1] : "README.md";
+  const std::string path = argc > 1 ? argv[1] : "docs/specs.md";
   try {
     std::ifstream in(path);
     if (!in) throw curvebench::invalid_input(path + ": cannot be read");

@@ -1,7 +1,7 @@
 // The family registry: every spec type, in one list. Each entry (io/families/<type>.hpp, built
 // from io/family.hpp) holds the type's name, summary, documented fields, examples, builder,
 // resolver of derived data, dimension rule, evaluation algorithms and property-audit hooks. The
-// spec parser (io/spec.hpp), `curvebench list`, the accuracy runner and the README's spec section
+// spec parser (io/spec.hpp), `curvebench list`, the accuracy runner and docs/specs.md's spec section
 // (families_markdown(), checked by tests/test_registry.cpp) all read it.
 //
 // Adding a spec type: its entry file, its #include below and its name in `all_families`.
@@ -38,7 +38,7 @@ namespace curvebench::io {
 template <class... Entries>
 struct family_list {};
 
-/// Every spec type, in the order `curvebench list` and the README show them.
+/// Every spec type, in the order `curvebench list` and docs/specs.md show them.
 using all_families =
     family_list<polyline_family, lagrange_family, bezier_family, rational_bezier_family, composite_bezier_family,
                 conic_family, arc_family, circle_family, hermite_family, cardinal_family, catmull_rom_family,
@@ -174,8 +174,8 @@ template <int Dim>
   return line;
 }
 
-/// The README's spec reference: every example, then each type's summary and field docs, then the
-/// algorithms and audit of each. README.md holds this text between the markers
+/// docs/specs.md's spec reference: every example, then each type's summary and field docs, then the
+/// algorithms and audit of each. docs/specs.md holds this text between the markers
 /// `<!-- families:begin -->` and `<!-- families:end -->` (tests/test_registry.cpp checks it).
 [[nodiscard]] inline std::string families_markdown() {
   std::string md = "```json\n";

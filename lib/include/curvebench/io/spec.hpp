@@ -4,7 +4,7 @@
 // Every spec may also carry the metadata fields "name", "group", "reason" and "quick" (the case
 // suite uses them); any other unknown field is an error, so a misspelled option never passes silently.
 // The types, their fields, dimension rules and derived data are the family registry's
-// (io/registry.hpp, one entry per type in io/families/); the README's spec section is generated
+// (io/registry.hpp, one entry per type in io/families/); docs/specs.md's spec section is generated
 // from it.
 //
 // Numbers are JSON doubles converted exactly to Real, so a spec instantiated at real50 is the
