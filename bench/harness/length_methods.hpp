@@ -58,8 +58,8 @@ using setting_values = std::map<std::string, double, std::less<>>;
 /// The value of `key` in v; invalid_input naming the method and the key when v has none.
 inline double value_of(const setting_values& v, std::string_view key, std::string_view method) {
   const auto it = v.find(key);
-  if (it == v.end()) throw invalid_input("setting of method " + std::string(method) + ": no value for key \"" +
-                                         std::string(key) + "\"");
+  if (it == v.end())
+    throw invalid_input("setting of method " + std::string(method) + ": no value for key \"" + std::string(key) + "\"");
   return it->second;
 }
 
@@ -90,7 +90,8 @@ std::string options_text(const Row& row, const setting_values& v) {
   std::string out;
   for (const setting_def& d : row.settings)
     if (!d.option.empty())
-      out += (out.empty() ? "" : " ") + std::string(d.option) + " " + setting_text(d, value_of(v, d.key, row.method->id));
+      out +=
+          (out.empty() ? "" : " ") + std::string(d.option) + " " + setting_text(d, value_of(v, d.key, row.method->id));
   return out;
 }
 
@@ -156,14 +157,14 @@ length_method(const vocab::method*, std::array<setting_def, N>, bool, Series, Co
 struct u_of_s_answer {
   double u = 0;
   double estimate = std::numeric_limits<double>::quiet_NaN();  ///< its |s(u) - s| bound, when per query
-  double evaluations = 0;                                        ///< the query's own (set-up excluded)
+  double evaluations = 0;                                      ///< the query's own (set-up excluded)
   arclength::result_status status = arclength::result_status::converged;
 };
 
 /// A u(s) method built on a curve.
 struct u_of_s_run {
-  double length = 0;                    ///< its own L: targets are clamped to it (u(s) rejects s > L)
-  double construction_evaluations = 0;  ///< evaluations of the set-up (tables, segment lengths)
+  double length = 0;                     ///< its own L: targets are clamped to it (u(s) rejects s > L)
+  double construction_evaluations = 0;   ///< evaluations of the set-up (tables, segment lengths)
   std::optional<double> table_estimate;  ///< its |s(u) - s| bound over the whole table, when not per query
   std::function<u_of_s_answer(double)> query;
 };
@@ -205,10 +206,15 @@ std::vector<setting_values> series_of(std::string_view key, const std::vector<T>
 }
 
 inline constexpr setting_def tol_of_length{
-    "tol", "--tol", 1e-12, 0, std::numeric_limits<double>::infinity(), false,
+    "tol",
+    "--tol",
+    1e-12,
+    0,
+    std::numeric_limits<double>::infinity(),
+    false,
     "relative tolerance of the length; stops at 2^24 evaluations with status cap_hit"};
-inline constexpr setting_def steps_per_segment{"steps", "--steps", 256, 1, 10000000, true,
-                                               "table steps per segment (steps x segments nodes, at most 2^24)"};
+inline constexpr setting_def steps_per_segment{
+    "steps", "--steps", 256, 1, 10000000, true, "table steps per segment (steps x segments nodes, at most 2^24)"};
 
 /// The refusal of a forward-difference table above its node limit.
 inline length_cost table_cost(const setting_values& v, std::size_t segments) {
@@ -232,8 +238,8 @@ inline constexpr length_method gauss{
     [](const sweep& w, double) { return series_of("n", w.gauss_n); },
     [](const setting_values& v, std::size_t segments) {
       const double n = value_of(v, "n", "gauss");
-      return fixed_rule_cost("--n " + std::to_string(static_cast<long long>(n)), 7.0 * n * static_cast<double>(segments),
-                             segments);
+      return fixed_rule_cost("--n " + std::to_string(static_cast<long long>(n)),
+                             7.0 * n * static_cast<double>(segments), segments);
     },
     [](const auto& c, const setting_values& v, const run_context&) {
       const int n = static_cast<int>(value_of(v, "n", "gauss"));
@@ -265,18 +271,19 @@ inline constexpr length_method composite_gauss{
       return [&c, p, rule] { return al::composite_gauss_length(c, p, *rule); };
     }};
 
-inline constexpr length_method adaptive_gk{
-    &vocab::methods::adaptive_gk,
-    std::array{tol_of_length},
-    true,
-    [](const sweep& w, double) { return series_of("tol", w.adaptive_tol); },
-    [](const setting_values&, std::size_t) { return length_cost{al::adaptive_options<double>{}.max_evaluations, {}}; },
-    [](const auto& c, const setting_values& v, const run_context& x) {
-      al::adaptive_options<double> o;
-      o.relative_tolerance = value_of(v, "tol", "adaptive_gk");
-      if (x.max_evaluations > 0) o.max_evaluations = x.max_evaluations;
-      return [&c, o] { return al::adaptive_length(c, o); };
-    }};
+inline constexpr length_method adaptive_gk{&vocab::methods::adaptive_gk,
+                                           std::array{tol_of_length},
+                                           true,
+                                           [](const sweep& w, double) { return series_of("tol", w.adaptive_tol); },
+                                           [](const setting_values&, std::size_t) {
+                                             return length_cost{al::adaptive_options<double>{}.max_evaluations, {}};
+                                           },
+                                           [](const auto& c, const setting_values& v, const run_context& x) {
+                                             al::adaptive_options<double> o;
+                                             o.relative_tolerance = value_of(v, "tol", "adaptive_gk");
+                                             if (x.max_evaluations > 0) o.max_evaluations = x.max_evaluations;
+                                             return [&c, o] { return al::adaptive_length(c, o); };
+                                           }};
 
 inline constexpr length_method forward_difference{
     &vocab::methods::forward_difference,
@@ -292,19 +299,19 @@ inline constexpr length_method forward_difference{
       };
     }};
 
-inline constexpr length_method richardson{
-    &vocab::methods::richardson,
-    std::array{steps_per_segment},
-    true,
-    table_steps_series,
-    table_cost,
-    [](const auto& c, const setting_values& v, const run_context&) {
-      const auto steps = static_cast<std::size_t>(value_of(v, "steps", "richardson"));
-      return [&c, steps] {
-        const al::forward_difference_table<double> t(c, steps);
-        return t.richardson_length();
-      };
-    }};
+inline constexpr length_method richardson{&vocab::methods::richardson,
+                                          std::array{steps_per_segment},
+                                          true,
+                                          table_steps_series,
+                                          table_cost,
+                                          [](const auto& c, const setting_values& v, const run_context&) {
+                                            const auto steps =
+                                                static_cast<std::size_t>(value_of(v, "steps", "richardson"));
+                                            return [&c, steps] {
+                                              const al::forward_difference_table<double> t(c, steps);
+                                              return t.richardson_length();
+                                            };
+                                          }};
 
 inline constexpr length_method subdivision{
     &vocab::methods::subdivision,
@@ -361,9 +368,7 @@ inline constexpr auto table_prepare = [](const auto& c, const setting_values& v)
   return r;
 };
 
-inline constexpr auto table_intervals_series = [](const sweep& w, double) {
-  return series_of("M", w.table_intervals);
-};
+inline constexpr auto table_intervals_series = [](const sweep& w, double) { return series_of("M", w.table_intervals); };
 
 inline constexpr u_of_s_method linear_table{&vocab::methods::linear_table, std::array{table_intervals}, false,
                                             table_intervals_series,
@@ -377,10 +382,9 @@ inline constexpr u_of_s_method hermite_table_polished{&vocab::methods::hermite_t
 
 inline constexpr u_of_s_method newton{
     &vocab::methods::newton,
-    std::array{setting_def{"tol", "", 1e-12, 0, std::numeric_limits<double>::infinity(), false,
-                           "relative tolerance of s"}},
-    true,
-    [](const sweep& w, double) { return series_of("tol", w.newton_tol); },
+    std::array{
+        setting_def{"tol", "", 1e-12, 0, std::numeric_limits<double>::infinity(), false, "relative tolerance of s"}},
+    true, [](const sweep& w, double) { return series_of("tol", w.newton_tol); },
     [](const auto& c, const setting_values& v) {
       using curve = std::decay_t<decltype(c)>;
       al::parameterization_options<double> o;
@@ -406,8 +410,7 @@ inline constexpr u_of_s_method forward_difference_u_of_s{
       r.length = t->length().value;
       r.construction_evaluations = static_cast<double>(t->evaluations());
       r.query = [t](double s) {
-        return u_of_s_answer{t->u(s), std::numeric_limits<double>::quiet_NaN(), 0,
-                             al::result_status::not_guaranteed};
+        return u_of_s_answer{t->u(s), std::numeric_limits<double>::quiet_NaN(), 0, al::result_status::not_guaranteed};
       };
       return r;
     }};
@@ -415,9 +418,9 @@ inline constexpr u_of_s_method forward_difference_u_of_s{
 }  // namespace method_rows
 
 /// The length methods, in the order of the records and benchmarks.
-inline constexpr auto length_methods =
-    std::tuple{method_rows::gauss,      method_rows::composite_gauss, method_rows::adaptive_gk,
-               method_rows::forward_difference, method_rows::richardson, method_rows::subdivision};
+inline constexpr auto length_methods = std::tuple{method_rows::gauss,       method_rows::composite_gauss,
+                                                  method_rows::adaptive_gk, method_rows::forward_difference,
+                                                  method_rows::richardson,  method_rows::subdivision};
 
 /// The u(s) methods, in the order of the records.
 inline constexpr auto u_of_s_methods =
@@ -441,7 +444,8 @@ void for_each_length_method(const C& c, const sweep& w, double length, F&& f) {
   run_context x;
   x.reference_length = length;
   for_each_row(length_methods, [&](const auto& row) {
-    for (const setting_values& v : row.series(w, segments)) f(*row.method, format_setting(row, v), row.prepare(c, v, x));
+    for (const setting_values& v : row.series(w, segments))
+      f(*row.method, format_setting(row, v), row.prepare(c, v, x));
   });
 }
 

@@ -58,15 +58,15 @@ struct record {
   double estimate = std::numeric_limits<double>::quiet_NaN();  ///< NaN (or infinite): no estimate
   std::optional<bool> bounded;  ///< as measured() sets it (bounded_of), or as a results file says
   double evaluations = 0;
-  std::string status;         ///< a result_status name
-  bool subject = false;       ///< a user's implementation (`curvebench check`)
+  std::string status;    ///< a result_status name
+  bool subject = false;  ///< a user's implementation (`curvebench check`)
   std::optional<peer_fields> peer;
   nlohmann::json extra = nlohmann::json::object();  ///< a quantity's extra figures
 
   /// A measured record: bounded from the estimate and the error.
-  static record measured(std::string case_name, std::string group, std::string_view quantity,
-                         std::string_view method, std::string setting, double error, double estimate,
-                         double evaluations, std::string_view status) {
+  static record measured(std::string case_name, std::string group, std::string_view quantity, std::string_view method,
+                         std::string setting, double error, double estimate, double evaluations,
+                         std::string_view status) {
     record r;
     r.case_name = std::move(case_name);
     r.group = std::move(group);
@@ -105,7 +105,8 @@ inline nlohmann::json to_json(const record& r) {
     j["counterpart_ns_per_op"] = finite_or_null(p.counterpart_ns_per_op);
     if (std::isfinite(p.counterpart_error)) j["counterpart_error"] = p.counterpart_error;
   }
-  for (const auto& [key, value] : r.extra.items()) j[key] = value.is_number() ? finite_or_null(value.get<double>()) : value;
+  for (const auto& [key, value] : r.extra.items())
+    j[key] = value.is_number() ? finite_or_null(value.get<double>()) : value;
   return j;
 }
 
@@ -132,7 +133,9 @@ inline void check_field_types(const nlohmann::json& row, const std::string& wher
 inline record read_record(const nlohmann::json& j, const std::string& where) {
   check_field_types(j, where);
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  const auto text = [&](const char* key) { return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; };
+  const auto text = [&](const char* key) {
+    return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : "";
+  };
   const auto number = [&](const char* key) {
     return j.contains(key) && j[key].is_number() ? j[key].get<double>() : nan;
   };
@@ -163,11 +166,10 @@ inline record read_record(const nlohmann::json& j, const std::string& where) {
     p.counterpart_error = number("counterpart_error");
     r.peer = std::move(p);
   }
-  static constexpr std::string_view known[] = {"case",     "group",  "quantity",    "method",    "setting",
-                                               "error",    "estimate", "bounded",   "evaluations", "status",
-                                               "subject"};
-  static constexpr std::string_view peer_known[] = {"peer",      "library",     "peer_status",           "ns_per_op",
-                                                    "counterpart", "counterpart_error", "counterpart_ns_per_op"};
+  static constexpr std::string_view known[] = {"case",     "group",   "quantity",    "method", "setting", "error",
+                                               "estimate", "bounded", "evaluations", "status", "subject"};
+  static constexpr std::string_view peer_known[] = {
+      "peer", "library", "peer_status", "ns_per_op", "counterpart", "counterpart_error", "counterpart_ns_per_op"};
   for (const auto& [key, value] : j.items()) {
     bool is_known = false;
     for (std::string_view k : known) is_known = is_known || k == key;
