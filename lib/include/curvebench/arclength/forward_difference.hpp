@@ -17,6 +17,7 @@
 #include "curvebench/arclength/newton_inversion.hpp"
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 
 #include <algorithm>
@@ -142,23 +143,21 @@ class forward_difference_table {
   /// s(u) by linear interpolation between the nodes around u (binary search). Throws
   /// std::domain_error outside the table's domain.
   [[nodiscard]] Real s(const Real& u) const {
-    check_parameter(u, interval<Real>{u_.front(), u_.back()});
-    const auto it = std::upper_bound(u_.begin(), u_.end(), u);
-    if (it == u_.end()) return s_.back();
-    const auto j = static_cast<std::size_t>(it - u_.begin());  // u_[j-1] <= u < u_[j]
-    const Real t = (u - u_[j - 1]) / (u_[j] - u_[j - 1]);
-    return s_[j - 1] + t * (s_[j] - s_[j - 1]);
+    const std::size_t j = curvebench::detail::checked_segment_of<Real>(u_, u);  // u_[j] <= u < u_[j+1]
+    if (!(u < u_.back())) return s_.back();  // the last node exactly
+    const Real t = (u - u_[j]) / (u_[j + 1] - u_[j]);
+    return s_[j] + t * (s_[j + 1] - s_[j]);
   }
 
   /// u(s) by binary search on the arc lengths + linear interpolation (seed 002). Throws
   /// std::domain_error for s outside [0, L_h] or NaN.
   [[nodiscard]] Real u(const Real& s) const {
     check_arc_length(s, s_.back());
-    const auto it = std::upper_bound(s_.begin(), s_.end(), s);
-    if (it == s_.end()) return u_.back();
-    const auto j = static_cast<std::size_t>(it - s_.begin());  // s_[j-1] <= s < s_[j]
-    const Real t = (s - s_[j - 1]) / (s_[j] - s_[j - 1]);
-    return u_[j - 1] + t * (u_[j] - u_[j - 1]);
+    if (!(s < s_.back())) return u_.back();
+    // s_[j] <= s < s_[j+1]: past any zero-length chords, so the difference below is positive.
+    const std::size_t j = curvebench::detail::segment_of<Real>(s_, s);
+    const Real t = (s - s_[j]) / (s_[j + 1] - s_[j]);
+    return u_[j] + t * (u_[j + 1] - u_[j]);
   }
 
  private:

@@ -34,6 +34,7 @@
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 
 #include <algorithm>
@@ -172,9 +173,7 @@ class segment_lengths {
 
   /// The segment i with cumulative[i] <= s <= cumulative[i + 1], preferring one of positive length.
   [[nodiscard]] std::size_t segment_for_s(const Real& s) const {
-    const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), s);
-    std::size_t i = it == cumulative_.begin() ? 0 : static_cast<std::size_t>(it - cumulative_.begin()) - 1;
-    return std::min(i, segment_count() - 1);
+    return curvebench::detail::segment_of<Real>(cumulative_, s);
   }
   /// A first guess of u(s) in segment i from the monotone cubic Hermite model of s(u) with the
   /// segment's end lengths and end speeds (no curve evaluation).
@@ -286,9 +285,7 @@ class segment_lengths {
 
   /// The segment i with parameters[i] <= u <= parameters[i + 1].
   [[nodiscard]] std::size_t segment_for_u(const Real& u) const {
-    const auto it = std::upper_bound(params_.begin(), params_.end(), u);
-    std::size_t i = it == params_.begin() ? 0 : static_cast<std::size_t>(it - params_.begin()) - 1;
-    return std::min(i, segment_count() - 1);
+    return curvebench::detail::segment_of<Real>(params_, u);
   }
 
  private:

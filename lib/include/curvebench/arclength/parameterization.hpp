@@ -23,6 +23,7 @@
 #include "curvebench/arclength/newton_inversion.hpp"
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 
 #include <algorithm>
@@ -311,9 +312,8 @@ class parameterization {
     sk = segments_.cumulative()[i];
     ek = segments_.cumulative_error()[i];
     if (!nodes_u_.empty()) {
-      const auto it = std::upper_bound(nodes_u_.begin(), nodes_u_.end(), u);
-      if (it != nodes_u_.begin()) {
-        const auto j = static_cast<std::size_t>(it - nodes_u_.begin()) - 1;
+      if (!(u < nodes_u_.front())) {
+        const std::size_t j = curvebench::detail::breakpoint_at_or_below<Real>(nodes_u_, u);
         if (nodes_u_[j] > uk) {
           uk = nodes_u_[j];
           sk = nodes_s_[j];

@@ -77,6 +77,7 @@
 #include "curvebench/channel/detail/cubic_time.hpp"
 #include "curvebench/channel/time_solver.hpp"
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/point.hpp"
 #include "curvebench/core/real.hpp"
@@ -284,8 +285,7 @@ class channel {
   // segment_at without the checks (t within the keys, at least one segment).
   [[nodiscard]] std::size_t locate(const Real& t) const {
     const auto& d = *data_;
-    const std::size_t i = static_cast<std::size_t>(std::upper_bound(d.times.begin(), d.times.end(), t) - d.times.begin());
-    return std::min(i == 0 ? std::size_t(0) : i - 1, d.segments.size() - 1);
+    return curvebench::detail::segment_of<Real>(d.times, t);  // times has segments + 1 entries
   }
   [[nodiscard]] Real extrapolate(extrapolation mode, bool before, const Real& t, int order) const;
 };

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/point.hpp"
 #include "curvebench/core/real.hpp"
@@ -88,10 +89,7 @@ class composite_bezier {
 
   /// The segment holding u: the i with u_i <= u < u_{i+1}, or the last one at u = u_n (binary search).
   [[nodiscard]] std::size_t segment_index(const Real& u) const {
-    check_parameter(u, domain());
-    const auto it = std::upper_bound(knots_.begin(), knots_.end(), u);
-    const auto i = static_cast<std::size_t>(it - knots_.begin());
-    return std::min(i == 0 ? std::size_t{0} : i - 1, segments_.size() - 1);
+    return detail::checked_segment_of<Real>(knots_, u);
   }
 
   [[nodiscard]] point_type operator()(const Real& u) const { return segments_[segment_index(u)](u); }
@@ -117,11 +115,9 @@ class composite_bezier {
     validate::same_count("out", out.size(), "us", us.size());
     validate::derivative_order(order);
     std::size_t seg = 0;
-    const std::size_t last = segments_.size() - 1;
     for (std::size_t i = 0; i < us.size(); ++i) {
       const Real& u = us[i];
-      const bool inside = knots_[seg] <= u && (u < knots_[seg + 1] || (seg == last && u <= knots_[seg + 1]));
-      if (!inside) {
+      if (!detail::in_segment<Real>(knots_, seg, u)) {
         check_parameter(u, domain(), "us", i);  // NaN is never inside: it ends here
         seg = segment_index(u);
       }

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/point.hpp"
 #include "curvebench/core/real.hpp"
@@ -79,10 +80,7 @@ class polyline {
 
   /// The segment i with u_i <= u < u_{i+1}, or the last segment for u = u_{n-1} (binary search).
   [[nodiscard]] std::size_t segment(const Real& u) const {
-    check_parameter(u, domain());
-    const auto it = std::upper_bound(params_.begin(), params_.end(), u);
-    const auto i = static_cast<std::size_t>(it - params_.begin());  // first parameter > u, in 1..n
-    return std::min(i, params_.size() - 1) - 1;
+    return detail::checked_segment_of<Real>(params_, u);
   }
 
   [[nodiscard]] point_type operator()(const Real& u) const { return derivative(u, 0); }

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/real.hpp"
 
@@ -61,17 +62,9 @@ class scalar_piecewise_cubic {
 
   /// Index of the interval holding x (the piece chosen at a knot follows `s`). x must be in domain.
   [[nodiscard]] std::size_t locate(const Real& x, side s = side::right) const {
-    const std::size_t last = knots_.size() - 2;
-    if (s == side::right) {
-      // first knot > x, minus one: x_k <= x < x_{k+1}
-      const auto it = std::upper_bound(knots_.begin(), knots_.end(), x);
-      const auto k = static_cast<std::size_t>(it - knots_.begin());
-      return k == 0 ? 0 : std::min(k - 1, last);
-    }
-    // first knot >= x, minus one: x_k < x <= x_{k+1}
-    const auto it = std::lower_bound(knots_.begin(), knots_.end(), x);
-    const auto k = static_cast<std::size_t>(it - knots_.begin());
-    return k == 0 ? 0 : std::min(k - 1, last);
+    // right: x_k <= x < x_{k+1}; left: x_k < x <= x_{k+1} (core/detail/segment_lookup.hpp).
+    if (s == side::right) return curvebench::detail::segment_of<Real>(knots_, x);
+    return curvebench::detail::segment_of_from_left<Real>(knots_, x);
   }
 
   /// d^order y / dx^order at x (order 0 is the value; orders > 3 are 0). Throws std::domain_error

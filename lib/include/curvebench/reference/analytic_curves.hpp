@@ -16,6 +16,7 @@
 #pragma once
 
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/point.hpp"
 #include "curvebench/core/real.hpp"
@@ -59,9 +60,7 @@ class piecewise_polynomial {
 
   [[nodiscard]] point_type derivative(const Real& u, int order) const {
     validate::derivative_order(order);
-    check_parameter(u, domain());
-    std::size_t i = 0;
-    while (i + 2 < breaks_.size() && u >= breaks_[i + 1]) ++i;
+    const std::size_t i = curvebench::detail::checked_segment_of<Real>(breaks_, u);
     const Real t = u - breaks_[i];
     const point_list<Real, Dim>& c = coef_[i];
     point_type acc = zero_point<Real, Dim>();

@@ -18,6 +18,7 @@
 #include "curvebench/arclength/detail/roundoff.hpp"
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/real.hpp"
 
@@ -94,8 +95,7 @@ class reference_arc_length {
   /// s(u) from u0, with its error estimate (Boost's).
   [[nodiscard]] arclength::quadrature_result<Real> s_result(const Real& u) const {
     check_parameter(u, interval<Real>(curve_.domain()));
-    const auto it = std::upper_bound(splits_.begin(), splits_.end(), u);
-    const std::size_t i = it == splits_.begin() ? 0 : static_cast<std::size_t>(it - splits_.begin()) - 1;
+    const std::size_t i = curvebench::detail::breakpoint_at_or_below<Real>(splits_, u);  // the last split <= u
     arclength::quadrature_result<Real> r;
     Real err(0);
     r.value = cumulative_[i] + (u > splits_[i] ? integrate(splits_[i], u, grade_levels_[i], next_levels(i), err) : Real(0));
@@ -141,8 +141,7 @@ class reference_arc_length {
   [[nodiscard]] Real u(const Real& s) const {
     if (!(s >= Real(0) && s <= length()))
       throw std::domain_error("s = " + to_text(s) + " is outside the arc-length range [0, " + to_text(length()) + "]");
-    const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), s);
-    std::size_t i = it == cumulative_.begin() ? 0 : static_cast<std::size_t>(it - cumulative_.begin()) - 1;
+    const std::size_t i = curvebench::detail::breakpoint_at_or_below<Real>(cumulative_, s);  // the last piece end <= s
     if (i + 1 >= splits_.size()) return splits_.back();
     if (s == cumulative_[i]) return splits_[i];
     const Real lo = splits_[i], hi = splits_[i + 1];

@@ -7,6 +7,7 @@
 // basis sum and knot validation. Indexing and conventions are documented in curves/bspline.hpp.
 #pragma once
 
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/real.hpp"
 
@@ -162,9 +163,10 @@ class bspline_core {
   /// last non-empty span, so the curve there is the limit from the left. u must lie in the domain.
   [[nodiscard]] std::size_t find_span(const Real& u) const {
     if (!(u < knots_[n_])) return last_span_;
-    const auto first = knots_.begin() + (order_ - 1);
-    const auto last = knots_.begin() + static_cast<std::ptrdiff_t>(n_ + 1);
-    return static_cast<std::size_t>(std::upper_bound(first, last, u) - knots_.begin()) - 1;
+    // The spans t_{m-1} .. t_n as breakpoints: u < t_n, so the segment rule needs no clamp here.
+    const std::size_t first = static_cast<std::size_t>(order_) - 1;
+    const std::span<const Real> spans = std::span<const Real>(knots_).subspan(first, n_ + 1 - first);
+    return first + segment_of<Real>(spans, u);
   }
 
   /// The derivative of the given order at u (in the domain) by de Boor's algorithm on level r.
