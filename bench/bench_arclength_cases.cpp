@@ -38,7 +38,8 @@ namespace vocab = cb::harness::vocab;
 template <int Dim>
 void register_case(const case_info& info, const cb::harness::sweep& w) {
   using curve = cb::any_curve<double, Dim>;
-  const auto c = std::make_shared<const curve>(cb::io::curve_from_spec<double, Dim>(cb::io::root(info.spec, info.name)));
+  const auto c =
+      std::make_shared<const curve>(cb::io::curve_from_spec<double, Dim>(cb::io::root(info.spec, info.name)));
   // The subdivision tolerance is tol * L; any accurate L names the same setting.
   const double length = al::adaptive_length(*c).value;
   cb::harness::for_each_length_method(
@@ -83,8 +84,8 @@ int main(int argc, char** argv) {
       else if (info.dimension == 3)
         register_case<3>(info, w);
       else  // as the accuracy runner, which has no errors to join for other dimensions
-        std::fprintf(stderr, "bench_arclength_cases: %s is %dD, skipped (2D and 3D cases only)\n",
-                     info.name.c_str(), info.dimension);
+        std::fprintf(stderr, "bench_arclength_cases: %s is %dD, skipped (2D and 3D cases only)\n", info.name.c_str(),
+                     info.dimension);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_arclength_cases: %s\n", e.what());

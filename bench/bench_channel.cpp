@@ -73,7 +73,8 @@ template <class Real>
 std::vector<cbc::key<Real>> keys_as(const std::vector<cbc::key<double>>& k) {
   std::vector<cbc::key<Real>> out;
   for (const auto& x : k)
-    out.push_back({Real(x.time), Real(x.value), {Real(x.in.dt), Real(x.in.dv)}, {Real(x.out.dt), Real(x.out.dv)}, x.interp});
+    out.push_back(
+        {Real(x.time), Real(x.value), {Real(x.in.dt), Real(x.in.dv)}, {Real(x.out.dt), Real(x.out.dv)}, x.interp});
   return out;
 }
 
@@ -142,10 +143,20 @@ const int registered = [] {
       const vocab::method& m = *vocab::time_solver_methods[s];
       for (const char* calls : {"single", "sorted"}) {
         const bool sorted = calls[1] == 'o';
-        cbb::register_benchmark(cbb::benchmark_name(family, m).arg("keys", keys).arg("bits", 64).variant(vocab::variant_keys::calls, calls).variant(vocab::variant_keys::timing, "throughput"),
-                                [d = *data, solver, sorted](benchmark::State& st) { solver_benchmark<double>(st, d, solver, sorted); });
-        cbb::register_benchmark(cbb::benchmark_name(family, m).arg("keys", keys).arg("bits", 32).variant(vocab::variant_keys::calls, calls).variant(vocab::variant_keys::timing, "throughput"),
-                                [d = *data, solver, sorted](benchmark::State& st) { solver_benchmark<float>(st, d, solver, sorted); });
+        cbb::register_benchmark(
+            cbb::benchmark_name(family, m)
+                .arg("keys", keys)
+                .arg("bits", 64)
+                .variant(vocab::variant_keys::calls, calls)
+                .variant(vocab::variant_keys::timing, "throughput"),
+            [d = *data, solver, sorted](benchmark::State& st) { solver_benchmark<double>(st, d, solver, sorted); });
+        cbb::register_benchmark(
+            cbb::benchmark_name(family, m)
+                .arg("keys", keys)
+                .arg("bits", 32)
+                .variant(vocab::variant_keys::calls, calls)
+                .variant(vocab::variant_keys::timing, "throughput"),
+            [d = *data, solver, sorted](benchmark::State& st) { solver_benchmark<float>(st, d, solver, sorted); });
       }
     }
   }

@@ -31,9 +31,9 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
-#include <array>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -129,9 +129,9 @@ double max_error(const cb::piecewise_cubic<cb::real50, dim>& ref, const std::vec
 
 template <class Real>
 struct floor_kernel {
-  std::vector<Real> knots, rcp_h;  // rcp_h[i] = fl(1 / h_i)
-  std::vector<Real> coef;                       // AoS: coef[(4 i + j) dim + d]
-  std::array<std::vector<Real>, 4 * dim> soa;   // SoA: soa[j dim + d][i]
+  std::vector<Real> knots, rcp_h;              // rcp_h[i] = fl(1 / h_i)
+  std::vector<Real> coef;                      // AoS: coef[(4 i + j) dim + d]
+  std::array<std::vector<Real>, 4 * dim> soa;  // SoA: soa[j dim + d][i]
   bool uniform = false;
   Real u0{}, inv_h{};
   std::size_t last = 0;
@@ -186,7 +186,8 @@ struct floor_kernel {
         for (int d = 0; d < dim; ++d) a[j][d] = soa[j * dim + static_cast<std::size_t>(d)][i];
       for (std::size_t m = k; m < e; ++m) {
         const Real t = (us[m] - ui) * ri;
-        for (int d = 0; d < dim; ++d) x[static_cast<std::size_t>(d)][m] = a[0][d] + t * (a[1][d] + t * (a[2][d] + t * a[3][d]));
+        for (int d = 0; d < dim; ++d)
+          x[static_cast<std::size_t>(d)][m] = a[0][d] + t * (a[1][d] + t * (a[2][d] + t * a[3][d]));
       }
       k = e;
       if (k < count)
@@ -195,7 +196,8 @@ struct floor_kernel {
   }
 };
 
-static_assert(sizeof(cb::point<double, dim>) == dim * sizeof(double) && sizeof(cb::point<float, dim>) == dim * sizeof(float),
+static_assert(sizeof(cb::point<double, dim>) == dim * sizeof(double) &&
+                  sizeof(cb::point<float, dim>) == dim * sizeof(float),
               "floor_store_stream writes the bytes of the points as one array of coordinates");
 
 enum class mode { single, batch, sorted };
@@ -204,12 +206,9 @@ enum class impl { engine, floor_horner, floor_soa_sorted, floor_store_stream };
 constexpr double flops_per_evaluation(impl kind, cb::cubic_algorithm alg) {
   if (kind == impl::floor_store_stream) return 0;
   switch (alg) {
-    case cb::cubic_algorithm::power:
-      return 2 + 6 * dim;
-    case cb::cubic_algorithm::matrix:
-      return 32 + 7 * dim;
-    case cb::cubic_algorithm::bezier:
-      return 3 + 18 * dim;
+    case cb::cubic_algorithm::power: return 2 + 6 * dim;
+    case cb::cubic_algorithm::matrix: return 32 + 7 * dim;
+    case cb::cubic_algorithm::bezier: return 3 + 18 * dim;
   }
   return 0;
 }
@@ -312,7 +311,8 @@ void add(const vocab::algorithm& id, std::string_view calls, bool latency, std::
       if constexpr (std::is_same_v<Real, float>) name.arg("real", "float");
       if (points != 1024) name.arg("points", points);
       const config cfg{n, uniform, latency, points};
-      curvebench::bench::register_benchmark(name, [cfg](benchmark::State& s) { evaluate<Real, Kind, Alg, Mode>(s, cfg); });
+      curvebench::bench::register_benchmark(name,
+                                            [cfg](benchmark::State& s) { evaluate<Real, Kind, Alg, Mode>(s, cfg); });
     }
 }
 

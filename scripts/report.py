@@ -407,7 +407,8 @@ def main():
     else:
         md.append("No results.")
 
-    md += report_channel.channel_section(acc, bench_rows, plot_dir, plt, atomic_savefig, report_channel.tool_names(vocab))
+    md += report_channel.channel_section(acc, bench_rows, plot_dir, plt, atomic_savefig,
+                                         report_channel.tool_names(vocab))
 
     if subjects:
         md += ["", "## Your implementations (subjects) beside curvebench's methods", ""]

@@ -289,11 +289,11 @@ def channel_section(acc, bench_rows, plot_dir, plt, save, tools):
                              "max angle error, float", "unit, float"], rotations))
     md += ["", "### Where the tools disagree on the same keys", ""]
     md += ["The keys of each `exact` case imported into each tool's model (channel/tools/<tool>.hpp, from_keys: "
-           "Maya's weighted fixed tangents with its correction of regressive handles, USD's keep_ratio anti-regression, "
-           "Blender's float32 free handles with its per-handle limit, glTF's cubicspline slopes without the "
-           "handle lengths, CSS's cubic-bezier or linear() on [0, 1]), each evaluated by its own solver; the largest "
-           "difference of each pair over the keyed range, in value ranges (exact is the 50-digit truth of the keys "
-           "as given):", ""]
+           "Maya's weighted fixed tangents with its correction of regressive handles, USD's keep_ratio "
+           "anti-regression, Blender's float32 free handles with its per-handle limit, glTF's cubicspline slopes "
+           "without the handle lengths, CSS's cubic-bezier or linear() on [0, 1]), each evaluated by its own solver; "
+           "the largest difference of each pair over the keyed range, in value ranges (exact is the 50-digit truth "
+           "of the keys as given):", ""]
     rows, notes = disagreement_rows(cases, tools)
     columns = [t for t in tools if t != REFERENCE_TOOL]
     md.append(lib.table(["case"] + [f"{t} vs exact" for t in columns] + ["largest between two tools"], rows)

@@ -97,8 +97,7 @@ TEST(property_audit, bspline) {
   const report& c = row("B-spline, cubic, clamped knots");
   expect_row(c, "ends only", true, 2, false, true, "yes", "yes");  // differs from the seed: clamped ends
   // Each control point moves at most m = 4 spans (of 7 on the clamped vector): local support.
-  for (std::size_t i = 0; i < pf::data().size(); ++i)
-    EXPECT_LE(c.local_control.moved_fraction[i], 4.0 / 7 + 0.01) << i;
+  for (std::size_t i = 0; i < pf::data().size(); ++i) EXPECT_LE(c.local_control.moved_fraction[i], 4.0 / 7 + 0.01) << i;
   // The moved range of the middle point P_5 is its support [t_5, t_9] = [2/7, 6/7] (grid resolution).
   EXPECT_NEAR(c.local_control.moved_range[5].lo, 2.0 / 7, 1.0 / (7 * 48) + 1e-12);
   EXPECT_NEAR(c.local_control.moved_range[5].hi, 6.0 / 7, 1.0 / (7 * 48) + 1e-12);
@@ -302,8 +301,8 @@ TEST(analysis_table, document_holds_the_measured_table) {
 TEST(analysis_table, markers) {
   const std::string doc = std::string("intro\n") + pf::table_begin + "old\n" + pf::table_end + "outro\n";
   EXPECT_EQ(pf::table_in(doc), "old\n");
-  EXPECT_EQ(pf::with_table(doc, "| new |\n"), std::string("intro\n") + pf::table_begin + "| new |\n" + pf::table_end +
-                                                  "outro\n");
+  EXPECT_EQ(pf::with_table(doc, "| new |\n"),
+            std::string("intro\n") + pf::table_begin + "| new |\n" + pf::table_end + "outro\n");
   EXPECT_THROW((void)pf::table_in("intro\n"), std::runtime_error);
   EXPECT_THROW((void)pf::table_in(std::string(pf::table_begin) + "no end\n"), std::runtime_error);
 }

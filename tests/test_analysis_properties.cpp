@@ -165,8 +165,8 @@ TEST(measure_continuity, catmull_rom_is_c1_with_the_closed_form_second_derivativ
   auto jump = [&](std::size_t i) { return (2.0 * (d[i + 1] - d[i - 1]) - d[i + 2] + d[i - 2]).norm(); };
   for (std::size_t i = 2; i + 2 < d.size(); ++i) {
     EXPECT_EQ(r.knots[i - 1].order, 1) << i;
-    EXPECT_NEAR(static_cast<double>(r.knots[i - 1].relative_jump[2] / r.knots[1].relative_jump[2]),
-                jump(i) / jump(2), tol_jump_ratio)
+    EXPECT_NEAR(static_cast<double>(r.knots[i - 1].relative_jump[2] / r.knots[1].relative_jump[2]), jump(i) / jump(2),
+                tol_jump_ratio)
         << i;
   }
 }

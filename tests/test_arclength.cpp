@@ -59,14 +59,17 @@ poly2<Real> smooth_cubic() {
 template <class Real>
 poly2<Real> cusp_cubic(double eps) {
   const Real e(eps);
-  return {Real(0), Real(2),
+  return {Real(0),
+          Real(2),
           {pt2<Real>(Real(0.5625) - Real(0.75) * e, Real(-0.421875)), pt2<Real>(e - Real(1.5), Real(1.6875)),
            pt2<Real>(1, Real(-2.25)), pt2<Real>(0, 1)}};
 }
 // A line along (3, 4)/5 with x(u) = u + u^3: non-uniform speed.
 template <class Real>
 poly2<Real> straight_line() {
-  return {Real(0), Real(1), {pt2<Real>(1, 1), pt2<Real>(Real(0.6), Real(0.8)), pt2<Real>(0, 0), pt2<Real>(Real(0.6), Real(0.8))}};
+  return {Real(0),
+          Real(1),
+          {pt2<Real>(1, 1), pt2<Real>(Real(0.6), Real(0.8)), pt2<Real>(0, 0), pt2<Real>(Real(0.6), Real(0.8))}};
 }
 // Three segments, the middle one of zero length (constant), C0.
 template <class Real>
@@ -161,8 +164,8 @@ void check_suite_curve(const char* name, const C& c, const C50& c50) {
       // The 200-segment spline's power-form evaluation may round by ~100 eps of L (its rounding_bound,
       // the coefficients' sizes times the Horner and t roundings), which with the panels' own floor
       // passes the default 128 eps: its status is then rounding_limited, and its value still as close.
-      EXPECT_TRUE(m.r.converged() || (std::string(name) == "200-segment spline" &&
-                                      m.r.status == al::result_status::rounding_limited))
+      EXPECT_TRUE(m.r.converged() ||
+                  (std::string(name) == "200-segment spline" && m.r.status == al::result_status::rounding_limited))
           << al::to_string(m.r.status);
       EXPECT_TRUE(cbt::within_ulps(m.r.value, length, adaptive_eps));
     }
@@ -324,7 +327,8 @@ TEST(arclength, speed_minimum_screen_uses_the_first_panel_and_flags_low_minima) 
 
 TEST(arclength, parent_false_positive_and_its_guards) {
   // S-curve (u, u^3 - u) on [-1, 1]: P(-1), P(0), P(1) are collinear and evenly spaced on the x axis.
-  const poly2<double> s_curve(-1.0, 1.0, {pt2<double>(-1, 0), pt2<double>(1, 2), pt2<double>(0, -3), pt2<double>(0, 1)});
+  const poly2<double> s_curve(-1.0, 1.0,
+                              {pt2<double>(-1, 0), pt2<double>(1, 2), pt2<double>(0, -3), pt2<double>(0, 1)});
   // (local t = u + 1: u^3 - u = t^3 - 3t^2 + 2t)
   ASSERT_EQ(s_curve(0.0), pt2<double>(0, 0));
   const poly2<R> s50(R(-1), R(1), {pt2<R>(-1, 0), pt2<R>(1, 2), pt2<R>(0, -3), pt2<R>(0, 1)});
@@ -335,8 +339,8 @@ TEST(arclength, parent_false_positive_and_its_guards) {
   naive.min_depth = 0;
   naive.look_ahead = false;
   const auto fooled = al::subdivision_length(s_curve, naive);
-  EXPECT_EQ(fooled.value, 2.0);          // the chord of the whole interval: the test passed wrongly
-  EXPECT_EQ(fooled.evaluations, 3u);     // ends and middle only
+  EXPECT_EQ(fooled.value, 2.0);                 // the chord of the whole interval: the test passed wrongly
+  EXPECT_EQ(fooled.evaluations, 3u);            // ends and middle only
   EXPECT_GT(length - R(fooled.value), R(0.5));  // true length ~2.62
   al::subdivision_options<double> guarded = naive;
   guarded.min_depth = 2;  // Parent's remedy: force a few levels
@@ -355,8 +359,8 @@ TEST(arclength, subdivision_default_tolerance_is_relative_to_the_size) {
   const auto c = smooth_cubic<double>();
   const double k = std::ldexp(1.0, 33);
   auto scaled = [](double f) {
-    return poly2<double>(0.0, 1.0, {pt2<double>(0, 0) * f, pt2<double>(1, 2) * f, pt2<double>(3, -1) * f,
-                                    pt2<double>(-2, 0.5) * f});
+    return poly2<double>(
+        0.0, 1.0, {pt2<double>(0, 0) * f, pt2<double>(1, 2) * f, pt2<double>(3, -1) * f, pt2<double>(-2, 0.5) * f});
   };
   const R length = reference_length(smooth_cubic<R>());
   const auto one = al::subdivision_length(c, {});

@@ -15,8 +15,8 @@
 #include "curvebench/curves/bezier.hpp"
 #include "curvebench/curves/cardinal_spline.hpp"
 #include "curvebench/curves/lagrange.hpp"
-#include "curvebench/reference/convert.hpp"
 #include "curvebench/reference/arc_length.hpp"
+#include "curvebench/reference/convert.hpp"
 
 #include <gtest/gtest.h>
 
@@ -388,7 +388,8 @@ TEST(arclength_honesty, chord_tables_trust_their_estimate_only_at_an_observed_or
     const al::forward_difference_table<double> t(smooth, n);
     EXPECT_EQ(t.length().status, al::result_status::converged) << "N=" << n;
     EXPECT_LE(smooth_length - R(t.length().value), R(t.length().error_estimate)) << "N=" << n;
-    EXPECT_LE(abs(smooth_length - R(t.richardson_length().value)), R(t.richardson_length().error_estimate)) << "N=" << n;
+    EXPECT_LE(abs(smooth_length - R(t.richardson_length().value)), R(t.richardson_length().error_estimate))
+        << "N=" << n;
   }
 }
 

@@ -271,8 +271,8 @@ TYPED_TEST(basis_matrices_test, geometry_conversion_keeps_the_curve) {
         const Eigen::Matrix<cb::real50, 1, 2> r = cbb::power_row(cb::real50(k) / 8) * a50;
         for (int d = 0; d < 2; ++d)
           EXPECT_TRUE(cbt::within_scaled_ulps(p(d), r(d), cb::real50(4), convert_ulps))
-              << names[static_cast<std::size_t>(from)] << " -> " << names[static_cast<std::size_t>(to)] << " at "
-              << k << "/8";
+              << names[static_cast<std::size_t>(from)] << " -> " << names[static_cast<std::size_t>(to)] << " at " << k
+              << "/8";
       }
     }
   // bezier_to_hermite is the Bezier -> Hermite conversion.
@@ -280,8 +280,8 @@ TYPED_TEST(basis_matrices_test, geometry_conversion_keeps_the_curve) {
   EXPECT_TRUE(matrix_within<Real>(
       cbb::geometry_conversion<Real>(cbb::bezier_matrix<Real>(), cbb::hermite_matrix<Real>()), b2h50, blend_ulps));
   EXPECT_TRUE(matrix_within<cb::real50>(
-      cbb::geometry_conversion<cb::real50>(cbb::bezier_matrix<cb::real50>(), cbb::hermite_matrix<cb::real50>()),
-      b2h50, blend_ulps));
+      cbb::geometry_conversion<cb::real50>(cbb::bezier_matrix<cb::real50>(), cbb::hermite_matrix<cb::real50>()), b2h50,
+      blend_ulps));
 }
 
 TEST(basis_matrices, singular_target_basis_throws) {
@@ -293,7 +293,8 @@ TEST(basis_matrices, singular_target_basis_throws) {
     EXPECT_STREQ(e.what(), "to: basis matrix is singular (rank 2 of 4); geometry cannot be expressed in it");
   }
   // Converting FROM a singular basis is fine (it is just a curve family with fewer curves).
-  EXPECT_NO_THROW((void)cbb::geometry_conversion<double>(cbb::cardinal_matrix<double>(0.0), cbb::bezier_matrix<double>()));
+  EXPECT_NO_THROW(
+      (void)cbb::geometry_conversion<double>(cbb::cardinal_matrix<double>(0.0), cbb::bezier_matrix<double>()));
   try {
     (void)cbb::cardinal_matrix<double>(std::numeric_limits<double>::quiet_NaN());
     FAIL() << "expected invalid_input";

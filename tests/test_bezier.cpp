@@ -114,7 +114,8 @@ Real spread(const cb::interval<Real>& d, int k, int count) {
 // Max error of each algorithm over `count` parameters, in eps(Real) units of the control-point
 // scale, against the real50 de Casteljau of the same (exactly converted) points.
 template <class Real, int Dim, std::size_t N>
-std::array<double, N> max_value_errors(const cb::bezier<Real, Dim>& c, const std::array<alg, N>& algorithms, int count) {
+std::array<double, N> max_value_errors(const cb::bezier<Real, Dim>& c, const std::array<alg, N>& algorithms,
+                                       int count) {
   const auto ref = reference_of(c);
   const cb::real50 scale = max_abs<Real, Dim>(c.control_points());
   std::array<double, N> worst{};
@@ -132,7 +133,8 @@ std::array<double, N> max_value_errors(const cb::bezier<Real, Dim>& c, const std
 
 // 2D convex hull (Andrew's monotone chain) of exact real50 points, counter-clockwise.
 std::vector<cb::point<cb::real50, 2>> convex_hull(std::vector<cb::point<cb::real50, 2>> p) {
-  std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); });
+  std::sort(p.begin(), p.end(),
+            [](const auto& a, const auto& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); });
   const auto cross = [](const auto& o, const auto& a, const auto& b) {
     return cb::real50((a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]));
   };
@@ -283,8 +285,8 @@ TYPED_TEST(bezier_test, hodograph_is_the_first_derivative_curve) {
     // and it evaluates to the second-order data of the curve: h' = c''.
     for (int s = 0; s <= 8; ++s) {
       const Real u = Real(s) / Real(2);
-      EXPECT_TRUE(cbt::point_within(h.derivative(u, 1), cb::point_cast<cb::real50>(c.derivative(u, 2)),
-                                    scale * L, stable(L)));
+      EXPECT_TRUE(
+          cbt::point_within(h.derivative(u, 1), cb::point_cast<cb::real50>(c.derivative(u, 2)), scale * L, stable(L)));
     }
   }
 }
@@ -305,8 +307,8 @@ TYPED_TEST(bezier_test, endpoints_interpolate) {
     }
     // Horner gives a_0 = P_0 exactly at t = 0; at t = 1 it sums the rounded coefficients.
     EXPECT_EQ(c.evaluate(Real(-1), alg::horner), p.front());
-    EXPECT_TRUE(cbt::point_within(c.evaluate(Real(2), alg::horner), to50<Real, 3>(p).back(), max_abs<Real, 3>(p),
-                                  horner(L)));
+    EXPECT_TRUE(
+        cbt::point_within(c.evaluate(Real(2), alg::horner), to50<Real, 3>(p).back(), max_abs<Real, 3>(p), horner(L)));
   }
 }
 
@@ -342,8 +344,7 @@ TYPED_TEST(bezier_test, affine_invariance) {
       const cb::point<Real, 2> x = cp.evaluate(u, a);
       const cb::point<Real, 2> tx = m * x + b;
       const cb::point<Real, 2> y = cq.evaluate(u, a);
-      ASSERT_TRUE(cbt::point_within(y, cb::point_cast<cb::real50>(tx), cb::real50(6),
-                                    2 * stable(L) + 3))
+      ASSERT_TRUE(cbt::point_within(y, cb::point_cast<cb::real50>(tx), cb::real50(6), 2 * stable(L) + 3))
           << cb::to_string(a);
     }
 }
@@ -435,8 +436,8 @@ TYPED_TEST(bezier_test, linear_precision_and_reversal) {
   for (int s = 0; s <= 64; ++s) {
     const Real t = Real(s) / Real(64);
     EXPECT_EQ(cq(t), cr(Real(1) - t));
-    EXPECT_TRUE(cbt::point_within(cr.evaluate(Real(1) - t, alg::bernstein_sum),
-                                  cb::point_cast<cb::real50>(cq(t)), cb::real50(1), 2 * stable(9)));
+    EXPECT_TRUE(cbt::point_within(cr.evaluate(Real(1) - t, alg::bernstein_sum), cb::point_cast<cb::real50>(cq(t)),
+                                  cb::real50(1), 2 * stable(9)));
   }
 }
 
@@ -524,16 +525,21 @@ TEST(bezier_bad_input, messages_name_argument_index_and_value) {
                     cb::point_list<double, 2>{P(0, 0), P(1, 1), P(2, std::numeric_limits<double>::quiet_NaN())});
               }),
               HasSubstr("control_points[2][1] = nan: coordinates must be finite"));
-  EXPECT_THAT(message_of([] {
-                cb::bezier<double, 2> c(cb::point_list<double, 2>{P(std::numeric_limits<double>::infinity(), 0), P(1, 1)});
-              }),
-              HasSubstr("control_points[0][0] = inf: coordinates must be finite"));
+  EXPECT_THAT(
+      message_of([] {
+        cb::bezier<double, 2> c(cb::point_list<double, 2>{P(std::numeric_limits<double>::infinity(), 0), P(1, 1)});
+      }),
+      HasSubstr("control_points[0][0] = inf: coordinates must be finite"));
   EXPECT_THAT(message_of([] { cb::bezier<double, 2> c(cb::point_list<double, 2>(62, P(0, 0))); }),
               HasSubstr("control_points: 62 given, at most 61 allowed (degree <= 60)"));
   const cb::point_list<double, 2> two{P(0, 0), P(1, 1)};
-  EXPECT_THAT(message_of([&] { cb::bezier<double, 2> c(two, {1.0, 1.0}); }),
+  EXPECT_THAT(message_of([&] {
+                cb::bezier<double, 2> c(two, {1.0, 1.0});
+              }),
               HasSubstr("domain = [1, 1]: must have lo < hi"));
-  EXPECT_THAT(message_of([&] { cb::bezier<double, 2> c(two, {std::numeric_limits<double>::quiet_NaN(), 1.0}); }),
+  EXPECT_THAT(message_of([&] {
+                cb::bezier<double, 2> c(two, {std::numeric_limits<double>::quiet_NaN(), 1.0});
+              }),
               HasSubstr("domain.lo = nan: must be finite"));
   const cb::bezier<double, 2> c(two);
   EXPECT_THAT(message_of([&] { (void)c.derivative(0.5, -1); }), HasSubstr("order = -1: derivative order must be >= 0"));

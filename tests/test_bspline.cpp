@@ -101,7 +101,8 @@ TYPED_TEST(bspline_typed, marsden_polynomial_reproduction_values_and_derivatives
     const cb::bspline<Real, 2> c(m, cast_all<Real>(td), ctrl);
     const auto dom = c.domain();
     for (int s = 0; s <= 64; ++s) {
-      const double ud = static_cast<double>(dom.lo) + (static_cast<double>(dom.hi) - static_cast<double>(dom.lo)) * s / 64.0;
+      const double ud =
+          static_cast<double>(dom.lo) + (static_cast<double>(dom.hi) - static_cast<double>(dom.lo)) * s / 64.0;
       const Real u = static_cast<Real>(ud);
       const cb::real50 u50(u);
       for (int r = 0; r <= m; ++r) {
@@ -180,7 +181,8 @@ TYPED_TEST(bspline_typed, uniform_cubic_matches_basis_matrix) {
     for (int s = 0; s < 8; ++s) {
       const cb::real50 t50 = cb::real50(s) / 8;
       Eigen::Matrix<cb::real50, 4, 2> g;
-      for (int r = 0; r < 4; ++r) g.row(r) = cb::point_cast<cb::real50>(p[k - 3 + static_cast<std::size_t>(r)]).transpose();
+      for (int r = 0; r < 4; ++r)
+        g.row(r) = cb::point_cast<cb::real50>(p[k - 3 + static_cast<std::size_t>(r)]).transpose();
       for (int order = 0; order <= 3; ++order) {
         const Eigen::Matrix<cb::real50, 1, 2> ref = cb::basis::power_row(t50, order) * m50 * g;
         const auto got = c.derivative(Real(static_cast<long long>(k)) + Real(s) / Real(8), order);
@@ -261,7 +263,8 @@ TYPED_TEST(bspline_typed, knot_insertion_and_derivative_curve) {
     std::vector<double> td = mixed_knots(m, n);
     cb::point_list<Real, 2> p;
     for (std::size_t i = 0; i < n; ++i)
-      p.emplace_back(Real(static_cast<long long>((i * 7) % 5)) / Real(4), Real(static_cast<long long>((i * 3) % 4)) / Real(2));
+      p.emplace_back(Real(static_cast<long long>((i * 7) % 5)) / Real(4),
+                     Real(static_cast<long long>((i * 3) % 4)) / Real(2));
     const cb::bspline<Real, 2> c(m, cast_all<Real>(td), p);
     const auto dom = c.domain();
     std::vector<Real> inserts{dom.lo, dom.lo + (dom.hi - dom.lo) / Real(3), dom.hi};
@@ -311,7 +314,10 @@ TYPED_TEST(bspline_typed, knot_insertion_and_derivative_curve) {
 // (m-1)-th derivative generally does not (a uniform cubic is C2, not C3).
 TYPED_TEST(bspline_typed, periodic_seam_is_smooth) {
   using Real = TypeParam;
-  cb::point_list<Real, 2> loop{{Real(1), Real(0)}, {Real(0), Real(1)}, {Real(-1), Real(0)}, {Real(0), Real(-1)},
+  cb::point_list<Real, 2> loop{{Real(1), Real(0)},
+                               {Real(0), Real(1)},
+                               {Real(-1), Real(0)},
+                               {Real(0), Real(-1)},
                                {Real(1) / Real(2), Real(-1) / Real(2)}};
   const std::vector<Real> breaks{Real(0), Real(0.5), Real(1.25), Real(2), Real(2.5), Real(3.5)};
   for (int m = 2; m <= 6; ++m) {
@@ -350,7 +356,8 @@ TYPED_TEST(bspline_typed, cubic_converts_to_piecewise_cubic) {
                                       cb::real50(1), 4 * derivative_ulps(4, r, 0.25)))
             << "s=" << s << " r=" << r << " alg=" << cb::to_string(alg);
   }
-  const cb::bspline<Real, 2> quad(3, cb::bspline_uniform_knots<Real>(4, 3), cb::point_list<Real, 2>(4, cb::zero_point<Real, 2>()));
+  const cb::bspline<Real, 2> quad(3, cb::bspline_uniform_knots<Real>(4, 3),
+                                  cb::point_list<Real, 2>(4, cb::zero_point<Real, 2>()));
   EXPECT_THROW((void)quad.to_piecewise_cubic(), cb::invalid_input);
 }
 
@@ -381,28 +388,45 @@ TEST(bspline_bad_input, messages) {
     }
     return "no exception";
   };
-  EXPECT_EQ(message([&] { cb::bspline<double, 2>(0, {0, 1, 2, 3}, p4); }), "order = 0: must be in [1, 16] (degree + 1)");
+  EXPECT_EQ(message([&] {
+              cb::bspline<double, 2>(0, {0, 1, 2, 3}, p4);
+            }),
+            "order = 0: must be in [1, 16] (degree + 1)");
   EXPECT_EQ(message([&] { cb::bspline<double, 2>(17, std::vector<double>(21, 0.0), p4); }),
             "order = 17: must be in [1, 16] (degree + 1)");
-  EXPECT_EQ(message([&] { cb::bspline<double, 2>(5, {0, 1, 2, 3, 4, 5, 6, 7, 8}, p4); }),
+  EXPECT_EQ(message([&] {
+              cb::bspline<double, 2>(5, {0, 1, 2, 3, 4, 5, 6, 7, 8}, p4);
+            }),
             "control_points: 4 given, at least 5 required (order 5 needs at least order points)");
-  EXPECT_EQ(message([&] { cb::bspline<double, 2>(3, {0, 1, 2, 3, 4, 5}, p4); }),
+  EXPECT_EQ(message([&] {
+              cb::bspline<double, 2>(3, {0, 1, 2, 3, 4, 5}, p4);
+            }),
             "knots: 6 given, must be control_points + order = 4 + 3 = 7");
-  EXPECT_EQ(message([&] { cb::bspline<double, 2>(3, {0, 1, 2, 3.5, 3, 5, 6}, p4); }),
+  EXPECT_EQ(message([&] {
+              cb::bspline<double, 2>(3, {0, 1, 2, 3.5, 3, 5, 6}, p4);
+            }),
             "knots must be non-decreasing: knots[4] = 3 < knots[3] = 3.5");
   EXPECT_EQ(message([&] {
               cb::bspline<double, 2>(3, {0, 1, 2, std::numeric_limits<double>::quiet_NaN(), 4, 5, 6}, p4);
             }),
             "knots[3] = nan: must be finite");
-  EXPECT_EQ(message([&] { cb::bspline<double, 2>(2, {0, 1, 1, 1, 2, 3}, p4); }),
+  EXPECT_EQ(message([&] {
+              cb::bspline<double, 2>(2, {0, 1, 1, 1, 2, 3}, p4);
+            }),
             "knots[1..3] = 1: multiplicity 3 exceeds order = 2");
-  EXPECT_EQ(message([&] { cb::bspline<double, 2>(2, {0, 1, 1, 1, 1, 3}, p4); }),
+  EXPECT_EQ(message([&] {
+              cb::bspline<double, 2>(2, {0, 1, 1, 1, 1, 3}, p4);
+            }),
             "knots[1..4] = 1: multiplicity 4 exceeds order = 2");
-  EXPECT_EQ(message([&] { cb::bspline<double, 2>(3, {0, 0, 0, 0, 1, 1, 1}, p4); }),
+  EXPECT_EQ(message([&] {
+              cb::bspline<double, 2>(3, {0, 0, 0, 0, 1, 1, 1}, p4);
+            }),
             "knots[0..3] = 0: multiplicity 4 exceeds order = 3");
   cb::point_list<double, 2> bad = p4;
   bad[2][1] = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(message([&] { cb::bspline<double, 2>(2, {0, 1, 2, 3, 4, 5}, bad); }),
+  EXPECT_EQ(message([&] {
+              cb::bspline<double, 2>(2, {0, 1, 2, 3, 4, 5}, bad);
+            }),
             "control_points[2][1] = inf: coordinates must be finite");
   EXPECT_EQ(message([&] { (void)cb::bspline_uniform_knots<double>(3, 4); }),
             "count: 3 given, at least 4 required (a B-spline needs at least order points)");
@@ -410,7 +434,9 @@ TEST(bspline_bad_input, messages) {
   EXPECT_EQ(message([&] { (void)cb::bspline_clamped_knots<double>(std::span<const double>(dec), 3); }),
             "breaks must be increasing: breaks[2] = 1 <= breaks[1] = 2");
   // Empty domain: order 2, 2 points, knots 0 1 1 2 -> [knots[1], knots[2]] = [1, 1].
-  EXPECT_EQ(message([&] { cb::bspline<double, 2>(2, {0, 1, 1, 2}, cb::point_list<double, 2>(2, {0, 0})); }),
+  EXPECT_EQ(message([&] {
+              cb::bspline<double, 2>(2, {0, 1, 1, 2}, cb::point_list<double, 2>(2, {0, 0}));
+            }),
             "knots: domain [knots[1], knots[2]] = [1, 1] is empty; knots[1] < knots[2] required");
   // Evaluation outside the domain is a domain_error, a negative order invalid_input.
   const cb::bspline<double, 2> c(2, {0, 1, 2, 3, 4, 5}, p4);

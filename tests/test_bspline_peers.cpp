@@ -5,8 +5,8 @@
 
 #include "curvebench/curves/bspline.hpp"
 
-#include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <Eigen/Dense>
+#include <boost/math/interpolators/cardinal_cubic_b_spline.hpp>
 #include <unsupported/Eigen/Splines>
 
 #include <cmath>
@@ -185,11 +185,12 @@ TEST(bspline_peers, boost_cardinal_cubic_b_spline) {
       ASSERT_TRUE(cbt::within_scaled_ulps(ours.derivative(u, r)[0], want, cb::real50(ymax), boost_ulps(r, h)))
           << "ours, u=" << u << " r=" << r;
       worst[0][r] = std::max(worst[0][r], static_cast<double>(cbt::scaled_ulps(theirs[r], want, cb::real50(ymax))));
-      worst[1][r] =
-          std::max(worst[1][r], static_cast<double>(cbt::scaled_ulps(ours.derivative(u, r)[0], want, cb::real50(ymax))));
+      worst[1][r] = std::max(worst[1][r],
+                             static_cast<double>(cbt::scaled_ulps(ours.derivative(u, r)[0], want, cb::real50(ymax))));
     }
   }
-  std::cout << "[ measured ] vs the 50-digit cardinal cubic B-spline (eps * max|f|), value / first / second derivative: "
-            << "Boost " << worst[0][0] << " / " << worst[0][1] << " / " << worst[0][2] << ", curvebench " << worst[1][0]
-            << " / " << worst[1][1] << " / " << worst[1][2] << "\n";
+  std::cout
+      << "[ measured ] vs the 50-digit cardinal cubic B-spline (eps * max|f|), value / first / second derivative: "
+      << "Boost " << worst[0][0] << " / " << worst[0][1] << " / " << worst[0][2] << ", curvebench " << worst[1][0]
+      << " / " << worst[1][1] << " / " << worst[1][2] << "\n";
 }

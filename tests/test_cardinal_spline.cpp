@@ -150,8 +150,8 @@ TYPED_TEST(cardinal_test, uniform_knots_match_the_cardinal_basis_matrix_with_pha
         for (int r = 0; r < 4; ++r) g.row(r) = ext[i + static_cast<std::size_t>(r)].transpose();
         const Eigen::Matrix<cb::real50, 1, 2> ref = cb::basis::power_row(t) * m * g;
         if (k == 8 && i + 1 < n) continue;  // u = i + 1 belongs to the next segment
-        ASSERT_TRUE(cbt::point_within(c(Real(static_cast<double>(i) + k / 8.0)), cb::point<cb::real50, 2>(ref.transpose()),
-                                      cb::real50(4), value_ulps))
+        ASSERT_TRUE(cbt::point_within(c(Real(static_cast<double>(i) + k / 8.0)),
+                                      cb::point<cb::real50, 2>(ref.transpose()), cb::real50(4), value_ulps))
             << "s=" << sd << " segment " << i << " t=" << k;
       }
   }
@@ -263,22 +263,33 @@ TEST(cardinal, bad_input_names_what_and_where) {
   cb::cardinal_spline<double, 2>::options centripetal;
   centripetal.alpha = 0.5;
   const cb::point_list<double, 2> rep{P(0, 0), P(1, 1), P(1, 1), P(2, 0)};
-  EXPECT_THAT(msg([&] { cb::cardinal_spline<double, 2> c(rep, centripetal); }),
-              HasSubstr("points[2] repeats points[1]: a zero chord gives a zero knot interval |dP|^alpha with alpha = 0.5"));
+  EXPECT_THAT(
+      msg([&] { cb::cardinal_spline<double, 2> c(rep, centripetal); }),
+      HasSubstr("points[2] repeats points[1]: a zero chord gives a zero knot interval |dP|^alpha with alpha = 0.5"));
   EXPECT_NO_THROW((cb::cardinal_spline<double, 2>(rep)));  // alpha = 0: repeated points are fine
   cb::cardinal_spline<double, 2>::options bad_alpha;
   bad_alpha.alpha = 1.5;
-  EXPECT_THAT(msg([&] { cb::cardinal_spline<double, 2> c(rep, bad_alpha); }), HasSubstr("alpha = 1.5: must be in [0, 1]"));
-  EXPECT_THAT(msg([&] { cb::cardinal_spline<double, 2> c({P(0, 0)}); }), HasSubstr("points: 1 given, at least 2 required"));
+  EXPECT_THAT(msg([&] { cb::cardinal_spline<double, 2> c(rep, bad_alpha); }),
+              HasSubstr("alpha = 1.5: must be in [0, 1]"));
+  EXPECT_THAT(msg([&] { cb::cardinal_spline<double, 2> c({P(0, 0)}); }),
+              HasSubstr("points: 1 given, at least 2 required"));
   cb::cardinal_spline<double, 2>::options closed;
   closed.end = cb::cardinal_end::closed;
-  EXPECT_THAT(msg([&] { cb::cardinal_spline<double, 2> c({P(0, 0), P(1, 0)}, closed); }),
+  EXPECT_THAT(msg([&] {
+                cb::cardinal_spline<double, 2> c({P(0, 0), P(1, 0)}, closed);
+              }),
               HasSubstr("points: 2 given, at least 3 required"));
-  EXPECT_THAT(msg([&] { cb::cardinal_spline<double, 2> c({0.0, 1.0, 2.0, 3.0}, rep, closed); }),
+  EXPECT_THAT(msg([&] {
+                cb::cardinal_spline<double, 2> c({0.0, 1.0, 2.0, 3.0}, rep, closed);
+              }),
               HasSubstr("knots: 4 given, must match points + 1 (closed loop): 5"));
-  EXPECT_THAT(msg([&] { cb::cardinal_spline<double, 2> c({0.0, 1.0, 2.0, 3.0}, rep, centripetal); }),
+  EXPECT_THAT(msg([&] {
+                cb::cardinal_spline<double, 2> c({0.0, 1.0, 2.0, 3.0}, rep, centripetal);
+              }),
               HasSubstr("alpha = 0.5: must be 0 when knots are given"));
-  EXPECT_THAT(msg([&] { cb::cardinal_spline<double, 2> c({0.0, 1.0, 1.0, 3.0}, rep, {}); }),
+  EXPECT_THAT(msg([&] {
+                cb::cardinal_spline<double, 2> c({0.0, 1.0, 1.0, 3.0}, rep, {});
+              }),
               HasSubstr("knots must be increasing: knots[2] = 1 <= knots[1] = 1"));
   auto nan = rep;
   nan[3][0] = std::nan("");
@@ -293,11 +304,10 @@ TEST(cardinal, bad_input_names_what_and_where) {
 namespace {
 
 // Eight points in 2D and 3D with a mix of chord lengths (so alpha matters), exact in float.
-const std::vector<std::array<double, 2>> pd8{{0.0, 0.0},  {1.0, 2.0},  {3.0, 2.5},   {3.5, 0.5},
+const std::vector<std::array<double, 2>> pd8{{0.0, 0.0},  {1.0, 2.0},  {3.0, 2.5},  {3.5, 0.5},
                                              {2.0, -1.0}, {4.0, -2.0}, {5.5, 0.25}, {7.0, 1.0}};
-const std::vector<std::array<double, 3>> pd8_3d{{0.0, 0.0, 0.0},   {1.0, 2.0, 0.5},  {2.5, 1.5, 2.0},
-                                                {3.0, -0.5, 1.25}, {4.5, 0.0, -1.0}, {5.0, 2.0, 0.0},
-                                                {6.25, 1.0, 1.5},  {8.0, 0.5, 0.75}};
+const std::vector<std::array<double, 3>> pd8_3d{{0.0, 0.0, 0.0},  {1.0, 2.0, 0.5}, {2.5, 1.5, 2.0},  {3.0, -0.5, 1.25},
+                                                {4.5, 0.0, -1.0}, {5.0, 2.0, 0.0}, {6.25, 1.0, 1.5}, {8.0, 0.5, 0.75}};
 
 template <int Dim>
 struct value_and_slope {
@@ -429,8 +439,8 @@ TYPED_TEST(cardinal_test, control_point_ends_on_uniform_knots_are_given_tangents
   for (int j = 0; j <= 40; ++j) {
     const Real v = Real(static_cast<double>(n - 3) * j / 40.0);
     for (int order = 0; order <= 1; ++order)
-      ASSERT_TRUE(cbt::point_within(c.derivative(v + Real(1), order), cb::point_cast<cb::real50>(g.derivative(v, order)),
-                                    cb::real50(8), 8))
+      ASSERT_TRUE(cbt::point_within(c.derivative(v + Real(1), order),
+                                    cb::point_cast<cb::real50>(g.derivative(v, order)), cb::real50(8), 8))
           << "v = " << v << " order " << order;
   }
 }
@@ -495,8 +505,8 @@ TEST(cardinal, control_point_ends_end_points_only_shape_the_end_segments) {
   const auto cb_ = c.breakpoints();
   for (int j = 0; j <= 64; ++j) {
     const double u = cb_[1] + (cb_.back() - cb_[1]) * j / 64.0;
-    EXPECT_TRUE(cbt::point_within(d(std::min(u + shift, d.domain().hi)), cb::point_cast<cb::real50>(c(u)),
-                                  cb::real50(8), 16))
+    EXPECT_TRUE(
+        cbt::point_within(d(std::min(u + shift, d.domain().hi)), cb::point_cast<cb::real50>(c(u)), cb::real50(8), 16))
         << u;
   }
   EXPECT_NE(d(d.breakpoints()[0] + 0.5 * (d.breakpoints()[1] - d.breakpoints()[0])),
@@ -510,7 +520,9 @@ TEST(cardinal, control_point_ends_need_four_points) {
   const cb::point_list<double, 2> three{P(0, 0), P(1, 1), P(2, 0)};
   const std::string expected = "points: 3 given, at least 4 required (end = control_points";
   EXPECT_THAT(cbt::message_of([&] { cb::cardinal_spline<double, 2> c(three, opt); }), HasSubstr(expected));
-  EXPECT_THAT(cbt::message_of([&] { cb::cardinal_spline<double, 2> c({0.0, 1.0, 2.0}, three, opt); }),
+  EXPECT_THAT(cbt::message_of([&] {
+                cb::cardinal_spline<double, 2> c({0.0, 1.0, 2.0}, three, opt);
+              }),
               HasSubstr(expected));
   opt.alpha = 0.5;
   EXPECT_THAT(cbt::message_of([&] { cb::cardinal_spline<double, 2> c(three, opt); }), HasSubstr(expected));
@@ -519,14 +531,17 @@ TEST(cardinal, control_point_ends_need_four_points) {
   EXPECT_EQ(one.engine().segment_count(), 1u);
   EXPECT_EQ(one(one.domain().lo), P(1, 1));
   // A repeated point still gives a zero knot interval with alpha > 0, whichever segment it is in.
-  EXPECT_THAT(cbt::message_of([&] { cb::cardinal_spline<double, 2> c({P(0, 0), P(0, 0), P(2, 0), P(3, 1)}, opt); }),
+  EXPECT_THAT(cbt::message_of([&] {
+                cb::cardinal_spline<double, 2> c({P(0, 0), P(0, 0), P(2, 0), P(3, 1)}, opt);
+              }),
               HasSubstr("points[1] repeats points[0]: a zero chord gives a zero knot interval"));
   EXPECT_STREQ(cb::to_string(cb::cardinal_end::control_points), "control_points");
   // Keyframe tracks pass through every key: the end mode that skips the first and last is refused.
-  const std::vector<cb::motion::key<double, 1>> keys{{0, cb::point<double, 1>(1.0)}, {10, cb::point<double, 1>(2.0)},
-                                                     {20, cb::point<double, 1>(0.0)}, {30, cb::point<double, 1>(1.0)}};
-  EXPECT_THAT(cbt::message_of([&] {
-                (void)cb::motion::catmull_rom_track<double, 1>(keys, cb::cardinal_end::control_points);
-              }),
-              HasSubstr("ends = control_points: a keyframe track passes through every key"));
+  const std::vector<cb::motion::key<double, 1>> keys{{0, cb::point<double, 1>(1.0)},
+                                                     {10, cb::point<double, 1>(2.0)},
+                                                     {20, cb::point<double, 1>(0.0)},
+                                                     {30, cb::point<double, 1>(1.0)}};
+  EXPECT_THAT(
+      cbt::message_of([&] { (void)cb::motion::catmull_rom_track<double, 1>(keys, cb::cardinal_end::control_points); }),
+      HasSubstr("ends = control_points: a keyframe track passes through every key"));
 }

@@ -289,9 +289,8 @@ TYPED_TEST(channel_test, linear_constant_and_step_next) {
 TYPED_TEST(channel_test, segment_at_is_the_segment_holding_t) {
   using Real = TypeParam;
   using I = ch::interpolation;
-  const ch::channel<Real> c(keys_of<Real>({{0, 1, 0, 0, 0, 0, I::linear},
-                                           {2, -3, 0, 0, 0, 0, I::constant},
-                                           {3, 5, 0, 0, 0, 0, I::linear}}));
+  const ch::channel<Real> c(
+      keys_of<Real>({{0, 1, 0, 0, 0, 0, I::linear}, {2, -3, 0, 0, 0, 0, I::constant}, {3, 5, 0, 0, 0, 0, I::linear}}));
   EXPECT_EQ(c.segment_at(Real(0)), 0u);
   EXPECT_EQ(c.segment_at(boost::math::float_prior(Real(2))), 0u);
   EXPECT_EQ(c.segment_at(Real(2)), 1u);
@@ -684,12 +683,17 @@ TEST(channel, keys_far_from_time_zero_keep_their_digits) {
       const double a = i % 2 == 0 ? 0.25 : 0.45, c = i % 2 == 0 ? 0.45 : 0.25;
       keys.push_back({start + i, v, {-c, -0.3 * c}, {a, 0.7 * a}, ch::interpolation::bezier});
     }
-    const ch::channel<double> d(keys, ch::extrapolation::constant, ch::extrapolation::constant, ch::time_solver::curvebench);
+    const ch::channel<double> d(keys, ch::extrapolation::constant, ch::extrapolation::constant,
+                                ch::time_solver::curvebench);
     std::vector<ch::key<real50>> k50;
     for (const auto& k : keys)
-      k50.push_back({real50(k.time), real50(k.value), {real50(k.in.dt), real50(k.in.dv)},
-                     {real50(k.out.dt), real50(k.out.dv)}, k.interp});
-    const ch::channel<real50> exact(k50, ch::extrapolation::constant, ch::extrapolation::constant, ch::time_solver::exact);
+      k50.push_back({real50(k.time),
+                     real50(k.value),
+                     {real50(k.in.dt), real50(k.in.dv)},
+                     {real50(k.out.dt), real50(k.out.dv)},
+                     k.interp});
+    const ch::channel<real50> exact(k50, ch::extrapolation::constant, ch::extrapolation::constant,
+                                    ch::time_solver::exact);
     double lo = 1e300, hi = -1e300, worst = 0;
     std::vector<double> errors;
     for (int j = 0; j <= 2000; ++j) {

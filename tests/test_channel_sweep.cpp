@@ -46,7 +46,8 @@ std::map<std::string, json> channel_records(const json& out) {
   std::map<std::string, json> m;
   for (const auto& r : out["records"]) {
     const std::string q = r["quantity"];
-    if (q.rfind("channel_", 0) == 0) m[q + "/" + r["method"].get<std::string>() + "/" + r["setting"].get<std::string>()] = r;
+    if (q.rfind("channel_", 0) == 0)
+      m[q + "/" + r["method"].get<std::string>() + "/" + r["setting"].get<std::string>()] = r;
   }
   return m;
 }
@@ -78,7 +79,8 @@ TEST(channel_sweep, rotation_cases_are_measured_as_angles) {
     EXPECT_LE(r["norm"].get<double>(), 4.0);  // a unit result: the keys' rounding and the normalization
   }
   EXPECT_EQ(err.size(), 4u);
-  for (const char* k : {"rotation_slerp/bits=64", "rotation_slerp/bits=32", "rotation_nlerp/bits=64", "rotation_nlerp/bits=32"}) {
+  for (const char* k :
+       {"rotation_slerp/bits=64", "rotation_slerp/bits=32", "rotation_nlerp/bits=64", "rotation_nlerp/bits=32"}) {
     ASSERT_EQ(err.count(k), 1u) << k;
     EXPECT_LE(err[k], 16.0) << k;
   }

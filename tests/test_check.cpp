@@ -64,7 +64,8 @@ std::string arch_csv(const std::vector<double>& us, int K) {
   std::ostringstream os;
   os.precision(17);
   os << "u,x,y";
-  for (int k = 1; k <= K; ++k) os << ",d" << (k == 1 ? "" : std::to_string(k)) << "x,d" << (k == 1 ? "" : std::to_string(k)) << "y";
+  for (int k = 1; k <= K; ++k)
+    os << ",d" << (k == 1 ? "" : std::to_string(k)) << "x,d" << (k == 1 ? "" : std::to_string(k)) << "y";
   os << "\n";
   for (double u : us) {
     os << u;
@@ -116,7 +117,8 @@ TEST(csv, names_file_row_column_and_text_of_every_bad_cell) {
   EXPECT_EQ(msg("u,x\ninf,1\n"), "in.csv: row 2, column u: \"inf\" is not a finite number");
   EXPECT_EQ(msg("u,x\n0,\n"), "in.csv: row 2, column x: \"\" is not a finite number");
   EXPECT_EQ(msg("u,x\n0,+-1\n"), "in.csv: row 2, column x: \"+-1\" is not a finite number");
-  EXPECT_THAT(msg("u,x,y\n0,1\n"), HasSubstr("in.csv: row 2, column y: missing value (2 values, but the header names 3"));
+  EXPECT_THAT(msg("u,x,y\n0,1\n"),
+              HasSubstr("in.csv: row 2, column y: missing value (2 values, but the header names 3"));
   EXPECT_THAT(msg("u,x\n0,1,7\n"), HasSubstr("in.csv: row 2, column 3: \"7\" has no column (3 values"));
   EXPECT_THAT(msg("u,,x\n"), HasSubstr("in.csv: row 1 (the header), column 2: empty column name"));
   EXPECT_THAT(msg("u,x,x\n0,1,2\n"), HasSubstr("column \"x\" appears twice"));
@@ -174,7 +176,8 @@ TEST(check, exact_rows_have_no_error) {
 // long double evaluation's ~1e-19 relative error: 0.51).
 TEST(check, correctly_rounded_rows_are_within_half_an_ulp_of_size) {
   const spec_doc s(arch);
-  const check_result r = run_check(s.f, check_kind::values, parse_csv(arch_csv({0.1, 0.3, 0.7, 0.9, 1.0 / 3}, 2), "a.csv"));
+  const check_result r =
+      run_check(s.f, check_kind::values, parse_csv(arch_csv({0.1, 0.3, 0.7, 0.9, 1.0 / 3}, 2), "a.csv"));
   EXPECT_LE(r.summary.max, 0.51);
   EXPECT_LE(r.summary.rms, r.summary.max);
   EXPECT_GT(r.summary.max, 0);  // 0.1 etc. are not exact: something rounds
@@ -233,8 +236,8 @@ TEST(check, reports_an_injected_error_exactly_and_names_its_row) {
 TEST(check, an_s_column_is_checked_against_the_arc_length) {
   const spec_doc s(bent);
   const double ds = 0.0009765625;  // 2^-10, exact
-  const check_result r = run_check(
-      s.f, check_kind::values, parse_csv("u,s,x,y\n0.5," + num(2.5 + ds) + ",1.5,2\n1.5,8,3,7\n", "p.csv"));
+  const check_result r =
+      run_check(s.f, check_kind::values, parse_csv("u,s,x,y\n0.5," + num(2.5 + ds) + ",1.5,2\n1.5,8,3,7\n", "p.csv"));
   EXPECT_NEAR(r.rows[0].s_error, ds / 11, 1e-18);
   EXPECT_LE(r.rows[1].s_error, 1e-30);
   EXPECT_EQ(r.summary.max, 0);  // s is reported, not part of the row's error
@@ -292,21 +295,23 @@ TEST(check, column_errors_are_bounded_however_long_the_header) {
 TEST(check, lengths_against_the_polylines_exact_segments) {
   const spec_doc s(bent);
   const double d = 0.0009765625;  // 2^-10
-  const check_result r = run_check(
-      s.f, check_kind::lengths,
-      parse_csv("u0,u1,length\n0,2,11\n0.5,1.5,5.5\n0.25,0.75," + num(2.5 + d) + "\n1,1,0\n", "len.csv"));
+  const check_result r =
+      run_check(s.f, check_kind::lengths,
+                parse_csv("u0,u1,length\n0,2,11\n0.5,1.5,5.5\n0.25,0.75," + num(2.5 + d) + "\n1,1,0\n", "len.csv"));
   EXPECT_DOUBLE_EQ(r.length, 11);
   EXPECT_LE(r.rows[0].error, 1e-30);
-  EXPECT_LE(r.rows[1].error, 1e-30);                  // 2.5 + 3 across the bend
-  EXPECT_NEAR(r.rows[2].error, d / 11, 1e-18);        // relative to L
-  EXPECT_NEAR(r.rows[2].relative, d / 2.5, 1e-18);    // relative to the segment
-  EXPECT_EQ(r.rows[3].relative, 0);                   // an empty segment measured as empty
+  EXPECT_LE(r.rows[1].error, 1e-30);                // 2.5 + 3 across the bend
+  EXPECT_NEAR(r.rows[2].error, d / 11, 1e-18);      // relative to L
+  EXPECT_NEAR(r.rows[2].relative, d / 2.5, 1e-18);  // relative to the segment
+  EXPECT_EQ(r.rows[3].relative, 0);                 // an empty segment measured as empty
   EXPECT_EQ(r.records[0]["quantity"], "length");
   const auto over = rows_over(r, 1e-6);
   ASSERT_EQ(over.size(), 1u);
-  EXPECT_THAT(over[0], HasSubstr("len.csv: row 4 (u0 = 0.25, u1 = 0.75): error 8.88e-05 > allowed 1e-06 relative to L"));
-  EXPECT_THAT(error_of([&] { (void)run_check(s.f, check_kind::lengths, parse_csv("u0,u1,length\n0,2.5,1\n", "l.csv")); }),
-              HasSubstr("l.csv: row 2, column u1: 2.5 is outside the curve's domain [0, 2]"));
+  EXPECT_THAT(over[0],
+              HasSubstr("len.csv: row 4 (u0 = 0.25, u1 = 0.75): error 8.88e-05 > allowed 1e-06 relative to L"));
+  EXPECT_THAT(
+      error_of([&] { (void)run_check(s.f, check_kind::lengths, parse_csv("u0,u1,length\n0,2.5,1\n", "l.csv")); }),
+      HasSubstr("l.csv: row 2, column u1: 2.5 is outside the curve's domain [0, 2]"));
   EXPECT_THAT(error_of([&] { (void)run_check(s.f, check_kind::lengths, parse_csv("u0,u1\n0,2\n", "l.csv")); }),
               HasSubstr("no column length"));
 }
@@ -314,8 +319,8 @@ TEST(check, lengths_against_the_polylines_exact_segments) {
 TEST(check, inverse_against_the_polylines_exact_u_of_s) {
   const spec_doc s(bent);
   const double du = 0.0009765625;  // 2^-10: on the second segment s changes by 6 du
-  const check_result r = run_check(
-      s.f, check_kind::inverse, parse_csv("s,u\n0,0\n2.5,0.5\n8," + num(1.5 + du) + "\n11,2\n", "inv.csv"));
+  const check_result r =
+      run_check(s.f, check_kind::inverse, parse_csv("s,u\n0,0\n2.5,0.5\n8," + num(1.5 + du) + "\n11,2\n", "inv.csv"));
   EXPECT_LE(r.rows[0].error, 1e-30);
   EXPECT_LE(r.rows[1].error, 1e-30);
   EXPECT_NEAR(r.rows[2].error, 6 * du / 11, 1e-18);

@@ -18,8 +18,8 @@
 
 namespace cb = curvebench;
 namespace cbt = curvebench::testing;
-using ::testing::HasSubstr;
 using cb::real50;
+using ::testing::HasSubstr;
 
 namespace {
 
@@ -133,7 +133,8 @@ TYPED_TEST(composite_test, knot_convention_right_segment_except_last) {
   using Real = TypeParam;
   // A broken chain: segment ends do not meet, so the value at a knot shows which side was taken.
   using P = cb::point<Real, 2>;
-  const std::vector<cb::point_list<Real, 2>> segs{{P(0, 0), P(1, 1)}, {P(5, 5), P(6, 4), P(7, 7)}, {P(-1, 0), P(-2, 3)}};
+  const std::vector<cb::point_list<Real, 2>> segs{
+      {P(0, 0), P(1, 1)}, {P(5, 5), P(6, 4), P(7, 7)}, {P(-1, 0), P(-2, 3)}};
   const auto knots = knots_of<Real>({0, 1, 1.5, 4});
   const cb::composite_bezier<Real, 2> c(segs, knots);
   EXPECT_EQ(c.segment_index(Real(0)), 0u);
@@ -148,8 +149,8 @@ TYPED_TEST(composite_test, knot_convention_right_segment_except_last) {
   // Right derivative at an interior knot: 2 (P1 - P0) / h = 2 (1, -1) / 0.5 = (4, -4), exact.
   EXPECT_EQ(c.derivative(Real(1), 1), P(4, -4));
   // Left derivative at the last knot: (P1 - P0) / 2.5.
-  EXPECT_TRUE(cbt::point_within(c.derivative(Real(4), 1), cb::point<real50, 2>(real50(-1) / real50(2.5), real50(3) / real50(2.5)),
-                                real50(2), 2));
+  EXPECT_TRUE(cbt::point_within(c.derivative(Real(4), 1),
+                                cb::point<real50, 2>(real50(-1) / real50(2.5), real50(3) / real50(2.5)), real50(2), 2));
   const auto joins = c.continuity_at_joins(Real(0.001));
   ASSERT_EQ(joins.size(), 2u);
   for (const auto& j : joins) EXPECT_FALSE(j.c0 || j.c1 || j.g1) << j.join;
@@ -270,15 +271,23 @@ TEST(composite_bad_input, messages_name_argument_index_and_value) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THAT(message_of([] { C c(std::vector<cb::point_list<double, 2>>{}, std::vector<double>{0}); }),
               HasSubstr("segments: 0 given, at least 1 required"));
-  EXPECT_THAT(message_of([&] { C c(two, std::vector<double>{0, 1}); }),
-              HasSubstr("knots: 2 given, must match segments + 1: 3"));
-  EXPECT_THAT(message_of([&] { C c(two, std::vector<double>{0, 1, 1}); }),
-              HasSubstr("knots must be increasing: knots[2] = 1 <= knots[1] = 1"));
-  EXPECT_THAT(message_of([&] { C c(two, std::vector<double>{0, nan, 2}); }), HasSubstr("knots[1] = nan: must be finite"));
-  EXPECT_THAT(message_of([] {
-                C c(std::vector<cb::point_list<double, 2>>{{P(0, 0), P(1, 1)}, {P(1, 1)}}, std::vector<double>{0, 1, 2});
+  EXPECT_THAT(message_of([&] {
+                C c(two, std::vector<double>{0, 1});
               }),
-              HasSubstr("segments[1]: 1 given, at least 2 required"));
+              HasSubstr("knots: 2 given, must match segments + 1: 3"));
+  EXPECT_THAT(message_of([&] {
+                C c(two, std::vector<double>{0, 1, 1});
+              }),
+              HasSubstr("knots must be increasing: knots[2] = 1 <= knots[1] = 1"));
+  EXPECT_THAT(message_of([&] {
+                C c(two, std::vector<double>{0, nan, 2});
+              }),
+              HasSubstr("knots[1] = nan: must be finite"));
+  EXPECT_THAT(
+      message_of([] {
+        C c(std::vector<cb::point_list<double, 2>>{{P(0, 0), P(1, 1)}, {P(1, 1)}}, std::vector<double>{0, 1, 2});
+      }),
+      HasSubstr("segments[1]: 1 given, at least 2 required"));
   EXPECT_THAT(message_of([&] {
                 C c(std::vector<cb::point_list<double, 2>>{cb::point_list<double, 2>{P(0, 0), P(1, nan)}},
                     std::vector<double>{0, 1});

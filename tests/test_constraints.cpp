@@ -55,8 +55,8 @@ template <class Real>
 ::testing::AssertionResult matrix_within(const cb::basis::matrix_x<Real>& actual,
                                          const cb::basis::matrix_x<cb::real50>& ref, double max_ulps) {
   if (actual.rows() != ref.rows() || actual.cols() != ref.cols())
-    return ::testing::AssertionFailure() << "shape " << actual.rows() << "x" << actual.cols() << " vs "
-                                         << ref.rows() << "x" << ref.cols();
+    return ::testing::AssertionFailure() << "shape " << actual.rows() << "x" << actual.cols() << " vs " << ref.rows()
+                                         << "x" << ref.cols();
   cb::real50 scale(0);
   for (Eigen::Index i = 0; i < ref.rows(); ++i)
     for (Eigen::Index j = 0; j < ref.cols(); ++j) scale = std::max(scale, cb::real50(abs(ref(i, j))));
@@ -195,16 +195,16 @@ TYPED_TEST(constraints_test, quintic_hermite_blending_functions) {
       {{Real(0), 0}, {Real(0), 1}, {Real(0), 2}, {Real(1), 0}, {Real(1), 1}, {Real(1), 2}});
   ASSERT_EQ(r.degree(), 5);
   // Exact coefficients of the six closed forms (columns), in halves.
-  static constexpr int m2[6][6] = {{2, 0, 0, 0, 0, 0},        {0, 2, 0, 0, 0, 0},      {0, 0, 1, 0, 0, 0},
+  static constexpr int m2[6][6] = {{2, 0, 0, 0, 0, 0},        {0, 2, 0, 0, 0, 0},       {0, 0, 1, 0, 0, 0},
                                    {-20, -12, -3, 20, -8, 1}, {30, 16, 3, -30, 14, -2}, {-12, -6, -1, 12, -6, 1}};
   EXPECT_TRUE(matrix_within<Real>(r.m, exact(m2, 2), quintic_ulps));
   for (int k = 0; k <= 32; ++k) {
     const Real t = Real(k) / Real(32);
     const cb::real50 s = cb::real50(k) / 32;
     const cb::real50 u = 1 - s;
-    const std::array<cb::real50, 6> h{u * u * u * (1 + 3 * s + 6 * s * s), s * u * u * u * (1 + 3 * s),
-                                      s * s * u * u * u / 2,               s * s * s * (10 - 15 * s + 6 * s * s),
-                                      s * s * s * u * (3 * s - 4),         s * s * s * u * u / 2};
+    const std::array<cb::real50, 6> h{
+        u * u * u * (1 + 3 * s + 6 * s * s),   s * u * u * u * (1 + 3 * s), s * s * u * u * u / 2,
+        s * s * s * (10 - 15 * s + 6 * s * s), s * s * s * u * (3 * s - 4), s * s * s * u * u / 2};
     const Eigen::Matrix<Real, 1, Eigen::Dynamic> b = cb::basis::power_basis_row(5, t) * r.m;
     for (int j = 0; j < 6; ++j)
       EXPECT_TRUE(cbt::within_scaled_ulps(b(j), h[static_cast<std::size_t>(j)], cb::real50(1), quintic_ulps))
@@ -219,8 +219,8 @@ TYPED_TEST(constraints_test, mixed_degree6_constraints_reproduce_a_polynomial) {
   // q(t) = sum_k q_k t^k, degree 6; the constraint values are q's derivatives at the constraint
   // parameters (computed in real50 from the exact coefficients); M · G must give back q_k.
   const std::array<int, 7> q{3, -2, 5, 1, -4, 2, -1};
-  const std::vector<cb::basis::constraint<Real>> k{
-      {Real(-1), 0}, {Real(-1), 1}, {Real(-0.5), 0}, {Real(0), 2}, {Real(0.25), 3}, {Real(1), 0}, {Real(1), 1}};
+  const std::vector<cb::basis::constraint<Real>> k{{Real(-1), 0},   {Real(-1), 1}, {Real(-0.5), 0}, {Real(0), 2},
+                                                   {Real(0.25), 3}, {Real(1), 0},  {Real(1), 1}};
   const auto r = cb::basis::basis_from_constraints(k);
   cb::basis::matrix_x<cb::real50> g50(7, 1);
   cb::real50 qmax(0);

@@ -1,9 +1,9 @@
 // Core types: the curve concept, domain checks, validation messages and Real utilities.
 #include "support/accuracy.hpp"
 
+#include "curvebench/core/any_curve.hpp"
 #include "curvebench/core/curve.hpp"
 #include "curvebench/core/error.hpp"
-#include "curvebench/core/any_curve.hpp"
 
 #include <gmock/gmock.h>
 
@@ -98,7 +98,9 @@ TEST(core, validation_messages_name_argument_index_value) {
 // point<Real, Dim> (and so every family built on it) takes only floating Real types: with an
 // integer Real the generic code's Real(1) / Real(2) would be 0, silently.
 template <class R>
-concept has_point2 = requires { typename cb::point<R, 2>; };
+concept has_point2 = requires {
+  typename cb::point<R, 2>;
+};
 
 TEST(core, point_accepts_only_real_numbers) {
   EXPECT_TRUE(has_point2<float>);
@@ -117,7 +119,8 @@ TEST(core, binomial_is_exact) {
   EXPECT_EQ(cb::binomial<double>(5, 7), 0.0);
   for (int n = 0; n <= 40; ++n)
     for (int k = 1; k < n; ++k)  // Pascal's rule, exact in 50 digits
-      ASSERT_EQ(cb::binomial<cb::real50>(n, k), cb::binomial<cb::real50>(n - 1, k - 1) + cb::binomial<cb::real50>(n - 1, k));
+      ASSERT_EQ(cb::binomial<cb::real50>(n, k),
+                cb::binomial<cb::real50>(n - 1, k - 1) + cb::binomial<cb::real50>(n - 1, k));
 }
 
 TEST(core, circle_derivatives_are_exact) {
@@ -212,14 +215,16 @@ TEST(core, unresolvable_spans_are_refused_with_their_values) {
   EXPECT_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1.0, 1.0 + need / 2}), cb::invalid_input);
   // float asks for 2^8 ulps: 400 equispaced nodes on [0, 1] (spacing 0.0025) are fine there.
   EXPECT_NO_THROW(cb::validate::increasing<float>("knots", std::vector<float>{0.3175f, 0.32f}));
-  EXPECT_THROW(cb::validate::increasing<float>("knots", std::vector<float>{1.0f, 1.0f + 64 * FLT_EPSILON}), cb::invalid_input);
+  EXPECT_THROW(cb::validate::increasing<float>("knots", std::vector<float>{1.0f, 1.0f + 64 * FLT_EPSILON}),
+               cb::invalid_input);
   // Far from 0 the same width is narrower in ulps: [1e9, 1e9 + 1] holds 2^23 doubles, [1e15, 1e15 + 1] only 8.
   EXPECT_NO_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1e9, 1e9 + 1}));
   EXPECT_THROW(cb::validate::increasing<double>("knots", std::vector<double>{1e15, 1e15 + 1}), cb::invalid_input);
   // Tiny spans near 0 are resolvable (1e-300 holds many doubles); multiplicity (zero spans) is allowed.
   EXPECT_NO_THROW(cb::validate::increasing<double>("knots", std::vector<double>{0.0, 1e-300, 1.0}));
   EXPECT_NO_THROW(cb::validate::non_decreasing<double>("knots", std::vector<double>{0.0, 0.0, 1.0, 1.0}));
-  EXPECT_THROW(cb::validate::non_decreasing<double>("knots", std::vector<double>{0.0, 1.0, one_ulp}), cb::invalid_input);
+  EXPECT_THROW(cb::validate::non_decreasing<double>("knots", std::vector<double>{0.0, 1.0, one_ulp}),
+               cb::invalid_input);
   // real50 resolves the double data that double cannot: the check is per precision.
   EXPECT_NO_THROW(cb::validate::increasing<cb::real50>("knots", std::vector<cb::real50>{1, cb::real50(one_ulp)}));
 }

@@ -83,7 +83,7 @@ auto make_eases() {
   const auto dk_t = eighths<Real>({0, 1, 3, 4, 6, 8});
   const auto dk_s = eighths<Real>({0, 1, 2, 2, 7, 8});  // a pause on [3/8, 1/2]
   const auto sp_t = eighths<Real>({0, 2, 4, 6, 8});
-  const auto sp_v = eighths<Real>({0, 8, 24, 8, 0});  // stopped at both ends
+  const auto sp_v = eighths<Real>({0, 8, 24, 8, 0});   // stopped at both ends
   const auto sp_v2 = eighths<Real>({4, 16, 0, 8, 2});  // moving at both ends, a stop at t = 1/2
   return std::make_tuple(
       named{"linear", cbm::linear_ease<Real>{}}, named{"sine", cbm::sine_ease<Real>{}},
@@ -100,9 +100,8 @@ template <class Real, class Visitor>
 void for_each_pair(Visitor&& visit) {
   auto a = make_eases<Real>();
   auto r = make_eases<real50>();
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (visit(std::get<I>(a), std::get<I>(r)), ...);
-  }(std::make_index_sequence<std::tuple_size_v<decltype(a)>>{});
+  [&]<std::size_t... I>(std::index_sequence<I...>) { (visit(std::get<I>(a), std::get<I>(r)), ...); }
+  (std::make_index_sequence<std::tuple_size_v<decltype(a)>>{});
 }
 
 constexpr int grid = 256;  // t = k / 256 is exact in every type
@@ -143,8 +142,8 @@ TYPED_TEST(distance_time_test, value_and_derivatives_match_real50) {
       for (int k = 0; k <= grid; ++k) {
         for (auto s : {cbm::side::left, cbm::side::right}) {
           const Real t = Real(k) / Real(grid);
-          ASSERT_TRUE(cbt::within_scaled_ulps(a.f.derivative(t, order, s), r.f.derivative(real50(t), order, s),
-                                              scale, tol))
+          ASSERT_TRUE(
+              cbt::within_scaled_ulps(a.f.derivative(t, order, s), r.f.derivative(real50(t), order, s), scale, tol))
               << a.name << " order " << order << " t = " << k << "/" << grid;
         }
       }
@@ -536,33 +535,54 @@ std::string message_of(Fn&& fn) {
 
 TEST(distance_time_errors, messages_name_argument_index_value) {
   using V = std::vector<double>;
-  EXPECT_EQ(message_of([] { cbm::parabolic_ease<double>(0.5, 0.25); }),
-            "t2 = 0.25 < t1 = 0.5: the constant-speed phase [t1, t2] must not end before it starts (0 <= t1 <= t2 <= 1)");
+  EXPECT_EQ(
+      message_of([] { cbm::parabolic_ease<double>(0.5, 0.25); }),
+      "t2 = 0.25 < t1 = 0.5: the constant-speed phase [t1, t2] must not end before it starts (0 <= t1 <= t2 <= 1)");
   EXPECT_EQ(message_of([] { cbm::sine_plateau_ease<double>(-0.5, 0.25); }), "t1 = -0.5: must be in [0, 1]");
   EXPECT_EQ(message_of([] { (void)cbm::parabolic_ease<double>::from_frames(22, 34, 70, 67); }),
             "start_decel = 70: must be in [end_accel, stop] = [34, 67]");
   EXPECT_EQ(message_of([] { (void)cbm::parabolic_ease<double>::from_frames(22, 34, 50, 22); }),
             "stop = 22 <= start = 22: the move must end after it starts");
-  EXPECT_EQ(message_of([] { cbm::distance_keys_ease<double>(V{0, 0.5, 1}, V{0, 0.5, 0.75}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::distance_keys_ease<double>(V{0, 0.5, 1}, V{0, 0.5, 0.75});
+            }),
             "distances[2] = 0.75: S(1) must be 1");
-  EXPECT_EQ(message_of([] { cbm::distance_keys_ease<double>(V{0, 0.25, 0.5, 1}, V{0, 0.5, 0.25, 1}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::distance_keys_ease<double>(V{0, 0.25, 0.5, 1}, V{0, 0.5, 0.25, 1});
+            }),
             "distances must be non-decreasing: distances[2] = 0.25 < distances[1] = 0.5 (a distance-time function "
             "must not run backwards)");
-  EXPECT_EQ(message_of([] { cbm::distance_keys_ease<double>(V{0, 0.5, 1}, V{0, 1.5, 1}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::distance_keys_ease<double>(V{0, 0.5, 1}, V{0, 1.5, 1});
+            }),
             "distances[1] = 1.5: must be in [0, 1]");
-  EXPECT_EQ(message_of([] { cbm::distance_keys_ease<double>(V{0, -0.5, 1}, V{0, 0.5, 1}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::distance_keys_ease<double>(V{0, -0.5, 1}, V{0, 0.5, 1});
+            }),
             "times[1] = -0.5: must be in [0, 1]");
-  EXPECT_EQ(message_of([] { cbm::distance_keys_ease<double>(V{0.25, 0.5, 1}, V{0, 0.5, 1}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::distance_keys_ease<double>(V{0.25, 0.5, 1}, V{0, 0.5, 1});
+            }),
             "times[0] = 0.25: the first key must be at t = 0");
-  EXPECT_EQ(message_of([] { cbm::distance_keys_ease<double>(V{0, 0.5, 0.75}, V{0, 0.5, 1}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::distance_keys_ease<double>(V{0, 0.5, 0.75}, V{0, 0.5, 1});
+            }),
             "times[2] = 0.75: the last key must be at t = 1");
-  EXPECT_EQ(message_of([] { cbm::distance_keys_ease<double>(V{0, 0.5, 0.5, 1}, V{0, 0.5, 0.5, 1}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::distance_keys_ease<double>(V{0, 0.5, 0.5, 1}, V{0, 0.5, 0.5, 1});
+            }),
             "times must be increasing: times[2] = 0.5 <= times[1] = 0.5");
-  EXPECT_EQ(message_of([] { cbm::distance_keys_ease<double>(V{0, 1}, V{0, 0.5, 1}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::distance_keys_ease<double>(V{0, 1}, V{0, 0.5, 1});
+            }),
             "distances: 3 given, must match times: 2");
-  EXPECT_EQ(message_of([] { cbm::speed_curve_ease<double>(V{0, 0.5, 1}, V{1, -1, 1}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::speed_curve_ease<double>(V{0, 0.5, 1}, V{1, -1, 1});
+            }),
             "speeds[1] = -1: must be >= 0 (a negative speed would run the motion backwards)");
-  EXPECT_EQ(message_of([] { cbm::speed_curve_ease<double>(V{0, 1}, V{0, 0}); }),
+  EXPECT_EQ(message_of([] {
+              cbm::speed_curve_ease<double>(V{0, 1}, V{0, 0});
+            }),
             "speeds: all zero, at least one must be > 0 (the motion must cover the path)");
   EXPECT_EQ(message_of([] { (void)cbm::sine_ease<double>{}.derivative(0.5, 3); }),
             "order = 3: distance-time functions provide orders 0 (distance), 1 (velocity) and 2 (acceleration)");

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-using nlohmann::json;
 using curvebench::harness::check_gate;
+using nlohmann::json;
 using ::testing::HasSubstr;
 
 namespace {
@@ -48,9 +48,9 @@ TEST(gate, passes_clean_results) { EXPECT_TRUE(check_gate(clean_results(), thres
 
 TEST(gate, names_each_breach_with_measured_and_allowed) {
   json r = clean_results();
-  r["records"][1]["error"] = 3e-10;     // injected accuracy regression
-  r["records"][0]["bounded"] = false;   // a dishonest estimate
-  r["orders"][0]["observed"] = 1.0;     // a deliberately coarse table: order dropped
+  r["records"][1]["error"] = 3e-10;    // injected accuracy regression
+  r["records"][0]["bounded"] = false;  // a dishonest estimate
+  r["orders"][0]["observed"] = 1.0;    // a deliberately coarse table: order dropped
   const auto breaches = check_gate(r, thresholds());
   ASSERT_EQ(breaches.size(), 3u);
   EXPECT_EQ(breaches[0].rule, "length/adaptive_gk/*");
@@ -69,8 +69,7 @@ TEST(gate, a_rule_may_name_one_setting) {
   EXPECT_EQ(breaches[0].rule, "length/forward_difference/*/steps=64");
   EXPECT_EQ(breaches[0].message, "error 0.0002 > allowed 0.0001");
   r["records"][2]["setting"] = "steps=32";  // the named setting vanished
-  EXPECT_EQ(check_gate(r, thresholds()).back().message,
-            "rule matched no result record (method or case group missing)");
+  EXPECT_EQ(check_gate(r, thresholds()).back().message, "rule matched no result record (method or case group missing)");
 }
 
 TEST(gate, missing_method_or_nan_error_is_a_breach) {
@@ -93,9 +92,10 @@ TEST(gate, rejects_a_rule_naming_an_id_outside_the_vocabulary) {
     return std::string("accepted");
   };
   // composite_gauss3 was the records' name before the vocabulary: a stale threshold must not pass silently.
-  EXPECT_EQ(message(R"({"rules": [{"quantity": "*", "honest": true},
+  EXPECT_EQ(
+      message(R"({"rules": [{"quantity": "*", "honest": true},
                                    {"quantity": "length", "method": "composite_gauss3", "min_order": 3}]})"),
-            "thresholds rule 1: method \"composite_gauss3\" is not a method of the vocabulary (curvebench list methods)");
+      "thresholds rule 1: method \"composite_gauss3\" is not a method of the vocabulary (curvebench list methods)");
   EXPECT_EQ(message(R"({"rules": [{"quantity": "lenght", "method": "*", "max_error": 1}]})"),
             "thresholds rule 0: quantity \"lenght\" is not a quantity of the vocabulary");
   EXPECT_THAT(message(R"({"rules": [{"quantity": "length", "method": "newton", "max_error": 1}]})"),
@@ -246,7 +246,8 @@ TEST(gate, a_rule_may_name_a_subject_of_the_results) {
   EXPECT_THROW((void)check_gate(r, rules), curvebench::invalid_input);
   r["records"][3]["subject"] = true;
   EXPECT_THROW((void)check_gate(r, json::parse(R"({"rules": [{"quantity": "evals", "method": "my_engine",
-      "max_error": 4}]})")), curvebench::invalid_input);
+      "max_error": 4}]})")),
+               curvebench::invalid_input);
 }
 
 // The gate reads the families' evaluation algorithms from the vocabulary, not the registry: the
@@ -290,8 +291,8 @@ TEST(record, the_reader_reads_what_the_writer_writes) {
   EXPECT_EQ(h::to_json(h::read_record(sj, "s")), sj);
 
   // An estimate below the error: bounded false (the gate's honesty breach).
-  h::record p = h::record::measured("arch", "smooth", "length", "peer_gsl_qag", "tol=1e-10", 2e-10, 1e-10, 45,
-                                    "converged");
+  h::record p =
+      h::record::measured("arch", "smooth", "length", "peer_gsl_qag", "tol=1e-10", 2e-10, 1e-10, 45, "converged");
   p.peer = h::peer_fields{"GSL 2.7.1", "success", 120, "adaptive_gk", "tol=1e-10", 80, nan};
   const json pj = h::to_json(p);
   EXPECT_EQ(pj["bounded"], false);

@@ -55,8 +55,8 @@ struct case_dir {
   }
   ~case_dir() { fs::remove_all(path); }
   void add(const std::string& name, const std::string& body) const {
-    std::ofstream(path / (name + ".json")) << R"({"name": ")" << name
-                                           << R"(", "group": "smooth", "reason": "test case", )" << body << "}";
+    std::ofstream(path / (name + ".json"))
+        << R"({"name": ")" << name << R"(", "group": "smooth", "reason": "test case", )" << body << "}";
   }
 };
 
@@ -266,8 +266,8 @@ TEST(vocabulary, json_lists_every_entry_with_its_fields) {
   EXPECT_EQ(cg["id"], "composite_gauss");
   EXPECT_EQ(cg["settings"], json::array({"n", "panels"}));
   EXPECT_EQ(cg["theory"], 6.0);
-  EXPECT_EQ(v["counters"][0], json({{"name", "evaluations"}, {"kind", "count"},
-                                    {"doc", std::string(hv::counters::evaluations.doc)}}));
+  EXPECT_EQ(v["counters"][0],
+            json({{"name", "evaluations"}, {"kind", "count"}, {"doc", std::string(hv::counters::evaluations.doc)}}));
 }
 
 TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses) {
@@ -279,7 +279,8 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
   // Without peer libraries (the installed harness: the subject API), no peer records; with them,
   // the same case has GSL's and Boost's.
   EXPECT_TRUE(out["peer_records"].empty());
-  EXPECT_FALSE(curvebench::harness::run_case(cases[0], true, &curvebench::harness::library_peers())["peer_records"].empty());
+  EXPECT_FALSE(
+      curvebench::harness::run_case(cases[0], true, &curvebench::harness::library_peers())["peer_records"].empty());
   std::set<std::pair<std::string, std::string>> seen;  // (quantity, method)
   for (const auto& r : out["records"]) {
     const std::string q = r["quantity"], method = r["method"], setting = r["setting"], status = r["status"];
@@ -414,9 +415,8 @@ TEST(run_case, boost_and_eigen_peers_measure_the_cases_they_represent) {
       const std::string method = r["method"];
       if (method.rfind("peer_gsl", 0) == 0) continue;
       SCOPED_TRACE(c.name + " " + method + " " + r["setting"].get<std::string>());
-      EXPECT_THAT(r["library"].get<std::string>(), ::testing::StartsWith(method.find("eigen") != std::string::npos
-                                                                             ? "Eigen 3."
-                                                                             : "Boost.Math 1."));
+      EXPECT_THAT(r["library"].get<std::string>(),
+                  ::testing::StartsWith(method.find("eigen") != std::string::npos ? "Eigen 3." : "Boost.Math 1."));
       if (r["quantity"] == "eval") {
         eval[{c.name, method, r["setting"]}] = r;
         continue;
@@ -431,10 +431,9 @@ TEST(run_case, boost_and_eigen_peers_measure_the_cases_they_represent) {
         EXPECT_EQ(r["bounded"], true);
       }
     }
-    EXPECT_EQ(lengths, (std::map<std::string, int>{
-                           {std::string(hv::peers::boost_gauss_kronrod15.id), 3},
-                           {std::string(hv::peers::boost_gauss_kronrod31.id), 3},
-                           {std::string(hv::peers::boost_tanh_sinh.id), 3}}))
+    EXPECT_EQ(lengths, (std::map<std::string, int>{{std::string(hv::peers::boost_gauss_kronrod15.id), 3},
+                                                   {std::string(hv::peers::boost_gauss_kronrod31.id), 3},
+                                                   {std::string(hv::peers::boost_tanh_sinh.id), 3}}))
         << c.name << ": every Boost rule at each adaptive_gk tolerance of the quick sweep";
   }
   const auto expect_close = [&](const std::string& c, const hv::peer& p, const std::string& setting) {
@@ -520,12 +519,14 @@ TEST(pool, runs_every_job_once_and_rethrows_a_failure) {
   std::vector<std::atomic<int>> runs(order.size());
   std::vector<std::size_t> finished;
   curvebench::harness::run_pool(
-      order, 3, [&](std::size_t i) { ++runs[i]; },
-      [&](std::size_t, std::size_t k) { finished.push_back(k); });
+      order, 3, [&](std::size_t i) { ++runs[i]; }, [&](std::size_t, std::size_t k) { finished.push_back(k); });
   for (const auto& r : runs) EXPECT_EQ(r.load(), 1);
   EXPECT_EQ(finished, (std::vector<std::size_t>{1, 2, 3, 4, 5}));
   EXPECT_THROW(curvebench::harness::run_pool(
-                   order, 2, [](std::size_t i) { if (i == 2) throw std::runtime_error("job 2"); },
+                   order, 2,
+                   [](std::size_t i) {
+                     if (i == 2) throw std::runtime_error("job 2");
+                   },
                    [](std::size_t, std::size_t) {}),
                std::runtime_error);
   EXPECT_EQ(curvebench::harness::pool_threads(0, 1), 1u);

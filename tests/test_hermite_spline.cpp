@@ -61,14 +61,10 @@ cb::real50 seed_coefficient_form(double y0, double y1, double s0, double s1, dou
   const cb::real50 b = 3 * dy / (h * h) - (2 * cb::real50(s0) + cb::real50(s1)) / h;
   const cb::real50 c(s0), d(y0);
   switch (order) {
-    case 0:
-      return ((a * x + b) * x + c) * x + d;
-    case 1:
-      return (3 * a * x + 2 * b) * x + c;
-    case 2:
-      return 6 * a * x + 2 * b;
-    default:
-      return 6 * a;
+    case 0: return ((a * x + b) * x + c) * x + d;
+    case 1: return (3 * a * x + 2 * b) * x + c;
+    case 2: return 6 * a * x + 2 * b;
+    default: return 6 * a;
   }
 }
 
@@ -78,7 +74,8 @@ cb::real50 seed_basis_form(double y0, double y1, double s0, double s1, double t0
   const cb::real50 h = cb::real50(t1) - cb::real50(t0), x = t - cb::real50(t0);
   const cb::real50 x2 = x * x / (h * h), x3 = x * x * x / (h * h * h);
   return cb::real50(y0) * (2 * x3 - 3 * x2 + 1) + cb::real50(y1) * (-2 * x3 + 3 * x2) +
-         cb::real50(s0) * (x * x * x / (h * h) - 2 * x * x / h + x) + cb::real50(s1) * (x * x * x / (h * h) - x * x / h);
+         cb::real50(s0) * (x * x * x / (h * h) - 2 * x * x / h + x) +
+         cb::real50(s1) * (x * x * x / (h * h) - x * x / h);
 }
 
 }  // namespace
@@ -163,14 +160,10 @@ TYPED_TEST(hermite_test, reproduces_a_cubic_from_its_hermite_data) {
   // q(u) = 1 - 2u + u^2/2 + u^3/4: dyadic values and slopes at dyadic knots; q''' = 3/2 exactly.
   auto q = [](double u, int order) {
     switch (order) {
-      case 0:
-        return 1 - 2 * u + u * u / 2 + u * u * u / 4;
-      case 1:
-        return -2 + u + 3 * u * u / 4;
-      case 2:
-        return 1 + 3 * u / 2;
-      default:
-        return 1.5;
+      case 0: return 1 - 2 * u + u * u / 2 + u * u * u / 4;
+      case 1: return -2 + u + 3 * u * u / 4;
+      case 2: return 1 + 3 * u / 2;
+      default: return 1.5;
     }
   };
   std::vector<Real> k = knots<Real>();
@@ -196,7 +189,8 @@ TEST(hermite, chain_of_alternating_points_and_tangents_is_seed_001s) {
   const auto c = cb::hermite_spline<double, 2>::chain(items);
   EXPECT_EQ(c.engine().segment_count(), 2u);
   EXPECT_EQ(c.domain().hi, 2.0);
-  const cb::hermite_spline<double, 2> ref({0.0, 1.0, 2.0}, {items[0], items[2], items[4]}, {items[1], items[3], items[5]});
+  const cb::hermite_spline<double, 2> ref({0.0, 1.0, 2.0}, {items[0], items[2], items[4]},
+                                          {items[1], items[3], items[5]});
   for (int k = 0; k <= 20; ++k) {
     const double u = k / 10.0;
     EXPECT_EQ(c(u), ref(u));
@@ -224,24 +218,36 @@ TEST(hermite, bad_input_names_what_and_where) {
   };
   const cb::point_list<double, 2> v3(3, P(0, 0));
   const cb::point_list<double, 2> v2(2, P(0, 0));
-  EXPECT_THAT(msg([&] { cb::hermite_spline<double, 2>({0.0, 1.0, 2.0}, v3, v2); }),
+  EXPECT_THAT(msg([&] {
+                cb::hermite_spline<double, 2>({0.0, 1.0, 2.0}, v3, v2);
+              }),
               HasSubstr("slopes: 2 given, must match knots: 3"));
-  EXPECT_THAT(msg([&] { cb::hermite_spline<double, 2>({0.0, 2.0, 1.0}, v3, v3); }),
+  EXPECT_THAT(msg([&] {
+                cb::hermite_spline<double, 2>({0.0, 2.0, 1.0}, v3, v3);
+              }),
               HasSubstr("knots must be increasing: knots[2] = 1 <= knots[1] = 2"));
   EXPECT_THAT(msg([&] { cb::hermite_spline<double, 2>({0.0}, {P(0, 0)}, {P(0, 0)}); }),
               HasSubstr("knots: 1 given, at least 2 required"));
   auto bad = v3;
   bad[2][1] = std::nan("");
-  EXPECT_THAT(msg([&] { cb::hermite_spline<double, 2>({0.0, 1.0, 2.0}, bad, v3); }),
+  EXPECT_THAT(msg([&] {
+                cb::hermite_spline<double, 2>({0.0, 1.0, 2.0}, bad, v3);
+              }),
               HasSubstr("values[2][1] = nan: coordinates must be finite"));
-  EXPECT_THAT(msg([&] { cb::hermite_spline<double, 2>({0.0, 1.0, 2.0}, v3, v3, bad); }),
+  EXPECT_THAT(msg([&] {
+                cb::hermite_spline<double, 2>({0.0, 1.0, 2.0}, v3, v3, bad);
+              }),
               HasSubstr("outgoing slopes[2][1] = nan"));
   const std::vector<P> odd(5, P(0, 0));
-  EXPECT_THAT(msg([&] { (void)cb::hermite_spline<double, 2>::chain(odd); }), HasSubstr("chain items: 5 given, must be even"));
+  EXPECT_THAT(msg([&] { (void)cb::hermite_spline<double, 2>::chain(odd); }),
+              HasSubstr("chain items: 5 given, must be even"));
   const std::vector<P> two(2, P(0, 0));
-  EXPECT_THAT(msg([&] { (void)cb::hermite_spline<double, 2>::chain(two); }), HasSubstr("chain items: 2 given, at least 4"));
+  EXPECT_THAT(msg([&] { (void)cb::hermite_spline<double, 2>::chain(two); }),
+              HasSubstr("chain items: 2 given, at least 4"));
   const std::vector<P> four(4, P(0, 0));
-  EXPECT_THAT(msg([&] { (void)cb::hermite_spline<double, 2>::chain(four, {0.0, 1.0, 2.0}); }),
+  EXPECT_THAT(msg([&] {
+                (void)cb::hermite_spline<double, 2>::chain(four, {0.0, 1.0, 2.0});
+              }),
               HasSubstr("knots: 3 given, must match chain points (items / 2): 2"));
   const cb::hermite_spline<double, 2> c({0.0, 1.0, 2.0}, v3, v3);
   EXPECT_THROW((void)c(2.5), std::domain_error);

@@ -69,7 +69,8 @@ poly2<Real> smooth_cubic() {
 template <class Real>
 poly2<Real> cusp_cubic(double eps) {  // (x^2 + eps x, x^3), x = u - 3/4, on [0, 2]
   const Real e(eps);
-  return {Real(0), Real(2),
+  return {Real(0),
+          Real(2),
           {pt2<Real>(Real(0.5625) - Real(0.75) * e, Real(-0.421875)), pt2<Real>(e - Real(1.5), Real(1.6875)),
            pt2<Real>(1, Real(-2.25)), pt2<Real>(0, 1)}};
 }
@@ -159,7 +160,8 @@ void check_round_trips(const char* name, const C& c, const C50& c50, bool cusp, 
   // Constant-speed samples are equally spaced in true arc length.
   const std::vector<double> us = hermite.constant_speed_parameters(17);
   for (std::size_t i = 0; i < us.size(); ++i)
-    EXPECT_LE(abs(r.s(R(us[i])) - R(hermite.length()) * R(static_cast<double>(i)) / 16), R(hermite_bound) + R(L) * R(1e-15))
+    EXPECT_LE(abs(r.s(R(us[i])) - R(hermite.length()) * R(static_cast<double>(i)) / 16),
+              R(hermite_bound) + R(L) * R(1e-15))
         << "sample " << i;
 }
 
@@ -222,7 +224,8 @@ TYPED_TEST(inversion_test, bad_input_is_rejected_with_clear_messages) {
     al::parameterization<ref::piecewise_polynomial<Real, 2>> bad(point_curve);
     FAIL();
   } catch (const cb::invalid_input& e) {
-    EXPECT_THAT(e.what(), HasSubstr("curve length = 0: an arc-length parameterization needs a curve of positive length"));
+    EXPECT_THAT(e.what(),
+                HasSubstr("curve length = 0: an arc-length parameterization needs a curve of positive length"));
   }
   al::parameterization_options<Real> opt;
   opt.newton.relative_tolerance = Real(0);
@@ -315,7 +318,8 @@ TEST(inversion, table_construction_budget_ends_in_cap_hit_with_an_honest_bound) 
   // Each node gets at least min_node_evaluations, so the budget is passed by at most that per node.
   EXPECT_LE(capped.construction_evaluations(), o.max_evaluations + al::min_node_evaluations * capped.table_intervals());
   ASSERT_TRUE(std::isfinite(capped.table_error()));
-  const R bound = R(capped.table_error()) + R(newton_tolerance_eps * std::numeric_limits<double>::epsilon()) * r.length();
+  const R bound =
+      R(capped.table_error()) + R(newton_tolerance_eps * std::numeric_limits<double>::epsilon()) * r.length();
   R worst(0);
   for (int k = 0; k <= 200; ++k) {
     const double s = capped.length() * k / 200;

@@ -28,9 +28,9 @@
 #include "curvebench/io/spec.hpp"
 #include "curvebench/reference/multiprecision.hpp"
 
-#include <boost/math/constants/constants.hpp>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <boost/math/constants/constants.hpp>
 
 #include <cctype>
 #include <cmath>
@@ -64,8 +64,8 @@ std::vector<double> grid(double lo, double hi, int n) {
 }  // namespace
 
 TEST(io_channel, css_cubic_bezier_matches_css_easing) {
-  for (const char* e : {"cubic-bezier(0.25, 0.1, 0.25, 1)", "cubic-bezier(1, 0, 0, 1)", "cubic-bezier(0.3, 1.5, 0.7, -0.5)",
-                        "ease-in-out"}) {
+  for (const char* e : {"cubic-bezier(0.25, 0.1, 0.25, 1)", "cubic-bezier(1, 0, 0, 1)",
+                        "cubic-bezier(0.3, 1.5, 0.7, -0.5)", "ease-in-out"}) {
     SCOPED_TRACE(e);
     const nlohmann::json j = {{"type", "channel"}, {"tool", "css"}, {"easing", e}};
     const auto m = cb::io::channel_model_of_spec<double>(spec_of(j));
@@ -120,11 +120,13 @@ TEST(io_channel, gltf_rotation_matches_the_sampler_and_the_closed_form) {
       nlohmann::json j = read_case(name);
       j["blend"] = blend;
       const auto r = cb::io::rotation_of_spec<double>(spec_of(j));
-      const std::vector<double> times = j["times"].get<std::vector<double>>(), v = j["values"].get<std::vector<double>>();
+      const std::vector<double> times = j["times"].get<std::vector<double>>(),
+                                v = j["values"].get<std::vector<double>>();
       std::vector<cb::point<double, 4>> q;
       for (std::size_t i = 0; i < v.size(); i += 4) q.emplace_back(v[i], v[i + 1], v[i + 2], v[i + 3]);
-      const ch::gltf::rotation_sampler<double> s(times, q, ch::gltf::from_string<ch::gltf::interpolation>(j["interpolation"].get<std::string>()),
-                                                 ch::gltf::from_string<ch::gltf::rotation_blend>(blend));
+      const ch::gltf::rotation_sampler<double> s(
+          times, q, ch::gltf::from_string<ch::gltf::interpolation>(j["interpolation"].get<std::string>()),
+          ch::gltf::from_string<ch::gltf::rotation_blend>(blend));
       for (double t : grid(times.front() - 0.5, times.back() + 0.5, 997)) EXPECT_EQ(r(t), s(t)) << "t = " << t;
       EXPECT_EQ(cb::io::spec_dimension(spec_of(j)), 4);
     }
@@ -151,13 +153,17 @@ TEST(io_channel, gltf_rotation_bad_specs_name_the_field) {
   auto message = [](const std::string& text, bool scalar = false) {
     const nlohmann::json j = nlohmann::json::parse(text);
     return cbt::message_of([&] {
-      if (scalar) (void)cb::io::channel_model_of_spec<double>(spec_of(j));
-      else (void)cb::io::rotation_of_spec<double>(spec_of(j));
+      if (scalar)
+        (void)cb::io::channel_model_of_spec<double>(spec_of(j));
+      else
+        (void)cb::io::rotation_of_spec<double>(spec_of(j));
     });
   };
-  const std::string head = R"({"type": "channel", "tool": "gltf", "path": "rotation", "interpolation": "linear", "times": [0, 1], )";
-  EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 0.8, 0.8]})"),
-              ::testing::AllOf(::testing::HasSubstr("output[1] (key 1 value)"), ::testing::HasSubstr("unit quaternions")));
+  const std::string head =
+      R"({"type": "channel", "tool": "gltf", "path": "rotation", "interpolation": "linear", "times": [0, 1], )";
+  EXPECT_THAT(
+      message(head + R"("values": [0, 0, 0, 1, 0, 0, 0.8, 0.8]})"),
+      ::testing::AllOf(::testing::HasSubstr("output[1] (key 1 value)"), ::testing::HasSubstr("unit quaternions")));
   EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 1]})"), ::testing::HasSubstr("7 numbers given"));
   EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 0, 1], "blend": "squad"})"),
               ::testing::AllOf(::testing::HasSubstr("spec.json.blend"), ::testing::HasSubstr("slerp")));
@@ -230,14 +236,16 @@ TEST(io_channel, bad_specs_name_the_field) {
   EXPECT_NE(message(R"({"type": "channel", "tool": "exact", "keys": [{"time": 0, "value": 0, "in": [1]}]})")
                 .find("spec.json.keys[0].in"),
             std::string::npos);
-  EXPECT_NE(message(R"({"type": "channel", "tool": "exact", "keys": [{"time": 1, "value": 0}, {"time": 0, "value": 0}]})")
-                .find("keys[1]"),
-            std::string::npos);
+  EXPECT_NE(
+      message(R"({"type": "channel", "tool": "exact", "keys": [{"time": 1, "value": 0}, {"time": 0, "value": 0}]})")
+          .find("keys[1]"),
+      std::string::npos);
   EXPECT_NE(message(R"({"type": "channel", "tool": "exact", "solver": "guess", "keys": [{"time": 0, "value": 0}]})")
                 .find("spec.json.solver"),
             std::string::npos);
-  EXPECT_NE(message(R"j({"type": "channel", "tool": "css", "easing": "cubic-bezier(2, 0, 0, 1)"})j").find("spec.json.easing"),
-            std::string::npos);
+  EXPECT_NE(
+      message(R"j({"type": "channel", "tool": "css", "easing": "cubic-bezier(2, 0, 0, 1)"})j").find("spec.json.easing"),
+      std::string::npos);
   EXPECT_NE(message(R"j({"type": "channel", "tool": "css", "easing": "linear(0, 0.5 50%, 0.7 50%, 1)"})j").find("jump"),
             std::string::npos);
   EXPECT_NE(message(R"({"type": "channel", "tool": "maya", "keys": [{"time": 0, "value": 0, "in_type": "smooth"}]})")
@@ -263,8 +271,10 @@ nlohmann::json blender_spec(const nlohmann::json& c) {
                             {"handle_left_type", lower(k.at("handle_left_type"))},
                             {"handle_right_type", lower(k.at("handle_right_type"))},
                             {"interpolation", lower(k.at("interpolation"))},
-                            {"easing", easing == "ease_in" ? "in" : easing == "ease_out" ? "out"
-                                                                : easing == "ease_in_out" ? "in_out" : "auto"},
+                            {"easing", easing == "ease_in"       ? "in"
+                                       : easing == "ease_out"    ? "out"
+                                       : easing == "ease_in_out" ? "in_out"
+                                                                 : "auto"},
                             {"back", k.at("back")},
                             {"amplitude", k.at("amplitude")},
                             {"period", k.at("period")}});
@@ -379,8 +389,9 @@ TEST(io_channel, usd_tool_matches_the_model_and_its_50_digit_twin) {
   // Bad USD input names the field.
   nlohmann::json bad = j;
   bad["knots"][1]["interpolation"] = "cubic";
-  EXPECT_NE(cbt::message_of([&] { (void)cb::io::channel_model_of_spec<double>(spec_of(bad)); })
-                .find("spec.json.knots[1].interpolation"),
+  EXPECT_NE(cbt::message_of([&] {
+              (void)cb::io::channel_model_of_spec<double>(spec_of(bad));
+            }).find("spec.json.knots[1].interpolation"),
             std::string::npos);
   bad = j;
   bad["slope_after"] = 1;

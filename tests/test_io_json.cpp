@@ -40,7 +40,9 @@ TEST(io_json, reads_points_reals_and_options) {
 TEST(io_json, errors_name_the_field_and_what_is_expected) {
   const auto j = io::parse(R"({"type": "bezir", "points": [[0, 0], [1, "a"], [3]], "weights": "x", "tenson": 1})");
   const auto spec = io::root(j);
-  EXPECT_EQ(error_of([&] { (void)spec.member("type").one_of({"bezier", "nurbs"}); }),
+  EXPECT_EQ(error_of([&] {
+              (void)spec.member("type").one_of({"bezier", "nurbs"});
+            }),
             "spec.type: \"bezir\" is not one of: bezier, nurbs");
   EXPECT_EQ(error_of([&] { (void)spec.member("points").points<double, 2>(); }),
             "spec.points[1][1]: expected a number, got \"a\"");
@@ -48,12 +50,15 @@ TEST(io_json, errors_name_the_field_and_what_is_expected) {
             "spec.weights: expected an array, got \"x\"");
   EXPECT_EQ(error_of([&] { (void)spec.member("knots", "required for type \"bspline\""); }),
             "spec: knots is missing (required for type \"bspline\")");
-  EXPECT_THAT(error_of([&] { spec.only_members({"type", "points", "weights"}); }),
+  EXPECT_THAT(error_of([&] {
+                spec.only_members({"type", "points", "weights"});
+              }),
               HasSubstr("spec: unknown field \"tenson\""));
   const auto short_point = io::parse(R"({"points": [[0, 0], [3]]})");
   EXPECT_EQ(error_of([&] { (void)io::root(short_point).member("points").points<double, 2>(); }),
             "spec.points[1]: expected an array of 2 numbers, got [3]");
-  EXPECT_THAT(error_of([] { (void)io::parse("{\"points\": [1, 2", "case.json"); }), HasSubstr("case.json: not valid JSON"));
+  EXPECT_THAT(error_of([] { (void)io::parse("{\"points\": [1, 2", "case.json"); }),
+              HasSubstr("case.json: not valid JSON"));
   // A number beyond double's range is named by its path, as written (issue 16: it was a syntax
   // error of the whole file, or an inf later echoed as null).
   EXPECT_EQ(error_of([] { (void)io::parse("{\"x\": [0, 1e999]}", "case.json"); }),

@@ -70,8 +70,9 @@ TEST(io_spec, each_type_builds_the_family) {
       make<2>(R"({"type": "cardinal", "tension": 0.2, "alpha": 0.5, "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
       cb::cardinal_spline<double, 2>(pts, co));
   const std::vector<double> knots{0, 1, 2, 3, 4};
-  expect_same_curve(make<2>(R"({"type": "natural_cubic", "end": "not_a_knot", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
-                    cb::natural_cubic_spline<double, 2>(knots, pts, cb::spline_end::not_a_knot));
+  expect_same_curve(
+      make<2>(R"({"type": "natural_cubic", "end": "not_a_knot", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+      cb::natural_cubic_spline<double, 2>(knots, pts, cb::spline_end::not_a_knot));
   std::vector<cb::tcb<double>> keys(5, cb::tcb<double>{0.5, -0.25, 0.1});
   expect_same_curve(make<2>(R"({"type": "kochanek_bartels", "tension": 0.5, "continuity": -0.25, "bias": 0.1,
                                 "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
@@ -86,14 +87,16 @@ TEST(io_spec, each_type_builds_the_family) {
   expect_same_curve(make<2>(R"({"type": "arc", "center": [0, 0], "radius": 2, "start": 0.5, "sweep": 2})"),
                     cb::circular_arc<double>(p2(0, 0), 2.0, 0.5, 2.0));
   const cb::point_list<double, 2> slopes{{1, 0}, {1, 1}, {0, 1}, {-1, 0}, {1, 1}};
-  expect_same_curve(make<2>(R"({"type": "hermite", "knots": [0, 0.5, 2, 3, 7], "points": [[0,0],[1,2],[3,3],[4,0],[6,1]],
+  expect_same_curve(
+      make<2>(R"({"type": "hermite", "knots": [0, 0.5, 2, 3, 7], "points": [[0,0],[1,2],[3,3],[4,0],[6,1]],
                                 "slopes": [[1,0],[1,1],[0,1],[-1,0],[1,1]]})"),
-                    cb::hermite_spline<double, 2>({0, 0.5, 2, 3, 7}, pts, slopes));
+      cb::hermite_spline<double, 2>({0, 0.5, 2, 3, 7}, pts, slopes));
   const std::vector<double> cheb = cb::chebyshev_parameters<double>(5);
   expect_same_curve(make<2>(R"({"type": "lagrange", "nodes": "chebyshev", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
                     cb::lagrange<double, 2>(std::span<const p2>(pts), std::span<const double>(cheb)));
-  expect_same_curve(make<2>(R"({"type": "lagrange", "algorithm": "monomial", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
-                    cb::lagrange<double, 2>(std::span<const p2>(pts), cb::lagrange_algorithm::monomial));
+  expect_same_curve(
+      make<2>(R"({"type": "lagrange", "algorithm": "monomial", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})"),
+      cb::lagrange<double, 2>(std::span<const p2>(pts), cb::lagrange_algorithm::monomial));
   const std::vector<cb::point_list<double, 2>> segs{{{0, 0}, {1, 1}, {2, 0}}, {{2, 0}, {3, -1}, {3, 2}, {4, 0}}};
   const std::vector<double> seg_knots{0, 1, 3};
   expect_same_curve(make<2>(R"({"type": "composite_bezier", "knots": [0, 1, 3],
@@ -129,14 +132,14 @@ TEST(io_spec, real50_twin_of_derived_data_is_exact) {
   // Knots from |dP|^alpha, Chebyshev parameters, clamped knot fractions, s from tension and the
   // circle's sqrt(2)/2 weights are computed once in double; the 50-digit curve gets those doubles,
   // so its breakpoints (and domain) are exactly the double curve's.
-  for (const char* text : {
-           R"({"type": "catmull_rom", "alpha": 0.5, "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
-           R"({"type": "cardinal", "tension": 0.3, "alpha": 1, "end": "closed", "points": [[0,0],[1,2],[3,3],[4,0]]})",
-           R"({"type": "catmull_rom", "alpha": 0.3, "end": "control_points", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
-           R"({"type": "lagrange", "nodes": "chebyshev", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
-           R"({"type": "bspline", "degree": 3, "points": [[0,0],[1,2],[3,3],[4,0],[6,1],[7,0],[8,2]]})",
-           R"({"type": "circle", "center": [1, 2], "radius": 3})",
-           R"({"type": "arc", "center": [0, 0], "radius": 2, "start": 0.5, "sweep": 2})"}) {
+  for (const char* text :
+       {R"({"type": "catmull_rom", "alpha": 0.5, "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
+        R"({"type": "cardinal", "tension": 0.3, "alpha": 1, "end": "closed", "points": [[0,0],[1,2],[3,3],[4,0]]})",
+        R"({"type": "catmull_rom", "alpha": 0.3, "end": "control_points", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
+        R"({"type": "lagrange", "nodes": "chebyshev", "points": [[0,0],[1,2],[3,3],[4,0],[6,1]]})",
+        R"({"type": "bspline", "degree": 3, "points": [[0,0],[1,2],[3,3],[4,0],[6,1],[7,0],[8,2]]})",
+        R"({"type": "circle", "center": [1, 2], "radius": 3})",
+        R"({"type": "arc", "center": [0, 0], "radius": 2, "start": 0.5, "sweep": 2})"}) {
     const auto j = io::parse(text);
     const auto c = io::curve_from_spec<double, 2>(io::root(j));
     const auto c50 = io::curve_from_spec<cb::real50, 2>(io::root(j));
@@ -160,7 +163,8 @@ TEST(io_spec, generated_points) {
                                                                     "pitch": 0.5, "turns": 1}})");
   // Catmull-Rom interpolates: the knot values are the generated points (double trigonometry).
   EXPECT_EQ(helix(0.0), (cb::point<double, 3>(2, 0, 0)));
-  EXPECT_EQ(helix(2.0), (cb::point<double, 3>(2 * std::cos(std::numbers::pi / 2), 2 * std::sin(std::numbers::pi / 2), 0.125)));
+  EXPECT_EQ(helix(2.0),
+            (cb::point<double, 3>(2 * std::cos(std::numbers::pi / 2), 2 * std::sin(std::numbers::pi / 2), 0.125)));
   EXPECT_EQ(helix.domain().hi, 8.0);
   const auto runge = make<2>(R"({"type": "polyline", "points": {"generate": "runge", "count": 5}})");
   EXPECT_EQ(runge(2.0), (cb::point<double, 2>(0, 1)));
@@ -177,8 +181,7 @@ TEST(io_spec, generated_points) {
 TEST(io_spec, malformed_specs_name_the_field) {
   EXPECT_EQ(error_of(R"({"type": "bezir", "points": [[0,0],[1,1]]})").substr(0, 44),
             "spec.type: \"bezir\" is not a curve type (type");
-  EXPECT_THAT(error_of(R"({"type": "bspline", "points": [[0,0],[1,1],[2,0]]})"),
-              HasSubstr("spec: degree is missing"));
+  EXPECT_THAT(error_of(R"({"type": "bspline", "points": [[0,0],[1,1],[2,0]]})"), HasSubstr("spec: degree is missing"));
   EXPECT_THAT(error_of(R"({"type": "bspline", "degree": 2.5, "points": [[0,0],[1,1],[2,0]]})"),
               HasSubstr("spec.degree: expected an integer, got 2.5"));
   EXPECT_THAT(error_of(R"({"type": "cardinal", "tenson": 0.3, "points": [[0,0],[1,1],[2,0]]})"),
@@ -208,8 +211,8 @@ TEST(io_spec, catmull_rom_and_cardinal_with_end_control_points) {
   // The textbook Catmull-Rom: the first and last of the eight points only shape the end segments.
   const std::string points = "[[0,0],[1,2],[3,3],[4,0],[6,1],[7,4],[9,3],[10,0]]";
   const cb::point_list<double, 2> pts{{0, 0}, {1, 2}, {3, 3}, {4, 0}, {6, 1}, {7, 4}, {9, 3}, {10, 0}};
-  const auto j = io::parse(R"({"type": "catmull_rom", "points": )" + points +
-                           R"(, "alpha": 0.5, "end": "control_points"})");
+  const auto j =
+      io::parse(R"({"type": "catmull_rom", "points": )" + points + R"(, "alpha": 0.5, "end": "control_points"})");
   cb::cardinal_options<double, 2> co;
   co.alpha = 0.5;
   co.end = cb::cardinal_end::control_points;
@@ -240,14 +243,17 @@ TEST(io_spec, catmull_rom_and_cardinal_with_end_control_points) {
   }
   // The cardinal type takes the same end, with its tension, and given knots.
   co.s = (1 - 0.4) / 2.0;
-  expect_same_curve(make<2>(R"({"type": "cardinal", "tension": 0.4, "alpha": 0.5, "end": "control_points", "points": )" +
-                            points + "}"),
-                    cb::cardinal_spline<double, 2>(pts, co));
+  expect_same_curve(
+      make<2>(R"({"type": "cardinal", "tension": 0.4, "alpha": 0.5, "end": "control_points", "points": )" + points +
+              "}"),
+      cb::cardinal_spline<double, 2>(pts, co));
   co.alpha = 0;
   const std::vector<double> given{0, 1, 1.5, 3, 4, 4.25, 6, 7};
-  expect_same_curve(make<2>(R"({"type": "cardinal", "tension": 0.4, "end": "control_points", "knots": [0, 1, 1.5, 3, 4, 4.25, 6, 7], "points": )" +
-                            points + "}"),
-                    cb::cardinal_spline<double, 2>(given, pts, co));
+  expect_same_curve(
+      make<2>(
+          R"({"type": "cardinal", "tension": 0.4, "end": "control_points", "knots": [0, 1, 1.5, 3, 4, 4.25, 6, 7], "points": )" +
+          points + "}"),
+      cb::cardinal_spline<double, 2>(given, pts, co));
   // Too few points: the error names the field, the count and the end mode; a repeated point with
   // alpha > 0 is still refused.
   for (const char* type : {"catmull_rom", "cardinal"})
@@ -256,8 +262,10 @@ TEST(io_spec, catmull_rom_and_cardinal_with_end_control_points) {
                            R"(, "end": "control_points", "points": [[0,0],[1,1],[2,0]]})"),
                   HasSubstr("points: 3 given, at least 4 required (end = control_points"))
           << type << " alpha " << alpha;
-  EXPECT_THAT(error_of(R"({"type": "catmull_rom", "alpha": 0.5, "end": "control_points", "points": [[0,0],[1,1],[1,1],[2,0]]})"),
-              HasSubstr("points[2] repeats points[1]"));
+  EXPECT_THAT(
+      error_of(
+          R"({"type": "catmull_rom", "alpha": 0.5, "end": "control_points", "points": [[0,0],[1,1],[1,1],[2,0]]})"),
+      HasSubstr("points[2] repeats points[1]"));
   EXPECT_THAT(error_of(R"({"type": "catmull_rom", "end": "control", "points": [[0,0],[1,1],[2,0],[3,1]]})"),
               HasSubstr("spec.end: \"control\" is not one of"));
 }

@@ -45,7 +45,8 @@ static_assert(cb::curve<cbm::keyframe_track<cb::real50, 3>>);
 
 template <class Real>
 std::vector<cbm::scalar_key<Real>> scale_keys() {  // seed 002 frames, a scale channel
-  return {{Real(22), Real(1)}, {Real(34), Real(5) / Real(2)}, {Real(50), Real(5) / Real(2)}, {Real(67), Real(1) / Real(2)}};
+  return {
+      {Real(22), Real(1)}, {Real(34), Real(5) / Real(2)}, {Real(50), Real(5) / Real(2)}, {Real(67), Real(1) / Real(2)}};
 }
 
 // q(f) = (f - 40)^2 / 64 + 1 on irregular frames (exact in every type at integer frames).
@@ -80,8 +81,9 @@ TYPED_TEST(keyframes_test, every_family_interpolates_the_keys) {
   const auto keys = scale_keys<Real>();
   const std::vector<cb::point<Real, 1>> slopes(keys.size(), cb::point<Real, 1>(Real(1) / Real(8)));
   std::vector<cbm::keyframe_track<Real, 1>> tracks;
-  for (auto how : {cbm::key_interpolation::linear, cbm::key_interpolation::catmull_rom, cbm::key_interpolation::cardinal,
-                   cbm::key_interpolation::natural_cubic, cbm::key_interpolation::monotone}) {
+  for (auto how :
+       {cbm::key_interpolation::linear, cbm::key_interpolation::catmull_rom, cbm::key_interpolation::cardinal,
+        cbm::key_interpolation::natural_cubic, cbm::key_interpolation::monotone}) {
     cbm::track_options<Real> opt;
     opt.interpolation = how;
     opt.tension_s = Real(3) / Real(10);
@@ -167,10 +169,8 @@ TEST(keyframes, seed_002_channels) {
   // reproduce those. Its frame samples are compared with the closed form of the motion.
   using point3 = cb::point<double, 3>;
   const double v = 20.0 / 61;
-  const std::vector<cbm::key<double, 3>> position{{22, point3(-5, 0, 0)},
-                                                  {34, point3(-185.0 / 61, 0, 0)},
-                                                  {50, point3(135.0 / 61, 0, 0)},
-                                                  {67, point3(5, 0, 0)}};
+  const std::vector<cbm::key<double, 3>> position{
+      {22, point3(-5, 0, 0)}, {34, point3(-185.0 / 61, 0, 0)}, {50, point3(135.0 / 61, 0, 0)}, {67, point3(5, 0, 0)}};
   const std::vector<point3> speeds{point3::Zero(), point3(v, 0, 0), point3(v, 0, 0), point3::Zero()};
   const cbm::keyframe_track<double, 3> pos(position, speeds);
   std::vector<point3> xs(46);
@@ -232,7 +232,8 @@ TEST(keyframes, errors_name_the_key) {
             "interpolation = hermite needs slopes: use the keyframe_track constructor with slopes");
   const auto k1 = cbm::scalar_keys<double>(ok);
   const std::vector<cb::point<double, 1>> two_slopes(2, cb::point<double, 1>(0.0));
-  EXPECT_EQ(message([&] { (void)cbm::hermite_track<double, 1>(k1, two_slopes); }), "slopes: 2 given, must match keys: 3");
+  EXPECT_EQ(message([&] { (void)cbm::hermite_track<double, 1>(k1, two_slopes); }),
+            "slopes: 2 given, must match keys: 3");
   EXPECT_EQ(message([&] { (void)cbm::catmull_rom_track<double, 1>(k1, cb::cardinal_end::closed); }),
             "ends = closed: keyframe tracks use phantom or one_sided ends (a closed loop needs an extra key frame; "
             "for given end tangents use hermite_track)");

@@ -80,8 +80,8 @@ TYPED_TEST(kb_test, tangents_are_the_papers_with_time_adjustment) {
     // And as derivatives in u: the one-sided limits are the segment tangents divided by that side's h.
     ASSERT_TRUE(cbt::point_within(e.evaluate_segment(i - 1, Real(1), 1), cb::point<cb::real50, 2>(ds / n0),
                                   cb::real50(16), tangent_ulps));
-    ASSERT_TRUE(cbt::point_within(e.evaluate_segment(i, Real(0), 1), cb::point<cb::real50, 2>(dd / n1),
-                                  cb::real50(16), tangent_ulps));
+    ASSERT_TRUE(cbt::point_within(e.evaluate_segment(i, Real(0), 1), cb::point<cb::real50, 2>(dd / n1), cb::real50(16),
+                                  tangent_ulps));
   }
   for (std::size_t i = 0; i < pd.size(); ++i)
     ASSERT_TRUE(cbt::point_within(c(Real(kd[i])), p50(i), cb::real50(4), knot_value_ulps)) << i;
@@ -102,7 +102,8 @@ TYPED_TEST(kb_test, time_adjustment_makes_zero_continuity_c1_in_time) {
                                     cb::real50(16), continuity_ulps))
           << "adjusted C" << order << " at " << i;
     // Without the adjustment the velocity jumps by the ratio of the intervals (h differs at every knot here).
-    const auto jump = (r.engine().evaluate_segment(i - 1, Real(1), 1) - r.engine().evaluate_segment(i, Real(0), 1)).norm();
+    const auto jump =
+        (r.engine().evaluate_segment(i - 1, Real(1), 1) - r.engine().evaluate_segment(i, Real(0), 1)).norm();
     EXPECT_GT(static_cast<double>(jump), 1e-2) << "raw at " << i;
   }
 }
@@ -207,14 +208,21 @@ TEST(kochanek_bartels, bad_input_names_what_and_where) {
   EXPECT_THAT(msg([&] { cb::kochanek_bartels<double, 2>(p, std::vector<cb::tcb<double>>(2), {}); }),
               HasSubstr("params: 2 given, must match points: 3"));
   ps[1].continuity = std::nan("");
-  EXPECT_THAT(msg([&] { cb::kochanek_bartels<double, 2>(p, ps, {}); }), HasSubstr("params.continuity[1] = nan: must be finite"));
-  EXPECT_THAT(msg([&] { cb::kochanek_bartels<double, 2>({0.0, 2.0, 1.0}, p, std::vector<cb::tcb<double>>(3), {}); }),
+  EXPECT_THAT(msg([&] { cb::kochanek_bartels<double, 2>(p, ps, {}); }),
+              HasSubstr("params.continuity[1] = nan: must be finite"));
+  EXPECT_THAT(msg([&] {
+                cb::kochanek_bartels<double, 2>({0.0, 2.0, 1.0}, p, std::vector<cb::tcb<double>>(3), {});
+              }),
               HasSubstr("knots must be increasing: knots[2] = 1 <= knots[1] = 2"));
   cb::kochanek_bartels<double, 2>::options closed{};
   closed.closed = true;
-  EXPECT_THAT(msg([&] { cb::kochanek_bartels<double, 2>({0.0, 1.0, 2.0}, p, std::vector<cb::tcb<double>>(3), closed); }),
+  EXPECT_THAT(msg([&] {
+                cb::kochanek_bartels<double, 2>({0.0, 1.0, 2.0}, p, std::vector<cb::tcb<double>>(3), closed);
+              }),
               HasSubstr("knots: 3 given, must match points + 1 (closed loop): 4"));
-  EXPECT_THAT(msg([&] { cb::kochanek_bartels<double, 2>({P(0, 0), P(1, 0)}, std::vector<cb::tcb<double>>(2), closed); }),
+  EXPECT_THAT(msg([&] {
+                cb::kochanek_bartels<double, 2>({P(0, 0), P(1, 0)}, std::vector<cb::tcb<double>>(2), closed);
+              }),
               HasSubstr("points: 2 given, at least 3 required (a closed loop needs three keys)"));
   EXPECT_THAT(msg([&] { cb::kochanek_bartels<double, 2>({P(0, 0)}, std::vector<cb::tcb<double>>(1), {}); }),
               HasSubstr("points: 1 given, at least 2 required"));

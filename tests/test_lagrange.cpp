@@ -150,7 +150,8 @@ TYPED_TEST(lagrange_test, reproduces_polynomials_and_their_derivatives) {
     // table: x 64); order > n is exactly zero.
     if (count == 7) {
       const cb::point<Real, 2> top = c.derivative(Real(0.25), 6);
-      EXPECT_TRUE(cbt::point_within(top, cb::point<cb::real50, 2>(1440, -720), cb::real50(1440), 64 * reproduce_ulps[4]));
+      EXPECT_TRUE(
+          cbt::point_within(top, cb::point<cb::real50, 2>(1440, -720), cb::real50(1440), 64 * reproduce_ulps[4]));
     }
     EXPECT_EQ(c.derivative(Real(0.25), static_cast<int>(count)), (cb::point<Real, 2>::Zero()));
   }
@@ -175,8 +176,8 @@ TYPED_TEST(lagrange_test, derivatives_match_real50_at_near_and_between_nodes) {
     xs.push_back(u[j]);  // at a node
     if (j + 1 < u.size()) {
       const Real h = u[j + 1] - u[j];
-      xs.push_back(u[j] + h / Real(2));                // between
-      xs.push_back(u[j] + h * Real(1) / Real(1024));   // near (right of u_j)
+      xs.push_back(u[j] + h / Real(2));                         // between
+      xs.push_back(u[j] + h * Real(1) / Real(1024));            // near (right of u_j)
       xs.push_back(u[j + 1] - Real(64) * cb::epsilon<Real>());  // very near (left of u_{j+1})
     }
   }
@@ -206,8 +207,8 @@ TYPED_TEST(lagrange_test, monomial_form_agrees_at_low_degree) {
   // The second coordinate is x^2 - 1/2 exactly: coefficients (-1/2, 0, 1, 0, 0, 0).
   const std::array<double, 6> x2{-0.5, 0, 1, 0, 0, 0};
   for (std::size_t k = 0; k < 6; ++k)
-    EXPECT_TRUE(cbt::within_scaled_ulps(m.monomial_coefficients()[k][1], cb::real50(x2[k]), cb::real50(1),
-                                        monomial_ulps))
+    EXPECT_TRUE(
+        cbt::within_scaled_ulps(m.monomial_coefficients()[k][1], cb::real50(x2[k]), cb::real50(1), monomial_ulps))
         << "a_" << k;
   // Reference: the interpolant of the same data in 50 digits (barycentric on real50).
   std::vector<cb::real50> u50;
@@ -307,11 +308,12 @@ TEST(lagrange, monomial_form_loses_to_barycentric_at_degree_20) {
     bary_d1 = std::max(bary_d1, static_cast<double>(abs(cb::real50(bary.derivative(x, 1)[0]) - r1)));
     mono_d1 = std::max(mono_d1, static_cast<double>(abs(cb::real50(mono.derivative(x, 1)[0]) - r1)));
   }
-  std::printf("n = 20 equispaced on [0, 1], max |p| = %.3g: max error barycentric %.3e, monomial %.3e "
-              "(ratio %.3g); monomial in real50 %.3e\n",
-              static_cast<double>(scale), bary_err, mono_err, mono_err / bary_err, mono50_err);
-  std::printf("first derivative, max |p'| = %.3g: barycentric %.3e, monomial %.3e (ratio %.3g)\n", d1_scale,
-              bary_d1, mono_d1, mono_d1 / bary_d1);
+  std::printf(
+      "n = 20 equispaced on [0, 1], max |p| = %.3g: max error barycentric %.3e, monomial %.3e "
+      "(ratio %.3g); monomial in real50 %.3e\n",
+      static_cast<double>(scale), bary_err, mono_err, mono_err / bary_err, mono50_err);
+  std::printf("first derivative, max |p'| = %.3g: barycentric %.3e, monomial %.3e (ratio %.3g)\n", d1_scale, bary_d1,
+              mono_d1, mono_d1 / bary_d1);
   // Higham's bound for the second barycentric form: (3n + 4) u Lambda_n |p|, u = eps/2, with the
   // equispaced Lebesgue constant Lambda_20 ~ 2^21 / (e n ln n) ~ 1.3e4.
   const double lebesgue_20 = std::ldexp(1.0, 21) / (std::exp(1.0) * 20 * std::log(20.0));
@@ -352,8 +354,7 @@ TEST(lagrange, bad_input_is_rejected_with_a_clear_message) {
   EXPECT_EQ(message_of([&] { cb::lagrange<double, 2> c(nan); }), "points[1][1] = nan: coordinates must be finite");
   const cb::point_list<double, 2> three{p2(0, 0), p2(1, 1), p2(2, 0)};
   const std::vector<double> two{0, 1};
-  EXPECT_EQ(message_of([&] { cb::lagrange<double, 2> c(three, two); }),
-            "parameters: 2 given, must match points: 3");
+  EXPECT_EQ(message_of([&] { cb::lagrange<double, 2> c(three, two); }), "parameters: 2 given, must match points: 3");
   const std::vector<double> dup{0, 0.5, 0.5};
   EXPECT_EQ(message_of([&] { cb::lagrange<double, 2> c(three, dup); }),
             "parameters must be increasing: parameters[2] = 0.5 <= parameters[1] = 0.5");

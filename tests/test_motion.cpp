@@ -276,11 +276,17 @@ TEST(motion, errors_are_reported) {
     }
     return "(no invalid_input)";
   };
-  EXPECT_EQ(message([&] { cbm::motion_path(map, ease, cb::interval<double>{2.0, 1.0}); }),
+  EXPECT_EQ(message([&] {
+              cbm::motion_path(map, ease, cb::interval<double>{2.0, 1.0});
+            }),
             "time = [2, 1]: the motion needs an interval with time.lo < time.hi");
-  EXPECT_EQ(message([&] { cbm::motion_path(map, ease, cbm::frame_range<double>{67, 22, 24.0}); }),
+  EXPECT_EQ(message([&] {
+              cbm::motion_path(map, ease, cbm::frame_range<double>{67, 22, 24.0});
+            }),
             "frames = [67, 22]: the last frame must come after the first");
-  EXPECT_EQ(message([&] { cbm::motion_path(map, ease, cbm::frame_range<double>{22, 67, 0.0}); }),
+  EXPECT_EQ(message([&] {
+              cbm::motion_path(map, ease, cbm::frame_range<double>{22, 67, 0.0});
+            }),
             "fps = 0: must be > 0");
   const cbm::motion_path timed(map, ease, cb::interval<double>{1.0, 4.0});
   EXPECT_THROW((void)timed.frames(), std::logic_error);
@@ -342,7 +348,8 @@ TYPED_TEST(seed_002_test, positions_speeds_and_distance_per_frame) {
   // few roundings of L S(x), measured in eps(Real) of the extent 5:
   const real50 L50(10);
   const real50 eps(cb::epsilon<Real>());
-  const real50 inv_err = (real50(arc.options().table_tolerance) + real50(arc.options().newton.relative_tolerance)) * L50;
+  const real50 inv_err =
+      (real50(arc.options().table_tolerance) + real50(arc.options().newton.relative_tolerance)) * L50;
   const double tol = static_cast<double>((inv_err + 32 * eps * L50) / (eps * 5));
 
   EXPECT_TRUE(cbt::within_ulps(arc.length(), L50, 4));
@@ -395,8 +402,8 @@ void seed_002_example() {
   const cb::motion::motion_path motion(arc, ease, cb::motion::frame_range<double>{22, 67, 24.0});
 
   for (long long f = 22; f <= 67; ++f) {
-    const point3 p = motion.position_at_frame(f);                 // P(U(L S((f - 22) / 45)))
-    const double per_frame = motion.speed_at_frame(f) / 24.0;     // 20/61 while cruising
+    const point3 p = motion.position_at_frame(f);              // P(U(L S((f - 22) / 45)))
+    const double per_frame = motion.speed_at_frame(f) / 24.0;  // 20/61 while cruising
     std::printf("frame %2lld  x = %9.5f  speed = %.5f per frame\n", f, p.x(), per_frame);
   }
   // ---- docs/motion.md snippet ends ----
@@ -426,8 +433,7 @@ double inversion_bound(const cb::arclength::parameterization<C>& a, cb::arclengt
   const double L = a.length();
   const double newton = a.options().newton.relative_tolerance * L;
   switch (m) {
-    case cb::arclength::inversion_method::newton:
-      return newton;  // the Newton stopping rule |s(u) - s| <= tol L
+    case cb::arclength::inversion_method::newton: return newton;  // the Newton stopping rule |s(u) - s| <= tol L
     case cb::arclength::inversion_method::hermite_table:
       // the measured table error (of the coarser table; the kept one is finer), its target, and
       // the Newton error of the nodes it interpolates
@@ -508,7 +514,6 @@ TEST(motion, curved_path_frame_distances_follow_the_ease) {
     check_curved_motion(c, arc, m, cbm::linear_ease<double>{}, cbm::linear_ease<real50>{}, "constant speed");
     check_curved_motion(c, arc, m, cbm::sine_plateau_ease<double>(0.25, 0.75),
                         cbm::sine_plateau_ease<real50>(0.25, 0.75), "sine plateau");
-    check_curved_motion(c, arc, m, cbm::smootherstep_ease<double>{}, cbm::smootherstep_ease<real50>{},
-                        "smootherstep");
+    check_curved_motion(c, arc, m, cbm::smootherstep_ease<double>{}, cbm::smootherstep_ease<real50>{}, "smootherstep");
   }
 }

@@ -115,12 +115,16 @@ TYPED_TEST(natural_test, interpolates_is_c2_and_honours_each_end_condition) {
     const auto d = s.domain();
     switch (s.end_condition()) {
       case cb::spline_end::natural:
-        ASSERT_TRUE(cbt::point_within(s.derivative(d.lo, 2), cb::point<cb::real50, 2>(0, 0), scale(2), continuity_ulps));
-        ASSERT_TRUE(cbt::point_within(s.derivative(d.hi, 2), cb::point<cb::real50, 2>(0, 0), scale(2), continuity_ulps));
+        ASSERT_TRUE(
+            cbt::point_within(s.derivative(d.lo, 2), cb::point<cb::real50, 2>(0, 0), scale(2), continuity_ulps));
+        ASSERT_TRUE(
+            cbt::point_within(s.derivative(d.hi, 2), cb::point<cb::real50, 2>(0, 0), scale(2), continuity_ulps));
         break;
       case cb::spline_end::clamped:
-        ASSERT_TRUE(cbt::point_within(s.derivative(d.lo, 1), cb::point<cb::real50, 2>(1, -2), scale(1), continuity_ulps));
-        ASSERT_TRUE(cbt::point_within(s.derivative(d.hi, 1), cb::point<cb::real50, 2>(0.5, 3), scale(1), continuity_ulps));
+        ASSERT_TRUE(
+            cbt::point_within(s.derivative(d.lo, 1), cb::point<cb::real50, 2>(1, -2), scale(1), continuity_ulps));
+        ASSERT_TRUE(
+            cbt::point_within(s.derivative(d.hi, 1), cb::point<cb::real50, 2>(0.5, 3), scale(1), continuity_ulps));
         break;
       case cb::spline_end::not_a_knot:
         // P''' continuous at u_1 and u_{n-1}.
@@ -132,8 +136,9 @@ TYPED_TEST(natural_test, interpolates_is_c2_and_honours_each_end_condition) {
         break;
       case cb::spline_end::periodic:
         for (int order = 0; order <= 2; ++order)
-          ASSERT_TRUE(cbt::point_within(s.derivative(d.hi, order), cb::point_cast<cb::real50>(s.derivative(d.lo, order)),
-                                        scale(order), continuity_ulps))
+          ASSERT_TRUE(cbt::point_within(s.derivative(d.hi, order),
+                                        cb::point_cast<cb::real50>(s.derivative(d.lo, order)), scale(order),
+                                        continuity_ulps))
               << "periodic order " << order;
         break;
     }
@@ -172,7 +177,8 @@ TYPED_TEST(natural_test, not_a_knot_and_exact_clamped_reproduce_cubics) {
   cb::point_list<Real, 2> v;
   for (double u : kd) v.push_back(cb::point_cast<Real>(q(u, 0)));
   const cb::natural_cubic_spline<Real, 2> nak(knots<Real>(), v, cb::spline_end::not_a_knot);
-  const cb::natural_cubic_spline<Real, 2> cl(knots<Real>(), v, cb::point_cast<Real>(q(0, 1)), cb::point_cast<Real>(q(4, 1)));
+  const cb::natural_cubic_spline<Real, 2> cl(knots<Real>(), v, cb::point_cast<Real>(q(0, 1)),
+                                             cb::point_cast<Real>(q(4, 1)));
   // Four points are the minimum for not-a-knot: the single interpolating cubic.
   const std::vector<Real> k4{Real(0), Real(0.5), Real(2), Real(3)};
   cb::point_list<Real, 2> v4;
@@ -182,8 +188,10 @@ TYPED_TEST(natural_test, not_a_knot_and_exact_clamped_reproduce_cubics) {
     const double u = 4.0 * k / 64.0;
     for (int order = 0; order <= 3; ++order) {
       const cb::real50 sc = cb::real50(8) * cb::real50(std::pow(4.0, order));
-      ASSERT_TRUE(cbt::point_within(nak.derivative(Real(u), order), q(u, order), sc, reproduction_ulps)) << u << " " << order;
-      ASSERT_TRUE(cbt::point_within(cl.derivative(Real(u), order), q(u, order), sc, reproduction_ulps)) << u << " " << order;
+      ASSERT_TRUE(cbt::point_within(nak.derivative(Real(u), order), q(u, order), sc, reproduction_ulps))
+          << u << " " << order;
+      ASSERT_TRUE(cbt::point_within(cl.derivative(Real(u), order), q(u, order), sc, reproduction_ulps))
+          << u << " " << order;
       if (u <= 3) {
         ASSERT_TRUE(cbt::point_within(nak4.derivative(Real(u), order), q(u, order), sc, reproduction_ulps))
             << u << " " << order;
@@ -214,19 +222,32 @@ TEST(natural, bad_input_names_what_and_where) {
   };
   const cb::point_list<double, 1> v{P(0), P(1), P(0.5), P(2)};
   const std::vector<double> k{0, 1, 2, 3};
-  EXPECT_THAT(msg([&] { cb::natural_cubic_spline<double, 1>(k, v, cb::spline_end::periodic); }),
-              HasSubstr("periodic spline: values[3][0] = 2 differs from values[0][0] = 0: the last value must equal the first"));
-  EXPECT_THAT(msg([&] { cb::natural_cubic_spline<double, 1>({0, 1, 2}, {P(0), P(1), P(0)}, cb::spline_end::not_a_knot); }),
+  EXPECT_THAT(
+      msg([&] { cb::natural_cubic_spline<double, 1>(k, v, cb::spline_end::periodic); }),
+      HasSubstr(
+          "periodic spline: values[3][0] = 2 differs from values[0][0] = 0: the last value must equal the first"));
+  EXPECT_THAT(msg([&] {
+                cb::natural_cubic_spline<double, 1>({0, 1, 2}, {P(0), P(1), P(0)}, cb::spline_end::not_a_knot);
+              }),
               HasSubstr("values: 3 given, at least 4 required (not-a-knot ends need four points)"));
   EXPECT_THAT(msg([&] { cb::natural_cubic_spline<double, 1>(k, v, cb::spline_end::clamped); }),
               HasSubstr("end = clamped needs the end slopes"));
-  EXPECT_THAT(msg([&] { cb::natural_cubic_spline<double, 1>({0, 1, 2}, v); }), HasSubstr("knots: 3 given, must match values: 4"));
-  EXPECT_THAT(msg([&] { cb::natural_cubic_spline<double, 1>({0, 1, 3, 2}, v); }),
+  EXPECT_THAT(msg([&] {
+                cb::natural_cubic_spline<double, 1>({0, 1, 2}, v);
+              }),
+              HasSubstr("knots: 3 given, must match values: 4"));
+  EXPECT_THAT(msg([&] {
+                cb::natural_cubic_spline<double, 1>({0, 1, 3, 2}, v);
+              }),
               HasSubstr("knots must be increasing: knots[3] = 2 <= knots[2] = 3"));
-  EXPECT_THAT(msg([&] { cb::natural_cubic_spline<double, 1>({0, 1, std::nan(""), 3}, v); }), HasSubstr("knots[2] = nan"));
+  EXPECT_THAT(msg([&] {
+                cb::natural_cubic_spline<double, 1>({0, 1, std::nan(""), 3}, v);
+              }),
+              HasSubstr("knots[2] = nan"));
   EXPECT_THAT(msg([&] { cb::natural_cubic_spline<double, 1>(k, v, P(std::nan("")), P(0)); }),
               HasSubstr("start_slope[0][0] = nan"));
-  EXPECT_THAT(msg([&] { cb::natural_cubic_spline<double, 1>({0}, {P(0)}); }), HasSubstr("values: 1 given, at least 2 required"));
+  EXPECT_THAT(msg([&] { cb::natural_cubic_spline<double, 1>({0}, {P(0)}); }),
+              HasSubstr("values: 1 given, at least 2 required"));
   // A periodic spline on two segments uses the 2 x 2 branch of the cyclic solver.
   const cb::natural_cubic_spline<double, 1> two({0, 1, 3}, {P(0), P(1), P(0)}, cb::spline_end::periodic);
   EXPECT_NEAR(two.derivative(0, 1)[0], two.derivative(3, 1)[0], 1e-14);

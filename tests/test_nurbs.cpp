@@ -183,7 +183,8 @@ TYPED_TEST(nurbs_typed, rational_bezier_derivatives_match_series_quotient) {
       // The control points span 4 units: values are measured against that, derivatives against
       // their largest recurrence term (never below 1, C(0) = P0 = 0 at u = 0).
       using std::max;
-      const cb::real50 ref_scale = k == 0 ? cb::real50(4) : max(cb::real50(fact * scale / wt[0] + ref.norm()), cb::real50(1));
+      const cb::real50 ref_scale =
+          k == 0 ? cb::real50(4) : max(cb::real50(fact * scale / wt[0] + ref.norm()), cb::real50(1));
       const double tol = k == 0 ? rational_value_ulps(4) : rational_derivative_ulps(k);
       for (auto alg : {cb::bspline_evaluation::de_boor, cb::bspline_evaluation::basis_sum})
         ASSERT_TRUE(cbt::point_within(c.evaluate(u, k, alg), ref, ref_scale, tol)) << "u=" << s << "/16 k=" << k;
@@ -252,14 +253,23 @@ TEST(nurbs_bad_input, messages) {
     }
     return "no exception";
   };
-  EXPECT_EQ(message([&] { cb::nurbs<double, 2>(3, t, p, {1, 1, 1}); }), "weights: 3 given, must match control_points: 4");
+  EXPECT_EQ(message([&] {
+              cb::nurbs<double, 2>(3, t, p, {1, 1, 1});
+            }),
+            "weights: 3 given, must match control_points: 4");
   EXPECT_EQ(message([&] { cb::nurbs<double, 2>(3, t, p, {1, 0, 1, 1}); }), "weights[1] = 0: must be > 0");
   EXPECT_EQ(message([&] { cb::nurbs<double, 2>(3, t, p, {1, 1, -2, 1}); }), "weights[2] = -2: must be > 0");
-  EXPECT_EQ(message([&] { cb::nurbs<double, 2>(3, t, p, {1, 1, 1, std::numeric_limits<double>::quiet_NaN()}); }),
+  EXPECT_EQ(message([&] {
+              cb::nurbs<double, 2>(3, t, p, {1, 1, 1, std::numeric_limits<double>::quiet_NaN()});
+            }),
             "weights[3] = nan: must be finite");
-  EXPECT_EQ(message([&] { cb::nurbs<double, 2>(3, {0, 0, 0, 0.5, 0.25, 1, 1}, p, {1, 1, 1, 1}); }),
+  EXPECT_EQ(message([&] {
+              cb::nurbs<double, 2>(3, {0, 0, 0, 0.5, 0.25, 1, 1}, p, {1, 1, 1, 1});
+            }),
             "knots must be non-decreasing: knots[4] = 0.25 < knots[3] = 0.5");
-  EXPECT_EQ(message([&] { cb::nurbs<double, 2>(3, {0, 0, 0, 1, 1, 1}, p, {1, 1, 1, 1}); }),
+  EXPECT_EQ(message([&] {
+              cb::nurbs<double, 2>(3, {0, 0, 0, 1, 1, 1}, p, {1, 1, 1, 1});
+            }),
             "knots: 6 given, must be control_points + order = 4 + 3 = 7");
   EXPECT_EQ(message([&] { (void)cb::nurbs_circle_9<double>({0, 0}, -1.0); }), "radius = -1: must be > 0");
   const auto c = cb::nurbs_circle_7<double>({0, 0}, 1.0);

@@ -100,7 +100,7 @@ cb::real50 data_scale(int order) {
       tmax = std::max(tmax, cb::real50(abs(s[d])));
     }
   }
-  cb::real50 s = vmax + cb::real50(0.75) * tmax;  // max h = 0.75
+  cb::real50 s = vmax + cb::real50(0.75) * tmax;                       // max h = 0.75
   for (int k = 0; k < std::min(order, 3); ++k) s /= cb::real50(0.25);  // min h = 0.25
   return s;
 }
@@ -164,7 +164,8 @@ TEST(engine, mixed_bases_match_their_own_closed_forms) {
   g0 << 1.0, 3.0, -2.0, 0.5;
   g1 << 0.5, -1.0, 2.0, 4.0;
   g2 << 0.25, -1.0, 0.5, 2.0;
-  std::vector<cb::basis::matrix4<double>> m{cb::basis::bezier_matrix<double>(), cb::basis::uniform_bspline_matrix<double>(),
+  std::vector<cb::basis::matrix4<double>> m{cb::basis::bezier_matrix<double>(),
+                                            cb::basis::uniform_bspline_matrix<double>(),
                                             cb::basis::matrix4<double>::Identity()};
   const cb::piecewise_cubic<double, 1> c({0.0, 1.0, 3.0, 3.5}, {g0, g1, g2}, m);
   EXPECT_FALSE(c.uniform());
@@ -325,24 +326,37 @@ TEST(engine, bad_input_is_rejected_with_a_message) {
     }
     return "no exception";
   };
-  EXPECT_THAT(msg([&] { pc({0.0}, {}, cb::basis::hermite_matrix<double>()); }), HasSubstr("knots: 1 given, at least 2"));
-  EXPECT_THAT(msg([&] { pc({0.0, 1.0, 1.0}, {g, g}, cb::basis::hermite_matrix<double>()); }),
+  EXPECT_THAT(msg([&] { pc({0.0}, {}, cb::basis::hermite_matrix<double>()); }),
+              HasSubstr("knots: 1 given, at least 2"));
+  EXPECT_THAT(msg([&] {
+                pc({0.0, 1.0, 1.0}, {g, g}, cb::basis::hermite_matrix<double>());
+              }),
               HasSubstr("knots must be increasing: knots[2] = 1 <= knots[1] = 1"));
-  EXPECT_THAT(msg([&] { pc({0.0, std::nan(""), 2.0}, {g, g}, cb::basis::hermite_matrix<double>()); }),
+  EXPECT_THAT(msg([&] {
+                pc({0.0, std::nan(""), 2.0}, {g, g}, cb::basis::hermite_matrix<double>());
+              }),
               HasSubstr("knots[1] = nan: must be finite"));
-  EXPECT_THAT(msg([&] { pc({0.0, 1.0, 2.0}, {g}, cb::basis::hermite_matrix<double>()); }),
+  EXPECT_THAT(msg([&] {
+                pc({0.0, 1.0, 2.0}, {g}, cb::basis::hermite_matrix<double>());
+              }),
               HasSubstr("geometries: 1 given, must match segments (knots - 1): 2"));
   pc::geometry_type bad = g;
   bad(2, 1) = std::numeric_limits<double>::infinity();
-  EXPECT_THAT(msg([&] { pc({0.0, 1.0, 2.0}, {g, bad}, cb::basis::hermite_matrix<double>()); }),
+  EXPECT_THAT(msg([&] {
+                pc({0.0, 1.0, 2.0}, {g, bad}, cb::basis::hermite_matrix<double>());
+              }),
               HasSubstr("geometries[1](2, 1) = inf: geometry must be finite"));
   cb::point_list<double, 2> v(3, cb::point<double, 2>::Zero());
   cb::point_list<double, 2> s2(2, cb::point<double, 2>::Zero());
-  EXPECT_THAT(msg([&] { (void)pc::from_hermite({0.0, 1.0, 2.0}, v, v, s2); }),
+  EXPECT_THAT(msg([&] {
+                (void)pc::from_hermite({0.0, 1.0, 2.0}, v, v, s2);
+              }),
               HasSubstr("outgoing slopes: 2 given, must match knots: 3"));
   cb::point_list<double, 2> vn = v;
   vn[1][0] = std::nan("");
-  EXPECT_THAT(msg([&] { (void)pc::from_hermite({0.0, 1.0, 2.0}, vn, v, v); }),
+  EXPECT_THAT(msg([&] {
+                (void)pc::from_hermite({0.0, 1.0, 2.0}, vn, v, v);
+              }),
               HasSubstr("values[1][0] = nan: coordinates must be finite"));
   const pc c({0.0, 1.0}, {g}, cb::basis::hermite_matrix<double>());
   EXPECT_THROW((void)c(1.5), std::domain_error);
@@ -381,9 +395,12 @@ std::vector<std::pair<std::string, std::vector<Real>>> lookup_knot_sets() {
     std::vector<Real> e{u0};
     for (std::size_t b = 1; b < n; ++b) {
       Real x = u0 + Real(static_cast<long long>(b)) * width;
-      if (b % 8 == 0) x = x + width / Real(2);
-      else if (b % 3 == 1) x = std::nextafter(x, u1);
-      else if (b % 3 == 2) x = std::nextafter(x, u0);
+      if (b % 8 == 0)
+        x = x + width / Real(2);
+      else if (b % 3 == 1)
+        x = std::nextafter(x, u1);
+      else if (b % 3 == 2)
+        x = std::nextafter(x, u0);
       e.push_back(x);
     }
     e.push_back(u1);
@@ -408,8 +425,10 @@ std::vector<std::pair<std::string, std::vector<Real>>> lookup_knot_sets() {
       Real x = u0 + Real(static_cast<long long>(b)) * ((u1 - u0) / Real(static_cast<long long>(buckets)));
       while (bucket(x) >= b) x = std::nextafter(x, u0);
       while (bucket(x) < b) x = std::nextafter(x, u1);
-      if (j % 3 == 1) x = std::nextafter(x, u1);
-      else if (j % 3 == 2) x = std::nextafter(x, u0);
+      if (j % 3 == 1)
+        x = std::nextafter(x, u1);
+      else if (j % 3 == 2)
+        x = std::nextafter(x, u0);
       e.push_back(x);
     }
     e.push_back(u1);
@@ -505,8 +524,7 @@ TYPED_TEST(lookup_test, reciprocal_local_parameter_is_within_four_roundings) {
   R50 worst(0);
   for (const auto& [name, k] : lookup_knot_sets<Real>()) {
     for (const Real& x : lookup_parameters(k, 2000)) {
-      const std::size_t i =
-          static_cast<std::size_t>(std::upper_bound(k.begin() + 1, k.end() - 1, x) - k.begin()) - 1;
+      const std::size_t i = static_cast<std::size_t>(std::upper_bound(k.begin() + 1, k.end() - 1, x) - k.begin()) - 1;
       const Real t = (x - k[i]) * (Real(1) / (k[i + 1] - k[i]));
       const R50 exact = (R50(x) - R50(k[i])) / (R50(k[i + 1]) - R50(k[i]));
       const R50 err = abs(R50(t) - exact);

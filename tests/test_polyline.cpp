@@ -137,8 +137,7 @@ TYPED_TEST(polyline_test, slope_at_a_vertex_is_right_handed_except_at_the_end) {
   const auto t = parameters<Real>();
   for (std::size_t i = 0; i + 1 < t.size(); ++i) {
     EXPECT_EQ(c.segment(t[i]), i);
-    EXPECT_TRUE(cbt::point_within(c.derivative(t[i], 1), ref_slope(c, i), scale_of(ref_slope(c, i)), slope_ulps))
-        << i;
+    EXPECT_TRUE(cbt::point_within(c.derivative(t[i], 1), ref_slope(c, i), scale_of(ref_slope(c, i)), slope_ulps)) << i;
   }
   EXPECT_EQ(c.segment(t.back()), t.size() - 2);
   EXPECT_TRUE(cbt::point_within(c.derivative(t.back(), 1), ref_slope(c, t.size() - 2),
@@ -246,11 +245,9 @@ TEST(polyline, bad_input_is_rejected_with_a_clear_message) {
   EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(one); }),
             "vertices: 1 given, at least 2 required (a polyline has at least one segment)");
   const cb::point_list<double, 2> nan{p2(0, 0), p2(std::numeric_limits<double>::quiet_NaN(), 1)};
-  EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(nan); }),
-            "vertices[1][0] = nan: coordinates must be finite");
+  EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(nan); }), "vertices[1][0] = nan: coordinates must be finite");
   const cb::point_list<double, 2> inf{p2(0, 0), p2(1, std::numeric_limits<double>::infinity())};
-  EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(inf); }),
-            "vertices[1][1] = inf: coordinates must be finite");
+  EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(inf); }), "vertices[1][1] = inf: coordinates must be finite");
   const cb::point_list<double, 2> three{p2(0, 0), p2(1, 1), p2(2, 0)};
   const std::vector<double> two_params{0, 1};
   EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(three, two_params); }),
@@ -262,8 +259,7 @@ TEST(polyline, bad_input_is_rejected_with_a_clear_message) {
   EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(three, decreasing); }),
             "parameters must be increasing: parameters[2] = 1 <= parameters[1] = 2");
   const std::vector<double> nan_param{0, std::numeric_limits<double>::quiet_NaN(), 2};
-  EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(three, nan_param); }),
-            "parameters[1] = nan: must be finite");
+  EXPECT_EQ(message_of([&] { cb::polyline<double, 2> c(three, nan_param); }), "parameters[1] = nan: must be finite");
   const cb::point_list<double, 2> repeated_vertex{p2(0, 0), p2(1, 1), p2(1, 1)};
   EXPECT_EQ(message_of([&] { (void)cb::chord_length_parameters<double, 2>(repeated_vertex); }),
             "vertices[2] equals vertices[1]: zero chord, chord-length parameters must increase");
@@ -272,6 +268,5 @@ TEST(polyline, bad_input_is_rejected_with_a_clear_message) {
   const cb::polyline<double, 2> c(three);
   EXPECT_THROW((void)c(2.5), std::domain_error);
   EXPECT_THAT(message_of([&] { (void)c(-0.5); }), HasSubstr("u = -0.5 is outside the domain [0, 2]"));
-  EXPECT_EQ(message_of([&] { (void)c.derivative(1.0, -1); }),
-            "order = -1: derivative order must be >= 0");
+  EXPECT_EQ(message_of([&] { (void)c.derivative(1.0, -1); }), "order = -1: derivative order must be >= 0");
 }

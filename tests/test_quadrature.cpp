@@ -7,11 +7,11 @@
 #include "support/fixtures.hpp"
 
 #include "curvebench/arclength/gauss_kronrod.hpp"
-#include "curvebench/basis/bernstein.hpp"
 #include "curvebench/arclength/gauss_legendre.hpp"
+#include "curvebench/basis/bernstein.hpp"
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <gmock/gmock.h>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include <cmath>
 #include <thread>
@@ -123,7 +123,8 @@ TYPED_TEST(quadrature_test, kronrod_is_exact_to_degree_3n_plus_1) {
       }
       const cb::real50 exact = k % 2 == 1 ? cb::real50(0) : cb::real50(2) / (k + 1);
       if (k <= exact_degree) {
-        ASSERT_TRUE(cbt::within_scaled_ulps(sum, exact, cb::real50(2), rule_ulps(2 * n + 1))) << "n=" << n << " k=" << k;
+        ASSERT_TRUE(cbt::within_scaled_ulps(sum, exact, cb::real50(2), rule_ulps(2 * n + 1)))
+            << "n=" << n << " k=" << k;
       } else if (k % 2 == 0 && std::is_same_v<Real, cb::real50>) {
         // Not exact beyond: the rule is the Kronrod extension, not a higher Gauss rule (the defect
         // at degree 3n + 2 or 3n + 3 is far above 50-digit rounding for these n).
@@ -154,7 +155,8 @@ TEST(quadrature, kronrod_15_matches_boost_stored_constants) {
     const auto& bw = boost::math::quadrature::gauss_kronrod<double, 15>::weights();
     for (std::size_t i = 0; i < bx.size(); ++i) {
       EXPECT_TRUE(cbt::within_scaled_ulps(r.nodes[7 + i], cb::real50(bx[i]), cb::real50(1), kronrod_ieee_ulps)) << i;
-      EXPECT_TRUE(cbt::within_scaled_ulps(r.kronrod_weights[7 + i], cb::real50(bw[i]), cb::real50(1), kronrod_ieee_ulps));
+      EXPECT_TRUE(
+          cbt::within_scaled_ulps(r.kronrod_weights[7 + i], cb::real50(bw[i]), cb::real50(1), kronrod_ieee_ulps));
     }
   }
   {  // G10-K21 as well
@@ -195,9 +197,18 @@ TYPED_TEST(quadrature_test, adaptive_estimate_bounds_true_error) {
     cb::real50 exact;
   };
   const std::vector<problem> problems{
-      {"sqrt", [](const Real& x) { using std::sqrt; return sqrt(x); }, Real(0), Real(1), cb::real50(2) / 3},
-      {"kink", [](const Real& x) { using std::abs; return abs(x - Real(1) / Real(3)); }, Real(0), Real(1),
-       cb::real50(5) / 18},
+      {"sqrt",
+       [](const Real& x) {
+         using std::sqrt;
+         return sqrt(x);
+       },
+       Real(0), Real(1), cb::real50(2) / 3},
+      {"kink",
+       [](const Real& x) {
+         using std::abs;
+         return abs(x - Real(1) / Real(3));
+       },
+       Real(0), Real(1), cb::real50(5) / 18},
       {"runge", [](const Real& x) { return Real(1) / (Real(1) + Real(25) * x * x); }, Real(-1), Real(1),
        cb::real50(2) / 5 * atan(cb::real50(5))},
   };
@@ -272,7 +283,7 @@ TEST(quadrature, adaptive_stops_at_the_rounding_of_a_noisy_integrand) {
   const auto global = al::integrate_adaptive(f, std::span<const double>(ends, 2), opt);
   EXPECT_EQ(global.status, al::result_status::rounding_limited);
   EXPECT_LE(global.evaluations, 2500u) << "evaluations";
-  EXPECT_NEAR(global.value, 1.0, 1e-9);  // the noise averages: good to its own level
+  EXPECT_NEAR(global.value, 1.0, 1e-9);     // the noise averages: good to its own level
   EXPECT_GT(global.error_estimate, 1e-14);  // and the estimate does not claim the tolerance
   const auto recursive = al::integrate_recursive(f, 0.0, 1.0, 1e-14, al::gauss_kronrod<double>(7), 20);
   EXPECT_EQ(recursive.status, al::result_status::rounding_limited);

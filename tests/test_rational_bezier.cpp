@@ -9,8 +9,8 @@
 #include "curvebench/basis/bernstein.hpp"
 #include "curvebench/curves/rational_bezier.hpp"
 
-#include <Eigen/LU>
 #include <gmock/gmock.h>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <array>
@@ -22,8 +22,8 @@
 
 namespace cb = curvebench;
 namespace cbt = curvebench::testing;
-using ::testing::HasSubstr;
 using cb::real50;
+using ::testing::HasSubstr;
 
 namespace {
 
@@ -258,8 +258,8 @@ TYPED_TEST(rational_test, equal_weights_give_the_polynomial_curve) {
       if (k > L) {
         EXPECT_EQ(r.derivative(u, k), (cb::zero_point<Real, 2>()));
       } else {
-        ASSERT_TRUE(cbt::point_within(r.derivative(u, k), cb::point_cast<real50>(b.derivative(u, k)), scale,
-                                      2 * stable(L)))
+        ASSERT_TRUE(
+            cbt::point_within(r.derivative(u, k), cb::point_cast<real50>(b.derivative(u, k)), scale, 2 * stable(L)))
             << "k=" << k;
       }
     }
@@ -310,8 +310,8 @@ TYPED_TEST(rational_test, circular_arc_lies_on_its_circle) {
     const cb::point<Real, 2> e(center[0] + r * cos(Real(0.25) + sweep), center[1] + r * sin(Real(0.25) + sweep));
     EXPECT_TRUE(cbt::point_within(arc(Real(1)), cb::point_cast<real50>(e), real50(r), 4));
   }
-  std::cout << "circular arc: max | |P - c| - r | = " << worst << " eps * r; derivative identity to order 4: "
-            << worst_identity << " eps\n";
+  std::cout << "circular arc: max | |P - c| - r | = " << worst
+            << " eps * r; derivative identity to order 4: " << worst_identity << " eps\n";
 }
 
 TYPED_TEST(rational_test, conics_satisfy_their_equation_and_classify) {
@@ -326,8 +326,10 @@ TYPED_TEST(rational_test, conics_satisfy_their_equation_and_classify) {
   const struct {
     Real w;
     cb::conic_kind kind;
-  } cases[] = {{Real(0.5), cb::conic_kind::ellipse}, {Real(1), cb::conic_kind::parabola},
-               {Real(2), cb::conic_kind::hyperbola}, {Real(0.0625), cb::conic_kind::ellipse}};
+  } cases[] = {{Real(0.5), cb::conic_kind::ellipse},
+               {Real(1), cb::conic_kind::parabola},
+               {Real(2), cb::conic_kind::hyperbola},
+               {Real(0.0625), cb::conic_kind::ellipse}};
   for (const auto& cs : cases) {
     const auto c = cb::conic(p0, p1, p2, cs.w);
     EXPECT_EQ(c.conic_type(), cs.kind) << cb::to_string(cs.kind);
@@ -352,8 +354,7 @@ TYPED_TEST(rational_test, conics_satisfy_their_equation_and_classify) {
       const Eigen::Matrix<real50, 3, 1> tau = mi * Eigen::Matrix<real50, 3, 1>(x[0], x[1], real50(1));
       const real50 f = tau[1] * tau[1] - 4 * w * w * tau[0] * tau[2];
       cb::point<real50, 2> grad;
-      for (int d = 0; d < 2; ++d)
-        grad[d] = 2 * tau[1] * mi(1, d) - 4 * w * w * (tau[0] * mi(2, d) + tau[2] * mi(0, d));
+      for (int d = 0; d < 2; ++d) grad[d] = 2 * tau[1] * mi(1, d) - 4 * w * w * (tau[0] * mi(2, d) + tau[2] * mi(0, d));
       const real50 distance = abs(f) / grad.norm();
       ASSERT_LE(static_cast<double>(distance / (real50(3 * rho) * real50(cb::epsilon<Real>()))), value_tol(2))
           << cb::to_string(cs.kind) << " s=" << s;
@@ -362,8 +363,8 @@ TYPED_TEST(rational_test, conics_satisfy_their_equation_and_classify) {
       // w = 1 is the polynomial quadratic: the same curve as the Bezier curve of the three points.
       const cb::bezier<Real, 2> q(cb::point_list<Real, 2>{p0, p1, p2});
       for (int s = 0; s <= 50; ++s)
-        ASSERT_TRUE(cbt::point_within(c(Real(s) / Real(50)), cb::point_cast<real50>(q(Real(s) / Real(50))),
-                                      real50(3), 2 * stable(2)));
+        ASSERT_TRUE(cbt::point_within(c(Real(s) / Real(50)), cb::point_cast<real50>(q(Real(s) / Real(50))), real50(3),
+                                      2 * stable(2)));
     }
   }
 }
@@ -386,17 +387,30 @@ TEST(rational_bad_input, messages_name_argument_index_and_value) {
               HasSubstr("control_points: 0 given, at least 2 required"));
   EXPECT_THAT(message_of([] { R c(cb::point_list<double, 2>{P(0, 0)}, std::vector<double>{1}); }),
               HasSubstr("control_points: 1 given, at least 2 required"));
-  EXPECT_THAT(message_of([&] { R c(three, std::vector<double>{1, 1}); }),
+  EXPECT_THAT(message_of([&] {
+                R c(three, std::vector<double>{1, 1});
+              }),
               HasSubstr("weights: 2 given, must match control_points: 3"));
   EXPECT_THAT(message_of([&] { R c(three, std::vector<double>{1, 0, 1}); }), HasSubstr("weights[1] = 0: must be > 0"));
-  EXPECT_THAT(message_of([&] { R c(three, std::vector<double>{1, 1, -2}); }), HasSubstr("weights[2] = -2: must be > 0"));
-  EXPECT_THAT(message_of([&] { R c(three, std::vector<double>{nan, 1, 1}); }),
+  EXPECT_THAT(message_of([&] {
+                R c(three, std::vector<double>{1, 1, -2});
+              }),
+              HasSubstr("weights[2] = -2: must be > 0"));
+  EXPECT_THAT(message_of([&] {
+                R c(three, std::vector<double>{nan, 1, 1});
+              }),
               HasSubstr("weights[0] = nan: must be finite"));
-  EXPECT_THAT(message_of([&] { R c(three, std::vector<double>{1, inf, 1}); }),
+  EXPECT_THAT(message_of([&] {
+                R c(three, std::vector<double>{1, inf, 1});
+              }),
               HasSubstr("weights[1] = inf: must be finite"));
-  EXPECT_THAT(message_of([&] { R c(cb::point_list<double, 2>{P(0, 0), P(0, inf)}, std::vector<double>{1, 1}); }),
+  EXPECT_THAT(message_of([&] {
+                R c(cb::point_list<double, 2>{P(0, 0), P(0, inf)}, std::vector<double>{1, 1});
+              }),
               HasSubstr("control_points[1][1] = inf: coordinates must be finite"));
-  EXPECT_THAT(message_of([&] { R c(three, std::vector<double>{1, 1, 1}, {2.0, 1.0}); }),
+  EXPECT_THAT(message_of([&] {
+                R c(three, std::vector<double>{1, 1, 1}, {2.0, 1.0});
+              }),
               HasSubstr("domain = [2, 1]: must have lo < hi"));
   EXPECT_THAT(message_of([] { (void)cb::conic(P(0, 0), P(1, 1), P(2, 0), 0.0); }), HasSubstr("w = 0: must be > 0"));
   EXPECT_THAT(message_of([] { (void)cb::circular_arc(P(0, 0), 1.0, 0.0, 3.5); }),

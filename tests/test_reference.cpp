@@ -87,7 +87,8 @@ TEST(reference, straight_lines_in_power_and_bezier_form) {
   const p3 p0(1, -2, R("0.5"));
   const std::array<std::array<R, 4>, 2> xs{{{R(0), R(1), R(0), R(1)}, {R(0), R(1), R(2), R("-2.5")}}};
   for (const auto& x : xs) {
-    const ref::piecewise_polynomial<R, 3> line(R(0), R(1), {p3(p0 + x[0] * d), p3(x[1] * d), p3(x[2] * d), p3(x[3] * d)});
+    const ref::piecewise_polynomial<R, 3> line(R(0), R(1),
+                                               {p3(p0 + x[0] * d), p3(x[1] * d), p3(x[2] * d), p3(x[3] * d)});
     const ref::reference_arc_length<ref::piecewise_polynomial<R, 3>> r(line);
     expect_length(r, ref::straight_polynomial_length<R>(x, R(0), R(1)), "straight power form");
   }
@@ -118,8 +119,8 @@ TEST(reference, circular_arcs_as_rational_quadratics) {
     expect_length(r, ref::circular_arc_length(radius, theta), "circle");
     for (int k = 1; k < 8; ++k) {
       const R u = R(k) / 8;
-      EXPECT_TRUE(cbt::within_relative(r.s(u), ref::circular_arc_rational_s(radius, theta, u),
-                                       static_cast<double>(agreement)))
+      EXPECT_TRUE(
+          cbt::within_relative(r.s(u), ref::circular_arc_rational_s(radius, theta, u), static_cast<double>(agreement)))
           << "u=" << k << "/8";
     }
   }
@@ -142,7 +143,8 @@ TEST(reference, circles_of_the_rational_families) {
   expect_length(r9, 2 * pi * radius, "nurbs circle 9");
   for (int q = 0; q < 4; ++q) {  // each quarter is a symmetric rational quadratic arc of pi/2
     const R u = (R(q) + R("0.3")) / 4;
-    EXPECT_TRUE(cbt::within_relative(r9.s(u), q * pi / 2 * radius + ref::circular_arc_rational_s(radius, pi / 2, R("0.3")),
+    EXPECT_TRUE(cbt::within_relative(r9.s(u),
+                                     q * pi / 2 * radius + ref::circular_arc_rational_s(radius, pi / 2, R("0.3")),
                                      static_cast<double>(agreement)));
   }
   const ref::reference_arc_length<cb::nurbs<R, 2>> r7(cb::nurbs_circle_7<R>(center, radius));
@@ -204,7 +206,7 @@ TEST(reference, closed_forms_are_consistent) {
   EXPECT_EQ(ref::quadratic_bezier_length(p2(0, 0), p2(R("1.5"), 2), p2(3, 4)), R(5));
   EXPECT_TRUE(cbt::within_relative(ref::quadratic_bezier_length(p2(0, 0), p2(1, 0), p2(3, 0)), R(3), 1e-48));
   EXPECT_TRUE(cbt::within_relative(ref::semicubical_length(R(-1), R(2)),
-                                    ref::semicubical_length(R(-1), R(0)) + ref::semicubical_length(R(0), R(2)), 1e-48));
+                                   ref::semicubical_length(R(-1), R(0)) + ref::semicubical_length(R(0), R(2)), 1e-48));
   EXPECT_TRUE(cbt::within_relative(ref::semicubical_length(R(-1), R(0)), ref::semicubical_length(R(0), R(1)), 1e-48));
   const std::array<R, 4> x{R(0), R(1), R(0), R(-1)};  // x = t - t^3 on [0, 2]: up to 2/(3 sqrt 3), down to -6
   const R peak = 2 / (3 * sqrt(R(3)));
@@ -268,10 +270,10 @@ TEST(reference, s_between_matches_the_closed_forms_near_and_across_splits) {
   const ref::reference_arc_length<cb::bezier<R, 2>> rb(bb);
   const auto parabola_s = [&](const R& t) { return ref::quadratic_bezier_length(back[0], back[1], back[2], t); };
   // Across the split the partial pieces are integrated at relative tolerance 1e-30 (see s_between).
-  for (const auto& [a, b, tol] : {std::tuple<R, R, double>(R("0.6"), R("0.7"), 1e-30),
-                                  std::tuple<R, R, double>(R("0.1"), R(1), 1e-30),
-                                  std::tuple<R, R, double>(R("0.5"), R("0.6"), 1e-40),
-                                  std::tuple<R, R, double>(R("0.7"), R("0.7000000000000001"), 1e-40)}) {
+  for (const auto& [a, b, tol] :
+       {std::tuple<R, R, double>(R("0.6"), R("0.7"), 1e-30), std::tuple<R, R, double>(R("0.1"), R(1), 1e-30),
+        std::tuple<R, R, double>(R("0.5"), R("0.6"), 1e-40),
+        std::tuple<R, R, double>(R("0.7"), R("0.7000000000000001"), 1e-40)}) {
     const R exact = parabola_s(b) - parabola_s(a);
     EXPECT_TRUE(cbt::within_relative(rb.s_between(a, b), exact, tol, 1)) << a << " " << b;
     EXPECT_TRUE(cbt::within_relative(rb.s_between(b, a), R(-exact), tol, 1)) << a << " " << b;

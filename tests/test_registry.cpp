@@ -70,7 +70,8 @@ void with_dimension(const io::field& spec, F&& f) {
 
 std::string build_error(const io::json& j) {
   try {
-    with_dimension(io::root(j), [&](auto dim) { (void)io::curve_from_spec<double, decltype(dim)::value>(io::root(j)); });
+    with_dimension(io::root(j),
+                   [&](auto dim) { (void)io::curve_from_spec<double, decltype(dim)::value>(io::root(j)); });
   } catch (const io::spec_error& e) {
     return e.what();
   }

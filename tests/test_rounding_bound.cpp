@@ -73,8 +73,7 @@ lagrange_data runge(int count, bool chebyshev, double shift = 0, double a = 25) 
 }
 
 template <class Real>
-cb::lagrange<Real, 2> build(const lagrange_data& d,
-                            cb::lagrange_algorithm alg = cb::lagrange_algorithm::barycentric) {
+cb::lagrange<Real, 2> build(const lagrange_data& d, cb::lagrange_algorithm alg = cb::lagrange_algorithm::barycentric) {
   std::vector<pt2<Real>> p;
   for (const auto& q : d.points) p.emplace_back(Real(q[0]), Real(q[1]));
   const std::vector<Real> u(d.params.begin(), d.params.end());
@@ -110,7 +109,9 @@ double max_error(const C& c, const C50& c50, int order) {
     us.push_back(std::nextafter(b, d.lo));
     us.push_back(std::nextafter(b, d.hi));
   }
-  if constexpr (requires { { c.parameters()[0] } -> std::convertible_to<double>; })
+  if constexpr (requires {
+                  { c.parameters()[0] } -> std::convertible_to<double>;
+                })
     for (double u : c.parameters()) {
       us.push_back(u);
       us.push_back(std::nextafter(u, d.lo));
@@ -280,13 +281,12 @@ TEST(rounding_bound, no_bound_means_not_guaranteed) {
   expect_none(al::subdivision_length(c, so), "subdivision");
   expect_none(al::forward_difference_table<double>(c, 64).length(), "forward difference");
   al::parameterization_options<double> o;
-  o.table_intervals = 64;  // not sized automatically: on this noisy curve that doubles to the cap
+  o.table_intervals = 64;              // not sized automatically: on this noisy curve that doubles to the cap
   o.newton.relative_tolerance = 1e-6;  // at 400 eps its integrals bisect the monomial's noise to depth
   const al::parameterization<cb::lagrange<double, 2>> p(c, o);
   expect_none(p.s_result(0.3), "s(u)");
   EXPECT_EQ(p.invert(0.5 * p.length(), al::inversion_method::newton).status, al::result_status::not_guaranteed);
-  EXPECT_EQ(p.invert(0.5 * p.length(), al::inversion_method::hermite_table).status,
-            al::result_status::not_guaranteed);
+  EXPECT_EQ(p.invert(0.5 * p.length(), al::inversion_method::hermite_table).status, al::result_status::not_guaranteed);
 }
 
 // Polyline: the weights' and the slope's roundings. Measured ratios near 10 far from the origin.
@@ -410,7 +410,8 @@ TEST(rounding_bound, bspline_and_nurbs) {
           [&](auto z) {
             using Real = decltype(z);
             std::vector<Real> w;
-            for (std::size_t i = 0; i < d.points.size(); ++i) w.push_back(Real(i % 3 == 0 ? 5.0 : (i % 3 == 1 ? 0.2 : 1.3)));
+            for (std::size_t i = 0; i < d.points.size(); ++i)
+              w.push_back(Real(i % 3 == 0 ? 5.0 : (i % 3 == 1 ? 0.2 : 1.3)));
             return cb::nurbs<Real, 2>(order, std::vector<Real>(knots.begin(), knots.end()), points_of<Real>(d), w);
           },
           shift != 0 ? rational_looseness : 0);
@@ -440,9 +441,11 @@ TEST(rounding_bound, rational_and_composite_bezier) {
         [&](auto z) {
           using Real = decltype(z);
           const auto p = points_of<Real>(d);
-          std::vector<cb::point_list<Real, 2>> segs{{p[0], p[1], p[2], p[3]}, {p[3], p[4], p[5]}, {p[5], p[6], p[7], p[8], p[9]}};
+          std::vector<cb::point_list<Real, 2>> segs{
+              {p[0], p[1], p[2], p[3]}, {p[3], p[4], p[5]}, {p[5], p[6], p[7], p[8], p[9]}};
           const std::vector<Real> k{Real(0), Real(0.7), Real(2), Real(2.3)};
-          return cb::composite_bezier<Real, 2>(std::span<const cb::point_list<Real, 2>>(segs), std::span<const Real>(k));
+          return cb::composite_bezier<Real, 2>(std::span<const cb::point_list<Real, 2>>(segs),
+                                               std::span<const Real>(k));
         },
         shift != 0 ? family_looseness : 0);
   }

@@ -65,7 +65,7 @@ class catmull_rom_peer_test : public ::testing::Test {};
 using catmull_rom_reals = ::testing::Types<double, long double, cb::real50>;
 TYPED_TEST_SUITE(catmull_rom_peer_test, catmull_rom_reals);
 
-const std::vector<std::array<double, 2>> pd{{0.0, 0.0}, {1.0, 2.0},  {3.0, 2.5}, {3.5, 0.5},
+const std::vector<std::array<double, 2>> pd{{0.0, 0.0},  {1.0, 2.0},  {3.0, 2.5}, {3.5, 0.5},
                                             {2.0, -1.0}, {4.0, -2.0}, {1.0, -3.0}};
 
 }  // namespace
@@ -132,18 +132,20 @@ TYPED_TEST(catmull_rom_peer_test, boost_catmull_rom_open_and_closed) {
       const bool smooth_here = cb::real50(e.knots()[seg]) + margin < cb::real50(s) &&
                                cb::real50(s) + margin < cb::real50(e.knots()[seg + 1]);
       for (int c = 0; c < 2; ++c)
-        ASSERT_TRUE(cbt::within_scaled_ulps(v[c], cb::real50(bv[static_cast<std::size_t>(c)]), cb::real50(4), catmull_rom_ulps))
+        ASSERT_TRUE(
+            cbt::within_scaled_ulps(v[c], cb::real50(bv[static_cast<std::size_t>(c)]), cb::real50(4), catmull_rom_ulps))
             << "closed alpha=" << alpha << " s=" << s;
       if (smooth_here) {
-        ASSERT_TRUE(cbt::point_within(loop.derivative(s, 1), boost_derivative50(closed50, cb::real50(s)), cb::real50(16),
-                                      derivative_ulps))
+        ASSERT_TRUE(cbt::point_within(loop.derivative(s, 1), boost_derivative50(closed50, cb::real50(s)),
+                                      cb::real50(16), derivative_ulps))
             << "closed alpha=" << alpha << " s=" << s;
       }
       if (s <= open.max_parameter()) {
         const bpoint ov = open(s);
         const auto w = open_ours(s);
         for (int c = 0; c < 2; ++c)
-          ASSERT_TRUE(cbt::within_scaled_ulps(w[c], cb::real50(ov[static_cast<std::size_t>(c)]), cb::real50(4), catmull_rom_ulps))
+          ASSERT_TRUE(cbt::within_scaled_ulps(w[c], cb::real50(ov[static_cast<std::size_t>(c)]), cb::real50(4),
+                                              catmull_rom_ulps))
               << "open alpha=" << alpha << " s=" << s;
         if (smooth_here && s + Real(1e-3) < open.max_parameter()) {
           ASSERT_TRUE(cbt::point_within(open_ours.derivative(s, 1), boost_derivative50(open50, cb::real50(s)),
@@ -188,7 +190,8 @@ TYPED_TEST(peers_test, boost_cubic_hermite) {
   for (int k = 0; k <= 128; ++k) {
     const Real u = Real(-1) + Real(4) * Real(k) / Real(128);
     ASSERT_TRUE(cbt::within_scaled_ulps(ours(u)[0], cb::real50(peer(u)), cb::real50(4), hermite_ulps)) << k;
-    ASSERT_TRUE(cbt::within_scaled_ulps(ours.derivative(u, 1)[0], cb::real50(peer.prime(u)), cb::real50(16), hermite_ulps))
+    ASSERT_TRUE(
+        cbt::within_scaled_ulps(ours.derivative(u, 1)[0], cb::real50(peer.prime(u)), cb::real50(16), hermite_ulps))
         << k;
   }
 }
@@ -207,7 +210,8 @@ TYPED_TEST(peers_test, boost_cardinal_cubic_b_spline_with_end_derivatives_is_the
   for (int k = 0; k <= 112; ++k) {
     const Real u = t0 + (hi - t0) * Real(k) / Real(112);
     ASSERT_TRUE(cbt::within_scaled_ulps(ours(u)[0], cb::real50(peer(u)), cb::real50(4), bspline_ulps)) << k;
-    ASSERT_TRUE(cbt::within_scaled_ulps(ours.derivative(u, 1)[0], cb::real50(peer.prime(u)), cb::real50(16), bspline_ulps))
+    ASSERT_TRUE(
+        cbt::within_scaled_ulps(ours.derivative(u, 1)[0], cb::real50(peer.prime(u)), cb::real50(16), bspline_ulps))
         << k;
   }
 }

@@ -39,7 +39,9 @@ const subject_options quick = [] {
 const nlohmann::json bent = nlohmann::json::parse(
     R"({"name": "bent", "group": "straight", "type": "polyline", "points": [[0,0],[3,4],[3,10]]})");
 
-point<double, 2> bent_at(double u) { return u <= 1 ? point<double, 2>(3 * u, 4 * u) : point<double, 2>(3, 4 + 6 * (u - 1)); }
+point<double, 2> bent_at(double u) {
+  return u <= 1 ? point<double, 2>(3 * u, 4 * u) : point<double, 2>(3, 4 + 6 * (u - 1));
+}
 double bent_s(double u) { return u <= 1 ? 5 * u : 5 + 6 * (u - 1); }
 double bent_u(double s) { return s <= 5 ? s / 5 : 1 + (s - 5) / 6; }
 
@@ -98,8 +100,7 @@ TEST(Subject, InjectedErrorsAreMeasured) {
 }
 
 TEST(Subject, CurveSubjectOfTheSpecsOwnCurveIsWithinRounding) {
-  const nlohmann::json arch =
-      nlohmann::json::parse(R"({"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]})");
+  const nlohmann::json arch = nlohmann::json::parse(R"({"type": "bezier", "points": [[0,0],[1,2],[3,2],[4,0]]})");
   const auto c = curvebench::io::curve_from_spec<double, 2>(curvebench::io::root(arch, "arch"));
   const auto results = measure_spec(arch, curve_subject("library_bezier", c), quick);
   ASSERT_EQ(results["records"].size(), 1u);

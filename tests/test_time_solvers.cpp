@@ -530,8 +530,8 @@ TEST(time_solvers, ends_and_counts) {
     EXPECT_NEAR(hi.u, 1.0, slack) << ch::to_string(s);
     const auto mid = ch::solve_time(s, c, 3.0);
     // The schemes that test their answer converge here; closed_form and bisectionN test nothing.
-    const bool untested = s == ch::time_solver::closed_form || s == ch::time_solver::bisection12 ||
-                          s == ch::time_solver::bisection30;
+    const bool untested =
+        s == ch::time_solver::closed_form || s == ch::time_solver::bisection12 || s == ch::time_solver::bisection30;
     EXPECT_EQ(mid.status, untested ? cb::result_status::not_guaranteed : cb::result_status::converged)
         << ch::to_string(s);
     EXPECT_EQ(mid.converged(), !untested) << ch::to_string(s);

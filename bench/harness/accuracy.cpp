@@ -7,8 +7,8 @@
 #include "harness/sweeps.hpp"
 #include "harness/writers.hpp"
 
-#include "curvebench/io/spec_data.hpp"
 #include "curvebench/io/spec.hpp"
+#include "curvebench/io/spec_data.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -144,9 +144,9 @@ int run_accuracy(const accuracy_options& opt) {
       [&](std::size_t i, std::size_t finished) {
         if (opt.quiet) return;
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        std::cerr << "accuracy: case " << finished << " of " << cases.size() << " ("
-                  << 100 * finished / cases.size() << "%, " << std::setprecision(3) << elapsed << " s elapsed) "
-                  << cases[i].name << (failures[i].empty() ? "" : " FAILED: " + failures[i]) << " ("
+        std::cerr << "accuracy: case " << finished << " of " << cases.size() << " (" << 100 * finished / cases.size()
+                  << "%, " << std::setprecision(3) << elapsed << " s elapsed) " << cases[i].name
+                  << (failures[i].empty() ? "" : " FAILED: " + failures[i]) << " ("
                   << (results[i].is_null() ? 0.0 : results[i]["case"]["seconds"].get<double>()) << " s)\n";
       });
 
@@ -179,8 +179,8 @@ int run_accuracy(const accuracy_options& opt) {
       ++failed;
     }
   std::cerr << "accuracy: " << out["records"].size() << " records, " << out["orders"].size() << " orders from "
-            << cases.size() - failed << " cases in " << std::setprecision(3)
-            << out["context"]["seconds"].get<double>() << " s -> " << opt.out << "\n";
+            << cases.size() - failed << " cases in " << std::setprecision(3) << out["context"]["seconds"].get<double>()
+            << " s -> " << opt.out << "\n";
   return failed == 0 ? 0 : 1;
 }
 

@@ -28,9 +28,9 @@
 // context.peers.
 // Implementation: the curvebench_harness library (bench/harness/): one unit per sweep
 // (sweep_length, sweep_s_of_u, sweep_u_of_s, sweep_eval, sweep_audit, sweep_channel), the 50-digit
-// reference and u(s) anchors (reference.cpp; sweep_channel also builds the channel at 50 digits), the record sink and order fit
-// (records, order_fit), the worker pool (pool), the writers (writers) and run_case/run_accuracy
-// composing them (accuracy.cpp).
+// reference and u(s) anchors (reference.cpp; sweep_channel also builds the channel at 50 digits), the record sink and
+// order fit (records, order_fit), the worker pool (pool), the writers (writers) and run_case/run_accuracy composing
+// them (accuracy.cpp).
 #pragma once
 
 #include "harness/cases.hpp"
@@ -63,12 +63,12 @@ struct peer_sweeps {
 inline constexpr double amortized_queries = 1000;
 
 struct accuracy_options {
-  bool quick = false;             ///< fewer settings and samples; cases marked "quick": false skipped
-  std::string cases_dir;          ///< directory of case specs
+  bool quick = false;     ///< fewer settings and samples; cases marked "quick": false skipped
+  std::string cases_dir;  ///< directory of case specs
   std::string out = "reports/accuracy.json";
-  unsigned threads = 0;           ///< 0: all cores
-  std::string only;               ///< run only cases whose name contains this text
-  bool quiet = false;             ///< no progress lines on stderr (failures and the summary still)
+  unsigned threads = 0;                ///< 0: all cores
+  std::string only;                    ///< run only cases whose name contains this text
+  bool quiet = false;                  ///< no progress lines on stderr (failures and the summary still)
   const peer_sweeps* peers = nullptr;  ///< the peer libraries to run on each case (none: no peer records)
 };
 

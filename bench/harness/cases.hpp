@@ -47,8 +47,8 @@ inline std::vector<case_info> load_cases(const std::string& dir) {
     const io::field root = io::root(c.spec, entry.path().filename().string());
     c.name = root.member("name", "every case has a name").string();
     if (c.name != entry.path().stem().string())
-      root.member("name").fail("\"" + c.name + "\" must equal the file name's stem \"" +
-                               entry.path().stem().string() + "\"");
+      root.member("name").fail("\"" + c.name + "\" must equal the file name's stem \"" + entry.path().stem().string() +
+                               "\"");
     c.group = root.member("group", "every case has a threshold group").string();
     c.reason = root.member("reason", "every case says why it is there").string();
     c.file = file;

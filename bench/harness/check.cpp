@@ -66,7 +66,8 @@ void only(const csv_table& t, const std::vector<std::string>& allowed, const std
 /// The parameter column: u; t is for time-based specs, which this one is not.
 std::size_t parameter_column(const csv_table& t) {
   if (t.column("u") == csv_table::npos && t.column("t") != csv_table::npos)
-    throw invalid_input(t.file + ": row 1 (the header), column t: this spec's parameter is u, not time t "
+    throw invalid_input(t.file +
+                        ": row 1 (the header), column t: this spec's parameter is u, not time t "
                         "(name the column u)");
   return need(t, "u", "the curve parameter");
 }
@@ -111,7 +112,8 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
   std::array<std::size_t, Dim> cp{};
   for (int i = 0; i < Dim; ++i) {
     allowed.emplace_back(coordinate_names[i]);
-    cp[static_cast<std::size_t>(i)] = need(t, coordinate_names[i], "coordinate " + std::to_string(i + 1) + " of the point");
+    cp[static_cast<std::size_t>(i)] =
+        need(t, coordinate_names[i], "coordinate " + std::to_string(i + 1) + " of the point");
   }
   // Derivative orders present: all of an order's coordinates, or none.
   std::vector<int> orders;
@@ -128,8 +130,8 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
     if (present == 0) continue;
     for (int i = 0; i < Dim; ++i)
       if (present != Dim)
-        need(t, derivative_prefix(k) + coordinate_names[i], "derivative " + std::to_string(k) + " of coordinate " +
-                                                                coordinate_names[i]);
+        need(t, derivative_prefix(k) + coordinate_names[i],
+             "derivative " + std::to_string(k) + " of coordinate " + coordinate_names[i]);
     orders.push_back(k);
     cd.push_back(cols);
   }
@@ -193,7 +195,8 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
   for (int k : orders)
     res.records.push_back(subject_record(o.case_name, o.group, "eval", o.name, "derivative=" + std::to_string(k),
                                          worst_derivative[static_cast<std::size_t>(k - 1)], n));
-  if (cs != csv_table::npos) res.records.push_back(subject_record(o.case_name, o.group, "s_of_u", o.name, "", worst_s, n));
+  if (cs != csv_table::npos)
+    res.records.push_back(subject_record(o.case_name, o.group, "s_of_u", o.name, "", worst_s, n));
   return res;
 }
 
@@ -321,12 +324,11 @@ std::string_view to_string(check_kind k) {
 }
 
 nlohmann::json subject_record(const std::string& case_name, const std::string& group, std::string_view quantity,
-                              const std::string& method, const std::string& setting, double error,
-                              double evaluations) {
+                              const std::string& method, const std::string& setting, double error, double evaluations) {
   // A user's values carry no estimate: estimate and bounded are null.
-  record r = record::measured(case_name, group, quantity, method, setting, error,
-                              std::numeric_limits<double>::quiet_NaN(), evaluations,
-                              arclength::to_string(arclength::result_status::not_guaranteed));
+  record r =
+      record::measured(case_name, group, quantity, method, setting, error, std::numeric_limits<double>::quiet_NaN(),
+                       evaluations, arclength::to_string(arclength::result_status::not_guaranteed));
   r.subject = true;
   return to_json(r);
 }

@@ -52,25 +52,25 @@ enum class check_kind { values, lengths, inverse };
 [[nodiscard]] std::string_view to_string(check_kind k);
 
 struct check_options {
-  std::string name = "values";   ///< the subject's name: the records' "method"
+  std::string name = "values";      ///< the subject's name: the records' "method"
   std::string case_name = "check";  ///< the records' "case" (the tool uses the spec file's stem)
-  std::string group = "subject";  ///< the records' "group"
-  std::size_t worst = 5;          ///< how many worst rows check_result::worst lists
+  std::string group = "subject";    ///< the records' "group"
+  std::size_t worst = 5;            ///< how many worst rows check_result::worst lists
   /// Called after each row with (rows done, rows in the file, the file): the tool's progress line.
   std::function<void(std::size_t, std::size_t, const std::string&)> on_row;
 };
 
 /// The errors of one row (see the top of this file for the units).
 struct check_row {
-  std::size_t line = 0;          ///< the row's 1-based line in its file
-  double u = 0;                  ///< values, inverse: the row's (user's) u; lengths: u0
-  double u1 = 0;                 ///< lengths: u1 (0 otherwise)
-  double s = 0;                  ///< inverse: the target s; values: the user's s (when given)
-  double error = 0;              ///< values: ulps of size (largest over point and derivatives); else / L
-  double relative = 0;           ///< values: error x eps(double); lengths: per segment; inverse: = error
-  double point_ulps = 0;         ///< values: the point's error in ulps of size
+  std::size_t line = 0;                 ///< the row's 1-based line in its file
+  double u = 0;                         ///< values, inverse: the row's (user's) u; lengths: u0
+  double u1 = 0;                        ///< lengths: u1 (0 otherwise)
+  double s = 0;                         ///< inverse: the target s; values: the user's s (when given)
+  double error = 0;                     ///< values: ulps of size (largest over point and derivatives); else / L
+  double relative = 0;                  ///< values: error x eps(double); lengths: per segment; inverse: = error
+  double point_ulps = 0;                ///< values: the point's error in ulps of size
   std::vector<double> derivative_ulps;  ///< values: order k = 1..K at index k - 1 (empty without)
-  double s_error = -1;           ///< values with an s column: |s_user - s(u)| / L; -1 without
+  double s_error = -1;                  ///< values with an s column: |s_user - s(u)| / L; -1 without
 };
 
 struct check_summary {
@@ -81,13 +81,13 @@ struct check_summary {
 
 struct check_result {
   check_kind kind = check_kind::values;
-  std::string file;                    ///< the table's file
-  std::vector<check_row> rows;         ///< in the file's order
+  std::string file;             ///< the table's file
+  std::vector<check_row> rows;  ///< in the file's order
   check_summary summary;
-  std::vector<std::size_t> worst;      ///< indices into rows, worst error first (at most options.worst)
-  double size = 0;                     ///< values: the points' size
-  std::vector<double> derivative_sizes;  ///< values: the size of derivative k at index k - 1
-  double length = 0;                   ///< the curve's total length L (rounded)
+  std::vector<std::size_t> worst;                    ///< indices into rows, worst error first (at most options.worst)
+  double size = 0;                                   ///< values: the points' size
+  std::vector<double> derivative_sizes;              ///< values: the size of derivative k at index k - 1
+  double length = 0;                                 ///< the curve's total length L (rounded)
   nlohmann::json records = nlohmann::json::array();  ///< accuracy.json records (see above)
 };
 

@@ -92,7 +92,8 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
         double ignored = 0;
         if (parse_finite(cells[c], ignored))
           throw invalid_input(row_name + " (the header), column " + std::to_string(c + 1) + ": " +
-                              quote_cell(cells[c]) + " is a number, not a column name: the first row names the columns");
+                              quote_cell(cells[c]) +
+                              " is a number, not a column name: the first row names the columns");
         // A hash of the names seen, not a scan of the earlier ones: a header of 1e5 columns took
         // minutes when each name was compared with every one before it.
         if (!seen.emplace(cells[c], c).second)

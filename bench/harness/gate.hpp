@@ -88,8 +88,8 @@ inline std::set<std::string> subject_methods(const std::vector<record>& records)
     if (r.subject) out.insert(r.method);
   return out;
 }
-inline constexpr std::array<std::string_view, 8> rule_keys{"quantity", "method",    "group",  "setting",
-                                                         "max_error", "min_order", "honest", "why"};
+inline constexpr std::array<std::string_view, 8> rule_keys{"quantity",  "method",    "group",  "setting",
+                                                           "max_error", "min_order", "honest", "why"};
 
 /// Fails unless `j` is an object holding `key` as an array; returns that array.
 inline const nlohmann::json& array_member(const nlohmann::json& j, const char* key, const std::string& file) {
@@ -120,7 +120,9 @@ inline void check_thresholds_structure(const nlohmann::json& thresholds, const s
       const bool ok = number ? value.is_number() : key == "honest" ? value.is_boolean() : value.is_string();
       if (!ok)
         throw invalid_input(where + key + " " + io::field::shown_value(value) + " is not " +
-                            (number ? "a number" : key == "honest" ? "true or false" : "a string"));
+                            (number            ? "a number"
+                             : key == "honest" ? "true or false"
+                                               : "a string"));
     }
     if (!rule.contains("max_error") && !rule.contains("min_order") && !rule.value("honest", false))
       throw invalid_input(where + "no check (give max_error, min_order or \"honest\": true)");
@@ -169,10 +171,11 @@ inline void check_rule_ids(const nlohmann::json& rule, std::size_t index, const 
   }
   const vocab::method* m = vocab::find_method(method);
   if (!m)
-    throw invalid_input(where + "method \"" + method + "\" is not a method of the vocabulary (curvebench list methods)");
+    throw invalid_input(where + "method \"" + method +
+                        "\" is not a method of the vocabulary (curvebench list methods)");
   if (quantity != "*" && !vocab::lists(m->quantities, quantity))
-    throw invalid_input(where + "method \"" + method + "\" has no " + quantity + " records (its quantities: " +
-                        std::string(m->quantities) + ")");
+    throw invalid_input(where + "method \"" + method + "\" has no " + quantity +
+                        " records (its quantities: " + std::string(m->quantities) + ")");
 }
 /// The number `key` of a record, NaN when it is null or missing (the structure is checked first).
 inline double number_or_nan(const nlohmann::json& row, const char* key) {
@@ -213,7 +216,7 @@ inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohm
         if (rule.contains("max_error")) {
           const double allowed = rule["max_error"].get<double>();
           const bool has_error = !std::isnan(r.error);  // null or missing: NaN
-          if (!has_error || !(r.error <= allowed))     // NaN or missing error is a breach too
+          if (!has_error || !(r.error <= allowed))      // NaN or missing error is a breach too
             out.push_back({name, where,
                            has_error ? "error " + detail::number(r.error) + " > allowed " + detail::number(allowed)
                                      : "no error measured (allowed " + detail::number(allowed) + ")"});

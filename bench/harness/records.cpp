@@ -12,8 +12,8 @@ namespace curvebench::harness {
 
 void record_sink::push(std::string_view quantity, std::string_view method, const std::string& setting, double error,
                        double estimate, double evaluations, std::string_view status) {
-  records_.push_back(record::measured(case_.name, case_.group, quantity, method, setting, error, estimate, evaluations,
-                                      status));
+  records_.push_back(
+      record::measured(case_.name, case_.group, quantity, method, setting, error, estimate, evaluations, status));
   series_.emplace_back(evaluations, error);
 }
 

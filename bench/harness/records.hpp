@@ -26,8 +26,8 @@ class record_sink {
 
   /// One record of a method of the vocabulary. error and estimate are relative (see accuracy.hpp);
   /// estimate is NaN (or infinite) when the method gives none; status is a result_status name.
-  void add(const vocab::quantity& q, const vocab::method& m, const std::string& setting, double error,
-           double estimate, double evaluations, std::string_view status);
+  void add(const vocab::quantity& q, const vocab::method& m, const std::string& setting, double error, double estimate,
+           double evaluations, std::string_view status);
   /// One eval record of an evaluation algorithm (vocab::methods::eval_default.id or a family's).
   void add_eval(std::string_view algorithm, double error, double evaluations);
 

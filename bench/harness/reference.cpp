@@ -21,9 +21,9 @@ struct case_reference<Dim>::impl {
   explicit impl(const io::field& spec) : ref(io::curve_from_spec<real50, Dim>(spec)), L(ref.length()) {}
   reference::reference_arc_length<curve_q> ref;
   real50 L;
-  std::vector<real50> s_ref;                                 // s(u_j) of set_s_parameters
-  std::map<double, std::pair<real50, real50>> anchors;       // target s -> (u, s(u))
-  std::vector<point<real50, Dim>> exact;                     // P(u_j) of set_eval_parameters
+  std::vector<real50> s_ref;                            // s(u_j) of set_s_parameters
+  std::map<double, std::pair<real50, real50>> anchors;  // target s -> (u, s(u))
+  std::vector<point<real50, Dim>> exact;                // P(u_j) of set_eval_parameters
   real50 scale{1};
 };
 
@@ -82,7 +82,8 @@ double case_reference<Dim>::ds(double u, double s) {
   const real50 uq(u);
   auto& anchors = impl_->anchors;
   const auto it = anchors.find(s);
-  const real50 su = it == anchors.end() ? impl_->ref.s(uq) : it->second.second + impl_->ref.s_between(it->second.first, uq);
+  const real50 su =
+      it == anchors.end() ? impl_->ref.s(uq) : it->second.second + impl_->ref.s_between(it->second.first, uq);
   if (it == anchors.end()) anchors.emplace(s, std::make_pair(uq, su));
   return static_cast<double>(abs(su - real50(s)) / impl_->L);
 }

@@ -28,10 +28,10 @@ class case_reference {
   case_reference(const case_reference&) = delete;
   case_reference& operator=(const case_reference&) = delete;
 
-  [[nodiscard]] double length() const;              ///< L rounded to double
-  [[nodiscard]] std::string length_text() const;    ///< L to 40 significant digits
-  [[nodiscard]] double length_error() const;        ///< the reference's own error estimate / L
-  [[nodiscard]] std::size_t speed_minima() const;   ///< interior speed minima the reference split at
+  [[nodiscard]] double length() const;             ///< L rounded to double
+  [[nodiscard]] std::string length_text() const;   ///< L to 40 significant digits
+  [[nodiscard]] double length_error() const;       ///< the reference's own error estimate / L
+  [[nodiscard]] std::size_t speed_minima() const;  ///< interior speed minima the reference split at
 
   /// |value - L| / L, the difference taken in 50 digits.
   [[nodiscard]] double length_error_of(double value) const;

@@ -55,7 +55,7 @@ struct subject {
 /// A subject evaluating a curve of the curvebench::curve concept (double, 2D or 3D); the subject
 /// keeps a copy of the curve.
 template <curve C>
-  requires std::same_as<typename C::real_type, double>
+requires std::same_as<typename C::real_type, double>
 [[nodiscard]] subject<C::dimension> curve_subject(std::string name, C c) {
   subject<C::dimension> s;
   s.name = std::move(name);

@@ -17,17 +17,17 @@ namespace curvebench::harness {
 /// of the full one, so quick and full records share keys). Built by name (designated initialisers
 /// in settings()); the series are read by the method tables' rows and by the peers.
 struct sweep {
-  bool quick = false;                       ///< the quick sweep (a row with series of its own picks by it)
-  std::vector<int> gauss_n;                 ///< gauss: n
-  std::vector<int> panels;                  ///< composite_gauss: panels (n = composite_gauss_n)
-  std::vector<double> adaptive_tol;         ///< adaptive_gk (and its peers): relative tolerance
-  std::vector<std::size_t> table_steps;     ///< forward_difference, richardson: steps per segment
-  std::vector<double> subdivision_tol;      ///< subdivision: tolerance relative to the reference length
+  bool quick = false;                        ///< the quick sweep (a row with series of its own picks by it)
+  std::vector<int> gauss_n;                  ///< gauss: n
+  std::vector<int> panels;                   ///< composite_gauss: panels (n = composite_gauss_n)
+  std::vector<double> adaptive_tol;          ///< adaptive_gk (and its peers): relative tolerance
+  std::vector<std::size_t> table_steps;      ///< forward_difference, richardson: steps per segment
+  std::vector<double> subdivision_tol;       ///< subdivision: tolerance relative to the reference length
   std::vector<std::size_t> table_intervals;  ///< linear_table, hermite_table(_polished): M
-  std::vector<double> newton_tol;           ///< newton (and its peers): relative tolerance
-  std::size_t params = 0;                   ///< s(u), u(s) sample count
-  std::size_t eval_params = 0;              ///< evaluation-accuracy sample count
-  double max_table_evals = 0;               ///< skip forward-difference settings above this many evaluations
+  std::vector<double> newton_tol;            ///< newton (and its peers): relative tolerance
+  std::size_t params = 0;                    ///< s(u), u(s) sample count
+  std::size_t eval_params = 0;               ///< evaluation-accuracy sample count
+  double max_table_evals = 0;                ///< skip forward-difference settings above this many evaluations
   std::size_t channel_times = 0;  ///< keyframe-channel sample times (sorted; monotonicity is checked between them)
 };
 

@@ -262,7 +262,8 @@ json sweep_channel(record_sink& k, const case_info& info, const sweep& w) {
   for (const vocab::method* solver : vocab::time_solver_methods) {
     const json s = with_solver(spec, solver->id);
     const double samples = static_cast<double>(ts.size());
-    add_records(k, *solver, 64, measure_solver(model_of<double>(s, info.name), ts, truth64, key_ts, key64, range), samples);
+    add_records(k, *solver, 64, measure_solver(model_of<double>(s, info.name), ts, truth64, key_ts, key64, range),
+                samples);
     try {
       // Keys rounded to float may be refused (a handle at the regression limit can regress by an ulp).
       const io::channel_model<float> m32 = model_of<float>(s, info.name);

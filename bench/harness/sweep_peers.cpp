@@ -200,9 +200,9 @@ void gsl_length(const case_info& info, json& out, const any_curve<double, Dim>& 
       gsl_function F{&speed_integrand<Dim>::call, &f};
       double value = 0, abserr = 0;
       const auto integrate = [&] {
-        return qags ? gsl_integration_qags(&F, d.lo, d.hi, 0.0, tol, limit, ws.get(), &value, &abserr)
-                    : gsl_integration_qag(&F, d.lo, d.hi, 0.0, tol, limit, GSL_INTEG_GAUSS15, ws.get(), &value,
-                                          &abserr);
+        return qags
+                   ? gsl_integration_qags(&F, d.lo, d.hi, 0.0, tol, limit, ws.get(), &value, &abserr)
+                   : gsl_integration_qag(&F, d.lo, d.hi, 0.0, tol, limit, GSL_INTEG_GAUSS15, ws.get(), &value, &abserr);
       };
       const int status = integrate();
       const std::size_t calls = f.calls;
@@ -232,7 +232,6 @@ void gsl_length(const case_info& info, json& out, const any_curve<double, Dim>& 
   }
 }
 
-
 /// gsl_u_of_s's root function: g(u) = qag(speed, lo, u) - target, remembering the last point it
 /// was called at (Brent's root after an iteration is the point it evaluated last).
 template <int Dim>
@@ -247,9 +246,9 @@ struct s_of_u_root {
     auto* r = static_cast<s_of_u_root*>(self);
     gsl_function F{&speed_integrand<Dim>::call, r->speed};
     double s = 0, abserr = 0;
-    const int status = u > r->lo ? gsl_integration_qag(&F, r->lo, u, 0.0, r->tol, r->limit, GSL_INTEG_GAUSS15, r->ws,
-                                                       &s, &abserr)
-                                 : GSL_SUCCESS;
+    const int status =
+        u > r->lo ? gsl_integration_qag(&F, r->lo, u, 0.0, r->tol, r->limit, GSL_INTEG_GAUSS15, r->ws, &s, &abserr)
+                  : GSL_SUCCESS;
     if (status != GSL_SUCCESS && r->worst_status == GSL_SUCCESS) r->worst_status = status;
     r->last_u = u;
     r->last_g = s - r->target;
@@ -286,10 +285,11 @@ void gsl_u_of_s(const case_info& info, json& out, const any_curve<double, Dim>& 
     status = root.worst_status;
     const std::string s = setting(m::newton, {{"tol", tol}});
     if (!integrated(status)) {  // a tolerance qag refuses: no u to measure, the refusal is the record
-      out.push_back(to_json(info, peer_record{&vocab::quantities::u_of_s, &vocab::peers::gsl_qag_brent, s, nan, nan,
-                                              0.0, status_name(status), gsl_strerror(status), nan,
-                                              std::string(m::newton.id), s, nan},
-                             gsl_library()));
+      out.push_back(
+          to_json(info,
+                  peer_record{&vocab::quantities::u_of_s, &vocab::peers::gsl_qag_brent, s, nan, nan, 0.0,
+                              status_name(status), gsl_strerror(status), nan, std::string(m::newton.id), s, nan},
+                  gsl_library()));
       continue;
     }
     // One query: u with |s(u) - s| <= tol L by GSL's account, or the status of why not.
@@ -353,7 +353,8 @@ void gsl_u_of_s(const case_info& info, json& out, const any_curve<double, Dim>& 
     const arclength::parameterization<any_curve<double, Dim>> p(c, o);
     r.counterpart_ns_per_op = ns_per_call([&] {
                                 for (double target : targets) {
-                                  const auto q = p.invert(std::min(target, p.length()), arclength::inversion_method::newton);
+                                  const auto q =
+                                      p.invert(std::min(target, p.length()), arclength::inversion_method::newton);
                                   asm volatile("" : : "g"(&q) : "memory");
                                 }
                               }) /
@@ -364,9 +365,7 @@ void gsl_u_of_s(const case_info& info, json& out, const any_curve<double, Dim>& 
 
 }  // namespace
 
-json peer_versions() {
-  return {{"GSL", GSL_VERSION}, {"Boost.Math", boost_version()}, {"Eigen", eigen_version()}};
-}
+json peer_versions() { return {{"GSL", GSL_VERSION}, {"Boost.Math", boost_version()}, {"Eigen", eigen_version()}}; }
 
 template <int Dim>
 json sweep_peers(const case_info& info, const any_curve<double, Dim>& c, case_reference<Dim>& ref, const sweep& w) {

@@ -184,10 +184,9 @@ void boost_catmull_rom(const case_info& info, json& out, const any_curve<double,
     part_setting = "segments=interior";
   }
   const std::vector<double> us = sample_parameters(part.lo, part.hi, w.eval_params);
-  eval_records<Dim>(info, out, c, ref, us, vocab::peers::boost_catmull_rom, boost_library(), part_setting, returned,
-                    refused, [&](double u, int order, std::string&) {
-                      return to_point<Dim>(order == 0 ? (*cr)(u) : cr->prime(u));
-                    });
+  eval_records<Dim>(
+      info, out, c, ref, us, vocab::peers::boost_catmull_rom, boost_library(), part_setting, returned, refused,
+      [&](double u, int order, std::string&) { return to_point<Dim>(order == 0 ? (*cr)(u) : cr->prime(u)); });
 }
 
 template <int Dim>

@@ -31,9 +31,10 @@ void sweep_s_of_u(record_sink& k, const any_curve<double, Dim>& c, case_referenc
       est = std::max(est, r.error_estimate / L);
       evals += static_cast<double>(r.evaluations);
     }
-    k.add(q, m::segments_adaptive, setting(m::segments_adaptive, {}), err, est,
-          evals / static_cast<double>(us.size()) + static_cast<double>(p.construction_evaluations()) / amortized_queries,
-          al::to_string(p.length_result().status));
+    k.add(
+        q, m::segments_adaptive, setting(m::segments_adaptive, {}), err, est,
+        evals / static_cast<double>(us.size()) + static_cast<double>(p.construction_evaluations()) / amortized_queries,
+        al::to_string(p.length_result().status));
   }
   k.begin();
   for (std::size_t steps : w.table_steps) {

@@ -55,11 +55,10 @@ inline constexpr quantity channel_rotation{"channel_rotation",
                                            "| |q_model| - 1 | in eps(Real))"};
 }  // namespace quantities
 
-inline constexpr const quantity* all_quantities[] = {&quantities::length,        &quantities::s_of_u,
-                                                     &quantities::u_of_s,        &quantities::eval,
-                                                     &quantities::channel_value, &quantities::channel_keys,
-                                                     &quantities::channel_monotone, &quantities::channel_time,
-                                                     &quantities::channel_rotation};
+inline constexpr const quantity* all_quantities[] = {
+    &quantities::length,          &quantities::s_of_u,       &quantities::u_of_s,           &quantities::eval,
+    &quantities::channel_value,   &quantities::channel_keys, &quantities::channel_monotone, &quantities::channel_time,
+    &quantities::channel_rotation};
 
 /// A method of the library, as the CLI, the records and the benchmarks name it.
 struct method {
@@ -71,8 +70,9 @@ struct method {
 };
 
 namespace methods {
-inline constexpr method gauss{"gauss", "length", "n", 0,
-                              "fixed n-point Gauss-Legendre per segment; estimate from the same rule on 1, 2 and 4 panels"};
+inline constexpr method gauss{
+    "gauss", "length", "n", 0,
+    "fixed n-point Gauss-Legendre per segment; estimate from the same rule on 1, 2 and 4 panels"};
 inline constexpr method composite_gauss{"composite_gauss", "length", "n panels", 6,
                                         "n-point Gauss-Legendre on equal panels per segment (theory 2n: 6 for n = 3)"};
 inline constexpr method adaptive_gk{"adaptive_gk", "length", "tol", 0,
@@ -99,8 +99,9 @@ inline constexpr method eval_default{"default", "eval", "", 0,
 // The time solvers of a channel's bezier segments (channel/time_solver.hpp), ids as the library
 // and the channel spec's "solver" field name them; setting bits=32 or bits=64.
 #define CURVEBENCH_CHANNEL_QUANTITIES "channel_value channel_keys channel_monotone channel_time"
-inline constexpr method solver_closed_form{"closed_form", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
-                                           "time solver: Cardano / trigonometric roots of the time cubic (Blender, USD)"};
+inline constexpr method solver_closed_form{
+    "closed_form", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
+    "time solver: Cardano / trigonometric roots of the time cubic (Blender, USD)"};
 inline constexpr method solver_table_newton{"table_newton", CURVEBENCH_CHANNEL_QUANTITIES, "bits", 0,
                                             "time solver: 11-sample table, at most 4 Newton steps, then bisection "
                                             "(WebKit / Chromium, epsilon 1e-7)"};
@@ -140,15 +141,30 @@ inline constexpr const method* time_solver_methods[] = {
     &methods::solver_bisection12, &methods::solver_bisection30,  &methods::solver_isolate_brent,
     &methods::solver_curvebench,  &methods::solver_exact};
 
-inline constexpr const method* all_methods[] = {
-    &methods::gauss,         &methods::composite_gauss,   &methods::adaptive_gk,
-    &methods::forward_difference, &methods::richardson,   &methods::subdivision,
-    &methods::segments_adaptive,  &methods::linear_table, &methods::hermite_table,
-    &methods::hermite_table_polished, &methods::newton,   &methods::eval_default,
-    &methods::solver_closed_form, &methods::solver_table_newton, &methods::solver_newton_bisection,
-    &methods::solver_bisection12, &methods::solver_bisection30,  &methods::solver_isolate_brent,
-    &methods::solver_curvebench,  &methods::solver_exact,       &methods::rotation_step,
-    &methods::rotation_slerp,     &methods::rotation_nlerp,     &methods::rotation_cubicspline};
+inline constexpr const method* all_methods[] = {&methods::gauss,
+                                                &methods::composite_gauss,
+                                                &methods::adaptive_gk,
+                                                &methods::forward_difference,
+                                                &methods::richardson,
+                                                &methods::subdivision,
+                                                &methods::segments_adaptive,
+                                                &methods::linear_table,
+                                                &methods::hermite_table,
+                                                &methods::hermite_table_polished,
+                                                &methods::newton,
+                                                &methods::eval_default,
+                                                &methods::solver_closed_form,
+                                                &methods::solver_table_newton,
+                                                &methods::solver_newton_bisection,
+                                                &methods::solver_bisection12,
+                                                &methods::solver_bisection30,
+                                                &methods::solver_isolate_brent,
+                                                &methods::solver_curvebench,
+                                                &methods::solver_exact,
+                                                &methods::rotation_step,
+                                                &methods::rotation_slerp,
+                                                &methods::rotation_nlerp,
+                                                &methods::rotation_cubicspline};
 
 /// A library users would pick instead, timed (and measured) on the same data.
 struct peer {
@@ -231,15 +247,35 @@ inline constexpr peer three_gltf{"peer_three_gltf", "three",
                                  "three 0.187.0: GLTFLoader's animation track, track.createInterpolant().evaluate(t)"};
 }  // namespace peers
 
-inline constexpr const peer* all_peers[] = {
-    &peers::boost_gauss, &peers::boost_gauss_kronrod15, &peers::boost_gauss_kronrod31, &peers::boost_tanh_sinh,
-    &peers::boost_catmull_rom, &peers::boost_cubic_hermite, &peers::boost_cardinal_cubic_b_spline,
-    &peers::eigen_spline_fixed_degree, &peers::eigen_spline_dynamic_degree, &peers::bisection_reintegration,
-    &peers::gsl_cspline, &peers::gsl_cspline_periodic, &peers::gsl_akima, &peers::gsl_steffen, &peers::gsl_qag,
-    &peers::gsl_qags, &peers::gsl_qag_brent, &peers::scipy_cubic_spline, &peers::scipy_make_interp_spline,
-    &peers::scipy_bspline, &peers::scipy_quad, &peers::scipy_quad_brentq, &peers::bezier_easing_3,
-    &peers::bezier_easing_2, &peers::mapbox_unitbezier, &peers::d3_ease, &peers::chromium_waapi,
-    &peers::blender_fcurve, &peers::three_gltf};
+inline constexpr const peer* all_peers[] = {&peers::boost_gauss,
+                                            &peers::boost_gauss_kronrod15,
+                                            &peers::boost_gauss_kronrod31,
+                                            &peers::boost_tanh_sinh,
+                                            &peers::boost_catmull_rom,
+                                            &peers::boost_cubic_hermite,
+                                            &peers::boost_cardinal_cubic_b_spline,
+                                            &peers::eigen_spline_fixed_degree,
+                                            &peers::eigen_spline_dynamic_degree,
+                                            &peers::bisection_reintegration,
+                                            &peers::gsl_cspline,
+                                            &peers::gsl_cspline_periodic,
+                                            &peers::gsl_akima,
+                                            &peers::gsl_steffen,
+                                            &peers::gsl_qag,
+                                            &peers::gsl_qags,
+                                            &peers::gsl_qag_brent,
+                                            &peers::scipy_cubic_spline,
+                                            &peers::scipy_make_interp_spline,
+                                            &peers::scipy_bspline,
+                                            &peers::scipy_quad,
+                                            &peers::scipy_quad_brentq,
+                                            &peers::bezier_easing_3,
+                                            &peers::bezier_easing_2,
+                                            &peers::mapbox_unitbezier,
+                                            &peers::d3_ease,
+                                            &peers::chromium_waapi,
+                                            &peers::blender_fcurve,
+                                            &peers::three_gltf};
 
 /// What one item of a benchmark is: the unit of its time per operation.
 struct operation {
@@ -259,10 +295,9 @@ inline constexpr operation channel_value{"channel_value",
                                          "inversion included)"};
 }  // namespace operations
 
-inline constexpr const operation* all_operations[] = {&operations::evaluation, &operations::basis,
-                                                      &operations::length,     &operations::query,
-                                                      &operations::frame,      &operations::ease,
-                                                      &operations::channel_value};
+inline constexpr const operation* all_operations[] = {
+    &operations::evaluation, &operations::basis, &operations::length,       &operations::query,
+    &operations::frame,      &operations::ease,  &operations::channel_value};
 
 /// An algorithm a benchmark times that is not a method above: the evaluation algorithms each
 /// family offers (and the ease functions), as the benchmark names spell them.
@@ -405,11 +440,10 @@ inline constexpr counter flops{"flops", "count",
                                "hand (power: t's subtraction and division plus Horner's 6 per coordinate)"};
 }  // namespace counters
 
-inline constexpr const counter* all_counters[] = {&counters::evaluations, &counters::iterations,
-                                                  &counters::table_intervals, &counters::rel_error,
-                                                  &counters::max_ds_rel,      &counters::max_err_eps,
-                                                  &counters::max_err_range_eps, &counters::estimate_rel,
-                                                  &counters::flops};
+inline constexpr const counter* all_counters[] = {
+    &counters::evaluations,       &counters::iterations,   &counters::table_intervals,
+    &counters::rel_error,         &counters::max_ds_rel,   &counters::max_err_eps,
+    &counters::max_err_range_eps, &counters::estimate_rel, &counters::flops};
 
 /// The method with this id, or nullptr.
 [[nodiscard]] constexpr const method* find_method(std::string_view id) {

@@ -25,15 +25,12 @@ std::string str(std::string_view s) { return std::string(s); }
 }  // namespace
 
 nlohmann::json vocabulary_json() {
-  nlohmann::json v{{"quantities", nlohmann::json::array()},
-                   {"methods", nlohmann::json::array()},
-                   {"peers", nlohmann::json::array()},
-                   {"operations", nlohmann::json::array()},
-                   {"counters", nlohmann::json::array()},
-                   {"algorithms", nlohmann::json::array()},
-                   {"variant_keys", nlohmann::json::array()},
-                   {"tools", nlohmann::json::array()}};
-  for (const vocab::quantity* q : vocab::all_quantities) v["quantities"].push_back({{"id", str(q->id)}, {"doc", str(q->doc)}});
+  nlohmann::json v{{"quantities", nlohmann::json::array()},   {"methods", nlohmann::json::array()},
+                   {"peers", nlohmann::json::array()},        {"operations", nlohmann::json::array()},
+                   {"counters", nlohmann::json::array()},     {"algorithms", nlohmann::json::array()},
+                   {"variant_keys", nlohmann::json::array()}, {"tools", nlohmann::json::array()}};
+  for (const vocab::quantity* q : vocab::all_quantities)
+    v["quantities"].push_back({{"id", str(q->id)}, {"doc", str(q->doc)}});
   for (const vocab::method* m : vocab::all_methods)
     v["methods"].push_back({{"id", str(m->id)},
                             {"quantities", words(m->quantities)},

@@ -29,12 +29,13 @@ std::string g(double x, int digits = 3) {
 void print_table(const check_result& r, const std::string& spec) {
   const bool values = r.kind == check_kind::values;
   const char* unit = values ? "ulps of size" : "relative to L";
-  std::cout << "check " << r.file << " (" << harness::to_string(r.kind) << ", " << r.summary.rows
-            << " rows) against " << spec << ": L = " << g(r.length, 17);
+  std::cout << "check " << r.file << " (" << harness::to_string(r.kind) << ", " << r.summary.rows << " rows) against "
+            << spec << ": L = " << g(r.length, 17);
   if (values) {
     std::cout << ", size " << g(r.size, 6);
     for (std::size_t k = 0; k < r.derivative_sizes.size(); ++k)
-      if (std::isfinite(r.derivative_sizes[k])) std::cout << ", derivative " << k + 1 << " size " << g(r.derivative_sizes[k], 6);
+      if (std::isfinite(r.derivative_sizes[k]))
+        std::cout << ", derivative " << k + 1 << " size " << g(r.derivative_sizes[k], 6);
   }
   std::cout << "\n  error (" << unit << "): max " << g(r.summary.max) << ", rms " << g(r.summary.rms);
   if (r.kind != check_kind::inverse)
@@ -87,10 +88,10 @@ CLI::App* add_check(CLI::App& app, check_args& a) {
       "over --max-error (or every breached rule of --thresholds)");
   chk->add_option("spec", a.spec, "JSON curve spec (1D to 3D)")->required()->check(CLI::ExistingFile);
   chk->add_option("--values", a.values,
-                                 "CSV of points: u, then x[,y[,z]]; optional s (arc length from the domain's start, "
-                                 "reported, not part of --max-error) and derivatives dx,dy,.. d2x,.. d3x,.. "
-                                 "(the columns `curvebench sample` writes)")
-                     ->check(CLI::ExistingFile);
+                  "CSV of points: u, then x[,y[,z]]; optional s (arc length from the domain's start, "
+                  "reported, not part of --max-error) and derivatives dx,dy,.. d2x,.. d3x,.. "
+                  "(the columns `curvebench sample` writes)")
+      ->check(CLI::ExistingFile);
   chk->add_option("--lengths", a.lengths, "CSV of arc lengths: u0,u1,length")->check(CLI::ExistingFile);
   chk->add_option("--inverse", a.inverse, "CSV of inverse parameters: s,u (your u at arc length s)")
       ->check(CLI::ExistingFile);

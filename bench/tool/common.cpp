@@ -10,8 +10,8 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
-#include <utility>
 #include <system_error>
+#include <utility>
 
 namespace curvebench::tool {
 
@@ -52,7 +52,9 @@ std::string default_thresholds() {
   return local;
 }
 
-std::string version_line() { return std::string("curvebench ") + CURVEBENCH_VERSION + " (" + CURVEBENCH_REVISION + ")"; }
+std::string version_line() {
+  return std::string("curvebench ") + CURVEBENCH_VERSION + " (" + CURVEBENCH_REVISION + ")";
+}
 
 CLI::Validator positive_finite() {
   return CLI::Validator(
@@ -73,15 +75,19 @@ std::string non_finite_cause(std::span<const double> breakpoints, double largest
     why += ", narrowest segment [" + to_text(breakpoints[narrow]) + ", " + to_text(breakpoints[narrow + 1]) +
            "] (breakpoints " + std::to_string(narrow) + " and " + std::to_string(narrow + 1) + ")";
   why += ", largest |coordinate| at the breakpoints " + to_text(largest_coordinate);
-  why += ": coordinates, their differences or the derivatives (which grow like 1/h^k on a span of width h) "
-         "exceed double's range of about 1.8e308";
+  why +=
+      ": coordinates, their differences or the derivatives (which grow like 1/h^k on a span of width h) "
+      "exceed double's range of about 1.8e308";
   return why;
 }
 
 std::string example(const std::string& command) { return "\nExample:\n  " + command + "\n"; }
 
 progress::progress(std::string what, std::size_t total, bool quiet)
-    : what_(std::move(what)), total_(total), quiet_(quiet), start_(std::chrono::steady_clock::now()),
+    : what_(std::move(what)),
+      total_(total),
+      quiet_(quiet),
+      start_(std::chrono::steady_clock::now()),
       next_(start_ + std::chrono::seconds(1)) {}
 
 void progress::update(std::size_t done) {
@@ -92,8 +98,8 @@ void progress::update(std::size_t done) {
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double percent = total_ == 0 ? 100.0 : 100.0 * static_cast<double>(done) / static_cast<double>(total_);
   std::ostringstream line;
-  line << what_ << ": " << done << " of " << total_ << " (" << std::fixed << std::setprecision(1) << percent
-       << "%), " << elapsed << " s elapsed\n";
+  line << what_ << ": " << done << " of " << total_ << " (" << std::fixed << std::setprecision(1) << percent << "%), "
+       << elapsed << " s elapsed\n";
   std::cerr << line.str() << std::flush;
 }
 

@@ -129,15 +129,17 @@ void length(const cb::io::field& spec, const length_args& a) {
     found = true;
     h::setting_values v;
     for (const h::setting_def& d : row.settings) {
-      const auto o = std::find_if(a.options.begin(), a.options.end(),
-                                  [&](const length_option& x) { return !d.option.empty() && x.def->option == d.option; });
+      const auto o = std::find_if(a.options.begin(), a.options.end(), [&](const length_option& x) {
+        return !d.option.empty() && x.def->option == d.option;
+      });
       v[std::string(d.key)] = o == a.options.end() ? d.fallback : o->value();
     }
     // Progress: evaluations against the method's budget (fixed rules: their exact count). A cost
     // known before the work is refused above its limit, naming the options.
     const h::length_cost cost = row.cost(v, segments);
     const cb::any_curve<double, Dim> c(
-        counted_curve<Dim>{plain, std::make_shared<tool::progress>("length: evaluations (at most)", cost.budget, a.quiet)},
+        counted_curve<Dim>{plain,
+                           std::make_shared<tool::progress>("length: evaluations (at most)", cost.budget, a.quiet)},
         plain.family());
     if (!cost.refusal.empty()) throw cb::invalid_input(cost.refusal);
     al::quadrature_result<double> r = row.prepare(c, v, h::run_context{})();
@@ -153,11 +155,12 @@ void length(const cb::io::field& spec, const length_args& a) {
       r.status =
           r.value == 0 && r.status == al::result_status::converged ? r.status : al::result_status::rounding_limited;
     }
-    nlohmann::json j{{"method", a.method},
-                     {"value", r.value},
-                     {"estimate", std::isfinite(r.error_estimate) ? nlohmann::json(r.error_estimate) : nlohmann::json()},
-                     {"evaluations", r.evaluations},
-                     {"status", std::string(al::to_string(r.status))}};
+    nlohmann::json j{
+        {"method", a.method},
+        {"value", r.value},
+        {"estimate", std::isfinite(r.error_estimate) ? nlohmann::json(r.error_estimate) : nlohmann::json()},
+        {"evaluations", r.evaluations},
+        {"status", std::string(al::to_string(r.status))}};
     std::cout << std::setw(2) << j << "\n";
   });
   if (!found) throw cb::invalid_input("--method " + a.method + ": not a length method");
@@ -214,8 +217,9 @@ int main(int argc, char** argv) {
         opt->check(CLI::Range(d.min, d.max));
     }
   }
-  len->add_flag("--quiet", la.quiet,
-                "no progress lines on stderr (evaluations against the method's budget, once a run takes over a second)");
+  len->add_flag(
+      "--quiet", la.quiet,
+      "no progress lines on stderr (evaluations against the method's budget, once a run takes over a second)");
   len->footer(tool::example("curvebench length arch.json --method gauss --n 8"));
 
   cb::harness::accuracy_options ao;
@@ -233,8 +237,9 @@ int main(int argc, char** argv) {
   std::string results = "reports/accuracy.json", thresholds = tool::default_thresholds();
   auto* gate = app.add_subcommand("gate", "check accuracy results against thresholds; exit 1 naming every breach");
   gate->add_option("--results", results, "accuracy results (default reports/accuracy.json)")->check(CLI::ExistingFile);
-  gate->add_option("--thresholds", thresholds,
-                   "threshold rules (default reports/thresholds.json, else the installed share/curvebench/thresholds.json)")
+  gate->add_option(
+          "--thresholds", thresholds,
+          "threshold rules (default reports/thresholds.json, else the installed share/curvebench/thresholds.json)")
       ->check(CLI::ExistingFile);
   gate->footer(tool::example("curvebench gate --results reports/accuracy.json --thresholds reports/thresholds.json"));
 
@@ -259,7 +264,8 @@ int main(int argc, char** argv) {
         std::cout << "families (spec types):\n";
         for (const cb::io::family_descriptor& f : cb::io::families())
           std::cout << "  " << std::left << std::setw(18) << f.type << f.summary << "\n"
-                    << "  " << std::setw(18) << "" << "fields: " << cb::io::fields_line(f) << "\n";
+                    << "  " << std::setw(18) << ""
+                    << "fields: " << cb::io::fields_line(f) << "\n";
       }
       if (list_what == "tools" || list_what == "all" || list_what == "vocabulary") {
         std::cout << "tools (a channel spec's \"tool\"; name, storage bits, default time solver):\n";
@@ -274,9 +280,9 @@ int main(int argc, char** argv) {
         std::cout << "methods (length --method takes those with length records; sample --method linear_table, "
                      "hermite_table, newton):\n";
         for (const vocab::method* m : vocab::all_methods) {
-          std::cout << "  " << std::left << std::setw(24) << m->id << std::setw(28)
-                    << std::string(m->quantities) << std::setw(12)
-                    << (m->settings.empty() ? std::string("-") : std::string(m->settings)) << m->doc << "\n";
+          std::cout << "  " << std::left << std::setw(24) << m->id << std::setw(28) << std::string(m->quantities)
+                    << std::setw(12) << (m->settings.empty() ? std::string("-") : std::string(m->settings)) << m->doc
+                    << "\n";
         }
       }
       if (list_what == "vocabulary") {
@@ -321,7 +327,8 @@ int main(int argc, char** argv) {
       const auto r = cb::io::parse(tool::read_file(results), results);
       const auto t = cb::io::parse(tool::read_file(thresholds), thresholds);
       const auto breaches = cb::harness::check_gate(r, t, results, thresholds);
-      for (const auto& b : breaches) std::cout << "gate: BREACH " << b.rule << " " << b.where << ": " << b.message << "\n";
+      for (const auto& b : breaches)
+        std::cout << "gate: BREACH " << b.rule << " " << b.where << ": " << b.message << "\n";
       std::cout << "gate: " << t.at("rules").size() << " rules, " << breaches.size() << " breaches\n";
       return breaches.empty() ? 0 : 1;
     }

@@ -25,9 +25,9 @@ namespace vocab = curvebench::harness::vocab;
 using harness::parse_finite;
 using harness::quote_cell;
 
-using ease_fn = std::variant<motion::linear_ease<double>, motion::sine_ease<double>, motion::smoothstep_ease<double>,
-                             motion::smootherstep_ease<double>, motion::sine_plateau_ease<double>,
-                             motion::parabolic_ease<double>>;
+using ease_fn =
+    std::variant<motion::linear_ease<double>, motion::sine_ease<double>, motion::smoothstep_ease<double>,
+                 motion::smootherstep_ease<double>, motion::sine_plateau_ease<double>, motion::parabolic_ease<double>>;
 
 std::vector<std::string> split(const std::string& text, char sep);
 
@@ -52,7 +52,8 @@ ease_fn parse_ease(const std::string& text) {
     if (name == "sine_plateau") return motion::sine_plateau_ease<double>(t[0], t[1]);
     return motion::parabolic_ease<double>(t[0], t[1]);
   }
-  if (colon != std::string::npos) throw invalid_input("--ease " + quote_cell(text) + ": " + name + " takes no parameters");
+  if (colon != std::string::npos)
+    throw invalid_input("--ease " + quote_cell(text) + ": " + name + " takes no parameters");
   if (name == "linear") return motion::linear_ease<double>();
   if (name == "sine") return motion::sine_ease<double>();
   if (name == "smoothstep") return motion::smoothstep_ease<double>();
@@ -213,8 +214,8 @@ void sample(const io::field& spec, const sample_args& a) {
   for (const parameter& p : given)
     if (!(dom.lo <= p.u && p.u <= dom.hi)) {
       std::ostringstream os;
-      os << std::setprecision(17) << p.where << ": u = " << p.u << " is outside the curve's domain [" << dom.lo
-         << ", " << dom.hi << "]";
+      os << std::setprecision(17) << p.where << ": u = " << p.u << " is outside the curve's domain [" << dom.lo << ", "
+         << dom.hi << "]";
       throw invalid_input(os.str());
     }
   const ease_fn ease = parse_ease(a.ease);
@@ -318,8 +319,8 @@ void sample_times(const io::field& spec, const sample_args& a) {
       try {
         std::cout << "," << ch.at(t, k);
       } catch (const std::domain_error& e) {
-        throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): d" +
-                            std::to_string(k) + "value: " + e.what());
+        throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): d" + std::to_string(k) +
+                            "value: " + e.what());
       }
     }
     std::cout << "\n";
@@ -334,8 +335,9 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
       "sample", "sample a curve spec: CSV of u, s (arc length from the domain's start), the point and derivatives");
   samp->add_option("spec", a.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
   const std::string max = std::to_string(max_sample_values);
-  auto* count = samp->add_option("--count", a.count, "number of equally spaced samples (default 11, at most " + max + ")")
-                    ->check(CLI::Range(std::size_t(1), max_sample_values));
+  auto* count =
+      samp->add_option("--count", a.count, "number of equally spaced samples (default 11, at most " + max + ")")
+          ->check(CLI::Range(std::size_t(1), max_sample_values));
   samp->add_option("--by", a.by, "spacing: equal steps in u, or in arc length (with --ease)")
       ->check(CLI::IsMember({"u", "arclength"}));
   std::vector<std::string> sample_ids;
@@ -370,8 +372,9 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
 
 void run_sample(const sample_args& a) {
   if (a.by == "arclength" && (!a.at.empty() || !a.at_file.empty() || !a.range.empty()))
-    throw invalid_input("sample: --by arclength spaces the samples itself; it does not go with --at, --at-file or "
-                        "--range (which give the parameters)");
+    throw invalid_input(
+        "sample: --by arclength spaces the samples itself; it does not go with --at, --at-file or "
+        "--range (which give the parameters)");
   const nlohmann::json j = read_spec(a.spec);
   const io::field spec = io::root(j, a.spec);
   if (spec.has("type") && spec.member("type").value == "channel" &&

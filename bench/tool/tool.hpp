@@ -93,14 +93,14 @@ struct sample_args {
   std::string spec;
   std::size_t count = 11;
   std::string by = "u";
-  std::string method;    ///< u(s) method for --by arclength (add_sample sets hermite_table)
+  std::string method;  ///< u(s) method for --by arclength (add_sample sets hermite_table)
   bool polish = false;
   std::string ease = "linear";
-  std::string at;        ///< --at V1,V2,...
-  std::string at_file;   ///< --at-file FILE
-  std::string range;     ///< --range A:B:STEP
-  int derivatives = 1;   ///< derivative columns: orders 1..K
-  bool quiet = false;    ///< no progress on stderr
+  std::string at;       ///< --at V1,V2,...
+  std::string at_file;  ///< --at-file FILE
+  std::string range;    ///< --range A:B:STEP
+  int derivatives = 1;  ///< derivative columns: orders 1..K
+  bool quiet = false;   ///< no progress on stderr
 };
 /// The most samples --count asks for and parameters --at, --at-file and --range may give.
 inline constexpr std::size_t max_sample_values = 1000000;

@@ -23,8 +23,8 @@ int main(int argc, char** argv) {
     o.quick = true;
     o.with_methods = argc > 4 && std::string(argv[4]) == "--with-methods";
     nlohmann::json results;
-    for (const auto& [case_name, alpha] : {std::pair{"catmull_rom_uniform_2d", 0.0},
-                                           std::pair{"catmull_rom_centripetal_2d", 0.5}}) {
+    for (const auto& [case_name, alpha] :
+         {std::pair{"catmull_rom_uniform_2d", 0.0}, std::pair{"catmull_rom_centripetal_2d", 0.5}}) {
       auto spline = h::measure_case(argv[1], case_name, own::spline_subject(alpha), o);
       // curvebench's own methods once per case are enough.
       h::subject_options table_options = o;

@@ -47,8 +47,9 @@ bool run_step(std::string_view target, std::string_view step, domain_errors doma
   } catch (const std::bad_alloc& e) {
     violation(target, "documented exceptions only", std::string(step) + ": std::bad_alloc (" + e.what() + ")");
   } catch (const std::exception& e) {
-    violation(target, "documented exceptions only",
-              std::string(step) + ": " + typeid(e).name() + ": " + std::string(std::string_view(e.what()).substr(0, 300)));
+    violation(
+        target, "documented exceptions only",
+        std::string(step) + ": " + typeid(e).name() + ": " + std::string(std::string_view(e.what()).substr(0, 300)));
   } catch (...) {
     violation(target, "documented exceptions only", std::string(step) + ": a non-std exception");
   }

@@ -37,9 +37,8 @@ int gate_target(const std::uint8_t* data, std::size_t size) {
                 [&] { thresholds = io::parse(thresholds_text, "thresholds.json"); }))
     return 0;
   std::vector<harness::breach> breaches;
-  if (!run_step(name, "check_gate", domain_errors::violation, [&] {
-        breaches = harness::check_gate(results, thresholds, "results.json", "thresholds.json");
-      }))
+  if (!run_step(name, "check_gate", domain_errors::violation,
+                [&] { breaches = harness::check_gate(results, thresholds, "results.json", "thresholds.json"); }))
     return 0;
   for (const harness::breach& b : breaches)
     if (b.rule.empty() || b.message.empty())
@@ -60,8 +59,8 @@ int gate_target(const std::uint8_t* data, std::size_t size) {
                                                (rule.contains("honest") && rule["honest"] == true));
       if (!checks)
         violation(name, "no vacuous pass",
-                  "the gate passed with rule " + std::to_string(i) + ", which checks nothing: " +
-                      io::field::shown_value(rule));
+                  "the gate passed with rule " + std::to_string(i) +
+                      ", which checks nothing: " + io::field::shown_value(rule));
     }
   }
   return 0;

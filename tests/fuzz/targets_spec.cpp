@@ -88,8 +88,8 @@ struct meter {
     if (count % 65536 == 0) {
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (s > max_seconds)
-        violation(name, "bounded work", phase + ": still running after " + num(s) + " s and " + std::to_string(count) +
-                                            " curve evaluations");
+        violation(name, "bounded work",
+                  phase + ": still running after " + num(s) + " s and " + std::to_string(count) + " curve evaluations");
     }
   }
 };
@@ -224,7 +224,8 @@ void check_curve(const any_curve<double, Dim>& built) {
     std::optional<al::parameterization<metered_curve<Dim>>> param;
     m->begin("parameterization " + label);
     // A curve of zero length has no arc-length parameterization: invalid_input, documented.
-    if (!run_step(name, "parameterization " + label, domain_errors::violation, [&] { param.emplace(c, opt); })) continue;
+    if (!run_step(name, "parameterization " + label, domain_errors::violation, [&] { param.emplace(c, opt); }))
+      continue;
     const double L = param->length();
     if (!std::isfinite(L) || !(L > 0)) violation(name, "finite length", label + ": parameterization length " + num(L));
     m->begin("s(u) " + label);
@@ -236,7 +237,8 @@ void check_curve(const any_curve<double, Dim>& built) {
         // of its size) has s(u) and L at its noise level, documented as such: not checked.
         const double slack = std::max(1e-9 * L, q.error_estimate + param->length_result().error_estimate);
         if (!param->degenerate() && !(q.value >= -slack && q.value <= L + slack))
-          violation(name, "s(u) finite and in [0, L]", label + ": s(" + num(u) + ") = " + num(q.value) + ", L = " + num(L));
+          violation(name, "s(u) finite and in [0, L]",
+                    label + ": s(" + num(u) + ") = " + num(q.value) + ", L = " + num(L));
       }
     });
     m->begin("u(s) " + label);

@@ -289,7 +289,8 @@ class ToolCli(unittest.TestCase):
         # No curve view: sampling by u says how to evaluate it; a key off unit length names its index.
         self.assert_error(run("sample", spec, "--count", "3"), "path", "unit quaternion", "--at")
         bad = self.write("bad.json", '{"type": "channel", "tool": "gltf", "path": "rotation", '
-                                     '"interpolation": "linear", "times": [0, 1], "values": [0, 0, 0, 1, 0, 0, 0.8, 0.8]}')
+                                     '"interpolation": "linear", "times": [0, 1], '
+                                     '"values": [0, 0, 0, 1, 0, 0, 0.8, 0.8]}')
         self.assert_error(run("sample", bad, "--at", "0.5"), "output[1] (key 1 value)", "unit quaternions")
 
     def test_sample_count_has_a_documented_limit(self):

@@ -70,9 +70,9 @@ template <class Real>
 ::testing::AssertionResult within_ulps(const Real& actual, const real50& ref, double max_ulps) {
   const real50 d = ulps(actual, ref);
   if (d <= real50(max_ulps)) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "actual    " << exact_text(actual) << "\nreference "
-                                       << exact_text(ref) << "\ndistance  " << exact_text(static_cast<double>(d))
-                                       << " ulps > allowed " << max_ulps;
+  return ::testing::AssertionFailure() << "actual    " << exact_text(actual) << "\nreference " << exact_text(ref)
+                                       << "\ndistance  " << exact_text(static_cast<double>(d)) << " ulps > allowed "
+                                       << max_ulps;
 }
 
 /// Asserts |actual - ref| <= max_ulps * eps(Real) * scale (errors relative to a problem scale).
@@ -81,8 +81,8 @@ template <class Real>
                                               double max_ulps) {
   const real50 d = scaled_ulps(actual, ref, scale);
   if (d <= real50(max_ulps)) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "actual    " << exact_text(actual) << "\nreference "
-                                       << exact_text(ref) << "\nscale     " << exact_text(scale) << "\ndistance  "
+  return ::testing::AssertionFailure() << "actual    " << exact_text(actual) << "\nreference " << exact_text(ref)
+                                       << "\nscale     " << exact_text(scale) << "\ndistance  "
                                        << static_cast<double>(d) << " eps*scale > allowed " << max_ulps;
 }
 

@@ -26,7 +26,8 @@ inline std::pair<std::size_t, std::size_t> families_span(const std::string& read
   const std::size_t from = b + families_begin.size() + 1;
   const std::size_t to = readme.find(families_end, from);
   if (to == std::string::npos)
-    throw invalid_input("docs/specs.md: " + std::string(families_end) + " is missing after " + std::string(families_begin));
+    throw invalid_input("docs/specs.md: " + std::string(families_end) + " is missing after " +
+                        std::string(families_begin));
   return {from, to};
 }
 

@@ -126,7 +126,8 @@ std::vector<family_row> measure_all() {
                                 weights(p.size()));
       },
       d));
-  rows.push_back(audit("Bezier, single, degree 9", [](span2 p) { return bezier<double, 2>(p); }, d));
+  rows.push_back(audit(
+      "Bezier, single, degree 9", [](span2 p) { return bezier<double, 2>(p); }, d));
   rows.push_back(audit(
       "rational Bezier, degree 9, weights 0.5..2.5",
       [](span2 p) {
@@ -139,9 +140,18 @@ std::vector<family_row> measure_all() {
   rows.push_back(audit("Catmull-Rom, seed 001 ends (n - 3 segments)", seed_cardinal_spline, d));
   rows.push_back(audit("Catmull-Rom, phantom ends, uniform", catmull_rom, d));
   rows.push_back(audit("Catmull-Rom, centripetal (alpha = 1/2)", centripetal_catmull_rom, d));
-  rows.push_back(audit("Kochanek-Bartels, t = 0.25, c = 0, b = -0.5",
-                       [](span2 p) { return kb_with(p, {0.25, 0.0, -0.5}); }, d));
-  rows.push_back(audit("Kochanek-Bartels, c = 0.5", [](span2 p) { return kb_with(p, {0.0, 0.5, 0.0}); }, d));
+  rows.push_back(audit(
+      "Kochanek-Bartels, t = 0.25, c = 0, b = -0.5",
+      [](span2 p) {
+        return kb_with(p, {0.25, 0.0, -0.5});
+      },
+      d));
+  rows.push_back(audit(
+      "Kochanek-Bartels, c = 0.5",
+      [](span2 p) {
+        return kb_with(p, {0.0, 0.5, 0.0});
+      },
+      d));
   rows.push_back(audit(
       "natural cubic spline (natural ends)",
       [](span2 p) {
@@ -150,8 +160,10 @@ std::vector<family_row> measure_all() {
       d));
   rows.push_back(audit("composite Bezier, cubic, shared joints", shared_joints, d));
   rows.push_back(audit("composite Bezier, cubic, implied midpoint joints", implied_joints, d));
-  rows.push_back(audit("Lagrange, degree 9, equispaced", [](span2 p) { return lagrange<double, 2>(p); }, d));
-  rows.push_back(audit("polyline", [](span2 p) { return polyline<double, 2>(p); }, d));
+  rows.push_back(audit(
+      "Lagrange, degree 9, equispaced", [](span2 p) { return lagrange<double, 2>(p); }, d));
+  rows.push_back(audit(
+      "polyline", [](span2 p) { return polyline<double, 2>(p); }, d));
   rows.push_back(audit(
       "B-spline, linear (order 2, clamped)",
       [](span2 p) {

@@ -38,28 +38,20 @@ enum class audit_verdict { yes, no, not_applicable };
 
 [[nodiscard]] inline const char* to_string(interpolation_kind k) {
   switch (k) {
-    case interpolation_kind::all:
-      return "all";
-    case interpolation_kind::all_but_ends:
-      return "all but ends";
-    case interpolation_kind::ends_only:
-      return "ends only";
-    case interpolation_kind::none:
-      return "none";
-    case interpolation_kind::partial:
-      return "partial";
+    case interpolation_kind::all: return "all";
+    case interpolation_kind::all_but_ends: return "all but ends";
+    case interpolation_kind::ends_only: return "ends only";
+    case interpolation_kind::none: return "none";
+    case interpolation_kind::partial: return "partial";
   }
   return "unknown";
 }
 
 [[nodiscard]] inline const char* to_string(audit_verdict v) {
   switch (v) {
-    case audit_verdict::yes:
-      return "yes";
-    case audit_verdict::no:
-      return "no";
-    case audit_verdict::not_applicable:
-      return "n/a";
+    case audit_verdict::yes: return "yes";
+    case audit_verdict::no: return "no";
+    case audit_verdict::not_applicable: return "n/a";
   }
   return "unknown";
 }

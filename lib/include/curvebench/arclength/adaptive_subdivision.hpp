@@ -130,12 +130,12 @@ template <curve C>
   if (opt.relative_tolerance < Real(0))
     validate::fail("relative_tolerance = " + to_text(opt.relative_tolerance) + ": must be >= 0");
   if (!(opt.tolerance > Real(0)) && !(opt.relative_tolerance > Real(0)))
-    validate::fail("tolerance = " + to_text(opt.tolerance) + " and relative_tolerance = " +
-                   to_text(opt.relative_tolerance) + ": at least one must be > 0");
+    validate::fail("tolerance = " + to_text(opt.tolerance) +
+                   " and relative_tolerance = " + to_text(opt.relative_tolerance) + ": at least one must be > 0");
   if (opt.min_depth < 0) validate::fail("min_depth = " + std::to_string(opt.min_depth) + ": must be >= 0");
   if (opt.max_depth < opt.min_depth)
-    validate::fail("max_depth = " + std::to_string(opt.max_depth) + ": must be >= min_depth = " +
-                   std::to_string(opt.min_depth));
+    validate::fail("max_depth = " + std::to_string(opt.max_depth) +
+                   ": must be >= min_depth = " + std::to_string(opt.min_depth));
   const std::span<const Real> bp = c.breakpoints();
   detail::subdivider<C> sub{c, opt};
   const Real total = bp.back() - bp.front();
@@ -156,7 +156,8 @@ template <curve C>
     sub.run(bp[i], bp[i + 1], pa, pb, target * (bp[i + 1] - bp[i]) / total, 0);
   }
   using std::abs;
-  sub.out.error_estimate += Real(static_cast<long long>(sub.out.evaluations + 8)) * epsilon<Real>() * abs(sub.out.value);
+  sub.out.error_estimate +=
+      Real(static_cast<long long>(sub.out.evaluations + 8)) * epsilon<Real>() * abs(sub.out.value);
   // The curve's own rounding (core/curve.hpp): every chord end is off by at most rounding_bound(c,
   // 0), and the chords summed are fewer than the positions evaluated.
   const Real b0 = rounding_bound(c, 0);

@@ -38,9 +38,8 @@ class forward_difference_table {
   /// position evaluations and as many nodes, is checked before the work: above max_evaluations it
   /// throws invalid_input naming steps_per_segment, the segments and the limit.
   template <curve C>
-    requires std::same_as<typename C::real_type, Real>
-  forward_difference_table(const C& c, std::size_t steps_per_segment,
-                           std::size_t max_evaluations = max_forward_difference_evaluations)
+  requires std::same_as<typename C::real_type, Real> forward_difference_table(
+      const C& c, std::size_t steps_per_segment, std::size_t max_evaluations = max_forward_difference_evaluations)
       : steps_(steps_per_segment) {
     if (steps_per_segment < 1)
       validate::fail("steps_per_segment = " + std::to_string(steps_per_segment) + ": must be >= 1");
@@ -48,10 +47,10 @@ class forward_difference_table {
     validate::count_at_least("breakpoints", bp.size(), 2, "a curve has at least one segment");
     const std::size_t segments = bp.size() - 1;
     if (steps_per_segment > (max_evaluations - 1) / segments)
-      validate::fail("steps_per_segment = " + std::to_string(steps_per_segment) + ": " +
-                     std::to_string(segments) + (segments == 1 ? " segment" : " segments") + " x " +
-                     std::to_string(steps_per_segment) + " steps is more than the limit of " +
-                     std::to_string(max_evaluations) + " evaluations (table nodes)");
+      validate::fail("steps_per_segment = " + std::to_string(steps_per_segment) + ": " + std::to_string(segments) +
+                     (segments == 1 ? " segment" : " segments") + " x " + std::to_string(steps_per_segment) +
+                     " steps is more than the limit of " + std::to_string(max_evaluations) +
+                     " evaluations (table nodes)");
     u_.reserve(segments * steps_ + 1);
     s_.reserve(segments * steps_ + 1);
     typename C::point_type prev = c(bp[0]);
@@ -144,7 +143,7 @@ class forward_difference_table {
   /// std::domain_error outside the table's domain.
   [[nodiscard]] Real s(const Real& u) const {
     const std::size_t j = curvebench::detail::checked_segment_of<Real>(u_, u);  // u_[j] <= u < u_[j+1]
-    if (!(u < u_.back())) return s_.back();  // the last node exactly
+    if (!(u < u_.back())) return s_.back();                                     // the last node exactly
     const Real t = (u - u_[j]) / (u_[j + 1] - u_[j]);
     return s_[j] + t * (s_[j + 1] - s_[j]);
   }

@@ -128,7 +128,8 @@ struct gauss_kronrod_rule {
     p.evaluations = nodes.size();
     asc *= abs(half);
     Real diff = abs(p.kronrod - p.gauss);
-    if (asc > Real(0) && diff > Real(0)) diff = asc * min(Real(1), Real(pow(Real(200) * diff / asc, Real(3) / Real(2))));
+    if (asc > Real(0) && diff > Real(0))
+      diff = asc * min(Real(1), Real(pow(Real(200) * diff / asc, Real(3) / Real(2))));
     p.error_estimate = diff + p.rounding_floor;
     return p;
   }
@@ -219,7 +220,10 @@ template <class Real>
       Real fx, dfx;
       stieltjes(x, fx, dfx);
       if (fx == Real(0)) break;
-      if ((fx > Real(0)) == (flo > Real(0))) lo = x; else hi = x;
+      if ((fx > Real(0)) == (flo > Real(0)))
+        lo = x;
+      else
+        hi = x;
       Real next = dfx != Real(0) ? x - fx / dfx : (lo + hi) / Real(2);
       if (!(next > lo && next < hi)) next = (lo + hi) / Real(2);
       const Real step = abs(next - x);
@@ -279,7 +283,7 @@ struct adaptive_options {
   /// segment_lengths and the length functions share it over the whole curve. Reaching it ends in
   /// cap_hit with the estimate of the panels so far (each still |G - K| + floor).
   std::size_t max_evaluations{std::size_t(1) << 24};
-  int gauss_points{7};              ///< n of the G_n - K_{2n+1} pair
+  int gauss_points{7};  ///< n of the G_n - K_{2n+1} pair
   error_model model{error_model::gauss_difference};
   /// Curve lengths only (length.hpp, segment_lengths): samples of |P'|^2 per segment used to find
   /// interior speed minima (near-cusps) and split there first; 0 turns it off. adaptive_length
@@ -298,8 +302,8 @@ void check_tolerances(const Real& absolute, const Real& relative) {
   if (absolute < Real(0)) validate::fail("absolute_tolerance = " + to_text(absolute) + ": must be >= 0");
   if (relative < Real(0)) validate::fail("relative_tolerance = " + to_text(relative) + ": must be >= 0");
   if (!(absolute > Real(0)) && !(relative > Real(0)))
-    validate::fail("tolerance: absolute_tolerance = " + to_text(absolute) + " and relative_tolerance = " +
-                   to_text(relative) + ": at least one must be > 0");
+    validate::fail("tolerance: absolute_tolerance = " + to_text(absolute) +
+                   " and relative_tolerance = " + to_text(relative) + ": at least one must be > 0");
 }
 
 template <class Real>
@@ -313,8 +317,8 @@ struct heap_panel {
 // this panel stagnated (see detail/roundoff.hpp); a second stagnation stops it.
 template <class Real, class F>
 [[nodiscard]] quadrature_result<Real> bisect(F& f, const Real& a, const Real& b, const kronrod_panel<Real>& p,
-                                             const Real& tolerance, const gauss_kronrod_rule<Real>& rule,
-                                             int max_depth, bool suspect, std::size_t& budget) {
+                                             const Real& tolerance, const gauss_kronrod_rule<Real>& rule, int max_depth,
+                                             bool suspect, std::size_t& budget) {
   quadrature_result<Real> out{p.kronrod, p.error_estimate, 0, result_status::converged};
   if (p.error_estimate <= tolerance) return out;
   const Real mid = (a + b) / Real(2);
@@ -400,8 +404,7 @@ template <class Real, class F>
     heap.pop_back();
     const Real mid = (worst_panel.a + worst_panel.b) / Real(2);
     if (!(worst_panel.r.error_estimate > Real(2) * (worst_panel.r.rounding_floor + worst_panel.r.resolution_floor)) ||
-        !(mid > worst_panel.a) ||
-        !(mid < worst_panel.b)) {
+        !(mid > worst_panel.a) || !(mid < worst_panel.b)) {
       frozen.push_back(worst_panel);  // cannot be improved in Real
       continue;
     }
@@ -410,8 +413,8 @@ template <class Real, class F>
     out.evaluations += left.r.evaluations + right.r.evaluations;
     value += left.r.kronrod + right.r.kronrod - worst_panel.r.kronrod;
     err += left.r.error_estimate + right.r.error_estimate - worst_panel.r.error_estimate;
-    const bool stagnated = bisection_stagnated(
-        worst_panel.r.error_estimate, left.r.error_estimate + right.r.error_estimate, worst_panel.r.magnitude);
+    const bool stagnated = bisection_stagnated(worst_panel.r.error_estimate,
+                                               left.r.error_estimate + right.r.error_estimate, worst_panel.r.magnitude);
     if (stagnated && worst_panel.suspect) {
       frozen.push_back(left);  // the second stagnation in a row: f's own rounding, refining cannot help
       frozen.push_back(right);

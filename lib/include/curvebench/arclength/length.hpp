@@ -22,9 +22,9 @@
 // Accuracy: geometric in n where the speed is analytic near the segment; algebraic at a kink.
 #pragma once
 
+#include "curvebench/arclength/detail/speed_minima.hpp"
 #include "curvebench/arclength/gauss_kronrod.hpp"
 #include "curvebench/arclength/gauss_legendre.hpp"
-#include "curvebench/arclength/detail/speed_minima.hpp"
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/core/curve.hpp"
 #include "curvebench/core/error.hpp"
@@ -347,9 +347,8 @@ template <class Real>
 /// panel is then kept). Then the global refinement of integrate_adaptive. Evaluations include the
 /// screen's and the examination's.
 template <curve C>
-[[nodiscard]] quadrature_result<typename C::real_type> screened_length(const C& c,
-                                                                       std::span<const typename C::real_type> s,
-                                                                       const adaptive_options<typename C::real_type>& opt) {
+[[nodiscard]] quadrature_result<typename C::real_type> screened_length(
+    const C& c, std::span<const typename C::real_type> s, const adaptive_options<typename C::real_type>& opt) {
   using Real = typename C::real_type;
   // s is a curve's breakpoints or split_points (at least 2, ascending: the curve validated them);
   // checking them again per call cost a tenth of a smooth segment's length.
@@ -420,7 +419,8 @@ template <curve C>
   quadrature_result<Real> r = detail::screened_length(c, std::span<const Real>(s), opt);
   using std::abs;
   using std::max;
-  add_evaluation_error(r, evaluation_error(c, lo, hi), max(opt.absolute_tolerance, opt.relative_tolerance * abs(r.value)));
+  add_evaluation_error(r, evaluation_error(c, lo, hi),
+                       max(opt.absolute_tolerance, opt.relative_tolerance * abs(r.value)));
   if (flipped) r.value = -r.value;
   return r;
 }

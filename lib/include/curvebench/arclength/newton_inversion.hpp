@@ -84,18 +84,18 @@ class segment_lengths {
   /// segment's length) with options `opt` otherwise; opt.max_evaluations is the budget of the whole
   /// curve (cap_hit in total() when a segment ran out). Throws invalid_input for bad tolerances.
   template <curve C>
-    requires std::same_as<typename C::real_type, Real>
+  requires std::same_as<typename C::real_type, Real>
   explicit segment_lengths(const C& c, const adaptive_options<Real>& opt = default_options())
       : segment_lengths(c, opt, 0) {}
 
   /// The same, with prefix_panels sub-panels per segment for the length prefix (0 or 1: none).
   /// Throws invalid_input above max_prefix_panels.
   template <curve C>
-    requires std::same_as<typename C::real_type, Real>
-  segment_lengths(const C& c, const adaptive_options<Real>& opt, std::size_t prefix_panels) {
+  requires std::same_as<typename C::real_type, Real> segment_lengths(const C& c, const adaptive_options<Real>& opt,
+                                                                     std::size_t prefix_panels) {
     if (prefix_panels > max_prefix_panels)
-      validate::fail("prefix_panels = " + std::to_string(prefix_panels) + ": must be <= " +
-                     std::to_string(max_prefix_panels));
+      validate::fail("prefix_panels = " + std::to_string(prefix_panels) +
+                     ": must be <= " + std::to_string(max_prefix_panels));
     prefix_panels_ = prefix_panels > 1 ? prefix_panels : 0;
     const std::span<const Real> bp = c.breakpoints();
     validate::count_at_least("breakpoints", bp.size(), 2, "a curve has at least one segment");
@@ -128,7 +128,8 @@ class segment_lengths {
         // cumulative bounds stay finite for the brackets of inversions (which then report none).
         using std::max;
         const Real ev = evaluation_error(c, bp[i], bp[i + 1]);
-        if (is_finite(ev)) add_evaluation_error(r, ev, max(opt.absolute_tolerance, opt.relative_tolerance * abs(r.value)));
+        if (is_finite(ev))
+          add_evaluation_error(r, ev, max(opt.absolute_tolerance, opt.relative_tolerance * abs(r.value)));
       }
       total_ += r;
       const Real t = sum + r.value;
@@ -178,8 +179,8 @@ class segment_lengths {
   /// A first guess of u(s) in segment i from the monotone cubic Hermite model of s(u) with the
   /// segment's end lengths and end speeds (no curve evaluation).
   [[nodiscard]] Real guess(std::size_t i, const Real& s) const {
-    return hermite_guess(params_[i], params_[i + 1], cumulative_[i], cumulative_[i + 1], start_speed_[i],
-                         end_speed_[i], s, 8, Real(0));
+    return hermite_guess(params_[i], params_[i + 1], cumulative_[i], cumulative_[i + 1], start_speed_[i], end_speed_[i],
+                         s, 8, Real(0));
   }
 
   /// The Newton bracket of s (0 <= s <= length()): the segment holding s, narrowed to the
@@ -192,8 +193,8 @@ class segment_lengths {
     const std::size_t n = prefix_first_.empty() ? 0 : prefix_first_[i + 1] - first;
     const Real w = params_[i + 1] - params_[i];
     if (n == 0)
-      return {params_[i], cumulative_[i], cumulative_error_[i], params_[i + 1], cumulative_[i + 1],
-              cumulative_error_[i + 1], guess(i, s), w};
+      return {params_[i],         cumulative_[i],           cumulative_error_[i], params_[i + 1],
+              cumulative_[i + 1], cumulative_error_[i + 1], guess(i, s),          w};
     // j = the number of prefix points with s_k <= s (upper bound), found from the estimate of a
     // constant speed and corrected by steps: O(1) where the speed varies by a bounded factor.
     const Real* ps = prefix_s_.data() + first;
@@ -271,7 +272,10 @@ class segment_lengths {
       // the safeguard below would bisect away from the root (it did: the guess ended up to 5e-5
       // of the bracket off after the remaining iterations bisected, instead of ~1e-7).
       if (dh > Real(0) && abs(h) <= Real(4) * epsilon<Real>() * dh) break;
-      if (h < Real(0)) lo = t; else hi = t;
+      if (h < Real(0))
+        lo = t;
+      else
+        hi = t;
       Real next = dh > Real(0) ? t - h / dh : (lo + hi) / Real(2);
       if (!(next > lo && next < hi)) next = (lo + hi) / Real(2);
       const bool done = abs(next - t) <= stop;
@@ -282,7 +286,6 @@ class segment_lengths {
   }
 
  public:
-
   /// The segment i with parameters[i] <= u <= parameters[i + 1].
   [[nodiscard]] std::size_t segment_for_u(const Real& u) const {
     return curvebench::detail::segment_of<Real>(params_, u);
@@ -362,9 +365,9 @@ struct newton_options {
   /// floors, so the default is 400 eps (8.9e-14 in double); true errors are usually ~eps L.
   Real relative_tolerance{Real(400) * epsilon<Real>()};
   int max_iterations{60};
-  int gauss_points{15};   ///< n of the inner G_n - K_{2n+1} pair for long steps (G15-K31: one panel
-                          ///< is usually enough for half a polynomial segment)
-  int max_depth{16};      ///< recursion cap of each inner adaptive integral
+  int gauss_points{15};  ///< n of the inner G_n - K_{2n+1} pair for long steps (G15-K31: one panel
+                         ///< is usually enough for half a polynomial segment)
+  int max_depth{16};     ///< recursion cap of each inner adaptive integral
   /// Inner integrals over less than 1/short_fraction of the bracket's scale (its width, or the
   /// segment's when the bracket is a sub-panel of the length prefix) use detail::short_step_rule
   /// (G7-K15, 15 evaluations instead of 31): near convergence the steps are tiny and 15 points are
@@ -378,7 +381,6 @@ struct newton_options {
   /// iteration stops with cap_hit, keeping the best iterate and its bound, once they are spent.
   std::size_t max_evaluations{std::size_t(1) << 16};
 };
-
 
 namespace detail {
 
@@ -403,8 +405,7 @@ template <class Real>
 /// bounds no second derivative over [u, next] (a knot between them, or no declaration).
 template <curve C>
 [[nodiscard]] typename C::real_type bounded_step_error(const C& c, const typename C::real_type& u,
-                                                       const typename C::real_type& fu,
-                                                       const typename C::real_type& eu,
+                                                       const typename C::real_type& fu, const typename C::real_type& eu,
                                                        const typename C::real_type& sp,
                                                        const typename C::real_type& next) {
   using Real = typename C::real_type;
@@ -432,8 +433,7 @@ void check_newton_options(const newton_options<Real>& opt) {
 /// u with s(u) = s_target inside the bracket (s_lo <= s_target <= s_hi), to an absolute arc-length
 /// tolerance. The work horse of every inversion; no allocation.
 template <curve C>
-[[nodiscard]] inversion_result<typename C::real_type> newton_invert(const C& c,
-                                                                    const typename C::real_type& s_target,
+[[nodiscard]] inversion_result<typename C::real_type> newton_invert(const C& c, const typename C::real_type& s_target,
                                                                     const newton_bracket<typename C::real_type>& br,
                                                                     const typename C::real_type& tolerance,
                                                                     const newton_options<typename C::real_type>& opt) {

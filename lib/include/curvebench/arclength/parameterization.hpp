@@ -28,8 +28,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <limits>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -86,8 +86,7 @@ class parameterization {
   /// invalid_input for bad options, a length that is not finite, and for a degenerate curve (length 0, or at most
   /// degenerate_length_eps eps of its size: rounding noise) unless the method is newton: such a
   /// curve has s(u) (within its noise) but no u(s), which then throws invalid_input.
-  explicit parameterization(C c, const parameterization_options<Real>& opt = {})
-      : curve_(std::move(c)), opt_(opt) {
+  explicit parameterization(C c, const parameterization_options<Real>& opt = {}) : curve_(std::move(c)), opt_(opt) {
     detail::check_newton_options(opt_.newton);
     validate::positive("table_tolerance", opt_.table_tolerance);
     adaptive_options<Real> seg_opt = segment_lengths<Real>::default_options();
@@ -135,11 +134,10 @@ class parameterization {
     quadrature_result<Real> q;
     // A degenerate curve's s(u) is wanted to its noise level only (its length is noise).
     if (u > u_known)
-      q = integrate_recursive([this](const Real& x) { return speed(curve_, x); }, u_known, u,
-                              max(Real(opt_.newton.relative_tolerance * length() / Real(8)),
-                                  degenerate() ? noise_length_ : Real(0)),
-                              gauss_kronrod<Real>(opt_.newton.gauss_points), opt_.newton.max_depth,
-                              opt_.newton.max_evaluations);
+      q = integrate_recursive(
+          [this](const Real& x) { return speed(curve_, x); }, u_known, u,
+          max(Real(opt_.newton.relative_tolerance * length() / Real(8)), degenerate() ? noise_length_ : Real(0)),
+          gauss_kronrod<Real>(opt_.newton.gauss_points), opt_.newton.max_depth, opt_.newton.max_evaluations);
     add_evaluation_error(q, evaluation_error(curve_, u_known, u), opt_.newton.relative_tolerance * length());
     q.value += s_known;
     q.error_estimate += e_known;
@@ -249,8 +247,7 @@ class parameterization {
     std::vector<piece> extra;
     [[nodiscard]] Real eval(const Real& s, std::size_t j) const {
       const piece* p = &cells[j];
-      while (!(s < p->split)) [[unlikely]]
-        p = &extra[p->next];
+      while (!(s < p->split)) [[unlikely]] p = &extra[p->next];
       Real t = (s - p->s0) * p->inv_w;
       if (t < Real(0)) t = Real(0);  // floor(s / ds) rounded up across a node
       if (t > Real(1)) t = Real(1);
@@ -284,10 +281,10 @@ class parameterization {
 
   [[noreturn]] void fail_degenerate() const {
     validate::fail("curve length = " + to_text(length()) +
-                     (length() == Real(0) ? std::string()
-                                          : " is rounding noise (at most " + std::to_string(degenerate_length_eps) +
-                                                " eps of the curve's size " + to_text(size_) + ")") +
-                     ": an arc-length parameterization needs a curve of positive length");
+                   (length() == Real(0) ? std::string()
+                                        : " is rounding noise (at most " + std::to_string(degenerate_length_eps) +
+                                              " eps of the curve's size " + to_text(size_) + ")") +
+                   ": an arc-length parameterization needs a curve of positive length");
   }
 
   void require_table() const {
@@ -329,15 +326,15 @@ class parameterization {
     std::size_t j;
     Real t;
     locate(s, j, t);
-    const Real uu = m == inversion_method::linear_table ? nodes_u_[j] + t * (nodes_u_[j + 1] - nodes_u_[j])
-                                                        : hermite_.eval(s, j);
+    const Real uu =
+        m == inversion_method::linear_table ? nodes_u_[j] + t * (nodes_u_[j + 1] - nodes_u_[j]) : hermite_.eval(s, j);
     return opt_.newton_polish ? polish(s, uu, j, evaluations) : uu;
   }
 
   // s(x) - s for x in cell j, integrated from the nearer cell end by one panel of the short-step
-  // rule (detail::short_step_rule, G7-K15); err gets the panel's estimate |G - K| + rounding floor. The node's own error (nodes_err_, a loose bound
-  // that includes the segment lengths' estimates) is left out: it biases r0 and r1 alike, and a
-  // step can only end as close to s as the node is, which the table value is no closer than.
+  // rule (detail::short_step_rule, G7-K15); err gets the panel's estimate |G - K| + rounding floor. The node's own
+  // error (nodes_err_, a loose bound that includes the segment lengths' estimates) is left out: it biases r0 and r1
+  // alike, and a step can only end as close to s as the node is, which the table value is no closer than.
   [[nodiscard]] Real cell_residual(const Real& s, const Real& x, std::size_t j, Real& err,
                                    std::size_t& evaluations) const {
     const gauss_kronrod_rule<Real>& rule = detail::short_step_rule<Real>();
@@ -483,8 +480,8 @@ class parameterization {
 
   // The knots whose arc-length position is known from the segment lengths, with one-sided speeds
   // (evaluated detail::knot_offset inside each neighbouring segment, as segment_lengths does). A
-  // knot closer than detail::knot_gap_eps L to the previous one in s (a zero-length segment) is dropped: u(s) is ambiguous
-  // there, and the table keeps the first.
+  // knot closer than detail::knot_gap_eps L to the previous one in s (a zero-length segment) is dropped: u(s) is
+  // ambiguous there, and the table keeps the first.
   void collect_knots() {
     using std::abs;
     const auto p = segments_.parameters();
@@ -518,7 +515,7 @@ class parameterization {
     for (std::size_t j = 0; j < m; ++j) {
       while (k < knots_.size() && !(knots_[k].s > ss[j] + gap)) ++k;
       Real s0 = ss[j], u0 = us[j], sp0 = sp[j];
-      bool started = false;  // the cell's first piece is in cells
+      bool started = false;   // the cell's first piece is in cells
       bool in_extra = false;  // the cell's last piece so far is extra[last_extra], not cells[j]
       std::size_t last_extra = 0;
       auto append = [&](const piece& p) {

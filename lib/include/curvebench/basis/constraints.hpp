@@ -85,8 +85,8 @@ template <class Real>
   for (Eigen::Index j = 0; j < n; ++j) {
     const auto& k = constraints[static_cast<std::size_t>(j)];
     if (k.order < 0)
-      validate::fail(validate::indexed("constraints", static_cast<std::size_t>(j)) + ".order = " +
-                     std::to_string(k.order) + ": derivative order must be >= 0");
+      validate::fail(validate::indexed("constraints", static_cast<std::size_t>(j)) +
+                     ".order = " + std::to_string(k.order) + ": derivative order must be >= 0");
     c.row(j) = power_basis_row(static_cast<int>(n) - 1, k.t, k.order);
   }
   return c;
@@ -115,9 +115,9 @@ constraint_basis<Real> invert_constraints(const matrix_x<Real>& c, const RowName
     std::string names;
     for (Eigen::Index i = 0; i < n; ++i)
       if (abs(v(i)) > cutoff) names += (names.empty() ? "" : ", ") + row_name(i);
-    validate::fail("constraints are singular: " + names + " are linearly dependent (rank " +
-                   std::to_string(lu.rank()) + " of " + std::to_string(n) + "); no polynomial of degree " +
-                   std::to_string(n - 1) + " is fixed by them");
+    validate::fail("constraints are singular: " + names + " are linearly dependent (rank " + std::to_string(lu.rank()) +
+                   " of " + std::to_string(n) + "); no polynomial of degree " + std::to_string(n - 1) +
+                   " is fixed by them");
   }
   matrix_x<Real> m = lu.inverse();
   // 1 / (||C||_1 ||M||_1), computed from M itself (Eigen's rcond estimator needs
@@ -149,8 +149,8 @@ template <class Real>
   for (Eigen::Index i = 0; i < c.rows(); ++i)
     for (Eigen::Index k = 0; k < c.cols(); ++k)
       if (!is_finite(c(i, k)))
-        validate::fail("constraint matrix(" + std::to_string(i) + ", " + std::to_string(k) + ") = " +
-                       to_text(c(i, k)) + ": must be finite");
+        validate::fail("constraint matrix(" + std::to_string(i) + ", " + std::to_string(k) + ") = " + to_text(c(i, k)) +
+                       ": must be finite");
   return detail::invert_constraints<Real>(c, [](Eigen::Index i) { return "row " + std::to_string(i); });
 }
 
@@ -161,8 +161,8 @@ template <class Real>
   const std::size_t n = constraints.size();
   const int degree = static_cast<int>(n) - 1;
   auto describe = [&](std::size_t j) {
-    return validate::indexed("constraints", j) + " (t = " + to_text(constraints[j].t) +
-           ", order " + std::to_string(constraints[j].order) + ")";
+    return validate::indexed("constraints", j) + " (t = " + to_text(constraints[j].t) + ", order " +
+           std::to_string(constraints[j].order) + ")";
   };
   for (std::size_t j = 0; j < n; ++j) {
     const auto& k = constraints[j];

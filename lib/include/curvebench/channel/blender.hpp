@@ -361,9 +361,7 @@ struct blender_neighbours {
     return i + 1 < n ? k[i + 1].time - k[i].time : k[n - 1].time - k[n - 2].time;
   }
   /// The chord slope of segment i.
-  [[nodiscard]] Real chord(std::size_t i) const {
-    return (k[i + 1].value - k[i].value) / (k[i + 1].time - k[i].time);
-  }
+  [[nodiscard]] Real chord(std::size_t i) const { return (k[i + 1].value - k[i].value) / (k[i + 1].time - k[i].time); }
   /// The time lengths (left, right) of key i's auto handles: f times the intervals, each limited
   /// to 5 times the other under smoothing none.
   [[nodiscard]] std::pair<Real, Real> auto_lengths(std::size_t i) const {

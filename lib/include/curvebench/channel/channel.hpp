@@ -426,8 +426,8 @@ channel<Real>::channel(std::vector<key<Real>> keys, extrapolation before, extrap
   for (std::size_t i = 0; i <= d->segments.size(); ++i) {
     d->breaks.push_back(Real(static_cast<long long>(i)));
     // A constant or step_next segment's curve turns a corner at its middle (see the header).
-    if (i < d->segments.size() && (d->segments[i].kind == interpolation::constant ||
-                                   d->segments[i].kind == interpolation::step_next))
+    if (i < d->segments.size() &&
+        (d->segments[i].kind == interpolation::constant || d->segments[i].kind == interpolation::step_next))
       d->breaks.push_back(Real(static_cast<long long>(i)) + Real(1) / Real(2));
   }
   d->before = before;

@@ -310,19 +310,14 @@ class sampler {
   }
 
   /// A scalar channel (Dim = 1) from scalar outputs.
-  sampler(std::vector<Real> input, std::span<const Real> output, interpolation mode)
-    requires(Dim == 1)
+  sampler(std::vector<Real> input, std::span<const Real> output, interpolation mode) requires(Dim == 1)
       : sampler(std::move(input), std::span<const point_type>(to_points(output)), mode) {}
 
   /// The channel's value at time t (clamped to the end values outside the keys).
   [[nodiscard]] point_type operator()(const Real& t) const { return derivative(t, 0); }
 
   /// The value of a scalar channel.
-  [[nodiscard]] Real scalar(const Real& t) const
-    requires(Dim == 1)
-  {
-    return derivative(t, 0)[0];
-  }
+  [[nodiscard]] Real scalar(const Real& t) const requires(Dim == 1) { return derivative(t, 0)[0]; }
 
   /// d^order value / dt^order (per second^order) of the piece on the given side of t. Order 0 on
   /// side::left is the left limit of the value (at a key time: the previous segment's end, which
@@ -424,8 +419,8 @@ class rotation_sampler {
   /// for slerp (closed form), 0..2 for nlerp and cubicspline (normalization), any for step (0).
   [[nodiscard]] quaternion derivative(const Real& t, int order, side from = side::right) const {
     validate::derivative_order(order);
-    const bool normalizes = mode_ == interpolation::cubicspline ||
-                            (mode_ == interpolation::linear && blend_ == rotation_blend::nlerp);
+    const bool normalizes =
+        mode_ == interpolation::cubicspline || (mode_ == interpolation::linear && blend_ == rotation_blend::nlerp);
     if (normalizes && order > 2)
       validate::fail("order = " + std::to_string(order) + ": " +
                      (mode_ == interpolation::cubicspline ? std::string("cubicspline") : std::string("nlerp")) +

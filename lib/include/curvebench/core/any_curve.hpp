@@ -24,10 +24,9 @@ class any_curve {
   static constexpr int dimension = Dim;
 
   template <class C>
-    requires(!std::same_as<std::remove_cvref_t<C>, any_curve> && curve<std::remove_cvref_t<C>> &&
-             std::same_as<typename std::remove_cvref_t<C>::real_type, Real> &&
-             std::remove_cvref_t<C>::dimension == Dim)
-  any_curve(C&& c, std::string family = {})  // NOLINT(google-explicit-constructor): a wrapper, like std::function
+  requires(!std::same_as<std::remove_cvref_t<C>, any_curve> && curve<std::remove_cvref_t<C>> &&
+           std::same_as<typename std::remove_cvref_t<C>::real_type, Real> && std::remove_cvref_t<C>::dimension == Dim)
+      any_curve(C&& c, std::string family = {})  // NOLINT(google-explicit-constructor): a wrapper, like std::function
       : self_(std::make_shared<model<std::remove_cvref_t<C>>>(std::forward<C>(c))), family_(std::move(family)) {}
 
   [[nodiscard]] interval<Real> domain() const { return self_->domain(); }

@@ -45,8 +45,8 @@ namespace validate {
 /// At least `minimum` items: "points: 1 given, at least 2 required (what needs them)".
 inline void count_at_least(std::string_view name, std::size_t count, std::size_t minimum, std::string_view why = {}) {
   if (count >= minimum) return;
-  std::string m = std::string(name) + ": " + std::to_string(count) + " given, at least " + std::to_string(minimum) +
-                  " required";
+  std::string m =
+      std::string(name) + ": " + std::to_string(count) + " given, at least " + std::to_string(minimum) + " required";
   if (!why.empty()) m += " (" + std::string(why) + ")";
   fail(m);
 }
@@ -115,8 +115,8 @@ void resolvable(const std::string& span, const Real& lo, const Real& hi) {
   const Real big = abs(lo) > abs(hi) ? abs(lo) : abs(hi);
   const Real need = ldexp(big * epsilon<Real>(), min_span_bits<Real>());
   if (hi - lo >= need) return;
-  fail(span + " = " + to_text(Real(hi - lo)) + " is too narrow to be resolved around " + to_text(big) +
-       ": at least " + to_text(need) + " (2^" + std::to_string(min_span_bits<Real>()) +
+  fail(span + " = " + to_text(Real(hi - lo)) + " is too narrow to be resolved around " + to_text(big) + ": at least " +
+       to_text(need) + " (2^" + std::to_string(min_span_bits<Real>()) +
        " units in the last place) is needed, so that the parameter can be sampled inside it");
 }
 
@@ -138,8 +138,8 @@ void non_decreasing(std::string_view name, std::span<const Real> values) {
   for (std::size_t i = 0; i < values.size(); ++i) {
     finite(name, values[i], i);
     if (i > 0 && values[i] < values[i - 1])
-      fail(std::string(name) + " must be non-decreasing: " + indexed(name, i) + " = " + to_text(values[i]) +
-           " < " + indexed(name, i - 1) + " = " + to_text(values[i - 1]));
+      fail(std::string(name) + " must be non-decreasing: " + indexed(name, i) + " = " + to_text(values[i]) + " < " +
+           indexed(name, i - 1) + " = " + to_text(values[i - 1]));
     if (i > 0 && values[i] > values[i - 1])
       resolvable(indexed(name, i) + " - " + indexed(name, i - 1), values[i - 1], values[i]);
   }

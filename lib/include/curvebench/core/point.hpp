@@ -25,8 +25,7 @@ inline constexpr int max_dimension = 4;
 /// non-floating Real is rejected here, at compile time, instead of computing with integer
 /// division (Real(1) / Real(2) == 0).
 template <real_number Real, int Dim>
-  requires(Dim >= 1 && Dim <= max_dimension)
-using point = Eigen::Matrix<Real, Dim, 1>;
+requires(Dim >= 1 && Dim <= max_dimension) using point = Eigen::Matrix<Real, Dim, 1>;
 
 /// A list of control points.
 template <class Real, int Dim>

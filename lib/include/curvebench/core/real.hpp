@@ -24,13 +24,13 @@ namespace curvebench {
 /// A floating-point type curvebench can compute in: IEEE types and Boost.Multiprecision binary
 /// floats. What matters is numeric_limits (epsilon, digits) and the arithmetic operators.
 template <class Real>
-concept real_number = std::numeric_limits<Real>::is_specialized && !std::numeric_limits<Real>::is_integer &&
-                      requires(Real a, Real b) {
-                        { a + b };
-                        { a * b };
-                        { a / b };
-                        { a < b } -> std::convertible_to<bool>;
-                      };
+concept real_number =
+    std::numeric_limits<Real>::is_specialized && !std::numeric_limits<Real>::is_integer && requires(Real a, Real b) {
+  {a + b};
+  {a * b};
+  {a / b};
+  { a < b } -> std::convertible_to<bool>;
+};
 
 /// True when x is neither NaN nor infinite (works for multiprecision types too).
 template <class Real>
@@ -72,7 +72,7 @@ template <class T>
   std::ostringstream os;
   if constexpr (std::numeric_limits<T>::is_specialized && !std::numeric_limits<T>::is_integer) {
     os << std::setprecision(std::numeric_limits<T>::max_digits10 > 0 ? std::numeric_limits<T>::max_digits10
-                                                                      : std::numeric_limits<T>::digits10 + 2);
+                                                                     : std::numeric_limits<T>::digits10 + 2);
   }
   os << value;
   return os.str();

@@ -80,8 +80,8 @@ class bezier {
                              "a Bezier curve of degree L >= 1 has L + 1 control points");
     if (control_points.size() > static_cast<std::size_t>(bezier_max_degree) + 1)
       validate::fail("control_points: " + std::to_string(control_points.size()) + " given, at most " +
-                     std::to_string(bezier_max_degree + 1) + " allowed (degree <= " +
-                     std::to_string(bezier_max_degree) + ")");
+                     std::to_string(bezier_max_degree + 1) +
+                     " allowed (degree <= " + std::to_string(bezier_max_degree) + ")");
     validate::finite_points<Real, Dim>("control_points", control_points);
     detail::check_bezier_domain("domain", domain);
     degree_ = static_cast<int>(control_points.size()) - 1;
@@ -122,8 +122,7 @@ class bezier {
   /// Batch evaluation: out[i] = the order-th derivative at us[i] (order 0: the value) by the chosen
   /// algorithm. Sizes must match (invalid_input); every parameter is checked (std::domain_error).
   /// No allocation; the order of the parameters does not matter for a single segment.
-  void evaluate(std::span<const Real> us, std::span<point_type> out, bezier_algorithm algorithm,
-                int order = 0) const {
+  void evaluate(std::span<const Real> us, std::span<point_type> out, bezier_algorithm algorithm, int order = 0) const {
     validate::same_count("out", out.size(), "us", us.size());
     for (std::size_t i = 0; i < us.size(); ++i) {
       check_parameter(us[i], domain_, "us", i);

@@ -35,10 +35,8 @@ namespace curvebench {
 /// Name of an evaluation algorithm (benchmark and report labels).
 [[nodiscard]] inline const char* to_string(bspline_evaluation a) {
   switch (a) {
-    case bspline_evaluation::de_boor:
-      return "de_boor";
-    case bspline_evaluation::basis_sum:
-      return "basis_sum";
+    case bspline_evaluation::de_boor: return "de_boor";
+    case bspline_evaluation::basis_sum: return "basis_sum";
   }
   return "unknown";
 }
@@ -282,7 +280,8 @@ class bspline {
   /// values, so a curve with a knot of multiplicity 4 converts too).
   [[nodiscard]] piecewise_cubic<Real, Dim> to_piecewise_cubic() const {
     if (order() != 4)
-      validate::fail("order = " + std::to_string(order()) + ": only a cubic (order 4) B-spline converts to piecewise_cubic");
+      validate::fail("order = " + std::to_string(order()) +
+                     ": only a cubic (order 4) B-spline converts to piecewise_cubic");
     const auto t = knots();
     const auto br = breakpoints();
     std::vector<Real> ks(br.begin(), br.end());

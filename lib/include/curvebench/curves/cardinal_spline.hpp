@@ -53,16 +53,11 @@ enum class cardinal_end { phantom, one_sided, given_tangents, closed, control_po
 
 [[nodiscard]] inline const char* to_string(cardinal_end e) {
   switch (e) {
-    case cardinal_end::phantom:
-      return "phantom";
-    case cardinal_end::one_sided:
-      return "one_sided";
-    case cardinal_end::given_tangents:
-      return "given_tangents";
-    case cardinal_end::closed:
-      return "closed";
-    case cardinal_end::control_points:
-      return "control_points";
+    case cardinal_end::phantom: return "phantom";
+    case cardinal_end::one_sided: return "one_sided";
+    case cardinal_end::given_tangents: return "given_tangents";
+    case cardinal_end::closed: return "closed";
+    case cardinal_end::control_points: return "control_points";
   }
   return "unknown";
 }
@@ -215,8 +210,8 @@ class cardinal_spline : public detail::cubic_family<Real, Dim> {
         point_list<Real, Dim> inner_values(v.begin() + 1, v.end() - 1);
         point_list<Real, Dim> inner_slopes(slopes.begin() + 1, slopes.end() - 1);
         const std::vector<Real> inner_err(err.begin() + 1, err.end() - 1);
-        auto engine = base::engine_type::from_hermite(std::move(inner_knots), inner_values, inner_slopes,
-                                                      inner_slopes, inner_err, inner_err);
+        auto engine = base::engine_type::from_hermite(std::move(inner_knots), inner_values, inner_slopes, inner_slopes,
+                                                      inner_err, inner_err);
         return built{std::move(engine), std::move(inner_slopes)};
       }
     }

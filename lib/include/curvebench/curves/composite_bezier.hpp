@@ -31,15 +31,15 @@ namespace curvebench {
 /// The continuity found at one interior knot of a composite curve (see continuity_at_joins).
 template <class Real>
 struct join_continuity {
-  std::size_t join = 0;         ///< index i of the knot u_i, 0 < i < n
-  Real knot{};                  ///< u_i
-  Real gap{};                   ///< |P_left(u_i) - P_right(u_i)| / scale
-  Real derivative_jump{};       ///< |P'_left - P'_right| / max(|P'_left|, |P'_right|) (0 if both vanish)
-  Real tangent_jump{};          ///< |T_left - T_right| of the unit tangents (0 unless `regular`)
-  bool regular = false;         ///< both one-sided first derivatives are non-zero
-  bool c0 = false;              ///< gap <= tol
-  bool c1 = false;              ///< c0 and derivative_jump <= tol
-  bool g1 = false;              ///< c0 and (c1 or (regular and tangent_jump <= tol))
+  std::size_t join = 0;    ///< index i of the knot u_i, 0 < i < n
+  Real knot{};             ///< u_i
+  Real gap{};              ///< |P_left(u_i) - P_right(u_i)| / scale
+  Real derivative_jump{};  ///< |P'_left - P'_right| / max(|P'_left|, |P'_right|) (0 if both vanish)
+  Real tangent_jump{};     ///< |T_left - T_right| of the unit tangents (0 unless `regular`)
+  bool regular = false;    ///< both one-sided first derivatives are non-zero
+  bool c0 = false;         ///< gap <= tol
+  bool c1 = false;         ///< c0 and derivative_jump <= tol
+  bool g1 = false;         ///< c0 and (c1 or (regular and tangent_jump <= tol))
 };
 
 template <class Real, int Dim>
@@ -88,9 +88,7 @@ class composite_bezier {
   [[nodiscard]] Real scale() const { return scale_; }
 
   /// The segment holding u: the i with u_i <= u < u_{i+1}, or the last one at u = u_n (binary search).
-  [[nodiscard]] std::size_t segment_index(const Real& u) const {
-    return detail::checked_segment_of<Real>(knots_, u);
-  }
+  [[nodiscard]] std::size_t segment_index(const Real& u) const { return detail::checked_segment_of<Real>(knots_, u); }
 
   [[nodiscard]] point_type operator()(const Real& u) const { return segments_[segment_index(u)](u); }
 

@@ -53,7 +53,7 @@ struct tcb_tangents {
 
 template <class Real, int Dim>
 [[nodiscard]] tcb_tangents<Real, Dim> kochanek_bartels_tangents(const tcb<Real>& k, const point<Real, Dim>& arriving,
-                                                               const point<Real, Dim>& leaving) {
+                                                                const point<Real, Dim>& leaving) {
   const Real half = Real(1) / Real(2);
   const Real s = (Real(1) - k.tension) * half;
   const Real bp = Real(1) + k.bias, bm = Real(1) - k.bias;

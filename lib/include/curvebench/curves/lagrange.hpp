@@ -119,8 +119,7 @@ class lagrange {
            lagrange_algorithm algorithm = lagrange_algorithm::barycentric)
       : algorithm_(algorithm), points_(points.begin(), points.end()), params_(parameters.begin(), parameters.end()) {
     validate::count_at_least("points", points_.size(), 2, "a Lagrange curve of degree n >= 1 has n + 1 points");
-    const std::size_t limit =
-        algorithm_ == lagrange_algorithm::monomial ? max_monomial_points : max_barycentric_points;
+    const std::size_t limit = algorithm_ == lagrange_algorithm::monomial ? max_monomial_points : max_barycentric_points;
     if (points_.size() > limit)
       validate::fail("points: " + std::to_string(points_.size()) + " points, more than the " +
                      std::string(to_string(algorithm_)) + " algorithm's limit of " + std::to_string(limit) +
@@ -149,7 +148,8 @@ class lagrange {
   /// Upper bound on the rounding of this curve's own evaluation of P (order 0) or P' (order 1) over
   /// the domain (see the header); +inf for the monomial algorithm and for other orders.
   [[nodiscard]] Real rounding_bound(int order) const {
-    if (algorithm_ != lagrange_algorithm::barycentric || order < 0 || order > 1) return std::numeric_limits<Real>::infinity();
+    if (algorithm_ != lagrange_algorithm::barycentric || order < 0 || order > 1)
+      return std::numeric_limits<Real>::infinity();
     return rounding_bound_[static_cast<std::size_t>(order)];
   }
   /// Power coefficients a_k, P(u) = sum a_k u^k (empty for the barycentric algorithm).
@@ -198,8 +198,7 @@ class lagrange {
       weights_[j] = Real(1) / prod;
       if (!is_finite(weights_[j]) || weights_[j] == Real(0))
         validate::fail("parameters: barycentric weight " + std::to_string(j) + " = " + to_text(weights_[j]) +
-                       " is out of range for this Real (" + std::to_string(m) +
-                       " points: use fewer, or a wider type)");
+                       " is out of range for this Real (" + std::to_string(m) + " points: use fewer, or a wider type)");
       biggest = std::max(biggest, Real(abs(weights_[j])));
     }
     for (Real& w : weights_) w /= biggest;
@@ -221,7 +220,9 @@ class lagrange {
     std::vector<Real> max_l(m1, Real(0)), max_dl(m1, Real(0)), c(m1);
     Real max_p(0), max_dp(0);
     for (long long k = 0; k <= samples; ++k) {
-      Real x = k == 0 ? params_.front() : k == samples ? params_.back() : Real(mid - half * cos(pi * from_int<Real>(k) / from_int<Real>(samples)));
+      Real x = k == 0         ? params_.front()
+               : k == samples ? params_.back()
+                              : Real(mid - half * cos(pi * from_int<Real>(k) / from_int<Real>(samples)));
       x = std::clamp(x, params_.front(), params_.back());
       max_p = std::max(max_p, Real(sqrt(barycentric_value(x).squaredNorm())));
       max_dp = std::max(max_dp, Real(sqrt(derivative(x, 1).squaredNorm())));

@@ -44,14 +44,10 @@ enum class spline_end { natural, clamped, not_a_knot, periodic };
 
 [[nodiscard]] inline const char* to_string(spline_end e) {
   switch (e) {
-    case spline_end::natural:
-      return "natural";
-    case spline_end::clamped:
-      return "clamped";
-    case spline_end::not_a_knot:
-      return "not_a_knot";
-    case spline_end::periodic:
-      return "periodic";
+    case spline_end::natural: return "natural";
+    case spline_end::clamped: return "clamped";
+    case spline_end::not_a_knot: return "not_a_knot";
+    case spline_end::periodic: return "periodic";
   }
   return "unknown";
 }
@@ -112,9 +108,9 @@ class natural_cubic_spline : public detail::cubic_family<Real, Dim> {
     if (end == spline_end::periodic) {
       for (int d = 0; d < Dim; ++d)
         if (v[n][d] != v[0][d])
-          validate::fail("periodic spline: " + validate::indexed("values", n) + "[" + std::to_string(d) + "] = " +
-                         to_text(v[n][d]) + " differs from values[0][" + std::to_string(d) + "] = " + to_text(v[0][d]) +
-                         ": the last value must equal the first");
+          validate::fail("periodic spline: " + validate::indexed("values", n) + "[" + std::to_string(d) +
+                         "] = " + to_text(v[n][d]) + " differs from values[0][" + std::to_string(d) +
+                         "] = " + to_text(v[0][d]) + ": the last value must equal the first");
     }
     std::vector<Real> h(n);
     point_list<Real, Dim> dd(n);
@@ -185,8 +181,7 @@ class natural_cubic_spline : public detail::cubic_family<Real, Dim> {
           m[n] = (h[n - 1] * h[n - 1] * dd[n - 2] + h[n - 2] * (three * h[n - 1] + two * h[n - 2]) * dd[n - 1]) / s1;
           break;
         }
-        case spline_end::periodic:
-          break;
+        case spline_end::periodic: break;
       }
       const point_list<Real, Dim> rhs = m;
       detail::solve_tridiagonal<Real, point_type>(a, b, c, std::span<point_type>(m));
@@ -203,8 +198,9 @@ class natural_cubic_spline : public detail::cubic_family<Real, Dim> {
         size_n = three * dd_size[n - 1];
       } else if (end == spline_end::not_a_knot) {
         size0 = (h[1] * (three * h[0] + two * h[1]) * dd_size[0] + h[0] * h[0] * dd_size[1]) / (h[0] + h[1]);
-        size_n = (h[n - 1] * h[n - 1] * dd_size[n - 2] + h[n - 2] * (three * h[n - 1] + two * h[n - 2]) * dd_size[n - 1]) /
-                 (h[n - 2] + h[n - 1]);
+        size_n =
+            (h[n - 1] * h[n - 1] * dd_size[n - 2] + h[n - 2] * (three * h[n - 1] + two * h[n - 2]) * dd_size[n - 1]) /
+            (h[n - 2] + h[n - 1]);
       }
       res[0] = residual_bound(Real(0), b[0], c[0], zero, m[0], m[1], rhs[0], size0);
       res[n] = residual_bound(a[n], b[n], Real(0), m[n - 1], m[n], zero, rhs[n], size_n);

@@ -158,10 +158,10 @@ class nurbs {
           max_w1 = std::max(max_w1, Real(abs(q[Dim])));
         }
       const Real data = epsilon<Real>() / Real(2) * max_wp;  // fl(w_i P_i)
-      const Real data1 = m > 1 ? from_int<Real>(2 * (static_cast<long long>(m) - 1)) * data / core_.level1_min_span(k)
-                               : Real(0);
-      const detail::quotient_rounding<Real> q{f0 * max_wp + data, f0 * max_w, f1 * max_a1 + data1, f1 * max_w1,
-                                              max_a1,             max_w1,     max_p,               min_w};
+      const Real data1 =
+          m > 1 ? from_int<Real>(2 * (static_cast<long long>(m) - 1)) * data / core_.level1_min_span(k) : Real(0);
+      const detail::quotient_rounding<Real> q{
+          f0 * max_wp + data, f0 * max_w, f1 * max_a1 + data1, f1 * max_w1, max_a1, max_w1, max_p, min_w};
       const std::array<Real, 2> b = detail::quotient_rounding_bound(q);
       rounding_bound_ = {std::max(rounding_bound_[0], b[0]), std::max(rounding_bound_[1], b[1])};
     }

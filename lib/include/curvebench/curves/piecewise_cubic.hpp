@@ -75,12 +75,9 @@ enum class cubic_algorithm { power, matrix, bezier };
 /// Text name of an algorithm (benchmark and report labels).
 [[nodiscard]] inline const char* to_string(cubic_algorithm a) {
   switch (a) {
-    case cubic_algorithm::power:
-      return "power";
-    case cubic_algorithm::matrix:
-      return "matrix";
-    case cubic_algorithm::bezier:
-      return "bezier";
+    case cubic_algorithm::power: return "power";
+    case cubic_algorithm::matrix: return "matrix";
+    case cubic_algorithm::bezier: return "bezier";
   }
   return "unknown";
 }
@@ -154,8 +151,10 @@ class piecewise_cubic {
     validate::finite_points<Real, Dim>("values", values);
     validate::finite_points<Real, Dim>("incoming slopes", incoming);
     validate::finite_points<Real, Dim>("outgoing slopes", outgoing);
-    if (!incoming_error.empty()) validate::same_count("incoming slope errors", incoming_error.size(), "knots", knots.size());
-    if (!outgoing_error.empty()) validate::same_count("outgoing slope errors", outgoing_error.size(), "knots", knots.size());
+    if (!incoming_error.empty())
+      validate::same_count("incoming slope errors", incoming_error.size(), "knots", knots.size());
+    if (!outgoing_error.empty())
+      validate::same_count("outgoing slope errors", outgoing_error.size(), "knots", knots.size());
     const std::size_t n = knots.size() - 1;
     std::vector<geometry_type> g(n);
     std::vector<std::array<Real, 4>> dg(n);
@@ -385,7 +384,7 @@ class piecewise_cubic {
     last_real_ = Real(static_cast<long long>(last_));
     for (std::size_t i = 0; i < n; ++i)
       seg_[i].lookup = {i == 0 ? -std::numeric_limits<Real>::infinity() : knots_[i],
-                    i == last_ ? std::numeric_limits<Real>::infinity() : knots_[i + 1], knots_[i], inv_h_[i]};
+                        i == last_ ? std::numeric_limits<Real>::infinity() : knots_[i + 1], knots_[i], inv_h_[i]};
     // t by the reciprocal needs fl(1 / h_i) in the normal range for every segment, where it is
     // within u of 1 / h_i (see local_t); otherwise every segment divides.
     reciprocal_ = true;
@@ -414,12 +413,12 @@ class piecewise_cubic {
       }
       const Real sum_a = a[0] + a[1] + a[2] + a[3];
       const Real slope = a[1] + Real(2) * a[2] + Real(3) * a[3];  // max |P_i'(t)| on [0, 1], and sum |b_j|
-      const Real curvature = Real(2) * a[2] + Real(6) * a[3];      // max |P_i''(t)|
+      const Real curvature = Real(2) * a[2] + Real(6) * a[3];     // max |P_i''(t)|
       const Real u = eps / Real(2);
       const Real e0 = da[0] + da[1] + da[2] + da[3] + Real(6) * u * sum_a + Real(4) * u * slope;
-      const Real e1 =
-          (da[1] + Real(2) * da[2] + Real(3) * da[3] + Real(5) * u * slope + Real(4) * u * curvature + Real(3) * u * slope) /
-          h_[i];
+      const Real e1 = (da[1] + Real(2) * da[2] + Real(3) * da[3] + Real(5) * u * slope + Real(4) * u * curvature +
+                       Real(3) * u * slope) /
+                      h_[i];
       b0 = max(b0, e0);
       b1 = max(b1, e1);
     }
@@ -472,7 +471,8 @@ class piecewise_cubic {
 #if defined(__GNUC__)
   [[gnu::noinline, gnu::cold]]
 #endif
-  [[noreturn]] void out_of_domain(Real u) const {
+  [[noreturn]] void
+  out_of_domain(Real u) const {
     check_parameter(u, domain());
     throw std::logic_error("piecewise_cubic: out_of_domain called for a parameter inside the domain");
   }
@@ -679,35 +679,22 @@ class piecewise_cubic {
 
   [[nodiscard]] static point_type eval_power(const std::array<point_type, 4>& a, const Real& t, int order) {
     switch (order) {
-      case 0:
-        return horner(a, t);
-      case 1:
-        return a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]));
-      case 2:
-        return Real(2) * a[2] + (Real(6) * t) * a[3];
-      default:
-        return Real(6) * a[3];
+      case 0: return horner(a, t);
+      case 1: return a[1] + t * (Real(2) * a[2] + t * (Real(3) * a[3]));
+      case 2: return Real(2) * a[2] + (Real(6) * t) * a[3];
+      default: return Real(6) * a[3];
     }
   }
 
-  [[nodiscard]] static point_type eval_matrix(const matrix_type& m, const geometry_type& g, const Real& t,
-                                              int order) {
+  [[nodiscard]] static point_type eval_matrix(const matrix_type& m, const geometry_type& g, const Real& t, int order) {
     // T(t) (or its derivative) as a row, then (T · M) · G: the blending functions weight the items.
     Eigen::Matrix<Real, 1, 4> row;
     const Real t2 = t * t;
     switch (order) {
-      case 0:
-        row << Real(1), t, t2, t2 * t;
-        break;
-      case 1:
-        row << Real(0), Real(1), Real(2) * t, Real(3) * t2;
-        break;
-      case 2:
-        row << Real(0), Real(0), Real(2), Real(6) * t;
-        break;
-      default:
-        row << Real(0), Real(0), Real(0), Real(6);
-        break;
+      case 0: row << Real(1), t, t2, t2 * t; break;
+      case 1: row << Real(0), Real(1), Real(2) * t, Real(3) * t2; break;
+      case 2: row << Real(0), Real(0), Real(2), Real(6) * t; break;
+      default: row << Real(0), Real(0), Real(0), Real(6); break;
     }
     const Eigen::Matrix<Real, 1, 4> blend = row * m;
     const Eigen::Matrix<Real, 1, Dim> p = blend * g;
@@ -737,8 +724,8 @@ class piecewise_cubic {
   bool uniform_ = false;
   Real inv_hbar_ = Real(1);
   Real lo_ = Real(0), hi_ = Real(0);  // the domain, kept beside the hot path's other members
-  bool reciprocal_ = true;  // t = (u - u_i) fl(1 / h_i) (see local_t); false: (u - u_i) / h_i
-  std::size_t last_ = 0;  // segment_count() - 1
+  bool reciprocal_ = true;            // t = (u - u_i) fl(1 / h_i) (see local_t); false: (u - u_i) / h_i
+  std::size_t last_ = 0;              // segment_count() - 1
   Real last_real_ = Real(0);
   // One bucket of the non-uniform index (build_buckets): the interior knots in lower buckets, the
   // bucket's own count and its first two knots (+inf where it has fewer).

@@ -79,9 +79,7 @@ class polyline {
   [[nodiscard]] std::size_t segment_count() const { return vertices_.size() - 1; }
 
   /// The segment i with u_i <= u < u_{i+1}, or the last segment for u = u_{n-1} (binary search).
-  [[nodiscard]] std::size_t segment(const Real& u) const {
-    return detail::checked_segment_of<Real>(params_, u);
-  }
+  [[nodiscard]] std::size_t segment(const Real& u) const { return detail::checked_segment_of<Real>(params_, u); }
 
   [[nodiscard]] point_type operator()(const Real& u) const { return derivative(u, 0); }
 

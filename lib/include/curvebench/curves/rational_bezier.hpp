@@ -177,7 +177,8 @@ class rational_bezier {
       min_w = std::min(min_w, weights_[k]);
     }
     for (const point_type& d : numerator_.derivative_control_points(1)) max_a1 = std::max(max_a1, safe_norm(d));
-    for (const point<Real, 1>& d : denominator_.derivative_control_points(1)) max_w1 = std::max(max_w1, Real(abs(d[0])));
+    for (const point<Real, 1>& d : denominator_.derivative_control_points(1))
+      max_w1 = std::max(max_w1, Real(abs(d[0])));
     const Real data = epsilon<Real>() / Real(2) * max_wp;  // fl(w_k P_k)
     const Real width = domain().hi - domain().lo;
     detail::quotient_rounding<Real> q{numerator_.rounding_bound(0) + data,

@@ -86,7 +86,9 @@ inline std::vector<std::vector<double>> generate_points(const field& g) {
                            " points: the generated set is built in memory, about 1 KB a point, before the curve)");
   const auto n = static_cast<std::size_t>(count);
   const double two_pi = 2 * boost::math::constants::pi<double>();
-  const auto num = [&](std::string_view key, double fallback) { return g.has(key) ? g.member(key).number() : fallback; };
+  const auto num = [&](std::string_view key, double fallback) {
+    return g.has(key) ? g.member(key).number() : fallback;
+  };
   std::vector<std::vector<double>> out(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double f = static_cast<double>(i) / static_cast<double>(n - 1);
@@ -203,8 +205,8 @@ Enum named(std::string_view type, std::string_view name, std::initializer_list<E
     if (to_string(e) == name) return e;
     list += (list.empty() ? "" : ", ") + std::string(to_string(e));
   }
-  throw invalid_input("algorithm \"" + std::string(name) + "\" of type \"" + std::string(type) +
-                      "\": not one of " + list);
+  throw invalid_input("algorithm \"" + std::string(name) + "\" of type \"" + std::string(type) + "\": not one of " +
+                      list);
 }
 
 }  // namespace detail

@@ -193,7 +193,8 @@ template <int Dim>
     if (d.audited()) md += " Property audit: " + std::string(d.audit) + ".";
     md += "\n";
     for (const auto& f : d.fields)
-      md += "  - `" + std::string(f.name) + "`" + (f.required() ? " (required)" : "") + ": " + std::string(f.doc) + "\n";
+      md +=
+          "  - `" + std::string(f.name) + "`" + (f.required() ? " (required)" : "") + ": " + std::string(f.doc) + "\n";
   }
   return md;
 }

@@ -135,8 +135,8 @@ template <class Real, int Dim>
     if (what.find("= inf") != std::string::npos || what.find("= -inf") != std::string::npos ||
         what.find("= nan") != std::string::npos || what.find("= -nan") != std::string::npos) {
       const auto [where, value] = detail::largest_number(spec.value, spec.path);
-      what += " (a value computed from the spec's data overflowed double; its largest number is " +
-              to_text(value) + " at " + where + ")";
+      what += " (a value computed from the spec's data overflowed double; its largest number is " + to_text(value) +
+              " at " + where + ")";
     }
     throw spec_error(spec.path + " (type \"" + type + "\"): " + what);
   }

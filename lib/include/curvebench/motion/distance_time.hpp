@@ -82,8 +82,7 @@ void check_phases(const Real& t1, const Real& t2) {
 
 /// Normalized phase boundaries from frames: t1 = (f1 - f0) / (f3 - f0), t2 = (f2 - f0) / (f3 - f0).
 template <class Real>
-std::array<Real, 2> phases_from_frames(long long start, long long end_accel, long long start_decel,
-                                       long long stop) {
+std::array<Real, 2> phases_from_frames(long long start, long long end_accel, long long start_decel, long long stop) {
   if (!(start < stop))
     validate::fail("stop = " + std::to_string(stop) + " <= start = " + std::to_string(start) +
                    ": the move must end after it starts");
@@ -129,6 +128,7 @@ class linear_ease : public detail::distance_time_base<linear_ease<Real>, Real> {
   [[nodiscard]] std::span<const Real> breakpoints() const { return breaks_; }
   [[nodiscard]] static int continuity() { return infinitely_smooth; }
   [[nodiscard]] static int rest_continuity() { return 0; }
+
  private:
   friend class detail::distance_time_base<linear_ease<Real>, Real>;
   [[nodiscard]] Real evaluate(const Real& t, int order, side) const {
@@ -147,6 +147,7 @@ class sine_ease : public detail::distance_time_base<sine_ease<Real>, Real> {
   [[nodiscard]] std::span<const Real> breakpoints() const { return breaks_; }
   [[nodiscard]] static int continuity() { return infinitely_smooth; }
   [[nodiscard]] static int rest_continuity() { return 1; }
+
  private:
   friend class detail::distance_time_base<sine_ease<Real>, Real>;
   [[nodiscard]] Real evaluate(const Real& t, int order, side) const {
@@ -328,6 +329,7 @@ class smoothstep_ease : public detail::distance_time_base<smoothstep_ease<Real>,
   [[nodiscard]] std::span<const Real> breakpoints() const { return breaks_; }
   [[nodiscard]] static int continuity() { return infinitely_smooth; }
   [[nodiscard]] static int rest_continuity() { return 1; }
+
  private:
   friend class detail::distance_time_base<smoothstep_ease<Real>, Real>;
   [[nodiscard]] Real evaluate(const Real& t, int order, side) const {
@@ -351,6 +353,7 @@ class smootherstep_ease : public detail::distance_time_base<smootherstep_ease<Re
   [[nodiscard]] std::span<const Real> breakpoints() const { return breaks_; }
   [[nodiscard]] static int continuity() { return infinitely_smooth; }
   [[nodiscard]] static int rest_continuity() { return 2; }
+
  private:
   friend class detail::distance_time_base<smootherstep_ease<Real>, Real>;
   [[nodiscard]] Real evaluate(const Real& t, int order, side) const {
@@ -396,6 +399,7 @@ class distance_keys_ease : public detail::distance_time_base<distance_keys_ease<
   [[nodiscard]] int rest_continuity() const { return rest_; }
   /// The interpolant (knot slopes, pieces).
   [[nodiscard]] const monotone_cubic<Real>& interpolant() const { return cubic_; }
+
  private:
   friend class detail::distance_time_base<distance_keys_ease<Real>, Real>;
   [[nodiscard]] Real evaluate(const Real& t, int order, side s) const { return cubic_.derivative(t, order, s); }

@@ -73,8 +73,8 @@ void split_keys(std::span<const key<Real, Dim>> keys, std::vector<Real>& frames,
     validate::finite("keys[" + std::to_string(i) + "].frame", keys[i].frame);
     for (int d = 0; d < Dim; ++d)
       if (!is_finite(keys[i].value[d]))
-        validate::fail("keys[" + std::to_string(i) + "].value[" + std::to_string(d) + "] = " +
-                       to_text(keys[i].value[d]) + ": must be finite");
+        validate::fail("keys[" + std::to_string(i) + "].value[" + std::to_string(d) +
+                       "] = " + to_text(keys[i].value[d]) + ": must be finite");
     if (i > 0 && !(keys[i].frame > keys[i - 1].frame))
       validate::fail("keys[" + std::to_string(i) + "].frame = " + to_text(keys[i].frame) + " <= keys[" +
                      std::to_string(i - 1) + "].frame = " + to_text(keys[i - 1].frame) +
@@ -116,8 +116,9 @@ template <class Real, int Dim>
                    ": keyframe tracks use phantom or one_sided ends (a closed loop needs an extra key "
                    "frame; for given end tangents use hermite_track)");
   if (ends == cardinal_end::control_points)
-    validate::fail("ends = control_points: a keyframe track passes through every key, and control_points would "
-                   "leave the first and last keys off the track");
+    validate::fail(
+        "ends = control_points: a keyframe track passes through every key, and control_points would "
+        "leave the first and last keys off the track");
   cardinal_options<Real, Dim> opt;
   opt.s = s;
   opt.end = ends;
@@ -181,9 +182,9 @@ template <class Real, int Dim>
 template <class Real>
 struct track_options {
   key_interpolation interpolation = key_interpolation::catmull_rom;
-  Real tension_s = Real(1) / Real(2);              ///< cardinal: tangent scale s
+  Real tension_s = Real(1) / Real(2);                  ///< cardinal: tangent scale s
   cardinal_end cardinal_ends = cardinal_end::phantom;  ///< catmull_rom, cardinal
-  spline_end natural_ends = spline_end::natural;      ///< natural_cubic
+  spline_end natural_ends = spline_end::natural;       ///< natural_cubic
 };
 
 /// An animated channel: keys and the curve through them (family chosen at run time), evaluated
@@ -207,8 +208,7 @@ class keyframe_track {
         curve_(any_curve<Real, Dim>(hermite_track(keys, slopes), "hermite")) {}
 
   /// Scalar channel (Dim = 1) from (frame, value) keys.
-  keyframe_track(std::span<const scalar_key<Real>> keys, const track_options<Real>& opt = {})
-    requires(Dim == 1)
+  keyframe_track(std::span<const scalar_key<Real>> keys, const track_options<Real>& opt = {}) requires(Dim == 1)
       : keyframe_track(std::span<const key_type>(scalar_keys(keys)), opt) {}
 
   [[nodiscard]] interval<Real> domain() const { return curve_.domain(); }
@@ -218,11 +218,7 @@ class keyframe_track {
   /// d^order value / dframe^order (per frame; multiply by fps^order for per unit time).
   [[nodiscard]] point_type derivative(const Real& frame, int order) const { return curve_.derivative(frame, order); }
   /// The value of a scalar channel at frame f.
-  [[nodiscard]] Real scalar(const Real& frame) const
-    requires(Dim == 1)
-  {
-    return curve_(frame)[0];
-  }
+  [[nodiscard]] Real scalar(const Real& frame) const requires(Dim == 1) { return curve_(frame)[0]; }
 
   /// Values at the integer frames first..last, written to out (size last - first + 1).
   void sample_frames(long long first, long long last, std::span<point_type> out) const {

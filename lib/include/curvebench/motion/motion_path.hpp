@@ -36,7 +36,8 @@ concept arc_length_map = requires(const A& a, const typename A::real_type& s) {
   { a.length() } -> std::convertible_to<typename A::real_type>;
   { a.u(s) } -> std::convertible_to<typename A::real_type>;
   requires curve<std::remove_cvref_t<decltype(a.curve())>>;
-  requires std::same_as<typename std::remove_cvref_t<decltype(a.curve())>::real_type, typename A::real_type>;
+  requires std::same_as < typename std::remove_cvref_t<decltype(a.curve())>::real_type,
+  typename A::real_type > ;
 };
 
 /// Integer frames [first, last] at `fps` frames per unit of time (time of frame f = f / fps).
@@ -51,15 +52,15 @@ struct frame_range {
 /// Everything about the motion at one instant.
 template <class Real, int Dim>
 struct motion_sample {
-  Real time;                       ///< t
-  Real normalized_time;            ///< x = (t - t0) / T in [0, 1]
-  Real distance;                   ///< sigma = L S(x), arc length travelled
-  Real parameter;                  ///< u = U(sigma)
-  point<Real, Dim> position;       ///< P(u)
-  Real speed;                      ///< sigma' = L S'(x) / T
-  Real tangential_acceleration;    ///< sigma'' = L S''(x) / T^2
-  point<Real, Dim> velocity;       ///< sigma' T_hat
-  point<Real, Dim> acceleration;   ///< sigma'' T_hat + sigma'^2 k N
+  Real time;                      ///< t
+  Real normalized_time;           ///< x = (t - t0) / T in [0, 1]
+  Real distance;                  ///< sigma = L S(x), arc length travelled
+  Real parameter;                 ///< u = U(sigma)
+  point<Real, Dim> position;      ///< P(u)
+  Real speed;                     ///< sigma' = L S'(x) / T
+  Real tangential_acceleration;   ///< sigma'' = L S''(x) / T^2
+  point<Real, Dim> velocity;      ///< sigma' T_hat
+  point<Real, Dim> acceleration;  ///< sigma'' T_hat + sigma'^2 k N
 };
 
 // to a time interval [t0, t1] of duration T (or frames [f0, f1] at fps frames per unit time,
@@ -79,7 +80,7 @@ struct motion_sample {
 // moving at that instant (at rest it is sigma'' T_hat); where P' = P'' = 0 and the motion is not at
 // rest, velocity() throws too.
 template <arc_length_map A, distance_time F>
-  requires std::same_as<typename A::real_type, typename F::real_type>
+requires std::same_as<typename A::real_type, typename F::real_type>
 class motion_path {
  public:
   using real_type = typename A::real_type;
@@ -172,8 +173,7 @@ class motion_path {
   /// Positions at every frame first..last, written to out (size frames().count()). No allocation.
   void sample_frames(std::span<point_type> out) const {
     require_frames();
-    validate::same_count("sample_frames output", out.size(), "frames",
-                         static_cast<std::size_t>(frames_.count()));
+    validate::same_count("sample_frames output", out.size(), "frames", static_cast<std::size_t>(frames_.count()));
     for (long long f = frames_.first; f <= frames_.last; ++f)
       out[static_cast<std::size_t>(f - frames_.first)] = position_at_frame(f);
   }

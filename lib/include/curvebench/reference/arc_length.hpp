@@ -98,7 +98,8 @@ class reference_arc_length {
     const std::size_t i = curvebench::detail::breakpoint_at_or_below<Real>(splits_, u);  // the last split <= u
     arclength::quadrature_result<Real> r;
     Real err(0);
-    r.value = cumulative_[i] + (u > splits_[i] ? integrate(splits_[i], u, grade_levels_[i], next_levels(i), err) : Real(0));
+    r.value =
+        cumulative_[i] + (u > splits_[i] ? integrate(splits_[i], u, grade_levels_[i], next_levels(i), err) : Real(0));
     r.error_estimate = cumulative_error_[i] + err;
     r.status = arclength::result_status::converged;
     return r;
@@ -276,7 +277,8 @@ class reference_arc_length {
     }
     const Real m = a + (b - a) / Real(2);
     const panel_estimate left = rule(a, m), right = rule(m, b);
-    const bool stagnated = arclength::detail::bisection_stagnated(p.error, Real(left.error + right.error), Real(abs(p.value)));
+    const bool stagnated =
+        arclength::detail::bisection_stagnated(p.error, Real(left.error + right.error), Real(abs(p.value)));
     if (stagnated && suspect) {
       err += left.error + right.error;
       return left.value + right.value;
@@ -305,7 +307,8 @@ class reference_arc_length {
       if (!(g[k] <= g[k - 1] && g[k] <= g[k + 1]) || g[k] > threshold) continue;
       if (g[k] == g[k - 1] && g[k] == Real(0)) continue;  // inside a zero-speed stretch: one split is enough
       auto obj = [this](const Real& x) { return speed2(x); };
-      const auto res = boost::math::tools::brent_find_minima(obj, us[k - 1], us[k + 1], std::numeric_limits<Real>::digits / 2);
+      const auto res =
+          boost::math::tools::brent_find_minima(obj, us[k - 1], us[k + 1], std::numeric_limits<Real>::digits / 2);
       Real x = res.first;
       // Newton on h = P'.P'' (zero at a minimum of |P'|^2), kept inside the bracket.
       for (int it = 0; it < 40; ++it) {

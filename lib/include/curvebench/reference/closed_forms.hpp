@@ -46,15 +46,18 @@ template <class Real>
   const Real a1 = c.size() > 1 ? c[1] : Real(0);
   const Real a2 = c.size() > 2 ? Real(2) * c[2] : Real(0);
   const Real a3 = c.size() > 3 ? Real(3) * c[3] : Real(0);
-  if (c.size() > 4) validate::fail("straight_polynomial_length: degree <= 3 supported, " + std::to_string(c.size() - 1) + " given");
+  if (c.size() > 4)
+    validate::fail("straight_polynomial_length: degree <= 3 supported, " + std::to_string(c.size() - 1) + " given");
   std::vector<Real> roots;
   if (a3 != Real(0)) {
     const Real disc = a2 * a2 - Real(4) * a3 * a1;
     if (disc >= Real(0)) {
       const Real sq = sqrt(disc);
       const Real q = a2 >= Real(0) ? -(a2 + sq) / Real(2) : -(a2 - sq) / Real(2);  // stable pair
-      if (q != Real(0)) roots = {q / a3, a1 / q};
-      else roots = {Real(0)};
+      if (q != Real(0))
+        roots = {q / a3, a1 / q};
+      else
+        roots = {Real(0)};
     }
   } else if (a2 != Real(0)) {
     roots = {-a1 / a2};

@@ -35,7 +35,8 @@ template <class To, class From>
 [[nodiscard]] To exact_value(const From& x, std::string_view name = "value", std::size_t index = std::string::npos) {
   const To y = static_cast<To>(x);
   if (!(static_cast<From>(y) == x))
-    validate::fail(validate::indexed(name, index) + " = " + to_text(x) + ": does not convert exactly to the target Real");
+    validate::fail(validate::indexed(name, index) + " = " + to_text(x) +
+                   ": does not convert exactly to the target Real");
   return y;
 }
 
@@ -55,7 +56,8 @@ template <class To, class From, int Dim>
   out.reserve(ps.size());
   for (std::size_t i = 0; i < ps.size(); ++i) {
     point<To, Dim> q;
-    for (int d = 0; d < Dim; ++d) q[d] = exact_value<To>(ps[i][d], validate::indexed(name, i) + "[" + std::to_string(d) + "]");
+    for (int d = 0; d < Dim; ++d)
+      q[d] = exact_value<To>(ps[i][d], validate::indexed(name, i) + "[" + std::to_string(d) + "]");
     out.push_back(q);
   }
   return out;

@@ -102,10 +102,12 @@ struct sampled_curve {
 };
 
 template <class Curve>
-sampled_curve<Curve> sample(const Curve& c,
-                            std::span<const point<typename Curve::real_type, Curve::dimension>> items,
+sampled_curve<Curve> sample(const Curve& c, std::span<const point<typename Curve::real_type, Curve::dimension>> items,
                             std::span<const control_role> roles, int per_segment) {
-  sampled_curve<Curve> s{c, c.domain(), parameter_grid(c, per_segment), {},
+  sampled_curve<Curve> s{c,
+                         c.domain(),
+                         parameter_grid(c, per_segment),
+                         {},
                          data_scale<typename Curve::real_type, Curve::dimension>(items, roles)};
   s.base.resize(s.grid.size());
   for (std::size_t j = 0; j < s.grid.size(); ++j) s.base[j] = c(s.grid[j]);
@@ -310,7 +312,8 @@ variation_diminishing_result variation_diminishing(
       for (int l = 0; l < opt.random_lines; ++l) {
         const double th = boost::math::constants::pi<double>() * (unit() + 1.0);
         const pt n(Real(std::cos(th)), Real(std::sin(th)));
-        const pt q = items[static_cast<std::size_t>((unit() + 1.0) / 2.0 * static_cast<double>(items.size() - 1) + 0.5)];
+        const pt q =
+            items[static_cast<std::size_t>((unit() + 1.0) / 2.0 * static_cast<double>(items.size() - 1) + 0.5)];
         test_line(n, n.dot(q) + Real(unit()) * s.scale / Real(4));
       }
       // Lines just inside each local extremum of n . C(u), where a curve bulge is cut twice.

@@ -147,7 +147,8 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(
   end_feature(0, 1, out.front().delta);
   for (std::size_t k = 1; k < samples; ++k) {
     if (shallow && g[k] <= g[k - 1] && g[k] <= g[k + 1] && g[k] > threshold) {
-      const typename C::point_type d1 = c.derivative(us[k], 1), d2 = c.derivative(us[k], 2), d3 = c.derivative(us[k], 3);
+      const typename C::point_type d1 = c.derivative(us[k], 1), d2 = c.derivative(us[k], 2),
+                                   d3 = c.derivative(us[k], 3);
       evaluations += 3;
       const speed_model<Real> m{us[k], d1.squaredNorm(), d1.dot(d2), d2.squaredNorm() + d1.dot(d3)};
       if (m.dh > Real(0)) shallow->push_back({us[k], m.delta()});

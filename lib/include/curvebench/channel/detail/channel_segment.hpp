@@ -45,7 +45,7 @@ struct segment {
   interpolation kind;
   std::array<Real, 4> t;
   std::array<Real, 4> v;
-  Real m0{0}, m1{0};  // hermite: the end slopes as given (exact at the keys, not via v1, v2)
+  Real m0{0}, m1{0};          // hermite: the end slopes as given (exact at the keys, not via v1, v2)
   std::array<Real, 4> rel{};  // bezier: control times relative to t[0] (see above)
 
   [[nodiscard]] Real span() const { return t[3] - t[0]; }

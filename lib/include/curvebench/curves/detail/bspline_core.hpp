@@ -52,7 +52,8 @@ void bspline_validate(int order, std::size_t count, std::span<const Real> knots)
     validate::fail("order = " + std::to_string(order) + ": must be in [1, " + std::to_string(bspline_max_order) +
                    "] (degree + 1)");
   const auto m = static_cast<std::size_t>(order);
-  validate::count_at_least("control_points", count, m, "order " + std::to_string(order) + " needs at least order points");
+  validate::count_at_least("control_points", count, m,
+                           "order " + std::to_string(order) + " needs at least order points");
   if (knots.size() != count + m)
     validate::fail("knots: " + std::to_string(knots.size()) + " given, must be control_points + order = " +
                    std::to_string(count) + " + " + std::to_string(order) + " = " + std::to_string(count + m));
@@ -62,15 +63,15 @@ void bspline_validate(int order, std::size_t count, std::span<const Real> knots)
     if (i < knots.size() && knots[i] == knots[run_start]) continue;
     const std::size_t multiplicity = i - run_start;
     if (multiplicity > m)
-      validate::fail("knots[" + std::to_string(run_start) + ".." + std::to_string(i - 1) + "] = " +
-                     to_text(knots[run_start]) + ": multiplicity " + std::to_string(multiplicity) +
+      validate::fail("knots[" + std::to_string(run_start) + ".." + std::to_string(i - 1) +
+                     "] = " + to_text(knots[run_start]) + ": multiplicity " + std::to_string(multiplicity) +
                      " exceeds order = " + std::to_string(order));
     run_start = i;
   }
   if (!(knots[m - 1] < knots[count]))
     validate::fail("knots: domain [knots[" + std::to_string(m - 1) + "], knots[" + std::to_string(count) + "]] = [" +
-                   to_text(knots[m - 1]) + ", " + to_text(knots[count]) + "] is empty; knots[" +
-                   std::to_string(m - 1) + "] < knots[" + std::to_string(count) + "] required");
+                   to_text(knots[m - 1]) + ", " + to_text(knots[count]) + "] is empty; knots[" + std::to_string(m - 1) +
+                   "] < knots[" + std::to_string(count) + "] required");
 }
 
 /// Knots, control data of every derivative level, span lookup and the two evaluation algorithms.
@@ -201,7 +202,8 @@ class bspline_core {
     return k;
   }
 
-  void nonzero_basis_at(const Real& u, int derivative_order, std::size_t k, std::array<Real, bspline_max_order>& b) const {
+  void nonzero_basis_at(const Real& u, int derivative_order, std::size_t k,
+                        std::array<Real, bspline_max_order>& b) const {
     const auto r = static_cast<std::size_t>(derivative_order);
     const std::size_t mm = static_cast<std::size_t>(order_) - r;  // order at this level
     const Real* s = knots_.data() + r;

@@ -79,8 +79,7 @@ template <class Real, int Dim>
 /// `scale` is the factor the family multiplies the slope by.
 template <class Real, int Dim>
 [[nodiscard]] Real parabola_slope_mid_error(const Real& h0, const Real& h1, const point<Real, Dim>& pm,
-                                            const point<Real, Dim>& p0, const point<Real, Dim>& pp,
-                                            const Real& scale) {
+                                            const point<Real, Dim>& p0, const point<Real, Dim>& pp, const Real& scale) {
   using std::abs;
   const Real d0 = safe_norm(point<Real, Dim>(p0 - pm)) / h0, d1 = safe_norm(point<Real, Dim>(pp - p0)) / h1;
   return Real(8) * epsilon<Real>() * abs(scale) * ((h1 * d0 + h0 * d1) / (h0 + h1));
@@ -90,8 +89,7 @@ template <class Real, int Dim>
 /// parabola_slope_end.
 template <class Real, int Dim>
 [[nodiscard]] Real parabola_slope_end_error(const Real& h0, const Real& h1, const point<Real, Dim>& p0,
-                                            const point<Real, Dim>& p1, const point<Real, Dim>& p2,
-                                            const Real& scale) {
+                                            const point<Real, Dim>& p1, const point<Real, Dim>& p2, const Real& scale) {
   using std::abs;
   const Real d0 = safe_norm(point<Real, Dim>(p1 - p0)) / h0, d1 = safe_norm(point<Real, Dim>(p2 - p1)) / h1;
   return Real(8) * epsilon<Real>() * abs(scale) * (((Real(2) * h0 + h1) * d0 + h0 * d1) / (h0 + h1));

@@ -62,7 +62,8 @@ struct rational_bezier_family : audited_by_points {
   static any_curve<Real, Dim> build(const field& spec) {
     const point_list<Real, Dim> p = detail::spec_points<Real, Dim>(spec);
     const interval<Real> dom = detail::bezier_domain<Real>(spec);
-    const std::vector<Real> w = spec.member("weights", "a rational Bezier curve has one weight per point").reals<Real>();
+    const std::vector<Real> w =
+        spec.member("weights", "a rational Bezier curve has one weight per point").reals<Real>();
     return rational_bezier<Real, Dim>(std::span<const point<Real, Dim>>(p), std::span<const Real>(w), dom);
   }
 };

@@ -38,7 +38,8 @@ json resolve_spline_knots(const field& spec) {
     if ((kind == "clamped" || kind == "uniform") && degree >= 0 && degree < bspline_max_order) {
       const std::size_t n = spec.member("points").array_size();
       const int order = static_cast<int>(degree) + 1;
-      r["knots"] = kind == "uniform" ? bspline_uniform_knots<double>(n, order) : bspline_clamped_knots<double>(n, order);
+      r["knots"] =
+          kind == "uniform" ? bspline_uniform_knots<double>(n, order) : bspline_clamped_knots<double>(n, order);
       r.erase("knot_vector");
     }
   }
@@ -109,7 +110,8 @@ struct nurbs_family : audited_by_points {
     const point_list<Real, Dim> p = detail::spec_points<Real, Dim>(spec);
     const int order = detail::spline_order(spec);
     if (spec.has("knots") && spec.has("knot_vector")) spec.member("knots").fail("give either knots or knot_vector");
-    const std::string kind = spec.has("knot_vector") ? spec.member("knot_vector").one_of({"clamped", "uniform"}) : "clamped";
+    const std::string kind =
+        spec.has("knot_vector") ? spec.member("knot_vector").one_of({"clamped", "uniform"}) : "clamped";
     std::vector<Real> k = detail::spline_knots<Real>(spec, kind, p.size(), order);
     return nurbs<Real, Dim>(order, std::move(k), p,
                             spec.member("weights", "a NURBS curve has one weight per point").reals<Real>());

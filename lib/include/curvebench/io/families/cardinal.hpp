@@ -19,8 +19,7 @@ any_curve<Real, Dim> build_cardinal(const field& spec) {
   if (spec.has("tension")) opt.s = (Real(1) - Real(spec.member("tension").number())) / Real(2);
   opt.alpha = real_or<Real>(spec, "alpha", Real(0));
   if (spec.has("end")) {
-    const std::string e =
-        spec.member("end").one_of({"phantom", "one_sided", "tangents", "closed", "control_points"});
+    const std::string e = spec.member("end").one_of({"phantom", "one_sided", "tangents", "closed", "control_points"});
     opt.end = e == "phantom"     ? cardinal_end::phantom
               : e == "one_sided" ? cardinal_end::one_sided
               : e == "tangents"  ? cardinal_end::given_tangents

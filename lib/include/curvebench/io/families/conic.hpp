@@ -16,12 +16,15 @@ namespace detail {
 /// "nurbs" or "rational_bezier" spec.
 inline json control_data_spec(const any_curve<double, 2>& c) {
   if (const auto* n = c.template target<nurbs<double, 2>>()) {
-    return {{"type", "nurbs"}, {"degree", n->degree()}, {"points", points_json<2>(n->control_points())},
+    return {{"type", "nurbs"},
+            {"degree", n->degree()},
+            {"points", points_json<2>(n->control_points())},
             {"weights", std::vector<double>(n->weights().begin(), n->weights().end())},
             {"knots", std::vector<double>(n->knots().begin(), n->knots().end())}};
   }
   const auto& b = *c.template target<rational_bezier<double, 2>>();
-  return {{"type", "rational_bezier"}, {"points", points_json<2>(b.control_points())},
+  return {{"type", "rational_bezier"},
+          {"points", points_json<2>(b.control_points())},
           {"weights", std::vector<double>(b.weights().begin(), b.weights().end())}};
 }
 

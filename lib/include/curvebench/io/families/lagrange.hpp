@@ -12,8 +12,9 @@ struct lagrange_family : audited_by_points {
   static constexpr field_doc fields[] = {
       {"points", "the interpolated points", presence::required},
       {"params", "the parameter of each point, increasing (not with nodes)"},
-      {"nodes", "the parameters when params are not given: equispaced on [0, 1] (default) or chebyshev "
-                "(2nd kind, on [-1, 1])"},
+      {"nodes",
+       "the parameters when params are not given: equispaced on [0, 1] (default) or chebyshev "
+       "(2nd kind, on [-1, 1])"},
       {"algorithm", "barycentric (default) or monomial (Vandermonde solve, then Horner)"},
   };
   static constexpr std::string_view examples[] = {
@@ -57,8 +58,8 @@ struct lagrange_family : audited_by_points {
   template <int Dim>
   static evaluator_fn<Dim> evaluator(const any_curve<double, Dim>&, const json& spec, std::string_view algorithm) {
     json twin = spec;
-    twin["algorithm"] = to_string(
-        detail::named(name, algorithm, {lagrange_algorithm::barycentric, lagrange_algorithm::monomial}));
+    twin["algorithm"] =
+        to_string(detail::named(name, algorithm, {lagrange_algorithm::barycentric, lagrange_algorithm::monomial}));
     const any_curve<double, Dim> t = build<double, Dim>(field{twin, "spec"});
     return [t](double u) { return t(u); };
   }
