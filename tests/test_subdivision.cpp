@@ -223,8 +223,12 @@ TEST(subdivision, capped_runs_keep_a_finite_bound_within_the_budget) {
 // halved to min_depth, what a breadth-first or depth-first order reaches at best with the same
 // evaluations) is compared with the best-first run given exactly the evaluations the uniform one
 // used: its bound is at most the uniform one's, and on the hairpin, where the error sits in two
-// short stretches, far smaller. Before this change a capped run had no bound at all (+inf, depth
-// first) and was 0.7 % short on a 4-piece path at 1e-14.
+// short stretches, far smaller. At slope 1e3 no piece reaches its rounding floor, so only the order
+// of halving makes the difference: measured 0.003 to 0.008 of the uniform bound from depth 5 on
+// (0.98 to 1 when the heap orders by depth instead, the mutation this checks). At the steeper
+// slopes the floor, which retires pieces that halving cannot improve, adds to it. Before this
+// change a capped run had no bound at all (+inf, depth first) and was 0.7 % short on a 4-piece path
+// at 1e-14.
 TEST(subdivision, best_first_beats_uniform_refinement_at_equal_cost) {
   for (const double k : {1e3, 1e6, 77777771.0}) {
     const auto c = steep_end<double>(k);
@@ -243,8 +247,8 @@ TEST(subdivision, best_first_beats_uniform_refinement_at_equal_cost) {
       EXPECT_LE(b.evaluations, u.evaluations);
       EXPECT_TRUE(bounds(b, t)) << "slope " << k << " depth " << depth;
       EXPECT_LE(b.error_estimate, u.error_estimate) << "slope " << k << " depth " << depth;
-      if (k > 1e6 && depth >= 5) {
-        EXPECT_LT(b.error_estimate, 0.1 * u.error_estimate) << "slope " << k << " depth " << depth;
+      if (depth >= 5) {
+        EXPECT_LT(b.error_estimate, 0.05 * u.error_estimate) << "slope " << k << " depth " << depth;
       }
     }
   }
