@@ -82,7 +82,8 @@ inline constexpr method forward_difference{"forward_difference", "length s_of_u 
 inline constexpr method richardson{"richardson", "length", "steps", 4,
                                    "Richardson extrapolation of the chord sums of N and N/2 steps"};
 inline constexpr method subdivision{"subdivision", "length", "tol", 2,
-                                    "adaptive subdivision with the chord test; tolerance relative to the length"};
+                                    "adaptive subdivision, the piece with the largest chord / control-polygon bracket "
+                                    "halved first; tolerance relative to the length"};
 inline constexpr method segments_adaptive{"segments_adaptive", "s_of_u", "", 0,
                                           "s(u): adaptive segment lengths plus one adaptive partial integral"};
 inline constexpr method linear_table{"linear_table", "u_of_s", "M", 2,

@@ -1,24 +1,37 @@
-// Adaptive subdivision arc length (Parent's chord test): compare an interval's chord with the sum
-// of its halves' chords; accept the halves within the tolerance, else recurse with half of it.
-// Three points can be fooled (collinear, evenly spaced samples of a wandering curve such as
-// (u, u^3 - u) on [-1, 1]), so two guards are on by default: min_depth levels before trusting the
-// test, and look_ahead (the quarter chords must agree too, at an observed order >= log2 3). No
-// sampling method is proof against a curve designed to pass at every level.
+// Adaptive subdivision arc length: the curve is cut into pieces, each measured by its chord, and the
+// piece whose error bound is largest is halved next (best first, a binary heap), until the bounds
+// sum to the target, the evaluation budget is spent or no piece can be halved usefully.
+// The bound of a piece [a, b] (h = b - a) is a bracket from P and P' at its ends: its length lies
+// between the chord |P(b) - P(a)| and the length of the control polygon P(a), P(a) + h/3 P'(a),
+// P(b) - h/3 P'(b), P(b). For a polynomial piece of degree <= 3 that polygon is the piece's Bezier
+// polygon and the bracket is a theorem; the value is the chord (Parent's chord sum), so polygon -
+// chord bounds its error (plus the rounding of P, P' and of the arithmetic, included). The chord
+// test of Parent (compare a chord with its halves') bounded nothing: on a hairpin (a clamped natural
+// cubic with end slope 7.8e7, issue 33) the halves and quarters agree while the tip is missed, and it
+// reported 0.0021 for an error of 656. For a piece of higher degree or a rational one the polygon is
+// the bound of its Hermite cubic, off by O(h^4): with look_ahead (default), each halving checks that
+// the halves' polygons do not exceed their parent's (a theorem for cubics), and any excess is added
+// to both halves' bounds, so such pieces are refined until the cubic model holds. No sampling method
+// is proof against a non-polynomial curve designed to pass at every level.
+// P' at a segment's right end is taken just inside it (interior breakpoints belong to the segment on
+// their right), at b - d with d a few ulps, its error bounded with |P''| there (one more evaluation).
 // The target is max(tolerance, relative_tolerance * size), size the length of the polygon through
 // the breakpoints and the segments' midpoints (a lower bound of L): by default 1e-6 relative, so
 // the same work measures a curve of size 1e10 or 1e-10.
-// Estimate: the accepted differences (order >= 1 assumed without look-ahead, checked with it) plus
-// rounding, the curve's own included: 2 rounding_bound(c, 0) per position evaluated (core/curve.hpp;
-// not_guaranteed, +inf, for a curve without a bound). Status: converged when every leaf passed;
-// rounding_limited when a leaf's share of the target was below its chords' rounding (16 eps of their
-// length) and it was accepted at that level; cap_hit when max_depth or the evaluation budget forced
-// a leaf (at max_depth its last difference is its estimate, as for a passed leaf without look-ahead;
-// a leaf the budget stopped has no bound, and the estimate is then +inf).
-// Sources: Parent (2012), 3.2.2; seed 002 ("adaptive forward differencing").
-// Cost: ~2 position evaluations per accepted leaf (+2 with look-ahead), ~(L / target)^(1/2)
-// leaves; at most max_evaluations (2^22), plus 5 per segment and 3 per level of the recursion (a
-// half pending when the budget ran out evaluates its midpoint before it stops). Accuracy: order 2 in the leaf size
-// on smooth pieces.
+// Estimate: the sum of the pieces' bounds plus the rounding of the sum; a curve's own rounding is
+// rounding_bound(c, 0) and (c, 1) (core/curve.hpp; not_guaranteed, +inf, for a curve without a
+// bound). Status: converged when the estimate is <= the target; otherwise cap_hit when the budget
+// or max_depth stopped it (the estimate is still a bound: best first, it is the smallest the
+// budget allowed this way), rounding_limited when the pieces left are at their rounding floor or too
+// narrow to halve. A budget too small to measure every segment once gives cap_hit with +inf.
+// Sources: Parent (2012), 3.2.2 (the chord sum); seed 002; the Bezier bracket chord <= L <=
+// polygon and its refinement under subdivision, e.g. Gravesen (1997), in references.md.
+// Cost: 2 evaluations (P and P') per halving, 6 per segment to start (7 when its right end is an
+// interior breakpoint); never more than max_evaluations (2^22) in all. Memory: one node (u, P, P')
+// per halving and one heap entry per piece, bounded by the budget: about 90 bytes per halving in
+// 3D, 190 MB at the default budget when neither the target nor the rounding floor stops it (the
+// vectors' growth may hold up to twice that while they reallocate). Accuracy: order 2 in the piece
+// size on smooth pieces; the bound is of the same order (twice the chord's error on a circular arc).
 #pragma once
 
 #include "curvebench/arclength/result.hpp"
@@ -27,8 +40,11 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace curvebench::arclength {
 
@@ -37,93 +53,263 @@ struct subdivision_options {
   Real tolerance{0};  ///< absolute, in length units, over the whole curve (0: relative only)
   /// Relative to the curve's size (see the header); the target is the larger of the two.
   Real relative_tolerance{Real(1) / Real(1000000)};
+  /// Every piece is halved until it is min_depth levels below its segment (each segment is halved
+  /// once in any case: its midpoint measures the size and checks the first bracket).
   int min_depth{2};
+  /// A piece this many levels below its segment is not halved (cap_hit if the target is not met).
   int max_depth{40};
+  /// Check each halving's polygons against their parent's, adding any excess to the bound (a piece
+  /// that is not a cubic polynomial); false trusts the bracket as for a cubic.
   bool look_ahead{true};
-  /// Position evaluations allowed: no leaf is refined once they are spent (cap_hit); each segment
-  /// still costs its ends and midpoint (and look-ahead), 5 at most, and each half pending on the
-  /// recursion stack 3.
+  /// Evaluations (positions and derivatives) allowed in all, never exceeded (see the header).
   std::size_t max_evaluations{std::size_t(1) << 22};
 };
 
 namespace detail {
 
 template <curve C>
-struct subdivider {
+class subdivider {
+ public:
   using Real = typename C::real_type;
   using P = typename C::point_type;
-  const C& c;
-  const subdivision_options<Real>& opt;
-  quadrature_result<Real> out{};
 
-  static Real dist(const P& a, const P& b) { return safe_norm(P(b - a)); }
+  subdivider(const C& curve, const subdivision_options<Real>& options) : c_(curve), opt_(options) {}
 
-  // Length of [a, b] with end points pa, pb; tol is this interval's share.
-  void run(const Real& a, const Real& b, const P& pa, const P& pb, const Real& tol, int depth) {
+  quadrature_result<Real> run() {
+    using std::max;
+    const Real r0 = rounding_bound(c_, 0), r1 = rounding_bound(c_, 1);
+    if (!is_finite(r0) || !is_finite(r1)) not_guaranteed_ = true;
+    r0_ = is_finite(r0) ? r0 : Real(0);
+    r1_ = is_finite(r1) ? r1 : Real(0);
+    const std::span<const Real> bp = c_.breakpoints();
+    total_ = bp.back() - bp.front();
+    Real size(0);
+    for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
+      if (!(bp[i + 1] > bp[i])) continue;
+      if (!start_segment(bp[i], bp[i + 1], i + 2 < bp.size(), size)) {
+        unmeasured_ = true;
+        break;
+      }
+    }
+    target_ = max(opt_.tolerance, Real(opt_.relative_tolerance * size));
+    refine();
+    return finish();
+  }
+
+ private:
+  struct node {
+    Real u;
+    P p;         // P(u)
+    P d;         // P'(u) of the segment the node belongs to
+    Real d_err;  // error of d beyond the curve's rounding (a right end taken just inside)
+  };
+  struct leaf {
+    Real est;  // the piece's bound (bracket, rounding, look-ahead excess)
+    std::uint32_t a, b;
+    int depth;
+  };
+  struct bracket {
+    Real chord, gap, err;  // chord, polygon - chord (>= 0), rounding of both
+  };
+
+  const C& c_;
+  const subdivision_options<Real>& opt_;
+  Real r0_{0}, r1_{0}, total_{0}, target_{0};
+  std::vector<node> nodes_;
+  std::vector<leaf> heap_;
+  quadrature_result<Real> out_{};
+  Real running_est_{0}, running_value_{0};  // sums over every leaf, updated as leaves split
+  Real retired_est_{0}, retired_value_{0};  // leaves taken out of the heap (not to be halved)
+  std::size_t leaves_{0};
+  bool not_guaranteed_{false}, unmeasured_{false}, capped_{false}, floor_{false};
+
+  [[nodiscard]] bool affordable(std::size_t n) const {
+    return out_.evaluations <= opt_.max_evaluations && n <= opt_.max_evaluations - out_.evaluations &&
+           nodes_.size() < std::numeric_limits<std::uint32_t>::max() - 4;
+  }
+  [[nodiscard]] Real key(const leaf& l) const {
+    return l.depth < opt_.min_depth ? std::numeric_limits<Real>::infinity() : l.est;
+  }
+  std::uint32_t add(const Real& u, const P& p, const P& d, const Real& d_err) {
+    nodes_.push_back(node{u, p, d, d_err});
+    return static_cast<std::uint32_t>(nodes_.size() - 1);
+  }
+
+  // The bracket of the piece between nodes A and B (see the header for the rounding terms).
+  [[nodiscard]] bracket measure(const node& A, const node& B) const {
+    using std::max;
+    const Real third = (B.u - A.u) / Real(3);
+    const Real chord = safe_norm(P(B.p - A.p));
+    const Real da = safe_norm(A.d), db = safe_norm(B.d);
+    const Real middle = safe_norm(P(B.p - A.p - third * P(A.d + B.d)));
+    const Real arms = third * (da + db);
+    const Real poly = arms + middle;
+    // The curve's rounding: 2 r0 in the chord, 2 r0 + 4 (h/3) r1 in the polygon (its middle leg and
+    // arms). The arithmetic rounds relative to what it forms: a difference of two coordinates is
+    // within eps/2 of its own value, so the chord's error is relative to the chord, the middle leg's
+    // to the chord and the arms, and the rest (h, h/3, the norms' squares and roots, the sums) to
+    // the terms: at most 8 eps of chord + arms + polygon for Dim <= 4, 16 with a 2x margin.
+    const Real err = Real(4) * r0_ + third * (Real(4) * r1_ + Real(2) * (A.d_err + B.d_err)) +
+                     Real(16) * epsilon<Real>() * (chord + arms + poly);
+    return {chord, max(Real(poly - chord), Real(0)), err};
+  }
+
+  // Evaluates a segment's ends and midpoint (6 evaluations, 7 with an interior right end) and
+  // enters its two halves; false when the budget cannot pay for it.
+  bool start_segment(const Real& a, const Real& b, bool interior_end, Real& size) {
     using std::abs;
+    using std::max;
+    if (!affordable(interior_end ? 7 : 6)) return false;
+    const P pa = c_(a), da = c_.derivative(a, 1), pb = c_(b);
+    // P'(b) would be the next segment's: take it a few ulps inside, within [a, b).
+    Real inner = b;
+    Real d_err(0);
+    if (interior_end) {
+      inner = b - Real(4) * epsilon<Real>() * max(abs(a), abs(b));
+      if (!(inner > a)) inner = a;
+      // P'(b-) - P'(inner) = (b - inner) P''(xi); twice |P''(inner)| covers the variation of P''
+      // over a few ulps.
+      d_err = Real(2) * (b - inner) * safe_norm(P(c_.derivative(inner, 2)));
+      ++out_.evaluations;
+    }
+    const P db = c_.derivative(inner, 1);
+    out_.evaluations += 4;
     const Real m = (a + b) / Real(2);
-    const P pm = c(m);
-    ++out.evaluations;
-    const Real whole = dist(pa, pb);
-    const Real halves = dist(pa, pm) + dist(pm, pb);
-    const Real diff = abs(halves - whole);
-    bool accept = depth >= opt.min_depth && diff <= tol;
-    if (accept && opt.look_ahead) {
-      const P q1 = c((a + m) / Real(2));
-      const P q3 = c((m + b) / Real(2));
-      out.evaluations += 2;
-      const Real quarters = dist(pa, q1) + dist(q1, pm) + dist(pm, q3) + dist(q3, pb);
-      const Real d2 = abs(quarters - halves);
-      const Real noise = Real(16) * epsilon<Real>() * quarters;
-      // A share below the chords' rounding is met at the rounding level (rounding_limited).
-      if (!(d2 <= tol) && d2 <= noise && diff <= noise) {
-        out.value += quarters;
-        out.error_estimate += d2 + noise;
-        out.status = worst(out.status, result_status::rounding_limited);
-        return;
-      }
-      // Accept the quarters when the chord sums converge at an observed order >= log2(3) (diff >=
-      // 3 d2; smooth pieces tend to order 2): then |L - quarters| <= d2 / (2^p - 1) <= d2 / 2, a 2x
-      // margin for the order still drifting. Both differences at rounding level also accept.
-      // Otherwise (a coincidence of three points, or a cusp-like piece still pre-asymptotic) refine.
-      if (d2 <= tol && (diff >= Real(3) * d2 || (d2 <= noise && diff <= noise))) {
-        out.value += quarters;
-        out.error_estimate += d2 + noise;
-        return;
-      }
-      accept = false;
+    const P pm = c_(m), dm = c_.derivative(m, 1);
+    out_.evaluations += 2;
+    size += safe_norm(P(pm - pa)) + safe_norm(P(pb - pm));
+    const std::uint32_t ia = add(a, pa, da, Real(0));
+    const std::uint32_t ib = add(b, pb, db, d_err);
+    if (!(m > a && m < b)) {  // too narrow to halve: one piece
+      enter(ia, ib, 0, Real(0), measure(nodes_[ia], nodes_[ib]));
+      return true;
     }
-    if (accept) {
-      out.value += halves;
-      out.error_estimate += diff;
+    const std::uint32_t im = add(m, pm, dm, Real(0));
+    enter_halves(ia, im, ib, 1, measure(nodes_[ia], nodes_[ib]));
+    return true;
+  }
+
+  // Enters the halves [ia, im] and [im, ib] of a piece (bracket whole) at depth, with the
+  // look-ahead excess.
+  void enter_halves(std::uint32_t ia, std::uint32_t im, std::uint32_t ib, int depth, const bracket& whole) {
+    using std::max;
+    const bracket left = measure(nodes_[ia], nodes_[im]);
+    const bracket right = measure(nodes_[im], nodes_[ib]);
+    Real excess(0);
+    if (opt_.look_ahead) {
+      // For a cubic the halves' polygons are the de Casteljau halves of the whole one: never longer.
+      const Real upper = whole.chord + whole.gap + whole.err + left.err + right.err;
+      excess = max(Real(left.chord + left.gap + right.chord + right.gap - upper), Real(0));
+    }
+    enter(ia, im, depth, excess, left);
+    enter(im, ib, depth, excess, right);
+  }
+
+  void enter(std::uint32_t ia, std::uint32_t ib, int depth, const Real& excess, const bracket& br) {
+    const Real est = br.gap + br.err + excess;
+    ++leaves_;
+    running_value_ += br.chord;
+    if (!is_finite(est) || !is_finite(br.chord)) {  // overflow or NaN: no bound, nothing to halve
+      not_guaranteed_ = true;
+      retired_value_ += br.chord;
       return;
     }
-    if (depth >= opt.max_depth || !(m > a && m < b) || out.evaluations + 6 > opt.max_evaluations) {
-      out.value += halves;
-      // At the depth cap (or where the midpoint no longer splits) the leaf is 2^-depth of its segment
-      // and its last difference measures it. A leaf the budget stopped can be any size: the recursion
-      // is depth first, so the budget may run out with most of the curve still coarse, where a chord
-      // difference bounds nothing (a degree-20 Runge polynomial at 1e-8: estimate 1.3e-3 L, error
-      // 0.5 L). No bound, then: the estimate is +inf, the status cap_hit.
-      out.error_estimate += depth >= opt.max_depth || !(m > a && m < b) ? diff : no_bound<Real>();
-      out.status = worst(out.status, result_status::cap_hit);
-      return;
+    running_est_ += est;
+    heap_.push_back(leaf{est, ia, ib, depth});
+    std::push_heap(heap_.begin(), heap_.end(), [this](const leaf& x, const leaf& y) { return key(x) < key(y); });
+  }
+
+  [[nodiscard]] Real rounding_of_sum(const Real& value) const {
+    using std::abs;
+    return Real(static_cast<long long>(leaves_ + 8)) * epsilon<Real>() * abs(value);
+  }
+
+  // The exact sums over the heap and the retired leaves (the running sums drift by rounding).
+  void resum() {
+    Real est = retired_est_, value = retired_value_;
+    for (const leaf& l : heap_) {
+      est += l.est;
+      value += measure(nodes_[l.a], nodes_[l.b]).chord;
     }
-    run(a, m, pa, pm, tol / Real(2), depth + 1);
-    run(m, b, pm, pb, tol / Real(2), depth + 1);
+    running_est_ = est;
+    running_value_ = value;
+  }
+
+  void retire(const leaf& l, const bracket& br) {
+    retired_est_ += l.est;
+    retired_value_ += br.chord;
+  }
+
+  void refine() {
+    const auto less = [this](const leaf& x, const leaf& y) { return key(x) < key(y); };
+    while (!heap_.empty()) {
+      const leaf& top = heap_.front();
+      if (top.depth >= opt_.min_depth && running_est_ + rounding_of_sum(running_value_) <= target_) {
+        resum();
+        if (running_est_ + rounding_of_sum(running_value_) <= target_) return;
+      }
+      if (!(key(top) > Real(0))) return;  // every bound is 0: nothing to gain
+      if (!affordable(2)) {
+        capped_ = true;
+        return;
+      }
+      std::pop_heap(heap_.begin(), heap_.end(), less);
+      const leaf l = heap_.back();
+      heap_.pop_back();
+      const node& A = nodes_[l.a];
+      const node& B = nodes_[l.b];
+      const bracket br = measure(A, B);
+      const Real m = (A.u + B.u) / Real(2);
+      if (l.depth >= opt_.max_depth) {
+        capped_ = true;
+        retire(l, br);
+        continue;
+      }
+      // Too narrow to halve, or at the rounding floor: halving adds the rounding of two pieces for
+      // less than the part of the bound it can reduce (the gap falls ~4x, the excess vanishes).
+      if (!(m > A.u && m < B.u) || (l.depth >= opt_.min_depth && Real(3) * (l.est - br.err) <= Real(4) * br.err)) {
+        floor_ = true;
+        retire(l, br);
+        continue;
+      }
+      const P pm = c_(m), dm = c_.derivative(m, 1);
+      out_.evaluations += 2;
+      running_est_ -= l.est;
+      running_value_ -= br.chord;
+      --leaves_;
+      const std::uint32_t im = add(m, pm, dm, Real(0));
+      enter_halves(l.a, im, l.b, l.depth + 1, br);
+    }
+  }
+
+  quadrature_result<Real> finish() {
+    resum();
+    out_.value = running_value_;
+    out_.error_estimate = running_est_ + rounding_of_sum(running_value_);
+    if (not_guaranteed_ || !is_finite(out_.error_estimate)) {
+      out_.error_estimate = no_bound<Real>();
+      out_.status = result_status::not_guaranteed;
+    } else if (unmeasured_) {  // segments the budget could not reach: no bound for them
+      out_.error_estimate = no_bound<Real>();
+      out_.status = result_status::cap_hit;
+    } else if (out_.error_estimate <= target_) {
+      out_.status = result_status::converged;
+    } else {
+      out_.status = capped_ ? result_status::cap_hit : result_status::rounding_limited;
+    }
+    return out_;
   }
 };
 
 }  // namespace detail
 
-/// Length by adaptive subdivision with Parent's chord test, segment by segment (the target is
-/// shared in proportion to the segments' parameter lengths). Throws invalid_input for a negative
-/// or non-finite tolerance, both tolerances 0, or negative depths.
+/// Length by adaptive subdivision, best first under a budget, with a chord / control-polygon
+/// bracket per piece (see the header). Throws invalid_input for a negative or non-finite
+/// tolerance, both tolerances 0, negative depths, max_depth < min_depth.
 template <curve C>
 [[nodiscard]] quadrature_result<typename C::real_type> subdivision_length(
     const C& c, const subdivision_options<typename C::real_type>& opt = {}) {
   using Real = typename C::real_type;
-  using std::max;
   validate::finite("tolerance", opt.tolerance);
   validate::finite("relative_tolerance", opt.relative_tolerance);
   if (opt.tolerance < Real(0)) validate::fail("tolerance = " + to_text(opt.tolerance) + ": must be >= 0");
@@ -136,38 +322,7 @@ template <curve C>
   if (opt.max_depth < opt.min_depth)
     validate::fail("max_depth = " + std::to_string(opt.max_depth) +
                    ": must be >= min_depth = " + std::to_string(opt.min_depth));
-  const std::span<const Real> bp = c.breakpoints();
-  detail::subdivider<C> sub{c, opt};
-  const Real total = bp.back() - bp.front();
-  // The size: the polygon through the breakpoints and the segments' midpoints (evaluations counted).
-  Real size(0);
-  for (std::size_t i = 0; i + 1 < bp.size() && opt.relative_tolerance > Real(0); ++i) {
-    if (!(bp[i + 1] > bp[i])) continue;
-    const typename C::point_type pa = c(bp[i]), pm = c((bp[i] + bp[i + 1]) / Real(2)), pb = c(bp[i + 1]);
-    sub.out.evaluations += 3;
-    size += sub.dist(pa, pm) + sub.dist(pm, pb);
-  }
-  const Real target = max(opt.tolerance, Real(opt.relative_tolerance * size));
-  for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
-    if (!(bp[i + 1] > bp[i])) continue;
-    const typename C::point_type pa = c(bp[i]);
-    const typename C::point_type pb = c(bp[i + 1]);
-    sub.out.evaluations += 2;
-    sub.run(bp[i], bp[i + 1], pa, pb, target * (bp[i + 1] - bp[i]) / total, 0);
-  }
-  using std::abs;
-  sub.out.error_estimate +=
-      Real(static_cast<long long>(sub.out.evaluations + 8)) * epsilon<Real>() * abs(sub.out.value);
-  // The curve's own rounding (core/curve.hpp): every chord end is off by at most rounding_bound(c,
-  // 0), and the chords summed are fewer than the positions evaluated.
-  const Real b0 = rounding_bound(c, 0);
-  if (!is_finite(b0)) {
-    sub.out.error_estimate = no_bound<Real>();
-    sub.out.status = result_status::not_guaranteed;
-  } else if (b0 > Real(0)) {
-    sub.out.error_estimate += Real(2) * Real(static_cast<long long>(sub.out.evaluations)) * b0;
-  }
-  return sub.out;
+  return detail::subdivider<C>(c, opt).run();
 }
 
 }  // namespace curvebench::arclength
