@@ -253,3 +253,24 @@ TEST(subdivision, best_first_beats_uniform_refinement_at_equal_cost) {
     }
   }
 }
+
+// The value is each piece's bracket midpoint (Gravesen's estimate for a cubic), not the chord: its
+// error falls as h^4 per piece where the bound (the half-gap) falls as h^2, so on a smooth curve the
+// value is far inside its bound. With the chord as value the quick gate's rule for tol 1e-8 (errors
+// <= 3e-9 of L) failed at 5e-9; the midpoint must be well inside it. 0.05 of the target: a
+// chord-sum value sits at ~0.5 of it (the bound is met with the chord's error at about half).
+TEST(subdivision, the_midpoint_value_is_far_inside_its_bound) {
+  for (const double k : {1e3, 1e6}) {
+    const auto c = steep_end<double>(k);
+    const truth& t = reference_for(k);
+    for (const double tol : {1e-4, 1e-6, 1e-8}) {
+      al::subdivision_options<double> o;
+      o.relative_tolerance = tol;
+      const auto r = al::subdivision_length(c, o);
+      EXPECT_TRUE(r.converged()) << "slope " << k << " tol " << tol;
+      EXPECT_TRUE(bounds(r, t)) << "slope " << k << " tol " << tol;
+      const double err = static_cast<double>(abs(R(r.value) - t.length) / t.length);
+      EXPECT_LE(err, 0.05 * tol) << "slope " << k << " tol " << tol << " estimate " << r.error_estimate;
+    }
+  }
+}

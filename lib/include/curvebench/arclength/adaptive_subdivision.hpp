@@ -4,8 +4,12 @@
 // The bound of a piece [a, b] (h = b - a) is a bracket from P and P' at its ends: its length lies
 // between the chord |P(b) - P(a)| and the length of the control polygon P(a), P(a) + h/3 P'(a),
 // P(b) - h/3 P'(b), P(b). For a polynomial piece of degree <= 3 that polygon is the piece's Bezier
-// polygon and the bracket is a theorem; the value is the chord (Parent's chord sum), so polygon -
-// chord bounds its error (plus the rounding of P, P' and of the arithmetic, included). The chord
+// polygon and the bracket is a theorem. The piece's value is the bracket's midpoint (chord +
+// polygon) / 2, so half the gap bounds its error (plus the rounding of P, P' and of the arithmetic,
+// included); for a cubic that midpoint is Gravesen's estimate (2 chord + (n - 1) polygon) / (n + 1),
+// whose error falls as h^4 per piece where the chord's (Parent's chord sum) falls as h^2: with the
+// chord as value, a tolerance of 1e-8 left errors of 5e-9, with the midpoint they are far below the
+// bound, which is still the bracket's half-width. The chord
 // test of Parent (compare a chord with its halves') bounded nothing: on a hairpin (a clamped natural
 // cubic with end slope 7.8e7, issue 33) the halves and quarters agree while the tip is missed, and it
 // reported 0.0021 for an error of 656. For a piece of higher degree or a rational one the polygon is
@@ -24,14 +28,16 @@
 // or max_depth stopped it (the estimate is still a bound: best first, it is the smallest the
 // budget allowed this way), rounding_limited when the pieces left are at their rounding floor or too
 // narrow to halve. A budget too small to measure every segment once gives cap_hit with +inf.
-// Sources: Parent (2012), 3.2.2 (the chord sum); seed 002; the Bezier bracket chord <= L <=
-// polygon and its refinement under subdivision, e.g. Gravesen (1997), in references.md.
+// Sources: Parent (2012), 3.2.2 (the chord sum, here the bracket's lower end); seed 002; the
+// Bezier bracket chord <= L <= polygon, its refinement under subdivision and the midpoint estimate,
+// Gravesen (1997), in references.md.
 // Cost: 2 evaluations (P and P') per halving, 6 per segment to start (7 when its right end is an
 // interior breakpoint); never more than max_evaluations (2^22) in all. Memory: one node (u, P, P')
 // per halving and one heap entry per piece, bounded by the budget: about 90 bytes per halving in
 // 3D, 190 MB at the default budget when neither the target nor the rounding floor stops it (the
 // vectors' growth may hold up to twice that while they reallocate). Accuracy: order 2 in the piece
-// size on smooth pieces; the bound is of the same order (twice the chord's error on a circular arc).
+// size on smooth pieces for the bound (the half-gap); the midpoint's error is of order 4 on cubic
+// pieces, so the value is usually far better than its bound.
 #pragma once
 
 #include "curvebench/arclength/result.hpp"
@@ -110,6 +116,8 @@ class subdivider {
   };
   struct bracket {
     Real chord, gap, err;  // chord, polygon - chord (>= 0), rounding of both
+    /// The piece's value: the bracket's midpoint, within gap / 2 + err of the piece's length.
+    [[nodiscard]] Real value() const { return chord + gap / Real(2); }
   };
 
   const C& c_;
@@ -206,12 +214,12 @@ class subdivider {
   }
 
   void enter(std::uint32_t ia, std::uint32_t ib, int depth, const Real& excess, const bracket& br) {
-    const Real est = br.gap + br.err + excess;
+    const Real est = br.gap / Real(2) + br.err + excess;
     ++leaves_;
-    running_value_ += br.chord;
-    if (!is_finite(est) || !is_finite(br.chord)) {  // overflow or NaN: no bound, nothing to halve
+    running_value_ += br.value();
+    if (!is_finite(est) || !is_finite(br.value())) {  // overflow or NaN: no bound, nothing to halve
       not_guaranteed_ = true;
-      retired_value_ += br.chord;
+      retired_value_ += br.value();
       return;
     }
     running_est_ += est;
@@ -229,7 +237,7 @@ class subdivider {
     Real est = retired_est_, value = retired_value_;
     for (const leaf& l : heap_) {
       est += l.est;
-      value += measure(nodes_[l.a], nodes_[l.b]).chord;
+      value += measure(nodes_[l.a], nodes_[l.b]).value();
     }
     running_est_ = est;
     running_value_ = value;
@@ -237,7 +245,7 @@ class subdivider {
 
   void retire(const leaf& l, const bracket& br) {
     retired_est_ += l.est;
-    retired_value_ += br.chord;
+    retired_value_ += br.value();
   }
 
   void refine() {
@@ -275,7 +283,7 @@ class subdivider {
       const P pm = c_(m), dm = c_.derivative(m, 1);
       out_.evaluations += 2;
       running_est_ -= l.est;
-      running_value_ -= br.chord;
+      running_value_ -= br.value();
       --leaves_;
       const std::uint32_t im = add(m, pm, dm, Real(0));
       enter_halves(l.a, im, l.b, l.depth + 1, br);
