@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -130,6 +131,24 @@ TEST(segment_lookup_rule, checked_lookup_is_a_domain_error_outside_and_for_nan) 
               HasSubstr("u = 2 is outside the domain [0, 1]"));
   EXPECT_THAT(cbt::message_of([&] { (void)cbd::checked_segment_of<double>(b, -1.0, "us", 3); }),
               HasSubstr("us[3] = -1 is outside the domain [0, 1]"));
+}
+
+// The records' variant (keys whose time is a member) answers as the plain one on their times.
+TEST(segment_lookup_rule, records_by_member_match_the_plain_lookup) {
+  struct key {
+    double time;
+    int tag;
+  };
+  const std::vector<double> b{-3, -1, 2, 2, 2, 5, 8};
+  std::vector<key> keys;
+  for (const double t : b) keys.push_back(key{t, 0});
+  const auto time = [](const key& k) -> const double& { return k.time; };
+  for (const double u : {-4.0, -3.0, -2.0, -1.0, 0.0, 2.0, std::nextafter(2.0, 0.0), 3.0, 5.0, 8.0, 9.0,
+                         std::numeric_limits<double>::quiet_NaN()}) {
+    EXPECT_EQ(cbd::breakpoint_at_or_below(std::span<const key>(keys), u, time),
+              cbd::breakpoint_at_or_below<double>(b, u))
+        << "u = " << u;
+  }
 }
 
 }  // namespace

@@ -79,6 +79,7 @@
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/channel/penner.hpp"
 #include "curvebench/channel/time_solver.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/real.hpp"
 #include "curvebench/curves/detail/tridiagonal.hpp"
@@ -658,9 +659,9 @@ class blender_evaluator {
   [[nodiscard]] Real inside(const Real& t, int order) const {
     const Real t_first = keys_.front().time, t_last = keys_.back().time;
     if (keys_.size() > 1 && t >= t_first && t < t_last) {
-      const auto it = std::upper_bound(keys_.begin(), keys_.end(), t,
-                                       [](const Real& x, const blender_key<Real>& k) { return x < k.time; });
-      const std::size_t i = static_cast<std::size_t>(it - keys_.begin()) - 1;
+      const std::size_t i =
+          curvebench::detail::breakpoint_at_or_below(std::span<const blender_key<Real>>(keys_), t,
+                                                     [](const blender_key<Real>& k) -> const Real& { return k.time; });
       const blender_key<Real>& k0 = keys_[i];
       if (is_eased(k0.interpolation)) {
         const blender_key<Real>& k1 = keys_[i + 1];

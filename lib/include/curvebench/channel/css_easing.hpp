@@ -40,6 +40,7 @@
 
 #include "curvebench/channel/detail/cubic_time.hpp"
 #include "curvebench/channel/time_solver.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/real.hpp"
 
@@ -237,9 +238,9 @@ class css_easing {
 
   Real piecewise(const Real& x) const {
     // The last point with input <= x (or the first), kept one before the end.
-    const auto it = std::upper_bound(points_.begin(), points_.end(), x,
-                                     [](const Real& v, const linear_point<Real>& p) { return v < p.input; });
-    std::size_t a = it == points_.begin() ? 0 : static_cast<std::size_t>(it - points_.begin()) - 1;
+    std::size_t a =
+        curvebench::detail::breakpoint_at_or_below(std::span<const linear_point<Real>>(points_), x,
+                                                   [](const linear_point<Real>& p) -> const Real& { return p.input; });
     if (a == points_.size() - 1) --a;
     const linear_point<Real>& pa = points_[a];
     const linear_point<Real>& pb = points_[a + 1];

@@ -50,6 +50,7 @@
 // few eps absolute in angle (tests/test_gltf.cpp measures both against real50).
 #pragma once
 
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/point.hpp"
 #include "curvebench/core/real.hpp"
@@ -233,13 +234,13 @@ location<Real> locate(std::span<const Real> input, const Real& t, side from) {
   if (from == side::right) {
     if (t < input[0]) return {L::clamped_first, 0, Real(0), Real(0)};
     if (t >= input[n - 1]) return {L::clamped_last, n - 1, Real(0), Real(0)};  // the last key as stored
-    const std::size_t k = static_cast<std::size_t>(std::upper_bound(input.begin(), input.end(), t) - input.begin()) - 1;
+    const std::size_t k = curvebench::detail::breakpoint_at_or_below<Real>(input, t);
     const Real h = input[k + 1] - input[k];
     return {t == input[k] ? L::at_key : L::in_segment, k, (t - input[k]) / h, h};
   }
   if (t <= input[0]) return {L::clamped_first, 0, Real(0), Real(0)};
   if (t > input[n - 1]) return {L::clamped_last, n - 1, Real(0), Real(0)};
-  const std::size_t k = static_cast<std::size_t>(std::lower_bound(input.begin(), input.end(), t) - input.begin()) - 1;
+  const std::size_t k = curvebench::detail::segment_of_from_left<Real>(input, t);
   const Real h = input[k + 1] - input[k];
   return {L::in_segment, k, t == input[k + 1] ? Real(1) : (t - input[k]) / h, h};
 }

@@ -88,6 +88,7 @@
 
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/channel/time_solver.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 #include "curvebench/core/real.hpp"
 
@@ -539,8 +540,7 @@ class usd_model {
   }
 
   [[nodiscard]] Real inside(const Real& t, int order) const {
-    std::size_t i = static_cast<std::size_t>(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin());
-    i = i == 0 ? 0 : i - 1;
+    std::size_t i = curvebench::detail::breakpoint_at_or_below<Real>(times_, t);
     if (i >= segments_.size()) {  // the last knot's time: its ordinary value, the left derivatives
       if (order == 0) return resolved_.knots.back().value;
       i = segments_.size() - 1;

@@ -16,6 +16,7 @@
 // (b_i < u <= b_{i+1}: a breakpoint belongs to the segment on its left, b_0 to the first), for the
 // limit from the left. in_segment tells whether u still lies in segment i under the rule (the O(1)
 // test of batch evaluations that walk sorted parameters).
+// The records' variant of breakpoint_at_or_below serves sorted keys whose time is a member.
 // Cost: one binary search, O(log n) comparisons, no allocation (in_segment: two comparisons).
 #pragma once
 
@@ -39,6 +40,16 @@ template <class Real>
   // The first breakpoint > u, minus one.
   const auto above =
       static_cast<std::size_t>(std::upper_bound(breakpoints.begin(), breakpoints.end(), u) - breakpoints.begin());
+  return above == 0 ? 0 : above - 1;
+}
+
+/// breakpoint_at_or_below over records whose breakpoint is a member (keys, points): key(r) is the
+/// breakpoint of record r; the records are sorted by it.
+template <class Record, class Real, class Key>
+[[nodiscard]] std::size_t breakpoint_at_or_below(std::span<const Record> records, const Real& u, Key key) {
+  const auto above = static_cast<std::size_t>(
+      std::upper_bound(records.begin(), records.end(), u, [&](const Real& v, const Record& r) { return v < key(r); }) -
+      records.begin());
   return above == 0 ? 0 : above - 1;
 }
 
