@@ -178,10 +178,16 @@ struct u_of_s_method {
   bool estimate;  ///< whether it carries an error estimate (else the records' estimate is null)
   Series series;
   Prepare prepare;
+  /// The parameterization's method it measures, when `sample --method` offers it (a polished table
+  /// is sample's --polish, not a method of its own).
+  std::optional<arclength::inversion_method> sample_method{};
 };
 template <std::size_t N, class Series, class Prepare>
 u_of_s_method(const vocab::method*, std::array<setting_def, N>, bool, Series, Prepare)
     -> u_of_s_method<N, Series, Prepare>;
+template <std::size_t N, class Series, class Prepare>
+u_of_s_method(const vocab::method*, std::array<setting_def, N>, bool, Series, Prepare,
+              std::optional<arclength::inversion_method>) -> u_of_s_method<N, Series, Prepare>;
 
 namespace method_rows {
 
@@ -370,12 +376,18 @@ inline constexpr auto table_prepare = [](const auto& c, const setting_values& v)
 
 inline constexpr auto table_intervals_series = [](const sweep& w, double) { return series_of("M", w.table_intervals); };
 
-inline constexpr u_of_s_method linear_table{&vocab::methods::linear_table, std::array{table_intervals}, false,
+inline constexpr u_of_s_method linear_table{&vocab::methods::linear_table,
+                                            std::array{table_intervals},
+                                            false,
                                             table_intervals_series,
-                                            table_prepare<al::inversion_method::linear_table, false>};
-inline constexpr u_of_s_method hermite_table{&vocab::methods::hermite_table, std::array{table_intervals}, true,
+                                            table_prepare<al::inversion_method::linear_table, false>,
+                                            al::inversion_method::linear_table};
+inline constexpr u_of_s_method hermite_table{&vocab::methods::hermite_table,
+                                             std::array{table_intervals},
+                                             true,
                                              table_intervals_series,
-                                             table_prepare<al::inversion_method::hermite_table, false>};
+                                             table_prepare<al::inversion_method::hermite_table, false>,
+                                             al::inversion_method::hermite_table};
 inline constexpr u_of_s_method hermite_table_polished{&vocab::methods::hermite_table_polished,
                                                       std::array{table_intervals}, true, table_intervals_series,
                                                       table_prepare<al::inversion_method::hermite_table, true>};
@@ -384,7 +396,8 @@ inline constexpr u_of_s_method newton{
     &vocab::methods::newton,
     std::array{
         setting_def{"tol", "", 1e-12, 0, std::numeric_limits<double>::infinity(), false, "relative tolerance of s"}},
-    true, [](const sweep& w, double) { return series_of("tol", w.newton_tol); },
+    true,
+    [](const sweep& w, double) { return series_of("tol", w.newton_tol); },
     [](const auto& c, const setting_values& v) {
       using curve = std::decay_t<decltype(c)>;
       al::parameterization_options<double> o;
@@ -399,7 +412,8 @@ inline constexpr u_of_s_method newton{
         return u_of_s_answer{q.u, q.s_error_estimate, static_cast<double>(q.evaluations), q.status};
       };
       return r;
-    }};
+    },
+    al::inversion_method::newton};
 
 inline constexpr u_of_s_method forward_difference_u_of_s{
     &vocab::methods::forward_difference, std::array{steps_per_segment}, false, table_steps_series,

@@ -4,6 +4,7 @@
 #include "tool/tool.hpp"
 
 #include "harness/csv.hpp"
+#include "harness/length_methods.hpp"
 #include "harness/vocabulary.hpp"
 
 #include "curvebench/arclength/parameterization.hpp"
@@ -62,15 +63,19 @@ ease_fn parse_ease(const std::string& text) {
                       ": not one of linear, sine, smoothstep, smootherstep, sine_plateau:T1,T2, parabolic:T1,T2");
 }
 
-/// The u(s) methods `sample --method` takes (the hermite_table_polished of the records is
-/// hermite_table with --polish).
-constexpr const vocab::method* sample_methods[] = {&vocab::methods::linear_table, &vocab::methods::hermite_table,
-                                                   &vocab::methods::newton};
+/// The u(s) methods `sample --method` takes: the rows of the method table that name a
+/// parameterization method (the records' hermite_table_polished is hermite_table with --polish).
+std::vector<std::pair<std::string, al::inversion_method>> sample_methods() {
+  std::vector<std::pair<std::string, al::inversion_method>> out;
+  harness::for_each_row(harness::u_of_s_methods, [&](const auto& row) {
+    if (row.sample_method) out.emplace_back(std::string(row.method->id), *row.sample_method);
+  });
+  return out;
+}
 
 al::inversion_method parse_inversion(const std::string& m) {
-  if (m == vocab::methods::linear_table.id) return al::inversion_method::linear_table;
-  if (m == vocab::methods::hermite_table.id) return al::inversion_method::hermite_table;
-  if (m == vocab::methods::newton.id) return al::inversion_method::newton;
+  for (const auto& [id, method] : sample_methods())
+    if (id == m) return method;
   throw invalid_input("--method " + m + ": not a u(s) method of sample");
 }
 
@@ -341,7 +346,7 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
   samp->add_option("--by", a.by, "spacing: equal steps in u, or in arc length (with --ease)")
       ->check(CLI::IsMember({"u", "arclength"}));
   std::vector<std::string> sample_ids;
-  for (const vocab::method* m : sample_methods) sample_ids.emplace_back(m->id);
+  for (const auto& m : sample_methods()) sample_ids.push_back(m.first);
   samp->add_option("--method", a.method, "u(s) method for --by arclength")->check(CLI::IsMember(sample_ids));
   samp->add_flag("--polish", a.polish, "one Newton step after a table lookup");
   samp->add_option("--ease", a.ease,
