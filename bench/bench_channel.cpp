@@ -143,20 +143,19 @@ const int registered = [] {
       const vocab::method& m = *vocab::time_solver_methods[s];
       for (const char* calls : {"single", "sorted"}) {
         const bool sorted = calls[1] == 'o';
-        cbb::register_benchmark(
-            cbb::benchmark_name(family, m)
-                .arg("keys", keys)
-                .arg("bits", 64)
-                .variant(vocab::variant_keys::calls, calls)
-                .variant(vocab::variant_keys::timing, "throughput"),
-            [d = *data, solver, sorted](benchmark::State& st) { solver_benchmark<double>(st, d, solver, sorted); });
-        cbb::register_benchmark(
-            cbb::benchmark_name(family, m)
-                .arg("keys", keys)
-                .arg("bits", 32)
-                .variant(vocab::variant_keys::calls, calls)
-                .variant(vocab::variant_keys::timing, "throughput"),
-            [d = *data, solver, sorted](benchmark::State& st) { solver_benchmark<float>(st, d, solver, sorted); });
+        // Each solver in double and in float: the same names but for bits.
+        const auto add = [&](auto real, int bits) {
+          using Real = decltype(real);
+          cbb::register_benchmark(
+              cbb::benchmark_name(family, m)
+                  .arg("keys", keys)
+                  .arg("bits", bits)
+                  .variant(vocab::variant_keys::calls, calls)
+                  .variant(vocab::variant_keys::timing, "throughput"),
+              [d = *data, solver, sorted](benchmark::State& st) { solver_benchmark<Real>(st, d, solver, sorted); });
+        };
+        add(double{}, 64);
+        add(float{}, 32);
       }
     }
   }
