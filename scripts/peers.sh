@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The optional peers (issue 15): installs what they need (apt, pinned versions, non-interactive)
+# The optional peers (issue 15): installs what they need (Debian packages by name, npm at exact versions, non-interactive)
 # and runs their drivers on the case suite, writing reports/peers_<driver>.json, which
 # scripts/report.py joins into REPORT.md's Peers section when present. The C++ peers (GSL,
 # Boost.Math, Eigen) need nothing from here: the accuracy runner runs them in every
@@ -12,7 +12,7 @@
 # scripts/peers/easing_driver.mjs (Node: bezier-easing 3.2.0 and 2.1.0, @mapbox/unitbezier 1.0.0,
 # pinned in scripts/peers/node/package.json and installed into build-peers/node), measured by
 # scripts/peers/easing_results.py against a 50-digit truth of the CSS cubic-bezier definition;
-# scripts/peers/chromium_driver.py (headless Chromium, Debian's chromium pinned below: Blink's CSS
+# scripts/peers/chromium_driver.py (headless Chromium, Debian's chromium, major >= 112: Blink's CSS
 # cubic-bezier() and steps() through the Web Animations API), measured the same way;
 # scripts/peers/penner_driver.mjs (Node: d3-ease 3.0.2, pinned in the same package.json), measured
 # by scripts/peers/penner_results.py against the Penner definitions d3 documents, at 50 digits,
@@ -43,25 +43,36 @@ for arg in "$@"; do
   esac
 done
 
-# Debian 12 (bookworm) versions, pinned: a peer's figures are only comparable at one version.
-apt_pins=("python3-scipy=1.10.1-2" "python3-numpy=1:1.24.2-1+deb12u1" "python3-mpmath=1.2.1-2"
-          "chromium=156.0.8078.79-1~deb12u1" "chromium-common=156.0.8078.79-1~deb12u1")
+# Debian 12 (bookworm) packages by name, never by revision: Debian's security suite replaces a
+# revision when it updates a package (chromium=156.0.8078.79-1~deb12u1 stopped installing that
+# way), so an exact pin breaks the next fresh install. Comparability comes from the record instead:
+# every driver writes the version it ran (Chromium's, SciPy's, Blender's, Node's) into its result,
+# and the report shows it. Where a driver depends on a major version it is checked below.
+apt_packages=(python3-scipy python3-numpy python3-mpmath chromium chromium-common)
 
-installed_at() {  # package=version -> 0 when exactly that version is installed (package: any version)
-  local name=${1%%=*} version=${1#*=}
-  if [[ "$1" != *=* ]]; then
-    [[ "$(dpkg-query -W -f='${Status}' "$name" 2>/dev/null || true)" == "install ok installed" ]]
-    return
+installed() {  # package -> 0 when installed (any version)
+  [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
+}
+
+# package, least major version, why: fails (naming all three) when an installed package is older.
+require_major() {
+  local version major
+  version=$(dpkg-query -W -f='${Version}' "$1" 2>/dev/null || true)
+  [[ -n "$version" ]] || return 0  # not installed: its driver reports it missing
+  major=${version#*:}
+  major=${major%%[.+~-]*}
+  if [[ ! "$major" =~ ^[0-9]+$ ]] || ((major < $2)); then
+    echo "peers.sh: $1 $version is installed; its driver needs major version >= $2 ($3)" >&2
+    exit 1
   fi
-  [[ "$(dpkg-query -W -f='${Status} ${Version}' "$name" 2>/dev/null || true)" == "install ok installed $version" ]]
 }
 
 node_dir="$root/build-peers/node"
 if [[ $install -eq 1 ]]; then
   # Debian's nodejs and npm when absent (their version is recorded in REPORT.md); mpmath: the truth.
-  { command -v node && command -v npm; } >/dev/null || apt_pins+=(nodejs npm)
+  { command -v node && command -v npm; } >/dev/null || apt_packages+=(nodejs npm)
   missing=()
-  for p in "${apt_pins[@]}"; do installed_at "$p" || missing+=("$p"); done
+  for p in "${apt_packages[@]}"; do installed "$p" || missing+=("$p"); done
   if [[ ${#missing[@]} -gt 0 ]]; then
     echo "peers.sh: installing ${missing[*]}"
     sudo=""
@@ -70,6 +81,13 @@ if [[ $install -eq 1 ]]; then
     $sudo apt-get update -qq
     $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
   fi
+  # chromium_driver.py loads pages with --headless=new (Chromium 112 and later); scipy_driver.py
+  # uses SciPy 1.x's integrate and interpolate interfaces.
+  require_major chromium 112 "the driver runs --headless=new"
+  require_major python3-scipy 1 "scipy_driver.py uses SciPy 1's interfaces"
+  for p in "${apt_packages[@]}"; do
+    echo "peers.sh: $p $(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || echo 'not installed')"
+  done
   # The npm packages at the exact versions of package.json (no ranges), without install scripts.
   mkdir -p "$node_dir"
   cp "$root/scripts/peers/node/package.json" "$node_dir/package.json"
