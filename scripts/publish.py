@@ -25,6 +25,7 @@ from collections import defaultdict
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_channel as rc  # noqa: E402
 import report_lib as lib  # noqa: E402
+import safe_output  # noqa: E402
 
 MAX_PLOTS = 12
 MAX_PLOT_BYTES = 2_000_000
@@ -343,10 +344,7 @@ def replace_block(text, block, path):
 
 
 def atomic_write(path, text):
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8") as f:
-        f.write(text)
-    os.replace(tmp, path)
+    safe_output.write_text(path, text)
 
 
 def load_run(report_dir):

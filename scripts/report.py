@@ -25,6 +25,7 @@ from collections import defaultdict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_lib as lib  # noqa: E402
+import safe_output  # noqa: E402
 import report_peers  # noqa: E402
 import report_channel  # noqa: E402
 from report_lib import TARGETS, pareto_front  # noqa: E402
@@ -45,17 +46,12 @@ SEED_001_TABLE = [
 
 
 def atomic_write(path, text):
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8") as f:
-        f.write(text)
-    os.replace(tmp, path)
+    safe_output.write_text(path, text)
 
 
 def atomic_savefig(fig, path):
-    tmp = path + ".tmp.png"
-    fig.savefig(tmp, dpi=110, bbox_inches="tight")
+    safe_output.write_with(path, lambda tmp: fig.savefig(tmp, format="png", dpi=110, bbox_inches="tight"))
     plt.close(fig)
-    os.replace(tmp, path)
 
 
 fmt, table = lib.fmt, lib.table
@@ -471,4 +467,8 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except safe_output.OutputError as e:  # REPORT.md or a plot over a FIFO, a link, a device
+        print(f"report.py: {e}", file=sys.stderr)
+        sys.exit(1)

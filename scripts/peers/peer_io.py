@@ -3,6 +3,10 @@ imported with it on sys.path): the accuracy runner's sample fractions and the al
 write of a result file."""
 import json
 import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import safe_output  # noqa: E402
 
 INV_PHI = 0.6180339887498949  # 1 / golden ratio, as bench/harness/sweeps.hpp
 
@@ -13,9 +17,6 @@ def sample_fractions(n):
 
 
 def write_json(path, doc):
-    """doc as indented JSON at path, written under a temporary name and renamed: an interrupted
-    run never leaves a half-written file."""
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8") as f:
-        json.dump(doc, f, indent=1)
-    os.replace(tmp, path)
+    """doc as indented JSON at path through scripts/safe_output.py: only a regular file or a new
+    path is replaced, and an interrupted run never leaves a half-written file."""
+    safe_output.write_text(path, json.dumps(doc, indent=1))
