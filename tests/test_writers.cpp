@@ -1,7 +1,10 @@
+// The tool's input reader (harness/files.hpp, issue 33 item 2): every input file is read in chunks
+// up to a limit, so an endless device or a huge file is refused with its size named.
 // The tool's output files (harness/writers.hpp, issue 33 item 1): results are written only to a
 // regular file or a new path, through a temporary file created exclusively beside it and renamed;
 // a directory, a symbolic link, a FIFO or a device is refused by name and left as it was. Before
 // this, `accuracy --out /dev/full` (as root) replaced the device with a 60 kB regular file.
+#include "harness/files.hpp"
 #include "harness/writers.hpp"
 
 #include "curvebench/core/error.hpp"
@@ -24,6 +27,7 @@ namespace fs = std::filesystem;
 using curvebench::invalid_input;
 using curvebench::harness::check_output_path;
 using curvebench::harness::check_results_path;
+using curvebench::harness::read_input_file;
 using curvebench::harness::write_atomic;
 using ::testing::HasSubstr;
 
@@ -123,6 +127,21 @@ TEST_F(writers, the_results_check_refuses_a_fifo_beside_and_leaves_nothing) {
   ASSERT_EQ(::mkfifo(at("run.csv").c_str(), 0600), 0);
   EXPECT_THAT(refusal([&] { check_results_path(json); }), HasSubstr(at("run.csv") + ": is a FIFO"));
   EXPECT_EQ(names(), std::vector<std::string>{"run.csv"});
+}
+
+TEST_F(writers, inputs_are_read_whole_up_to_their_limit_and_refused_past_it) {
+  const std::string p = at("spec.json");
+  write_atomic(p, std::string(3u << 20, 'x'));  // three chunks of the reader
+  EXPECT_EQ(read_input_file(p).size(), std::size_t(3) << 20);
+  EXPECT_EQ(read_input_file(p, "", std::size_t(3) << 20).size(), std::size_t(3) << 20);  // exactly the limit
+  EXPECT_THAT(refusal([&] { (void)read_input_file(p, "thresholds ", std::size_t(1) << 20); }),
+              HasSubstr("thresholds " + p + ": larger than 1 MiB (1048576 bytes), the limit for this input"));
+  EXPECT_THAT(refusal([&] { (void)read_input_file(at("missing.json")); }),
+              HasSubstr(at("missing.json") + ": cannot be read"));
+  EXPECT_THAT(refusal([&] { (void)read_input_file(dir.string()); }), HasSubstr(": is a directory, not a file"));
+  // An endless device stops at the limit (here 1 MiB: a few reads, not a memory-sized one).
+  EXPECT_THAT(refusal([] { (void)read_input_file("/dev/zero", "", std::size_t(1) << 20); }),
+              HasSubstr("/dev/zero: larger than 1 MiB"));
 }
 
 }  // namespace

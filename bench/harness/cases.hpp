@@ -4,6 +4,8 @@
 // and the spec fields of io/spec.hpp. Users add a case by dropping a file there.
 #pragma once
 
+#include "harness/files.hpp"
+
 #include "curvebench/io/spec.hpp"
 
 #include <algorithm>
@@ -38,12 +40,9 @@ inline std::vector<case_info> load_cases(const std::string& dir) {
   std::vector<case_info> out;
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (entry.path().extension() != ".json") continue;
-    std::ifstream in(entry.path());
-    std::ostringstream text;
-    text << in.rdbuf();
     const std::string file = entry.path().string();
     case_info c;
-    c.spec = io::parse(text.str(), file);
+    c.spec = io::parse(read_input_file(file), file);
     const io::field root = io::root(c.spec, entry.path().filename().string());
     c.name = root.member("name", "every case has a name").string();
     if (c.name != entry.path().stem().string())

@@ -1,5 +1,7 @@
 #include "harness/csv.hpp"
 
+#include "harness/files.hpp"
+
 #include "curvebench/core/error.hpp"
 
 #include <charconv>
@@ -125,12 +127,6 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
   return t;
 }
 
-csv_table read_csv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw invalid_input(path + ": cannot be read");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_csv(ss.str(), path);
-}
+csv_table read_csv(const std::string& path) { return parse_csv(read_input_file(path), path); }
 
 }  // namespace curvebench::harness

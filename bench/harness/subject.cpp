@@ -6,6 +6,7 @@
 #include "harness/accuracy.hpp"
 #include "harness/cases.hpp"
 #include "harness/check.hpp"
+#include "harness/files.hpp"
 #include "harness/gate.hpp"
 #include "harness/sweeps.hpp"
 
@@ -179,11 +180,7 @@ json measure_spec(const json& spec, const subject<Dim>& s, const subject_options
 }
 
 std::vector<std::string> subject_gate(const json& results, const std::string& thresholds_path) {
-  std::ifstream in(thresholds_path);
-  if (!in) throw invalid_input("thresholds " + thresholds_path + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const json thresholds = io::parse(text.str(), thresholds_path);
+  const json thresholds = io::parse(read_input_file(thresholds_path, "thresholds "), thresholds_path);
   if (!thresholds.is_object() || !thresholds.contains("rules") || !thresholds["rules"].is_array())
     throw invalid_input("thresholds " + thresholds_path + ": needs a \"rules\" array (harness/gate.hpp)");
   std::vector<std::string> out;

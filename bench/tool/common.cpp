@@ -2,6 +2,7 @@
 #include "tool/tool.hpp"
 
 #include "harness/csv.hpp"
+#include "harness/files.hpp"
 
 #include "curvebench_version.hpp"  // generated at build time by cmake/version_header.cmake
 
@@ -17,13 +18,7 @@ namespace curvebench::tool {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw invalid_input(path + ": cannot be read");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_file(const std::string& path) { return harness::read_input_file(path); }
 
 nlohmann::json read_spec(const std::string& path) { return io::parse(read_file(path), path); }
 

@@ -18,6 +18,7 @@
 
 #include "harness/accuracy.hpp"
 #include "harness/cases.hpp"
+#include "harness/files.hpp"
 #include "harness/gate.hpp"
 #include "harness/length_methods.hpp"
 #include "harness/peers.hpp"
@@ -324,7 +325,7 @@ int main(int argc, char** argv) {
     if (*gate) {
       // io::parse names the file in a syntax error and refuses deep nesting and repeated keys;
       // check_gate names it for a malformed structure.
-      const auto r = cb::io::parse(tool::read_file(results), results);
+      const auto r = cb::io::parse(cb::harness::read_input_file(results, "", cb::harness::max_results_bytes), results);
       const auto t = cb::io::parse(tool::read_file(thresholds), thresholds);
       const auto breaches = cb::harness::check_gate(r, t, results, thresholds);
       for (const auto& b : breaches)
