@@ -100,7 +100,7 @@ CLI::App* add_check(CLI::App& app, check_args& a) {
   chk->add_option("--max-error", a.max_error,
                   "largest allowed row error: ulps of the curve's size for --values (points and derivatives, each "
                   "in ulps of its own size), relative to the total length L for --lengths and --inverse")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_finite());
   chk->add_option("--thresholds", a.thresholds,
                   "gate rules (the format of `curvebench gate`) applied to the check's records, e.g. "
                   "{\"rules\": [{\"quantity\": \"eval\", \"method\": \"values\", \"max_error\": 4}]}")

@@ -61,6 +61,22 @@ CLI::Validator positive_finite() {
       "POSITIVE");
 }
 
+CLI::Validator non_negative_finite() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0;
+        if (harness::parse_finite(text, v) && v >= 0) return {};
+        return harness::quote_cell(text) + " is not a finite number >= 0";
+      },
+      "NONNEGATIVE");
+}
+
+CLI::Validator non_empty() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string { return text.empty() ? "an empty value (give at least one)" : ""; },
+      "TEXT");
+}
+
 std::string non_finite_cause(std::span<const double> breakpoints, double largest_coordinate) {
   std::string why = "domain [" + to_text(breakpoints.front()) + ", " + to_text(breakpoints.back()) + "]";
   std::size_t narrow = 0;

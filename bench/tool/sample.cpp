@@ -352,7 +352,8 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
   samp->add_option("--ease", a.ease,
                    "distance-time function for --by arclength: linear, sine, smoothstep, smootherstep, "
                    "sine_plateau:T1,T2, parabolic:T1,T2");
-  auto* at = samp->add_option("--at", a.at, "evaluate at these parameters: V1,V2,... (at most " + max + ")");
+  auto* at = samp->add_option("--at", a.at, "evaluate at these parameters: V1,V2,... (at most " + max + ")")
+                 ->check(non_empty());
   auto* at_file = samp->add_option("--at-file", a.at_file,
                                    "evaluate at the parameters of FILE: one value per line, or a CSV whose header "
                                    "names a u column (other columns ignored)")

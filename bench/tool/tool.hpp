@@ -48,6 +48,10 @@ std::string version_line();
 /// A CLI11 check: a finite number > 0, subnormals included (CLI::PositiveNumber starts at the
 /// smallest normal double, 2.2e-308, and prints that bound with all its digits).
 CLI::Validator positive_finite();
+/// A CLI11 validator: a finite number >= 0 (CLI::NonNegativeNumber takes "nan", which disabled a gate).
+CLI::Validator non_negative_finite();
+/// A CLI11 validator: a non-empty value (`--at ''` is refused, not taken for no --at).
+CLI::Validator non_empty();
 /// Progress of a long loop on stderr (never stdout): once the run has taken a second, at most one
 /// line a second, "sample: 1200 of 100000 (1.2%), 2.0 s elapsed"; nothing when quiet.
 class progress {
