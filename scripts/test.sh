@@ -2,18 +2,26 @@
 # The test command: set-up, configure, build and run every test with ctest.
 #   scripts/test.sh             tests (warnings are errors), benchmarks and tool compiled too
 #   scripts/test.sh --sanitize  the same tests under AddressSanitizer + UndefinedBehaviorSanitizer
+#   scripts/test.sh --sanitize --light   every test but the five slowest under the sanitizers
+#                               (tests/CMakeLists.txt: curvebench_sanitizer_heavy); CI's phase
 # Exits non-zero on any failure.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
 sanitize=0
+light=0
 for arg in "$@"; do
   case "$arg" in
     --sanitize) sanitize=1 ;;
-    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
-    *) echo "test.sh: unknown argument '$arg' (allowed: --sanitize)" >&2; exit 2 ;;
+    --light) light=1 ;;
+    -h|--help) sed -n '2,7p' "$0"; exit 0 ;;
+    *) echo "test.sh: unknown argument '$arg' (allowed: --sanitize, --light)" >&2; exit 2 ;;
   esac
 done
+if [[ $light -eq 1 && $sanitize -eq 0 ]]; then
+  echo "test.sh: --light goes with --sanitize" >&2
+  exit 2
+fi
 
 bash "$root/scripts/setup.sh"
 # ccache keys on absolute paths unless told the checkout's root: with it, a fresh clone anywhere
@@ -44,5 +52,10 @@ else
         -DCURVEBENCH_BUILD_BENCH=ON -DCURVEBENCH_BUILD_TESTS=ON >/dev/null
 fi
 
-cmake --build "$build" --parallel "$jobs"
-ctest --test-dir "$build" --output-on-failure --parallel "$jobs"
+if [[ $light -eq 1 ]]; then
+  cmake --build "$build" --parallel "$jobs" --target curvebench_sanitizer_light
+  ctest --test-dir "$build" --output-on-failure --parallel "$jobs" --label-exclude sanitizer_heavy
+else
+  cmake --build "$build" --parallel "$jobs"
+  ctest --test-dir "$build" --output-on-failure --parallel "$jobs"
+fi

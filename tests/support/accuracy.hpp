@@ -37,6 +37,15 @@ using all_reals = ::testing::Types<float, double>;
 using ieee_reals = ::testing::Types<float, double>;
 #endif
 
+/// Whether this is the sanitizer build: tests whose cost is many 50-digit reference integrals over
+/// sample points that all take the same code path may thin those points there (say so where they
+/// do); the -O2 build runs them all.
+#ifdef CURVEBENCH_SANITIZE_TYPED_REALS
+inline constexpr bool sanitizer_build = true;
+#else
+inline constexpr bool sanitizer_build = false;
+#endif
+
 /// Text for diagnostics: hexfloat and decimal for IEEE types, 50 digits for multiprecision.
 template <class T>
 std::string exact_text(const T& x) {
