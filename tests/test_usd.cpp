@@ -497,6 +497,20 @@ TEST(usd_accuracy, float_model_against_the_exact_twin) {
   EXPECT_LE(worst, model_float_bound);
 }
 
+// Issue 33 item 2: the loop counts are capped one by one (1e5), their product with the prototype
+// here, before anything is copied: 200 prototype knots looped 1e5 times each way would be 4e7 knots.
+TEST(usd_validation, inner_loops_are_capped_by_the_knots_they_bake) {
+  ch::usd_spline<double> s;
+  for (int i = 0; i <= 200; ++i) s.knots.push_back(knot<double>(i, i % 7));
+  s.inner_loops = {0.0, 200.0, 100000, 100000, 1.0};
+  EXPECT_THAT(cbt::message_of([&] { (void)ch::usd_bake_inner_loops(s); }),
+              HasSubstr("inner_loops: (pre_loops = 100000 + post_loops = 100000 + 1) x 200 prototype knots: more "
+                        "than the 2097152 knots a spline may bake"));
+  s.inner_loops.num_pre_loops = 5000;  // 10001 x 200 + 202: under the cap, baked
+  s.inner_loops.num_post_loops = 5000;
+  EXPECT_EQ(ch::usd_bake_inner_loops(s).knots.size(), std::size_t(10001 * 200 + 1));
+}
+
 TEST(usd_validation, messages_name_the_knot_and_field) {
   const auto msg = [](const ch::usd_spline<double>& s) {
     return cbt::message_of([&] { (void)ch::usd_model<double>(s); });

@@ -414,6 +414,9 @@ template <class Real>
   return {a, b};
 }
 
+/// The most knots a spline's inner loops may bake into (2^21, about what a 64 MiB spec can hold).
+inline constexpr std::size_t usd_max_baked_knots = std::size_t(1) << 21;
+
 /// The spline with its inner loops baked into knots (and the loop parameters cleared), as the Ts
 /// documentation describes them (see the header); a spline without valid loops is returned as is.
 template <class Real>
@@ -432,6 +435,17 @@ template <class Real>
   std::vector<usd_knot<Real>> proto, baked;
   for (const auto& k : s.knots)
     if (k.time >= p.proto_start && k.time < p.proto_end) proto.push_back(k);
+  // Each count is capped on its own; their product with the prototype is capped here, before any
+  // knot is copied (200 prototype knots looped 1e5 times were 2e7 knots and 2.3 GB).
+  // Divided first, so that the product is formed only when it cannot overflow.
+  const unsigned long long iterations =
+      static_cast<unsigned long long>(pre) + static_cast<unsigned long long>(post) + 1;
+  const bool over = proto.size() > usd_max_baked_knots / iterations ||
+                    iterations * proto.size() + s.knots.size() + 1 > usd_max_baked_knots;
+  if (over)
+    validate::fail("inner_loops: (pre_loops = " + std::to_string(pre) + " + post_loops = " + std::to_string(post) +
+                   " + 1) x " + std::to_string(proto.size()) + " prototype knots: more than the " +
+                   std::to_string(usd_max_baked_knots) + " knots a spline may bake");
   const auto echo = [&](usd_knot<Real> k, int j) {
     k.time += Real(j) * period;
     k.value += Real(j) * p.value_offset;
