@@ -3,9 +3,9 @@
 // the value held outside [0, 1] (constant extrapolation).
 // css_keys(easing): cubic-bezier(x1, y1, x2, y2) is one bezier segment from (0, 0) to (1, 1) with
 // handles (x1, y1) and (x2 - 1, y2 - 1); steps(n, position) are n + 1 keys at k / n joined by
-// constant segments whose values follow the specification's step algorithm; linear(...) is one
-// linear segment between consecutive stops (two stops at one input, a jump, is an invalid_input:
-// a channel has one value per time).
+// constant segments whose values follow the specification's step algorithm (n <= 2^20); linear(...)
+// is one linear segment between consecutive stops (two stops at one input, a jump, is an
+// invalid_input: a channel has one value per time).
 // from_keys: a single bezier segment from (0, 0) to (1, 1) (handle times in [0, 1], as
 // cubic-bezier requires), or linear segments from time 0 to time 1 (linear() with the key times as
 // stop positions); constant segments are refused (steps() are equal steps, not arbitrary ones).
@@ -24,6 +24,9 @@
 
 namespace curvebench::channel {
 
+/// steps(n) becomes n + 1 keys in a channel: n at most this (2^20, about what a 64 MiB spec holds).
+inline constexpr long long css_max_step_keys = 1LL << 20;
+
 /// The keys of a CSS easing (see the header).
 template <class Real>
 [[nodiscard]] std::vector<key<Real>> css_keys(const css_easing<double>& f) {
@@ -38,6 +41,11 @@ template <class Real>
     // the start, the output that over the jumps (n, n - 1 without jumps at the ends, n + 1 with both),
     // at most 1. The value holds until the next step: constant segments, right-continuous like CSS.
     const long long n = f.step_count();
+    // n + 1 keys, materialised: capped before any is made (steps(1e7) took 63 s and 2.5 GB, and
+    // n + 1 overflows at the largest long long). css_easing evaluates steps() in closed form.
+    if (n > css_max_step_keys)
+      validate::fail("steps argument 1 (n) = " + std::to_string(n) +
+                     ": a channel holds steps() as n + 1 keys, n at most " + std::to_string(css_max_step_keys));
     const step_position pos = f.position();
     const bool start = pos == step_position::jump_start || pos == step_position::jump_both;
     const long long jumps = pos == step_position::jump_none ? n - 1 : pos == step_position::jump_both ? n + 1 : n;
