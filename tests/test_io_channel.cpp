@@ -223,6 +223,28 @@ TEST(io_channel, curve_view_and_registry) {
   EXPECT_EQ(c(2.0)[1], 1.0);
 }
 
+// Issue 33 item 3: a field of another tool was silently dropped (an exact channel with Maya's
+// "post": "cycle" did not cycle; "keys" on css, "easing" on exact). It is refused, naming the tools
+// it belongs to and the spec's own.
+TEST(io_channel, a_field_of_another_tool_is_refused_naming_its_tools) {
+  auto message = [](const char* text) {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    return cbt::message_of([&] { (void)cb::io::channel_model_of_spec<double>(spec_of(j)); });
+  };
+  const std::string keys = R"("keys": [{"time": 0, "value": 0}, {"time": 1, "value": 1}])";
+  EXPECT_THAT(
+      message((R"({"type": "channel", "tool": "exact", )" + keys + R"(, "post": "cycle"})").c_str()),
+      ::testing::HasSubstr("spec.json.post: a field of tool \"maya\", not of tool \"exact\" (this spec's \"tool\")"));
+  EXPECT_THAT(message((R"({"type": "channel", "tool": "exact", )" + keys + R"(, "easing": "ease"})").c_str()),
+              ::testing::HasSubstr("spec.json.easing: a field of tool \"css\", not of tool \"exact\""));
+  EXPECT_THAT(message((R"({"type": "channel", "tool": "css", "easing": "ease", )" + keys + "}").c_str()),
+              ::testing::HasSubstr("spec.json.keys: a field of tool \"exact\", "));
+  // The tool's own fields, the metadata and "solver" pass.
+  EXPECT_EQ(
+      message((R"({"type": "channel", "tool": "exact", "name": "n", "solver": "bisection30", )" + keys + "}").c_str()),
+      "(no exception)");
+}
+
 TEST(io_channel, bad_specs_name_the_field) {
   auto message = [](const char* text) {
     const nlohmann::json j = nlohmann::json::parse(text);

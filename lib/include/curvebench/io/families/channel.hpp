@@ -17,6 +17,7 @@
 #include "curvebench/io/family.hpp"
 #include "curvebench/io/tools/all.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <functional>
@@ -37,6 +38,37 @@ struct channel_model {
   std::function<Real(const Real&, int)> at;
 };
 
+namespace detail {
+
+/// Fails on a member of a channel spec that belongs to another tool than the spec's (T), naming the
+/// tools it belongs to: the family accepts every tool's fields, so `"easing"` on an exact channel,
+/// `"keys"` on a CSS one or Maya's `"post"` on an exact one were silently dropped. The metadata,
+/// "tool" and "solver" are every tool's; names no tool has are the family's only_members to report.
+template <class T, class... Tools>
+void check_tool_fields(const field& spec, channel::tool_list<Tools...>) {
+  if (!spec.value.is_object()) return;
+  for (const auto& item : spec.value.items()) {
+    const std::string& key = item.key();
+    if (key == "tool" || key == "solver" ||
+        std::find(std::begin(metadata), std::end(metadata), key) != std::end(metadata))
+      continue;
+    const auto has = [&](std::span<const field_doc> fields) {
+      return std::any_of(fields.begin(), fields.end(), [&](const field_doc& f) { return f.name == key; });
+    };
+    if (has(tool_spec<T>::fields)) continue;
+    std::string owners;
+    const auto add = [&](std::string_view tool, std::span<const field_doc> fields) {
+      if (has(fields)) owners += (owners.empty() ? "\"" : ", \"") + std::string(tool) + "\"";
+    };
+    (add(Tools::name, tool_spec<Tools>::fields), ...);
+    if (owners.empty()) continue;
+    spec.member(key).fail("a field of tool " + owners + ", not of tool \"" + std::string(T::name) +
+                          "\" (this spec's \"tool\"), which would ignore it");
+  }
+}
+
+}  // namespace detail
+
 /// The model of a "channel" spec under its tool (see the header), type-erased.
 template <class Real>
 channel_model<Real> channel_model_of_spec(const field& spec) {
@@ -45,6 +77,7 @@ channel_model<Real> channel_model_of_spec(const field& spec) {
   std::optional<channel_model<Real>> out;
   const bool known = visit_tool(name, [&](auto t) {
     using T = typename decltype(t)::type;
+    detail::check_tool_fields<T>(spec, all_tools{});
     const auto m = tool_spec<T>::template parse<Real>(spec);
     out = channel_model<Real>{m.view(), [m](const Real& x, int order) { return m.derivative(x, order); }};
   });
