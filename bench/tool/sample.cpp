@@ -15,6 +15,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <variant>
 
 namespace curvebench::tool {
@@ -313,6 +314,11 @@ void sample_times(const io::field& spec, const sample_args& a) {
   for (int k = 1; k <= a.derivatives; ++k) std::cout << (k == 1 ? ",dvalue" : ",d2value");
   std::cout << "\n" << std::setprecision(17);
   progress shown("sample", given.size(), a.quiet);
+  // A derivative that is unbounded at t (a circ ease at its key, a cusp) or that overflows double
+  // (keys 1e308 apart) leaves its cell empty and is reported on stderr: the values, which are
+  // finite, are still printed and the CSV stays parseable. An infinite derivative prints inf or -inf.
+  std::size_t empty_cells = 0;
+  std::string first_empty;
   for (std::size_t i = 0; i < given.size(); ++i) {
     shown.update(i);
     const double t = given[i].u;
@@ -321,15 +327,27 @@ void sample_times(const io::field& spec, const sample_args& a) {
       throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): the value is " + to_text(v));
     std::cout << t << "," << v;
     for (int k = 1; k <= a.derivatives; ++k) {
+      const std::string column = k == 1 ? "dvalue" : "d2value";
+      std::string why;
+      double d = std::numeric_limits<double>::quiet_NaN();
       try {
-        std::cout << "," << ch.at(t, k);
+        d = ch.at(t, k);
+        if (std::isnan(d)) why = "not representable in double (an overflow in its arithmetic)";
       } catch (const std::domain_error& e) {
-        throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): d" + std::to_string(k) +
-                            "value: " + e.what());
+        why = e.what();
       }
+      std::cout << ",";
+      if (why.empty()) {
+        std::cout << d;
+        continue;
+      }
+      if (empty_cells++ == 0) first_empty = given[i].where + " (t = " + to_text(t) + "), " + column + ": " + why;
     }
     std::cout << "\n";
   }
+  if (empty_cells > 0)
+    std::cerr << "curvebench: note: " << empty_cells << " derivative cell" << (empty_cells == 1 ? " is" : "s are")
+              << " empty (unbounded or not representable); the first: " << first_empty << "\n";
 }
 
 }  // namespace
