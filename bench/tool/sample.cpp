@@ -12,10 +12,13 @@
 #include "curvebench/io/spec_data.hpp"
 #include "curvebench/motion/distance_time.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <variant>
 
 namespace curvebench::tool {
@@ -160,40 +163,113 @@ std::vector<parameter> parse_at_file(const std::string& path) {
   return out;
 }
 
-/// A:B:STEP, A and B inclusive (B when it lies on the grid within 1e-9 steps of rounding).
-std::vector<parameter> parse_range(const std::string& text) {
-  const std::vector<std::string> items = split(text, ':');
+/// The shortest text that reads back as x (std::to_chars): the time column prints 0.3, not
+/// 0.29999999999999999.
+std::string shortest(double x) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+
+/// A number written as a plain decimal (digits, at most one point, no exponent, at most 17
+/// digits): digits / 10^scale; nullopt otherwise.
+struct decimal {
+  long long digits;
+  int scale;
+};
+std::optional<decimal> decimal_of(std::string_view text) {
+  std::size_t k = 0;
+  const bool negative = !text.empty() && text[0] == '-';
+  if (!text.empty() && (text[0] == '-' || text[0] == '+')) k = 1;
+  long long digits = 0;
+  int scale = 0, count = 0;
+  bool point = false;
+  for (; k < text.size(); ++k) {
+    const char c = text[k];
+    if (c == '.' && !point) {
+      point = true;
+    } else if (c >= '0' && c <= '9') {
+      if (++count > 17) return std::nullopt;
+      digits = digits * 10 + (c - '0');
+      if (point) ++scale;
+    } else {
+      return std::nullopt;
+    }
+  }
+  if (count == 0) return std::nullopt;
+  return decimal{negative ? -digits : digits, scale};
+}
+
+/// The grid value A + i STEP: from its exact decimal value, correctly rounded, when A and STEP are
+/// plain decimals (steps of 0.1 give 0.3, not 0.30000000000000004); a + i step in double otherwise.
+double grid_value(const std::optional<decimal>& da, const std::optional<decimal>& ds, double a, double step,
+                  std::size_t i) {
+  if (da && ds) {
+    const int scale = std::max(da->scale, ds->scale);
+    __int128 pa = da->digits, ps = ds->digits;
+    for (int k = da->scale; k < scale; ++k) pa *= 10;
+    for (int k = ds->scale; k < scale; ++k) ps *= 10;
+    const __int128 v = pa + static_cast<__int128>(i) * ps;  // |v| < 10^17 * 10^17 * 2^21: no overflow
+    __int128 m = v < 0 ? -v : v;
+    std::string text;
+    do {
+      text.insert(text.begin(), static_cast<char>('0' + static_cast<int>(m % 10)));
+      m /= 10;
+    } while (m > 0);
+    text = (v < 0 ? "-" : "") + text + "e-" + std::to_string(scale);
+    double out = 0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), out);
+    if (r.ec == std::errc()) return out;
+  }
+  return a + static_cast<double>(i) * step;
+}
+
+/// A:B:STEP (option `--range`), or A:B[:STEP] with `default_step` when STEP is left out (option
+/// `--frames`, STEP 1): A and B inclusive (B when it lies on the grid within 1e-9 steps of rounding).
+std::vector<parameter> parse_range(const std::string& text, const std::string& option = "--range",
+                                   std::optional<double> default_step = std::nullopt) {
+  std::vector<std::string> items = split(text, ':');
+  if (items.size() == 2 && default_step) items.push_back(to_text(*default_step));
   if (items.size() != 3)
-    throw invalid_input("--range " + quote_cell(text) + ": expected A:B:STEP (three numbers), got " +
+    throw invalid_input(option + " " + quote_cell(text) + ": expected A:B" + (default_step ? "[:STEP]" : ":STEP") +
+                        " (" + (default_step ? "two or three" : "three") + " numbers), got " +
                         std::to_string(items.size()) + " items");
   const char* names[] = {"A", "B", "STEP"};
   double v[3];
   for (std::size_t i = 0; i < 3; ++i)
     if (!parse_finite(items[i], v[i]))
-      throw invalid_input("--range: item " + std::to_string(i + 1) + " (" + names[i] + ") " + quote_cell(items[i]) +
+      throw invalid_input(option + ": item " + std::to_string(i + 1) + " (" + names[i] + ") " + quote_cell(items[i]) +
                           " is not a finite number");
   const double a = v[0], b = v[1], step = v[2];
-  if (!(step > 0)) throw invalid_input("--range: item 3 (STEP) " + quote_cell(items[2]) + " is not positive");
-  if (b < a) throw invalid_input("--range: B = " + items[1] + " is below A = " + items[0]);
+  if (!(step > 0)) throw invalid_input(option + ": item 3 (STEP) " + quote_cell(items[2]) + " is not positive");
+  if (b < a) throw invalid_input(option + ": B = " + items[1] + " is below A = " + items[0]);
   const double steps = (b - a) / step;
   if (steps + 1 > static_cast<double>(max_sample_values))
-    throw invalid_input("--range " + text + ": more than the maximum " + std::to_string(max_sample_values) + " values");
+    throw invalid_input(option + " " + text + ": more than the maximum " + std::to_string(max_sample_values) +
+                        " values");
   const auto n = static_cast<std::size_t>(std::floor(steps + 1e-9));
+  const std::optional<decimal> da = decimal_of(items[0]), ds = decimal_of(items[2]);
   std::vector<parameter> out;
   for (std::size_t i = 0; i <= n; ++i) {
-    double u = a + static_cast<double>(i) * step;
+    double u = grid_value(da, ds, a, step, i);
     if (i == n && std::abs(u - b) <= 1e-9 * step) u = b;
-    out.push_back({u, "--range: value " + std::to_string(i + 1)});
+    out.push_back({u, option + ": value " + std::to_string(i + 1)});
   }
   return out;
 }
 
+/// The parameters that --at, --at-file, --range or --frames give (empty when none does).
+std::vector<parameter> given_parameters(const sample_args& a) {
+  if (!a.at.empty()) return parse_at(a.at);
+  if (!a.at_file.empty()) return parse_at_file(a.at_file);
+  if (!a.range.empty()) return parse_range(a.range);
+  if (!a.frames.empty()) return parse_range(a.frames, "--frames", 1.0);
+  return {};
+}
+
 template <int Dim>
 void sample(const io::field& spec, const sample_args& a) {
-  std::vector<parameter> given;
-  if (!a.at.empty()) given = parse_at(a.at);
-  if (!a.at_file.empty()) given = parse_at_file(a.at_file);
-  if (!a.range.empty()) given = parse_range(a.range);
+  const std::vector<parameter> given = given_parameters(a);
   const any_curve<double, Dim> c = io::curve_from_spec<double, Dim>(spec);
   al::parameterization_options<double> opt;
   // Samples at given or equally spaced u need s(u) only: Newton's method builds no u(s) table
@@ -280,7 +356,7 @@ void sample_rotation(const io::field& spec, const sample_args& a, const std::vec
   for (std::size_t i = 0; i < given.size(); ++i) {
     shown.update(i);
     const double t = given[i].u;
-    std::cout << t;
+    std::cout << shortest(t);
     for (int k = 0; k <= a.derivatives; ++k) {
       const auto row = [&] { return spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): "; };
       point<double, 4> q;
@@ -301,10 +377,7 @@ void sample_rotation(const io::field& spec, const sample_args& a, const std::vec
 /// A channel spec at given times: t, the value and its time derivatives (orders 1..min(K, 2)) under
 /// the spec's tool (io/families/channel.hpp). A vertical tangent's slope is printed as inf or -inf.
 void sample_times(const io::field& spec, const sample_args& a) {
-  std::vector<parameter> given;
-  if (!a.at.empty()) given = parse_at(a.at);
-  if (!a.at_file.empty()) given = parse_at_file(a.at_file);
-  if (!a.range.empty()) given = parse_range(a.range);
+  const std::vector<parameter> given = given_parameters(a);
   if (a.derivatives > 2)
     throw invalid_input("--derivatives " + std::to_string(a.derivatives) +
                         ": a channel's time derivatives go to order 2 (d2value)");
@@ -325,7 +398,7 @@ void sample_times(const io::field& spec, const sample_args& a) {
     const double v = ch.at(t, 0);
     if (!std::isfinite(v))
       throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): the value is " + to_text(v));
-    std::cout << t << "," << v;
+    std::cout << shortest(t) << "," << v;
     for (int k = 1; k <= a.derivatives; ++k) {
       const std::string column = k == 1 ? "dvalue" : "d2value";
       std::string why;
@@ -378,9 +451,9 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
                       ->check(CLI::ExistingFile);
   auto* range = samp->add_option("--range", a.range,
                                  "evaluate at A, A+STEP, ... up to B (inclusive when B lies on the grid): A:B:STEP");
-  auto* frames = samp->add_option("--frames", a.range,
-                                  "the same as --range, named for channel specs, whose --at, --frames and --range "
-                                  "values are times: A:B:STEP");
+  auto* frames = samp->add_option("--frames", a.frames,
+                                  "times A, A+STEP, ... up to B for channel specs (whose --at, --frames and --range "
+                                  "values are times): A:B[:STEP], STEP 1 by default");
   for (CLI::Option* o : {at, at_file, range, frames}) {
     o->excludes(count);
     for (CLI::Option* other : {at, at_file, range, frames})
@@ -395,14 +468,14 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
 }
 
 void run_sample(const sample_args& a) {
-  if (a.by == "arclength" && (!a.at.empty() || !a.at_file.empty() || !a.range.empty()))
+  const bool given = !a.at.empty() || !a.at_file.empty() || !a.range.empty() || !a.frames.empty();
+  if (a.by == "arclength" && given)
     throw invalid_input(
         "sample: --by arclength spaces the samples itself; it does not go with --at, --at-file or "
         "--range (which give the parameters)");
   const nlohmann::json j = read_spec(a.spec);
   const io::field spec = io::root(j, a.spec);
-  if (spec.has("type") && spec.member("type").value == "channel" &&
-      (!a.at.empty() || !a.at_file.empty() || !a.range.empty())) {
+  if (spec.has("type") && spec.member("type").value == "channel" && given) {
     sample_times(spec, a);
     return;
   }

@@ -103,6 +103,7 @@ struct sample_args {
   std::string at;       ///< --at V1,V2,...
   std::string at_file;  ///< --at-file FILE
   std::string range;    ///< --range A:B:STEP
+  std::string frames;   ///< --frames A:B[:STEP] (STEP 1 by default)
   int derivatives = 1;  ///< derivative columns: orders 1..K
   bool quiet = false;   ///< no progress on stderr
 };

@@ -264,6 +264,17 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(f.returncode, 0, f.stderr)
         self.assertEqual(len(f.stdout.splitlines()), 6)
         self.assertEqual(f.stdout.splitlines()[-1], "1,1")
+        # Issue 30 item 6: --frames A:B steps by 1 (its errors name --frames), and a decimal grid
+        # prints the decimals it names (0.3, not 0.30000000000000004).
+        g = run("sample", spec, "--frames", "1:4", "--derivatives", "0")
+        self.assertEqual(g.returncode, 0, g.stderr)
+        self.assertEqual([r.split(",")[0] for r in g.stdout.splitlines()[1:]], ["1", "2", "3", "4"])
+        d = run("sample", spec, "--frames", "0:1:0.1", "--derivatives", "0")
+        self.assertEqual(d.returncode, 0, d.stderr)
+        self.assertEqual([r.split(",")[0] for r in d.stdout.splitlines()[1:]],
+                         ["0", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"])
+        self.assert_error(run("sample", spec, "--frames", "1"), "--frames", "A:B[:STEP]")
+        self.assert_error(run("sample", spec, "--frames", "1:x"), "--frames: item 2", '"x"')
         # Without times a channel samples its curve view by u, as every family does.
         u = run("sample", spec, "--count", "3")
         self.assertEqual(u.returncode, 0, u.stderr)
