@@ -305,8 +305,14 @@ int main(int argc, char** argv) {
       }
       if (list_what == "cases" || list_what == "all") {
         std::cout << "cases (" << cases_dir << "):\n";
-        for (const auto& c : cb::harness::load_cases(cases_dir))
-          std::cout << "  " << std::left << std::setw(34) << c.name << std::setw(12) << c.group << c.reason << "\n";
+        // Columns as wide as their longest entry: a long name never runs into its group.
+        const auto cases = cb::harness::load_cases(cases_dir);
+        std::size_t name_w = 0, group_w = 0;
+        for (const auto& c : cases)
+          name_w = std::max(name_w, c.name.size()), group_w = std::max(group_w, c.group.size());
+        for (const auto& c : cases)
+          std::cout << "  " << std::left << std::setw(static_cast<int>(name_w + 2)) << c.name
+                    << std::setw(static_cast<int>(group_w + 2)) << c.group << c.reason << "\n";
       }
       return 0;
     }

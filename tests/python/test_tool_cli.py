@@ -390,6 +390,14 @@ class ToolCli(unittest.TestCase):
         # Without the installed layout, the source tree's cases.
         p = run("list", "cases")
         self.assertIn(f"cases ({CASES})", p.stdout)
+        # Issue 30 item 6: every row's name, group and reason stand apart, the longest name too.
+        names = {os.path.splitext(f)[0] for f in os.listdir(CASES) if f.endswith(".json")}
+        rows = [r for r in p.stdout.splitlines() if r.startswith("  ")]
+        self.assertEqual(len(rows), len(names))
+        for r in rows:
+            name = r.split()[0]
+            self.assertIn(name, names, r)
+            self.assertTrue(r[2 + len(name):].startswith("  "), r)
 
 
 if __name__ == "__main__":
