@@ -199,7 +199,10 @@ int main(int argc, char** argv) {
   auto* chk = tool::add_check(app, ca);
 
   length_args la;
-  auto* len = app.add_subcommand("length", "arc length of a curve spec: JSON value, estimate, evaluations");
+  auto* len = app.add_subcommand(
+      "length",
+      "arc length of a curve spec: JSON value, estimate (absolute, in the curve's length units: a bound of |value - L| "
+      "unless the status is not_guaranteed, when it is null), status, evaluations");
   len->add_option("spec", la.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
   const std::vector<std::string> length_ids = length_method_ids();
   std::string length_help;
@@ -209,9 +212,10 @@ int main(int argc, char** argv) {
     const h::setting_def& d = *o.def;
     if (d.integer) {
       len->add_option(std::string(d.option), o.integer, o.help)
+          ->capture_default_str()
           ->check(CLI::Range(static_cast<long long>(d.min), static_cast<long long>(d.max)));
     } else {
-      auto* opt = len->add_option(std::string(d.option), o.real, o.help);
+      auto* opt = len->add_option(std::string(d.option), o.real, o.help)->capture_default_str();
       if (d.min == 0 && d.max == std::numeric_limits<double>::infinity())
         opt->check(tool::positive_finite());
       else

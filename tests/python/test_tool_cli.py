@@ -399,6 +399,16 @@ class ToolCli(unittest.TestCase):
             self.assertIn(name, names, r)
             self.assertTrue(r[2 + len(name):].startswith("  "), r)
 
+    def test_length_help_shows_defaults_and_the_estimate_unit(self):
+        # Issue 30 item 6: `length --help` hid the defaults of --n and --tol and whether the estimate
+        # is absolute.
+        h = run("length", "--help")
+        self.assertEqual(h.returncode, 0, h.stderr)
+        self.assertIn("estimate (absolute, in the curve's length units", h.stdout)
+        for option in ("--n", "--tol"):
+            line = next(r for r in h.stdout.splitlines() if r.strip().startswith(option + " "))
+            self.assertIn("[", line, line)  # CLI11 prints a captured default as [value]
+
 
 if __name__ == "__main__":
     unittest.main()
