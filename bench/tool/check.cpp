@@ -113,7 +113,7 @@ CLI::App* add_check(CLI::App& app, check_args& a) {
       "missing columns, non-numeric cells (1.5x, nan, inf, empty), rows with too few or too many values, "
       "parameters outside the domain, empty or header-only files are errors naming the file, the row (its line), "
       "the column and the cell.\n" +
-      example("curvebench check arch.json --values values.csv --max-error 4"));
+      example("curvebench check bench/cases/arch_cubic_bezier.json --values values.csv --max-error 4"));
   return chk;
 }
 

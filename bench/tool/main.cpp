@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
   len->add_flag(
       "--quiet", la.quiet,
       "no progress lines on stderr (evaluations against the method's budget, once a run takes over a second)");
-  len->footer(tool::example("curvebench length arch.json --method gauss --n 8"));
+  len->footer(tool::example("curvebench length bench/cases/arch_cubic_bezier.json --method gauss --n 8"));
 
   cb::harness::accuracy_options ao;
   ao.peers = &cb::harness::library_peers();  // GSL, Boost.Math and Eigen beside curvebench's methods

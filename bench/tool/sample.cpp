@@ -463,7 +463,8 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
                    "derivative columns of orders 1..K (0-3; default 1): dx,dy for the first, d2x,d2y, d3x,d3y")
       ->check(CLI::Range(0, 3));
   samp->add_flag("--quiet", a.quiet, "no progress lines on stderr (printed once a run takes over a second)");
-  samp->footer(example("curvebench sample arch.json --at 0,0.25,0.5 --derivatives 2 > values.csv"));
+  samp->footer(
+      example("curvebench sample bench/cases/arch_cubic_bezier.json --at 0,0.25,0.5 --derivatives 2 > values.csv"));
   return samp;
 }
 

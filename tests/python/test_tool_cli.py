@@ -374,6 +374,17 @@ class ToolCli(unittest.TestCase):
                 tail = [line for line in p.stdout.splitlines() if line.strip()][-2:]
                 self.assertEqual(tail[0], "Example:")
                 self.assertTrue(tail[1].startswith(f"  curvebench {sub} "), tail[1])
+                # Issue 30 item 6: the files an example reads exist (from the repository's root):
+                # its spec, thresholds and cases (values.csv is what sample's example writes, and
+                # reports/accuracy.json what accuracy's writes).
+                words = tail[1].split()
+                made = {"values.csv", "reports/accuracy.json"}
+                for w in words:
+                    if w.endswith((".json", ".csv")) and w not in made:
+                        self.assertTrue(os.path.isfile(os.path.join(ROOT, w)), f"{sub}: {w} in {tail[1]}")
+                if "--only" in words:
+                    only = words[words.index("--only") + 1]
+                    self.assertTrue(any(only in f for f in os.listdir(CASES)), f"--only {only} matches no case")
 
     def test_an_installed_tool_finds_its_cases_beside_it(self):
         prefix = os.path.join(self.dir, "prefix")
