@@ -70,6 +70,14 @@ TEST(io_json, spec_error_is_an_invalid_input) {
   EXPECT_THROW((void)io::root(j).member("points").point_dimension(), curvebench::invalid_input);
 }
 
+// Issue 33 item 5: a UTF-8 byte order mark was refused with the invisible character in the message.
+TEST(io_json, a_utf8_byte_order_mark_is_skipped) {
+  const auto j = io::parse("\xEF\xBB\xBF{\"type\": \"bezier\"}", "bom.json");
+  EXPECT_EQ(j["type"], "bezier");
+  // Only at the start: elsewhere it is the stray bytes it is.
+  EXPECT_THROW((void)io::parse("{\"type\": \"bezier\"}\xEF\xBB\xBF", "bom.json"), curvebench::invalid_input);
+}
+
 // ---- hostile input (issue 16) ----------------------------------------------------------------
 
 namespace {

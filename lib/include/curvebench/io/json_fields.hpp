@@ -337,8 +337,11 @@ class strict_builder {
 
 /// Parses JSON text. A syntax error becomes a spec_error naming the source and the position;
 /// nesting deeper than max_nesting_depth and a key repeated in an object are errors naming the
-/// path. The parser itself does not recurse, so no input overflows the stack here.
+/// path. The parser itself does not recurse, so no input overflows the stack here. A UTF-8 byte
+/// order mark at the start is skipped (RFC 8259 lets a parser ignore it; editors on Windows write
+/// one, and refusing it showed an invisible character in the message).
 [[nodiscard]] inline json parse(std::string_view text, std::string_view source = "spec") {
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
   json result;
   detail::strict_builder builder(result, source);
   (void)json::sax_parse(text, &builder);  // strict: trailing text is an error too
