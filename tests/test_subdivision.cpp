@@ -257,10 +257,12 @@ TEST(subdivision, best_first_beats_uniform_refinement_at_equal_cost) {
 // The value is each piece's bracket midpoint (Gravesen's estimate for a cubic), not the chord: its
 // error falls as h^4 per piece where the bound (the half-gap) falls as h^2, so on a smooth curve the
 // value is far inside its bound. With the chord as value the quick gate's rule for tol 1e-8 (errors
-// <= 3e-9 of L) failed at 5e-9; the midpoint must be well inside it. 0.05 of the target: a
-// chord-sum value sits at ~0.5 of it (the bound is met with the chord's error at about half).
-TEST(subdivision, the_midpoint_value_is_far_inside_its_bound) {
-  for (const double k : {1e3, 1e6}) {
+// <= 3e-9 of L) failed at 5e-9: a chord sum sits at about half of its target. Measured with the
+// midpoint, error / target: 2e-7 to 2e-3 on end slopes 2 and 10 at 1e-4..1e-8, hence 0.01. On the
+// hairpins (slope 1e3: 2e-4 to 0.08; 1e6: 0.1 to 0.5) the bound is tight rather than loose, where
+// the pieces across the tip are far from their cubic asymptotics; their honesty is checked above.
+TEST(subdivision, the_midpoint_value_is_far_inside_its_bound_on_smooth_curves) {
+  for (const double k : {2.0, 10.0}) {
     const auto c = steep_end<double>(k);
     const truth& t = reference_for(k);
     for (const double tol : {1e-4, 1e-6, 1e-8}) {
@@ -270,7 +272,7 @@ TEST(subdivision, the_midpoint_value_is_far_inside_its_bound) {
       EXPECT_TRUE(r.converged()) << "slope " << k << " tol " << tol;
       EXPECT_TRUE(bounds(r, t)) << "slope " << k << " tol " << tol;
       const double err = static_cast<double>(abs(R(r.value) - t.length) / t.length);
-      EXPECT_LE(err, 0.05 * tol) << "slope " << k << " tol " << tol << " estimate " << r.error_estimate;
+      EXPECT_LE(err, 0.01 * tol) << "slope " << k << " tol " << tol << " estimate " << r.error_estimate;
     }
   }
 }

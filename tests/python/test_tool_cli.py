@@ -418,7 +418,7 @@ class ToolCli(unittest.TestCase):
         self.assertIn("estimate (absolute, in the curve's length units", h.stdout)
         for option in ("--n", "--tol"):
             line = next(r for r in h.stdout.splitlines() if r.strip().startswith(option + " "))
-            self.assertIn("[", line, line)  # CLI11 prints a captured default as [value]
+            self.assertRegex(line, option + r" [^=]*\S=\S+  ", line)  # CLI11 prints a captured default as TYPE=value
 
 
 if __name__ == "__main__":
