@@ -4,6 +4,8 @@
 #include "harness/check.hpp"
 #include "harness/gate.hpp"
 
+#include "support/fixtures.hpp"
+
 #include "curvebench/core/error.hpp"
 #include "curvebench/io/json_fields.hpp"
 
@@ -20,6 +22,7 @@
 
 using namespace curvebench::harness;
 using curvebench::invalid_input;
+using curvebench::testing::invalid_input_of;
 using ::testing::HasSubstr;
 
 namespace {
@@ -84,15 +87,6 @@ std::string num(double x) {
   return os.str();
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const invalid_input& e) {
-    return e.what();
-  }
-  return "accepted";
-}
-
 }  // namespace
 
 // ---- the CSV reader ------------------------------------------------------------------------------
@@ -109,7 +103,7 @@ TEST(csv, reads_a_header_and_rows_with_their_lines) {
 }
 
 TEST(csv, names_file_row_column_and_text_of_every_bad_cell) {
-  const auto msg = [](const char* text) { return error_of([&] { (void)parse_csv(text, "in.csv"); }); };
+  const auto msg = [](const char* text) { return invalid_input_of([&] { (void)parse_csv(text, "in.csv"); }); };
   EXPECT_EQ(msg(""), "in.csv: empty file (expected a header row, then one row per value)");
   EXPECT_EQ(msg("u,x\n"), "in.csv: the header row has no rows after it");
   EXPECT_EQ(msg("u,x\n0,1.5x\n"), "in.csv: row 2, column x: \"1.5x\" is not a finite number");
@@ -149,7 +143,7 @@ TEST(csv, a_wide_header_is_read_in_linear_time) {
   EXPECT_EQ(t.columns.size(), n);
   EXPECT_LT(seconds, 5.0);
   // A repeat far from its first use is still found.
-  EXPECT_THAT(error_of([&] { (void)parse_csv("c0,c1,c2,c1\n1,2,3,4\n", "in.csv"); }),
+  EXPECT_THAT(invalid_input_of([&] { (void)parse_csv("c0,c1,c2,c1\n1,2,3,4\n", "in.csv"); }),
               HasSubstr("column 4: column \"c1\" appears twice"));
 }
 
@@ -255,7 +249,7 @@ TEST(check, a_1d_spec_has_one_coordinate) {
 TEST(check, bad_columns_and_parameters_name_file_row_column_and_value) {
   const spec_doc s(arch);
   const auto msg = [&](const char* text) {
-    return error_of([&] { (void)run_check(s.f, check_kind::values, parse_csv(text, "v.csv")); });
+    return invalid_input_of([&] { (void)run_check(s.f, check_kind::values, parse_csv(text, "v.csv")); });
   };
   EXPECT_EQ(msg("u,x,y\n1.5,0,0\n"), "v.csv: row 2, column u: 1.5 is outside the curve's domain [0, 1]");
   EXPECT_EQ(msg("u,x\n0.5,1\n"),
@@ -271,7 +265,7 @@ TEST(check, bad_columns_and_parameters_name_file_row_column_and_value) {
 TEST(check, column_errors_are_bounded_however_long_the_header) {
   const spec_doc s(arch);
   const auto msg = [&](const std::string& text) {
-    return error_of([&] { (void)run_check(s.f, check_kind::values, parse_csv(text, "v.csv")); });
+    return invalid_input_of([&] { (void)run_check(s.f, check_kind::values, parse_csv(text, "v.csv")); });
   };
   const std::string long_name(100000, 'q');
   const std::string unknown = msg("u,x,y," + long_name + "\n0.5,1,1,1\n");
@@ -309,10 +303,10 @@ TEST(check, lengths_against_the_polylines_exact_segments) {
   ASSERT_EQ(over.size(), 1u);
   EXPECT_THAT(over[0],
               HasSubstr("len.csv: row 4 (u0 = 0.25, u1 = 0.75): error 8.88e-05 > allowed 1e-06 relative to L"));
-  EXPECT_THAT(
-      error_of([&] { (void)run_check(s.f, check_kind::lengths, parse_csv("u0,u1,length\n0,2.5,1\n", "l.csv")); }),
-      HasSubstr("l.csv: row 2, column u1: 2.5 is outside the curve's domain [0, 2]"));
-  EXPECT_THAT(error_of([&] { (void)run_check(s.f, check_kind::lengths, parse_csv("u0,u1\n0,2\n", "l.csv")); }),
+  EXPECT_THAT(invalid_input_of(
+                  [&] { (void)run_check(s.f, check_kind::lengths, parse_csv("u0,u1,length\n0,2.5,1\n", "l.csv")); }),
+              HasSubstr("l.csv: row 2, column u1: 2.5 is outside the curve's domain [0, 2]"));
+  EXPECT_THAT(invalid_input_of([&] { (void)run_check(s.f, check_kind::lengths, parse_csv("u0,u1\n0,2\n", "l.csv")); }),
               HasSubstr("no column length"));
 }
 
@@ -326,7 +320,7 @@ TEST(check, inverse_against_the_polylines_exact_u_of_s) {
   EXPECT_NEAR(r.rows[2].error, 6 * du / 11, 1e-18);
   EXPECT_LE(r.rows[3].error, 1e-30);
   EXPECT_EQ(r.records[0]["quantity"], "u_of_s");
-  EXPECT_THAT(error_of([&] { (void)run_check(s.f, check_kind::inverse, parse_csv("s,u\n12,2\n", "i.csv")); }),
+  EXPECT_THAT(invalid_input_of([&] { (void)run_check(s.f, check_kind::inverse, parse_csv("s,u\n12,2\n", "i.csv")); }),
               HasSubstr("i.csv: row 2, column s: 12 is outside [0, L]"));
 }
 

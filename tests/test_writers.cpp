@@ -7,6 +7,8 @@
 #include "harness/files.hpp"
 #include "harness/writers.hpp"
 
+#include "support/fixtures.hpp"
+
 #include "curvebench/core/error.hpp"
 
 #include <gmock/gmock.h>
@@ -24,11 +26,11 @@
 #include <vector>
 
 namespace fs = std::filesystem;
-using curvebench::invalid_input;
 using curvebench::harness::check_output_path;
 using curvebench::harness::check_results_path;
 using curvebench::harness::read_input_file;
 using curvebench::harness::write_atomic;
+using curvebench::testing::invalid_input_of;
 using ::testing::HasSubstr;
 
 namespace {
@@ -63,15 +65,6 @@ std::string read(const std::string& path) {
   return os.str();
 }
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const invalid_input& e) {
-    return e.what();
-  }
-  return "(no refusal)";
-}
-
 TEST_F(writers, a_new_path_and_a_regular_file_are_written_whole_with_no_temporary_left) {
   const std::string p = at("results.json");
   write_atomic(p, "first\n");
@@ -89,7 +82,7 @@ TEST_F(writers, a_new_path_and_a_regular_file_are_written_whole_with_no_temporar
 TEST_F(writers, a_fifo_is_refused_and_left_a_fifo) {
   const std::string p = at("pipe");
   ASSERT_EQ(::mkfifo(p.c_str(), 0600), 0);
-  EXPECT_THAT(refusal([&] { write_atomic(p, "x"); }),
+  EXPECT_THAT(invalid_input_of([&] { write_atomic(p, "x"); }),
               HasSubstr("--out " + p + ": is a FIFO; results are written only to a regular file or a new path"));
   EXPECT_TRUE(fs::is_fifo(fs::symlink_status(p)));
   EXPECT_EQ(names(), std::vector<std::string>{"pipe"});
@@ -99,7 +92,7 @@ TEST_F(writers, a_symbolic_link_is_refused_and_its_target_unchanged) {
   const std::string target = at("target.json"), link = at("link.json");
   write_atomic(target, "kept\n");
   fs::create_symlink(target, link);
-  EXPECT_THAT(refusal([&] { write_atomic(link, "x", "--json-out"); }),
+  EXPECT_THAT(invalid_input_of([&] { write_atomic(link, "x", "--json-out"); }),
               HasSubstr("--json-out " + link + ": is a symbolic link"));
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
   EXPECT_EQ(read(target), "kept\n");
@@ -107,16 +100,16 @@ TEST_F(writers, a_symbolic_link_is_refused_and_its_target_unchanged) {
 
 TEST_F(writers, a_directory_is_refused) {
   fs::create_directory(at("sub"));
-  EXPECT_THAT(refusal([&] { write_atomic(at("sub"), "x"); }), HasSubstr(": is a directory"));
+  EXPECT_THAT(invalid_input_of([&] { write_atomic(at("sub"), "x"); }), HasSubstr(": is a directory"));
   EXPECT_TRUE(fs::is_directory(at("sub")));
 }
 
 // Only the check is run on a device: were it broken, write_atomic would replace /dev/null as root.
 TEST(writers_devices, a_character_device_is_refused_by_the_check) {
   ASSERT_TRUE(fs::is_character_file("/dev/null"));
-  EXPECT_THAT(refusal([] { check_output_path("/dev/null", "--out"); }),
+  EXPECT_THAT(invalid_input_of([] { check_output_path("/dev/null", "--out"); }),
               HasSubstr("--out /dev/null: is a character device"));
-  EXPECT_THAT(refusal([] { check_output_path("", "--out"); }), HasSubstr("--out: an empty path"));
+  EXPECT_THAT(invalid_input_of([] { check_output_path("", "--out"); }), HasSubstr("--out: an empty path"));
 }
 
 // accuracy's check before minutes of work: the JSON and the CSV beside it, neither opened.
@@ -125,7 +118,7 @@ TEST_F(writers, the_results_check_refuses_a_fifo_beside_and_leaves_nothing) {
   check_results_path(json);
   EXPECT_TRUE(names().empty());
   ASSERT_EQ(::mkfifo(at("run.csv").c_str(), 0600), 0);
-  EXPECT_THAT(refusal([&] { check_results_path(json); }), HasSubstr(at("run.csv") + ": is a FIFO"));
+  EXPECT_THAT(invalid_input_of([&] { check_results_path(json); }), HasSubstr(at("run.csv") + ": is a FIFO"));
   EXPECT_EQ(names(), std::vector<std::string>{"run.csv"});
 }
 
@@ -134,13 +127,14 @@ TEST_F(writers, inputs_are_read_whole_up_to_their_limit_and_refused_past_it) {
   write_atomic(p, std::string(3u << 20, 'x'));  // three chunks of the reader
   EXPECT_EQ(read_input_file(p).size(), std::size_t(3) << 20);
   EXPECT_EQ(read_input_file(p, "", std::size_t(3) << 20).size(), std::size_t(3) << 20);  // exactly the limit
-  EXPECT_THAT(refusal([&] { (void)read_input_file(p, "thresholds ", std::size_t(1) << 20); }),
+  EXPECT_THAT(invalid_input_of([&] { (void)read_input_file(p, "thresholds ", std::size_t(1) << 20); }),
               HasSubstr("thresholds " + p + ": larger than 1 MiB (1048576 bytes), the limit for this input"));
-  EXPECT_THAT(refusal([&] { (void)read_input_file(at("missing.json")); }),
+  EXPECT_THAT(invalid_input_of([&] { (void)read_input_file(at("missing.json")); }),
               HasSubstr(at("missing.json") + ": cannot be read"));
-  EXPECT_THAT(refusal([&] { (void)read_input_file(dir.string()); }), HasSubstr(": is a directory, not a file"));
+  EXPECT_THAT(invalid_input_of([&] { (void)read_input_file(dir.string()); }),
+              HasSubstr(": is a directory, not a file"));
   // An endless device stops at the limit (here 1 MiB: a few reads, not a memory-sized one).
-  EXPECT_THAT(refusal([] { (void)read_input_file("/dev/zero", "", std::size_t(1) << 20); }),
+  EXPECT_THAT(invalid_input_of([] { (void)read_input_file("/dev/zero", "", std::size_t(1) << 20); }),
               HasSubstr("/dev/zero: larger than 1 MiB"));
 }
 

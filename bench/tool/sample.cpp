@@ -206,10 +206,14 @@ double grid_value(const std::optional<decimal>& da, const std::optional<decimal>
                   std::size_t i) {
   if (da && ds) {
     const int scale = std::max(da->scale, ds->scale);
-    __int128 pa = da->digits, ps = ds->digits;
+    __int128 pa = da->digits, ps = ds->digits;  // each below 10^17, scaled by at most 10^17: < 10^34
     for (int k = da->scale; k < scale; ++k) pa *= 10;
     for (int k = ds->scale; k < scale; ++k) ps *= 10;
-    const __int128 v = pa + static_cast<__int128>(i) * ps;  // |v| < 10^17 * 10^17 * 2^21: no overflow
+    // i <= max_sample_values (10^6): with |pa|, |ps| <= 10^30 the sum stays below 10^37 < 2^127;
+    // larger scaled values (17 digits on one side, 17 decimals on the other) take the double path.
+    const __int128 limit = static_cast<__int128>(1000000000000000LL) * 1000000000000000LL;  // 10^30
+    if (pa > limit || pa < -limit || ps > limit || ps < -limit) return a + static_cast<double>(i) * step;
+    const __int128 v = pa + static_cast<__int128>(i) * ps;
     __int128 m = v < 0 ? -v : v;
     std::string text;
     do {
@@ -400,7 +404,6 @@ void sample_times(const io::field& spec, const sample_args& a) {
       throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): the value is " + to_text(v));
     std::cout << shortest(t) << "," << v;
     for (int k = 1; k <= a.derivatives; ++k) {
-      const std::string column = k == 1 ? "dvalue" : "d2value";
       std::string why;
       double d = std::numeric_limits<double>::quiet_NaN();
       try {
@@ -414,7 +417,8 @@ void sample_times(const io::field& spec, const sample_args& a) {
         std::cout << d;
         continue;
       }
-      if (empty_cells++ == 0) first_empty = given[i].where + " (t = " + to_text(t) + "), " + column + ": " + why;
+      if (empty_cells++ == 0)
+        first_empty = given[i].where + " (t = " + to_text(t) + "), " + (k == 1 ? "dvalue" : "d2value") + ": " + why;
     }
     std::cout << "\n";
   }

@@ -273,6 +273,15 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(d.returncode, 0, d.stderr)
         self.assertEqual([r.split(",")[0] for r in d.stdout.splitlines()[1:]],
                          ["0", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"])
+        # A grid whose exact decimal needs more than 10^30 (17 decimals of A against a 17-digit STEP)
+        # takes double arithmetic: every time within rounding of A + i STEP, none from an overflow.
+        step = 99999999999999999
+        w = run("sample", spec, "--range", f"0.00000000000000001:1e22:{step}", "--derivatives", "0")
+        self.assertEqual(w.returncode, 0, w.stderr)
+        times = [float(r.split(",")[0]) for r in w.stdout.splitlines()[1:]]
+        self.assertEqual(len(times), 100001)
+        for i in (1, 1000, 100000):
+            self.assertLess(abs(times[i] - i * float(step)), 1e-15 * i * step, i)
         self.assert_error(run("sample", spec, "--frames", "1"), "--frames", "A:B[:STEP]")
         self.assert_error(run("sample", spec, "--frames", "1:x"), "--frames: item 2", '"x"')
         # Without times a channel samples its curve view by u, as every family does.

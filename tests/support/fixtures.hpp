@@ -4,6 +4,7 @@
 //                                    same points and the real50 twin of a curve is exact);
 //   - random_points<Real, Dim>(...)  points uniform in [-1, 1]^Dim, drawn in double and rounded
 //                                    once to Real (so the real50 copy of the rounded points is exact);
+//   - invalid_input_of(f)            the what() of the invalid_input f throws (other exceptions propagate);
 //   - message_of(f)                  the what() of the exception f throws, for tests that check an
 //                                    error message's wording ("(no exception)" when none);
 //   - runge_samples()                21 equispaced samples (x, 1 / (1 + 25 x^2)), x in [-1, 1], in
@@ -12,6 +13,7 @@
 //                                    its bits): reproducible "rounding noise" for integrands.
 #pragma once
 
+#include "curvebench/core/error.hpp"
 #include "curvebench/core/point.hpp"
 
 #include <array>
@@ -68,6 +70,17 @@ inline double unit_hash(double x) {
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
   z ^= z >> 31;
   return static_cast<double>(z >> 11) / 4503599627370496.0 - 1;  // 53 bits / 2^52 - 1
+}
+
+/// The what() of the curvebench::invalid_input f throws, "(no invalid_input)" when it throws none;
+/// any other exception propagates (and fails the test): for checks of a refusal's wording.
+inline std::string invalid_input_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const curvebench::invalid_input& e) {
+    return e.what();
+  }
+  return "(no invalid_input)";
 }
 
 inline std::string message_of(const std::function<void()>& f) {
