@@ -44,7 +44,7 @@ for arg in "$@"; do
 done
 
 # Debian 12 (bookworm) packages by name, never by revision: Debian's security suite replaces a
-# revision when it updates a package (chromium=156.0.8078.79-1~deb12u1 stopped installing that
+# revision when it updates a package (Chromium 156.0.8078.79-1~deb12u1 stopped installing that
 # way), so an exact pin breaks the next fresh install. Comparability comes from the record instead:
 # every driver writes the version it ran (Chromium's, SciPy's, Blender's, Node's) into its result,
 # and the report shows it. Where a driver depends on a major version it is checked below.
