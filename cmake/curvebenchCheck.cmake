@@ -4,28 +4,35 @@
 #
 #   curvebench_add_check(NAME <test name> SPEC <spec.json> COMMAND <program> [args...]
 #                        [VALUES <csv>] [LENGTHS <csv>] [INVERSE <csv>]
-#                        [MAX_ERROR <x>] [THRESHOLDS <thresholds.json>]
-#                        [SUBJECT <name>] [WORKING_DIRECTORY <dir>])
+#                        [MAX_ERROR <x>] [MAX_VALUE_ERROR <x>] [MAX_LENGTH_ERROR <x>]
+#                        [MAX_INVERSE_ERROR <x>] [UNIT <unit>] [AGAINST truth|tool]
+#                        [THRESHOLDS <thresholds.json>] [SUBJECT <name>] [WORKING_DIRECTORY <dir>])
 #
 # The test runs COMMAND in WORKING_DIRECTORY (default: the current binary directory; a first word
 # naming an executable target of this project runs that target's file), fails when it exits
 # non-zero, then runs
 #   curvebench check SPEC --values VALUES [--lengths LENGTHS] [--inverse INVERSE]
-#                    [--max-error X] [--thresholds FILE] --name SUBJECT
+#                    [--max-error X] [--max-value-error X] [--max-length-error X]
+#                    [--max-inverse-error X] [--unit U] [--against A] [--thresholds FILE] --name SUBJECT
 # and fails when the check does (a row over MAX_ERROR, a breached rule, or bad input: a missing
 # column, a parameter outside the domain, a non-numeric cell). Relative CSV paths are relative to
 # WORKING_DIRECTORY. VALUES defaults to <NAME>.csv when neither LENGTHS nor INVERSE is given;
-# SUBJECT (the records' method, which THRESHOLDS' rules name) defaults to NAME.
+# SUBJECT (the records' method, which THRESHOLDS' rules name) defaults to NAME. For a channel spec
+# ("type": "channel") VALUES holds t,value[,dvalue[,d2value]]: your channel at times, checked against
+# the channel's truth, or with AGAINST tool against the tool's own evaluation (`curvebench check --help`).
 #
 # Example:
 #   find_package(curvebench REQUIRED)
 #   add_executable(my_spline_csv my_spline_csv.cpp)     # writes my_spline.csv: u,x,y
 #   curvebench_add_check(NAME my_spline SPEC ${CMAKE_CURRENT_SOURCE_DIR}/spec.json
 #                        COMMAND my_spline_csv my_spline.csv VALUES my_spline.csv MAX_ERROR 64)
+#   add_executable(walk_cycle_csv walk_cycle_csv.cpp)   # writes walk.csv: t,value at frames
+#   curvebench_add_check(NAME walk_cycle SPEC walk.json COMMAND walk_cycle_csv walk.csv
+#                        VALUES walk.csv UNIT ulp-float MAX_VALUE_ERROR 4)
 include_guard(GLOBAL)
 
 function(curvebench_add_check)
-  cmake_parse_arguments(PARSE_ARGV 0 arg "" "NAME;SPEC;VALUES;LENGTHS;INVERSE;MAX_ERROR;THRESHOLDS;SUBJECT;WORKING_DIRECTORY"
+  cmake_parse_arguments(PARSE_ARGV 0 arg "" "NAME;SPEC;VALUES;LENGTHS;INVERSE;MAX_ERROR;MAX_VALUE_ERROR;MAX_LENGTH_ERROR;MAX_INVERSE_ERROR;UNIT;AGAINST;THRESHOLDS;SUBJECT;WORKING_DIRECTORY"
                         "COMMAND")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "curvebench_add_check: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
@@ -71,7 +78,9 @@ function(curvebench_add_check)
     endif()
   endif()
   set(check ${tool} check ${arg_SPEC} --name ${arg_SUBJECT})
-  foreach(pair VALUES:--values LENGTHS:--lengths INVERSE:--inverse MAX_ERROR:--max-error THRESHOLDS:--thresholds)
+  foreach(pair VALUES:--values LENGTHS:--lengths INVERSE:--inverse MAX_ERROR:--max-error MAX_VALUE_ERROR:--max-value-error
+               MAX_LENGTH_ERROR:--max-length-error MAX_INVERSE_ERROR:--max-inverse-error UNIT:--unit AGAINST:--against
+               THRESHOLDS:--thresholds)
     string(REPLACE ":" ";" pair ${pair})
     list(GET pair 0 key)
     list(GET pair 1 option)

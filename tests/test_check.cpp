@@ -189,6 +189,7 @@ TEST(check, reports_an_injected_error_exactly_and_names_its_row) {
   o.name = "my_engine";
   o.case_name = "arch";
   o.worst = 2;
+  o.unit = value_unit::ulp_double;  // the file's short exact values alone would choose float ulps
   const check_result r = run_check(s.f, check_kind::values, t, o);
   EXPECT_EQ(r.rows[1].point_ulps, 3);
   EXPECT_EQ(r.rows[1].error, 3);
@@ -200,7 +201,7 @@ TEST(check, reports_an_injected_error_exactly_and_names_its_row) {
   EXPECT_EQ(r.worst, (std::vector<std::size_t>{2, 1}));
   const auto over = rows_over(r, 4);
   ASSERT_EQ(over.size(), 1u);
-  EXPECT_EQ(over[0], "arch.csv: row 4 (u = 0.5): error 40 > allowed 4 ulps of size");
+  EXPECT_EQ(over[0], "arch.csv: row 4 (u = 0.5): error 40 > allowed 4 ulps of double x size");
   // The records: eval points and eval derivative=1, the subject's name as method.
   ASSERT_EQ(r.records.size(), 2u);
   EXPECT_EQ(r.records[0]["quantity"], "eval");
@@ -256,7 +257,7 @@ TEST(check, bad_columns_and_parameters_name_file_row_column_and_value) {
             "v.csv: row 1 (the header): no column y (coordinate 2 of the point); the header names u,x");
   EXPECT_THAT(msg("u,x,y,z\n0,0,0,0\n"), HasSubstr("v.csv: row 1 (the header), column z: unknown column"));
   EXPECT_THAT(msg("u,x,y,d2x\n0,0,0,0\n"), HasSubstr("no column d2y (derivative 2 of coordinate y)"));
-  EXPECT_THAT(msg("t,x,y\n0,0,0\n"), HasSubstr("column t: this spec's parameter is u"));
+  EXPECT_THAT(msg("t,x,y\n0,0,0\n"), HasSubstr("column t: this spec is a curve, whose parameter is u"));
   EXPECT_THAT(msg("x,y\n0,0\n"), HasSubstr("no column u"));
 }
 

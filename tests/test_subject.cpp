@@ -12,6 +12,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -213,3 +214,52 @@ TEST(Subject, BadSubjectsAreNamed) {
 }
 
 }  // namespace
+
+// A channel subject (issue 30): a keyframe channel checked by time through the subject API. The
+// channel is linear from (0, 0) to (10, 5), held constant outside, so its value is
+// clamp(t, 0, 10) / 2 in closed form; halving in double is exact, so the exact subject's records
+// are 0 and a subject off by 2^-30 past t = 5 (and one slope off by 1/4) is reported at exactly
+// that, in ulps of double of the value range 5.
+TEST(Subject, ChannelSubjectIsCheckedByTime) {
+  const nlohmann::json ramp = nlohmann::json::parse(R"({"name": "ramp", "type": "channel", "tool": "exact",
+    "keys": [{"time": 0, "value": 0, "interpolation": "linear"}, {"time": 10, "value": 5}]})");
+  const auto value = [](double t) { return std::clamp(t, 0.0, 10.0) / 2; };
+  channel_subject s;
+  s.name = "my_ramp";
+  s.value = value;
+  // At a key time the slope is the segment's (the first key starts it, the last ends it).
+  s.slope = [](double t) { return t >= 0 && t <= 10 ? 0.5 : 0.0; };
+  const auto exact = measure_spec(ramp, s, quick);
+  ASSERT_EQ(exact["records"].size(), 2u);  // value, slope
+  for (const auto& r : exact["records"]) {
+    EXPECT_EQ(r["method"], "my_ramp");
+    EXPECT_EQ(r["case"], "ramp");
+    EXPECT_EQ(r["quantity"], "eval");
+    EXPECT_EQ(r["error"].get<double>(), 0.0) << r;
+  }
+  EXPECT_EQ(exact["cases"][0]["value_range"].get<double>(), 5.0);
+  const double off = std::ldexp(1.0, -30);
+  channel_subject late = s;
+  late.name = "late";
+  late.value = [&](double t) { return value(t) + (t > 5 ? off : 0.0); };
+  late.slope = [](double t) { return t >= 0 && t <= 10 ? 0.75 : 0.0; };
+  const auto r = measure_spec(ramp, late, quick);
+  EXPECT_DOUBLE_EQ(record(r, "eval")["error"].get<double>(), off / (eps * 5));
+  EXPECT_DOUBLE_EQ(r["records"][1]["error"].get<double>(), 0.25 / (eps * 0.5));
+  // The gate reads the records by the subject's name.
+  const auto dir = std::filesystem::temp_directory_path() / "curvebench_channel_subject";
+  std::filesystem::create_directories(dir);
+  const auto rules = (dir / "rules.json").string();
+  std::ofstream(rules) << R"({"rules": [{"quantity": "eval", "method": "late", "max_error": 1e6}]})";
+  EXPECT_EQ(subject_gate(r, rules).size(), 1u);  // the slope's record is over, the value's is not
+  // A curve case is not a channel; a channel subject needs a value function.
+  channel_subject none;
+  none.name = "none";
+  EXPECT_THROW((void)measure_spec(ramp, none, quick), invalid_input);
+  try {
+    (void)measure_spec(bent, s, quick);
+    FAIL();
+  } catch (const invalid_input& e) {
+    EXPECT_THAT(e.what(), HasSubstr("not a channel"));
+  }
+}

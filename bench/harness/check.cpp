@@ -1,6 +1,7 @@
 // The check core (harness/check.hpp): column roles, the 50-digit differences through
 // case_reference, the summary and the records.
 #include "harness/check.hpp"
+#include "harness/check_detail.hpp"
 
 #include "harness/record.hpp"
 #include "harness/reference.hpp"
@@ -18,20 +19,15 @@
 
 namespace curvebench::harness {
 
-namespace {
+namespace detail {
 
-constexpr const char* coordinate_names[] = {"x", "y", "z"};
-constexpr int max_derivative = 3;
-constexpr std::size_t size_grid = 65;  // equally spaced parameters across the domain that size covers
-
-std::string num(double x, int digits = 17) {
+std::string num(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, x);
   return buf;
 }
 
-/// "d" for order 1, "d2", "d3" for higher: the prefix of `sample --derivatives`'s columns.
-std::string derivative_prefix(int order) { return order == 1 ? "d" : "d" + std::to_string(order); }
+namespace {
 
 /// A column name for a message, cut at 40 characters (a 100 kB name is not echoed whole).
 std::string column_name(const std::string& name) { return name.size() <= 40 ? name : name.substr(0, 37) + "..."; }
@@ -46,7 +42,16 @@ std::string column_list(const std::vector<std::string>& names) {
   return s;
 }
 
-/// The index of a required column; errors name the file, the column and the columns there are.
+/// The most significant digits over the value columns (0 for a table built in memory).
+int most_digits(const csv_table& t, const std::vector<std::size_t>& value_columns) {
+  int d = 0;
+  for (std::size_t c : value_columns)
+    if (c < t.digits.size()) d = std::max(d, t.digits[c]);
+  return d;
+}
+
+}  // namespace
+
 std::size_t need(const csv_table& t, const std::string& name, const std::string& role) {
   const std::size_t c = t.column(name);
   if (c == csv_table::npos)
@@ -55,7 +60,6 @@ std::size_t need(const csv_table& t, const std::string& name, const std::string&
   return c;
 }
 
-/// Every column of t must be in `allowed`.
 void only(const csv_table& t, const std::vector<std::string>& allowed, const std::string& kind) {
   for (const auto& c : t.columns)
     if (std::find(allowed.begin(), allowed.end(), c) == allowed.end())
@@ -63,20 +67,43 @@ void only(const csv_table& t, const std::vector<std::string>& allowed, const std
                           " takes the columns " + column_list(allowed));
 }
 
-/// The parameter column: u; t is for time-based specs, which this one is not.
-std::size_t parameter_column(const csv_table& t) {
-  if (t.column("u") == csv_table::npos && t.column("t") != csv_table::npos)
-    throw invalid_input(t.file +
-                        ": row 1 (the header), column t: this spec's parameter is u, not time t "
-                        "(name the column u)");
-  return need(t, "u", "the curve parameter");
+void choose_unit(check_result& res, const csv_table& t, const std::vector<std::size_t>& value_columns,
+                 const check_options& o) {
+  if (o.unit) {
+    res.unit = *o.unit;
+    res.unit_reason = "as asked";
+    return;
+  }
+  const int d = most_digits(t, value_columns);
+  if (t.digits.empty()) {
+    res.unit = value_unit::ulp_double;
+    res.unit_reason = "the default";
+  } else if (d >= 10) {
+    res.unit = value_unit::ulp_double;
+    res.unit_reason = "the values carry up to " + std::to_string(d) + " significant digits, more than a float's 9";
+  } else {
+    res.unit = value_unit::ulp_float;
+    res.unit_reason = "the values carry at most " + std::to_string(d) + " significant digits (a float's 9 or fewer)";
+  }
 }
 
-void check_domain(const csv_table& t, std::size_t r, std::size_t c, interval<double> d) {
-  const double u = t.rows[r][c];
-  if (!(d.lo <= u && u <= d.hi))
-    throw invalid_input(t.where(r, c) + ": " + num(u) + " is outside the curve's domain [" + num(d.lo) + ", " +
-                        num(d.hi) + "]");
+void warn_digits(check_result& res, const csv_table& t, const std::vector<std::size_t>& value_columns) {
+  if (t.digits.empty()) return;
+  const int d = most_digits(t, value_columns);
+  // Rounding a value to d significant digits moves it by up to 5 x 10^-d of itself, so up to that
+  // fraction of the scale; a unit finer than that cannot be carried by the file.
+  const double rounding = 5 * std::pow(10.0, -d);
+  const double ulp = res.unit == value_unit::ulp_double  ? std::numeric_limits<double>::epsilon()
+                     : res.unit == value_unit::ulp_float ? std::numeric_limits<float>::epsilon()
+                                                         : 0.0;
+  if (ulp == 0 || rounding <= ulp) return;
+  double worst = 0;
+  for (const check_row& r : res.rows) worst = std::max(worst, r.relative);
+  if (worst <= ulp) return;  // nothing the digits could explain
+  res.digits_warning = "the values carry at most " + std::to_string(d) +
+                       " significant digits: rounding to them alone can be " + num(rounding / ulp, 2) + " " +
+                       std::string(to_string(res.unit)) +
+                       "s; write them with %.17g (double) or %.9g (float), or choose --unit";
 }
 
 void summarize(check_result& res, std::size_t worst) {
@@ -99,6 +126,38 @@ void summarize(check_result& res, std::size_t worst) {
                    [&](std::size_t a, std::size_t b) { return res.rows[a].error > res.rows[b].error; });
   order.resize(std::min(order.size(), worst));
   res.worst = std::move(order);
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::need;
+using detail::num;
+using detail::only;
+using detail::summarize;
+
+constexpr const char* coordinate_names[] = {"x", "y", "z"};
+constexpr int max_derivative = 3;
+constexpr std::size_t size_grid = 65;  // equally spaced parameters across the domain that size covers
+
+/// "d" for order 1, "d2", "d3" for higher: the prefix of `sample --derivatives`'s columns.
+std::string derivative_prefix(int order) { return order == 1 ? "d" : "d" + std::to_string(order); }
+
+/// The parameter column: u; t is for channel specs, which this one is not.
+std::size_t parameter_column(const csv_table& t) {
+  if (t.column("u") == csv_table::npos && t.column("t") != csv_table::npos)
+    throw invalid_input(t.file +
+                        ": row 1 (the header), column t: this spec is a curve, whose parameter is u, not time t "
+                        "(name the column u; time columns are for channel specs)");
+  return need(t, "u", "the curve parameter");
+}
+
+void check_domain(const csv_table& t, std::size_t r, std::size_t c, interval<double> d) {
+  const double u = t.rows[r][c];
+  if (!(d.lo <= u && u <= d.hi))
+    throw invalid_input(t.where(r, c) + ": " + num(u) + " is outside the curve's domain [" + num(d.lo) + ", " +
+                        num(d.hi) + "]");
 }
 
 template <int Dim>
@@ -136,6 +195,9 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
     cd.push_back(cols);
   }
   only(t, allowed, "check --values");
+  std::vector<std::size_t> value_columns(cp.begin(), cp.end());
+  for (const auto& cols : cd) value_columns.insert(value_columns.end(), cols.begin(), cols.end());
+  detail::choose_unit(res, t, value_columns, o);
   const std::size_t cs = t.column("s");
   const interval<double> d = ref.domain();
   for (std::size_t r = 0; r < t.rows.size(); ++r) check_domain(t, r, cu, d);
@@ -168,20 +230,23 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
     cr.u = row[cu];
     point<double, Dim> p;
     for (int i = 0; i < Dim; ++i) p[i] = row[cp[static_cast<std::size_t>(i)]];
-    cr.point_ulps = ref.difference(cr.u, 0, p) / (eps * res.size);
-    cr.error = cr.point_ulps;
+    cr.absolute = ref.difference(cr.u, 0, p);
+    cr.point_ulps = cr.absolute / (eps * res.size);
+    cr.error = in_unit(cr.absolute, res.size, res.unit);
+    cr.relative = cr.absolute / res.size;
     worst_point = std::max(worst_point, cr.point_ulps);
     if (K > 0) cr.derivative_ulps.assign(static_cast<std::size_t>(K), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t oi = 0; oi < orders.size(); ++oi) {
       const int k = orders[oi];
       for (int i = 0; i < Dim; ++i) p[i] = row[cd[oi][static_cast<std::size_t>(i)]];
       const auto ki = static_cast<std::size_t>(k - 1);
-      const double e = ref.difference(cr.u, k, p) / (eps * res.derivative_sizes[ki]);
+      const double a = ref.difference(cr.u, k, p);
+      const double e = a / (eps * res.derivative_sizes[ki]);
       cr.derivative_ulps[ki] = e;
       worst_derivative[ki] = std::max(worst_derivative[ki], e);
-      cr.error = std::max(cr.error, e);
+      cr.error = std::max(cr.error, in_unit(a, res.derivative_sizes[ki], res.unit));
+      cr.relative = std::max(cr.relative, a / res.derivative_sizes[ki]);
     }
-    cr.relative = cr.error * eps;
     if (cs != csv_table::npos) {
       cr.s = row[cs];
       cr.s_error = ref.ds(cr.u, cr.s);
@@ -190,6 +255,7 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
     res.rows.push_back(std::move(cr));
     if (o.on_row) o.on_row(res.rows.size(), t.rows.size(), t.file);
   }
+  detail::warn_digits(res, t, value_columns);
   const auto n = static_cast<double>(t.rows.size());
   res.records.push_back(subject_record(o.case_name, o.group, "eval", o.name, "", worst_point, n));
   for (int k : orders)
@@ -268,18 +334,26 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
 }
 
 template <int Dim>
-std::vector<check_result> run_dim(const io::field& spec, const std::vector<check_input>& inputs,
+std::vector<check_result> run_dim(const io::field& spec, const std::vector<const check_input*>& inputs,
                                   const check_options& o) {
   case_reference<Dim> ref(spec);
   std::vector<check_result> out;
-  for (const check_input& in : inputs) {
-    check_result r = in.kind == check_kind::values    ? check_values(ref, in.table, o)
-                     : in.kind == check_kind::lengths ? check_lengths(ref, in.table, o)
-                                                      : check_inverse(ref, in.table, o);
+  for (const check_input* in : inputs) {
+    check_result r = in->kind == check_kind::values    ? check_values(ref, in->table, o)
+                     : in->kind == check_kind::lengths ? check_lengths(ref, in->table, o)
+                                                       : check_inverse(ref, in->table, o);
     summarize(r, o.worst);
     out.push_back(std::move(r));
   }
   return out;
+}
+
+/// Whether an input is checked by time: a times table, or the values of a channel spec with a t
+/// column (a u column checks the channel's planar curve (t(u), v(u)) instead).
+bool by_time(const io::field& spec, const check_input& in) {
+  if (in.kind == check_kind::times) return true;
+  return in.kind == check_kind::values && detail::is_channel_spec(spec) && in.table.column("u") == csv_table::npos &&
+         in.table.column("t") != csv_table::npos;
 }
 
 nlohmann::json row_json(const check_result& res, const check_row& r) {
@@ -297,7 +371,17 @@ nlohmann::json row_json(const check_result& res, const check_row& r) {
         j["s"] = r.s;
         j["s_error"] = r.s_error;
       }
+      j["absolute"] = r.absolute;
       break;
+    case check_kind::times: {
+      j["t"] = r.t;
+      j["absolute"] = r.absolute;
+      j["time_error"] = finite_or_null(r.time_error);
+      nlohmann::json d = nlohmann::json::array();
+      for (double e : r.derivative_errors) d.push_back(finite_or_null(e));
+      if (!d.empty()) j["derivative_errors"] = d;
+      break;
+    }
     case check_kind::lengths:
       j["u0"] = r.u;
       j["u1"] = r.u1;
@@ -319,6 +403,46 @@ std::string_view to_string(check_kind k) {
     case check_kind::values: return "values";
     case check_kind::lengths: return "lengths";
     case check_kind::inverse: return "inverse";
+    case check_kind::times: return "times";
+  }
+  return "?";
+}
+
+std::string_view to_string(value_unit u) {
+  switch (u) {
+    case value_unit::ulp_double: return "ulp-double";
+    case value_unit::ulp_float: return "ulp-float";
+    case value_unit::rel: return "rel";
+    case value_unit::abs: return "abs";
+  }
+  return "?";
+}
+
+value_unit value_unit_of(std::string_view name, const std::string& argument) {
+  for (value_unit u : {value_unit::ulp_double, value_unit::ulp_float, value_unit::rel, value_unit::abs})
+    if (name == to_string(u)) return u;
+  throw invalid_input(argument + " \"" + std::string(name.substr(0, 40)) +
+                      "\": not a unit (ulp-double, ulp-float, rel, abs)");
+}
+
+double in_unit(double absolute, double scale, value_unit u) {
+  switch (u) {
+    case value_unit::ulp_double: return absolute / (std::numeric_limits<double>::epsilon() * scale);
+    case value_unit::ulp_float: return absolute / (static_cast<double>(std::numeric_limits<float>::epsilon()) * scale);
+    case value_unit::rel: return absolute / scale;
+    case value_unit::abs: return absolute;
+  }
+  return absolute;
+}
+
+std::string unit_text(const check_result& r) {
+  if (r.kind == check_kind::lengths || r.kind == check_kind::inverse) return "relative to L";
+  const char* of = r.kind == check_kind::times ? "the value range" : "size";
+  switch (r.unit) {
+    case value_unit::ulp_double: return std::string("ulps of double x ") + of;
+    case value_unit::ulp_float: return std::string("ulps of float x ") + of;
+    case value_unit::rel: return std::string("relative to ") + of;
+    case value_unit::abs: return "absolute";
   }
   return "?";
 }
@@ -343,18 +467,41 @@ std::vector<check_result> run_checks(const io::field& spec, const std::vector<ch
       if (row.size() != in.table.columns.size())
         throw invalid_input(in.table.where(r) + ": " + std::to_string(row.size()) + " values for " +
                             std::to_string(in.table.columns.size()) + " columns");
-      for (std::size_t c = 0; c < row.size(); ++c)
-        if (!std::isfinite(row[c])) throw invalid_input(in.table.where(r, c) + ": " + num(row[c]) + " is not finite");
+      for (std::size_t c = 0; c < row.size(); ++c) {
+        if (std::isfinite(row[c])) continue;
+        // An empty derivative cell of a channel's times (read as NaN): not given at that time.
+        const std::string& name = in.table.columns[c];
+        if (std::isnan(row[c]) && by_time(spec, in) && (name == "dvalue" || name == "d2value")) continue;
+        const std::string what = !std::isnan(row[c])       ? num(row[c])
+                                 : in.table.digits.empty() ? std::string("nan")
+                                                           : std::string("an empty cell");
+        throw invalid_input(in.table.where(r, c) + ": " + what + " is not finite");
+      }
     }
+  std::vector<check_result> out(inputs.size());
+  std::vector<const check_input*> by_u;
+  std::vector<std::size_t> at;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    if (by_time(spec, inputs[i])) {
+      out[i] = detail::check_times(spec, inputs[i].table, options);
+      summarize(out[i], options.worst);
+    } else {
+      by_u.push_back(&inputs[i]);
+      at.push_back(i);
+    }
+  }
+  if (by_u.empty()) return out;
+  std::vector<check_result> checked;
   switch (io::spec_dimension(spec)) {
-    case 1: return run_dim<1>(spec, inputs, options);
-    case 2: return run_dim<2>(spec, inputs, options);
-    case 3: return run_dim<3>(spec, inputs, options);
+    case 1: checked = run_dim<1>(spec, by_u, options); break;
+    case 2: checked = run_dim<2>(spec, by_u, options); break;
+    case 3: checked = run_dim<3>(spec, by_u, options); break;
     default:
       spec.fail("describes a " + std::to_string(io::spec_dimension(spec)) +
                 "D curve: check measures 1D to 3D curves (the 50-digit reference is built for those)");
   }
-  return {};
+  for (std::size_t k = 0; k < checked.size(); ++k) out[at[k]] = std::move(checked[k]);
+  return out;
 }
 
 check_result run_check(const io::field& spec, check_kind kind, const csv_table& table, const check_options& options) {
@@ -368,7 +515,7 @@ nlohmann::json to_json(const check_result& r) {
   nlohmann::json j{{"kind", std::string(to_string(r.kind))},
                    {"file", r.file},
                    {"length", r.length},
-                   {"unit", r.kind == check_kind::values ? "ulps of size" : "relative to L"},
+                   {"unit", unit_text(r)},
                    {"summary",
                     {{"rows", r.summary.rows},
                      {"max", finite_or_null(r.summary.max)},
@@ -378,6 +525,19 @@ nlohmann::json to_json(const check_result& r) {
                    {"worst", worst},
                    {"rows", rows},
                    {"records", r.records}};
+  if (r.kind == check_kind::values || r.kind == check_kind::times) {
+    j["unit_id"] = std::string(to_string(r.unit));
+    j["unit_reason"] = r.unit_reason;
+    if (!r.digits_warning.empty()) j["digits_warning"] = r.digits_warning;
+  }
+  if (r.kind == check_kind::times) {
+    j["against"] = r.against;
+    j["value_range"] = r.size;
+    j["unchecked"] = r.unchecked;
+    nlohmann::json d = nlohmann::json::array();
+    for (double s : r.derivative_sizes) d.push_back(finite_or_null(s));
+    j["derivative_sizes"] = d;
+  }
   if (r.kind == check_kind::values) {
     j["size"] = r.size;
     nlohmann::json d = nlohmann::json::array();
@@ -396,10 +556,10 @@ std::vector<std::string> rows_over(const check_result& r, double max_error) {
       case check_kind::values: at = "u = " + num(row.u); break;
       case check_kind::lengths: at = "u0 = " + num(row.u) + ", u1 = " + num(row.u1); break;
       case check_kind::inverse: at = "s = " + num(row.s) + ", u = " + num(row.u); break;
+      case check_kind::times: at = "t = " + num(row.t); break;
     }
     out.push_back(r.file + ": row " + std::to_string(row.line) + " (" + at + "): error " + num(row.error, 3) +
-                  " > allowed " + num(max_error, 3) +
-                  (r.kind == check_kind::values ? " ulps of size" : " relative to L"));
+                  " > allowed " + num(max_error, 3) + " " + unit_text(r));
   }
   return out;
 }

@@ -7,7 +7,9 @@
 //   values   u, then the coordinates x[,y[,z]] (by the spec's dimension), optionally s (the arc
 //            length from the domain's start) and derivative columns: dx,dy,... (first), d2x,...
 //            (second), d3x,... (third); a derivative order present needs every coordinate.
-//            (`t` instead of `u` is for time-based specs, none of which exist yet: an error.)
+//   times    a channel spec's values by time (any tool but glTF rotations): t, value, optionally
+//            dvalue and d2value (the columns `curvebench sample` writes for a channel); the
+//            values kind of a channel spec whose table has a t column.
 //   lengths  u0, u1, length (the user's arc length from u0 to u1)
 //   inverse  s, u (the user's parameter at arc length s from the domain's start)
 // Errors per row ("error" is the unit --max-error uses):
@@ -23,6 +25,19 @@
 //            relative = the same over the segment's own length (infinite for an empty segment
 //            with a non-zero length).
 //   inverse  error = relative = |s(u_user) - s| / L (the u_of_s measure of the accuracy runner).
+//   times    abs = |value - V(t)|, V the channel at 50 digits at the user's t (exactly as read): the
+//            truth (the spec's tool rules, the time solver "exact"), or with against = tool the
+//            tool's own evaluation (its default or the spec's solver, in its storage precision:
+//            float for Blender, at float(t)); error = abs in the unit, scale = the value range of
+//            the truth over the rows' times and 65 times across the keys (max |V| when the range
+//            is 0, 1 when that is 0 too); dvalue, d2value in the unit of their own scale (a cell
+//            where the truth's derivative is unbounded is not checked: NaN in derivative_errors,
+//            counted in unchecked). time_error = abs / |V'(t)|: how late or early the user's value
+//            is, to first order (infinite where V' = 0 or is unbounded).
+// Units of the values kinds (value_unit): ulp-double (eps(double) x scale), ulp-float
+// (eps(float) x scale), rel (x scale), abs; by default ulp-double unless every value cell of the
+// table carries at most 9 significant digits (a float's %.9g), then ulp-float (csv_table::digits;
+// tables built in memory: ulp-double). The records stay in ulps of double whatever the unit.
 // Every difference is taken in 50 digits. Parameters outside the domain, s outside [0, L], unknown
 // or missing columns: invalid_input naming the file, row, column and value.
 //
@@ -40,37 +55,56 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace curvebench::harness {
 
-enum class check_kind { values, lengths, inverse };
+enum class check_kind { values, lengths, inverse, times };
 
-/// "values", "lengths", "inverse".
+/// "values", "lengths", "inverse", "times".
 [[nodiscard]] std::string_view to_string(check_kind k);
 
+/// The unit of a values or times check's errors (see the top of this file).
+enum class value_unit { ulp_double, ulp_float, rel, abs };
+/// "ulp-double", "ulp-float", "rel", "abs".
+[[nodiscard]] std::string_view to_string(value_unit u);
+/// The unit of a name above; invalid_input naming the argument otherwise.
+[[nodiscard]] value_unit value_unit_of(std::string_view name, const std::string& argument);
+/// An absolute error in unit u for a quantity of size `scale`.
+[[nodiscard]] double in_unit(double absolute, double scale, value_unit u);
+
+/// What a times check compares with: the channel's truth, or the tool's own evaluation.
+enum class check_against { truth, tool };
+
 struct check_options {
-  std::string name = "values";      ///< the subject's name: the records' "method"
-  std::string case_name = "check";  ///< the records' "case" (the tool uses the spec file's stem)
-  std::string group = "subject";    ///< the records' "group"
-  std::size_t worst = 5;            ///< how many worst rows check_result::worst lists
+  std::string name = "values";                   ///< the subject's name: the records' "method"
+  std::string case_name = "check";               ///< the records' "case" (the tool uses the spec file's stem)
+  std::string group = "subject";                 ///< the records' "group"
+  std::size_t worst = 5;                         ///< how many worst rows check_result::worst lists
+  std::optional<value_unit> unit;                ///< values and times: the unit (none: chosen from the digits)
+  check_against against = check_against::truth;  ///< times: what the user's values are compared with
   /// Called after each row with (rows done, rows in the file, the file): the tool's progress line.
   std::function<void(std::size_t, std::size_t, const std::string&)> on_row;
 };
 
 /// The errors of one row (see the top of this file for the units).
 struct check_row {
-  std::size_t line = 0;                 ///< the row's 1-based line in its file
-  double u = 0;                         ///< values, inverse: the row's (user's) u; lengths: u0
-  double u1 = 0;                        ///< lengths: u1 (0 otherwise)
-  double s = 0;                         ///< inverse: the target s; values: the user's s (when given)
-  double error = 0;                     ///< values: ulps of size (largest over point and derivatives); else / L
-  double relative = 0;                  ///< values: error x eps(double); lengths: per segment; inverse: = error
-  double point_ulps = 0;                ///< values: the point's error in ulps of size
-  std::vector<double> derivative_ulps;  ///< values: order k = 1..K at index k - 1 (empty without)
-  double s_error = -1;                  ///< values with an s column: |s_user - s(u)| / L; -1 without
+  std::size_t line = 0;                   ///< the row's 1-based line in its file
+  double u = 0;                           ///< values, inverse: the row's (user's) u; lengths: u0
+  double u1 = 0;                          ///< lengths: u1 (0 otherwise)
+  double s = 0;                           ///< inverse: the target s; values: the user's s (when given)
+  double error = 0;                       ///< values: ulps of size (largest over point and derivatives); else / L
+  double relative = 0;                    ///< values: error x eps(double); lengths: per segment; inverse: = error
+  double point_ulps = 0;                  ///< values: the point's error in ulps of size
+  std::vector<double> derivative_ulps;    ///< values: order k = 1..K at index k - 1 (empty without)
+  double s_error = -1;                    ///< values with an s column: |s_user - s(u)| / L; -1 without
+  double t = 0;                           ///< times: the row's time
+  double absolute = 0;                    ///< values: |p - P|_inf; times: |value - V(t)|
+  std::vector<double> derivative_errors;  ///< times: dvalue, d2value in the unit (NaN: not checked)
+  double time_error = 0;                  ///< times: abs / |V'(t)| (infinite where V' is 0 or unbounded)
 };
 
 struct check_summary {
@@ -88,6 +122,11 @@ struct check_result {
   double size = 0;                                   ///< values: the points' size
   std::vector<double> derivative_sizes;              ///< values: the size of derivative k at index k - 1
   double length = 0;                                 ///< the curve's total length L (rounded)
+  value_unit unit = value_unit::ulp_double;          ///< values, times: the unit of error
+  std::string unit_reason;                           ///< values, times: why that unit ("--unit", "17 digits")
+  std::string digits_warning;                        ///< values, times: the CSV cannot carry the unit's precision
+  std::string against;                               ///< times: what was compared with, in words
+  std::size_t unchecked = 0;                         ///< times: derivative cells not checked (unbounded)
   nlohmann::json records = nlohmann::json::array();  ///< accuracy.json records (see above)
 };
 
@@ -105,6 +144,20 @@ struct check_input {
 [[nodiscard]] check_result run_check(const io::field& spec, check_kind kind, const csv_table& table,
                                      const check_options& options = {});
 
+/// A channel spec's values at times, in double: the truth (the channel at 50 digits, rounded to
+/// double) or the tool's own evaluation (its solver, its storage precision; a float tool's values
+/// are floats). `curvebench sample` prints them; check_times compares with the same at 50 digits.
+struct channel_values {
+  /// The value (order 0) or time derivative (orders 1, 2) at t; std::nullopt where it is unbounded
+  /// or not representable (a circ ease's slope at its key), +-inf for a vertical tangent's slope.
+  std::function<std::optional<double>(double, int)> at;
+  std::string what;          ///< in words, for the output's header
+  int bits = 64;             ///< 32: the values are floats (a float tool's own evaluation)
+  std::vector<double> keys;  ///< the channel's key times, in order
+};
+/// Throws spec_error for a glTF rotation channel (quaternion values) and for bad specs.
+[[nodiscard]] channel_values channel_values_of(const io::field& spec, check_against against);
+
 /// One record of a subject (a user's implementation) in the accuracy.json format, "subject": true.
 [[nodiscard]] nlohmann::json subject_record(const std::string& case_name, const std::string& group,
                                             std::string_view quantity, const std::string& method,
@@ -114,8 +167,11 @@ struct check_input {
 /// "rows": [{"line", "u", ..., "error", "relative", ...}], "records": [...]}.
 [[nodiscard]] nlohmann::json to_json(const check_result& r);
 
+/// The unit of r's errors in words: "ulps of double x size", "relative to L", ...
+[[nodiscard]] std::string unit_text(const check_result& r);
+
 /// One message per row whose error exceeds max_error ("FILE: row N (u = ...): error E > allowed A
-/// ulps of size" or "... relative to L"); empty when none does.
+/// ulps of double x size" or "... relative to L"); empty when none does.
 [[nodiscard]] std::vector<std::string> rows_over(const check_result& r, double max_error);
 
 }  // namespace curvebench::harness

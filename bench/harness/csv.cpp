@@ -4,9 +4,11 @@
 
 #include "curvebench/core/error.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <unordered_map>
 
@@ -41,6 +43,19 @@ std::string shown_column(std::string_view name) {
   return std::string(name.substr(0, max)) + "...";
 }
 
+/// The significant digits of a number's text: those of its mantissa from the first non-zero one.
+int significant_digits(std::string_view text) {
+  int n = 0;
+  bool started = false;
+  for (char ch : text) {
+    if (ch == 'e' || ch == 'E') break;
+    if (ch < '0' || ch > '9') continue;
+    if (ch != '0') started = true;
+    if (started) ++n;
+  }
+  return n;
+}
+
 }  // namespace
 
 std::string quote_cell(std::string_view text) {
@@ -73,7 +88,7 @@ std::string csv_table::where(std::size_t r, std::size_t c) const {
   return w;
 }
 
-csv_table parse_csv(std::string_view text, const std::string& file) {
+csv_table parse_csv(std::string_view text, const std::string& file, bool empty_as_nan) {
   csv_table t;
   t.file = file;
   std::size_t line_no = 0, pos = 0;
@@ -84,7 +99,7 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
     const std::string_view line = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
     pos = nl == std::string_view::npos ? text.size() : nl + 1;
     ++line_no;
-    if (trim(line).empty()) continue;
+    if (trim(line).empty() || trim(line).front() == '#') continue;
     const std::vector<std::string_view> cells = split(line);
     const std::string row_name = file + ": row " + std::to_string(line_no);
     if (!header) {
@@ -103,6 +118,7 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
                               quote_cell(cells[c]) + " appears twice");
         t.columns.emplace_back(cells[c]);
       }
+      t.digits.assign(t.columns.size(), 0);
       header = true;
       continue;
     }
@@ -115,10 +131,16 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
                           quote_cell(cells[t.columns.size()]) + " has no column (" + std::to_string(cells.size()) +
                           " values, but the header names " + std::to_string(t.columns.size()) + " columns)");
     std::vector<double> row(cells.size());
-    for (std::size_t c = 0; c < cells.size(); ++c)
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (empty_as_nan && cells[c].empty()) {
+        row[c] = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
       if (!parse_finite(cells[c], row[c]))
         throw invalid_input(row_name + ", column " + shown_column(t.columns[c]) + ": " + quote_cell(cells[c]) +
                             " is not a finite number");
+      t.digits[c] = std::max(t.digits[c], significant_digits(cells[c]));
+    }
     t.rows.push_back(std::move(row));
     t.lines.push_back(line_no);
   }
@@ -127,6 +149,8 @@ csv_table parse_csv(std::string_view text, const std::string& file) {
   return t;
 }
 
-csv_table read_csv(const std::string& path) { return parse_csv(read_input_file(path), path); }
+csv_table read_csv(const std::string& path, bool empty_as_nan) {
+  return parse_csv(read_input_file(path), path, empty_as_nan);
+}
 
 }  // namespace curvebench::harness

@@ -5,7 +5,8 @@
 // too many values, a repeated or empty column name, an empty file, a file with a header only.
 // Messages show column names and cells cut to 40 characters, so their size does not grow with the
 // input's. Cost: linear in the text (repeated names are found by hashing).
-// Blank lines are skipped. Which columns a check needs is the check's business (harness/check.hpp).
+// Blank lines and lines starting with '#' (a comment, as `curvebench sample` writes one first) are
+// skipped. Which columns a check needs is the check's business (harness/check.hpp).
 #pragma once
 
 #include <cstddef>
@@ -21,6 +22,9 @@ struct csv_table {
   std::vector<std::string> columns;       ///< the header's names, in order
   std::vector<std::vector<double>> rows;  ///< each row has columns.size() values
   std::vector<std::size_t> lines;         ///< the 1-based line of each row in the file
+  /// Per column, the most significant digits a cell of it is written with ("0.0632506": 6,
+  /// "1.5e-3": 2, trailing zeros count); empty for a table built in memory.
+  std::vector<int> digits;
 
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   /// The index of column `name`, or npos.
@@ -29,10 +33,12 @@ struct csv_table {
   [[nodiscard]] std::string where(std::size_t r, std::size_t c = npos) const;
 };
 
-/// Parses CSV text; `file` names it in errors.
-[[nodiscard]] csv_table parse_csv(std::string_view text, const std::string& file);
+/// Parses CSV text; `file` names it in errors. With empty_as_nan an empty cell is read as NaN
+/// (a value not given: `curvebench sample` leaves a derivative cell empty where the derivative is
+/// unbounded), which the reader of the table must refuse where it needs a value.
+[[nodiscard]] csv_table parse_csv(std::string_view text, const std::string& file, bool empty_as_nan = false);
 /// Reads and parses the file at `path` (invalid_input when it cannot be read).
-[[nodiscard]] csv_table read_csv(const std::string& path);
+[[nodiscard]] csv_table read_csv(const std::string& path, bool empty_as_nan = false);
 
 /// The text of a cell for an error message: quoted, cut to 40 characters ("..." appended).
 [[nodiscard]] std::string quote_cell(std::string_view text);

@@ -6,6 +6,7 @@
 #include "harness/accuracy.hpp"
 #include "harness/cases.hpp"
 #include "harness/check.hpp"
+#include "harness/check_detail.hpp"
 #include "harness/files.hpp"
 #include "harness/gate.hpp"
 #include "harness/sweeps.hpp"
@@ -14,9 +15,12 @@
 #include "curvebench/io/spec.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 namespace curvebench::harness {
@@ -156,18 +160,72 @@ json measure(const case_info& info, const subject<Dim>& s, const subject_options
   return out;
 }
 
-}  // namespace
-
-template <int Dim>
-json measure_case(const std::string& cases_dir, const std::string& case_name, const subject<Dim>& s,
-                  const subject_options& options) {
-  for (const case_info& c : load_cases(cases_dir))
-    if (c.name == case_name) return measure<Dim>(c, s, options);
-  throw invalid_input("case " + case_name + ": no such case in " + cases_dir + " (curvebench list cases)");
+/// The results JSON around a measurement's records (its case entry given).
+json results_of(json case_entry, const std::vector<check_result>& results, const std::string& subject, bool quick) {
+  json out{{"schema", 1},
+           {"suite", {{"name", suite_name}, {"version", suite_version}, {"cases", 1}}},
+           {"records", json::array()},
+           {"orders", json::array()},
+           {"cases", json::array({std::move(case_entry)})}};
+  for (const check_result& r : results)
+    for (const json& rec : r.records) out["records"].push_back(rec);
+  out["context"] = {{"subject", subject}, {"compiler", compiler_id()}, {"quick", quick}};
+  return out;
 }
 
-template <int Dim>
-json measure_spec(const json& spec, const subject<Dim>& s, const subject_options& options, const std::string& file) {
+json measure_channel(const case_info& info, const channel_subject& s, const subject_options& o) {
+  subject<1> named;  // the name's rules are the curve subject's
+  named.name = s.name;
+  named.eval = [](double) { return point<double, 1>{}; };
+  check_subject(named);
+  if (!s.value) throw invalid_input("subject " + s.name + ": has no value function to measure");
+  const io::field spec = io::root(info.spec, info.file);
+  if (!detail::is_channel_spec(spec))
+    throw invalid_input(info.file + ": case " + info.name +
+                        " is not a channel (\"type\": \"channel\"): a "
+                        "channel subject measures a keyframe channel by time");
+  const channel_values ch = channel_values_of(spec, o.against);
+  // The channel sweep's times: across the keys and a quarter of their span beyond each end, and
+  // the key times themselves.
+  const double first = ch.keys.empty() ? 0.0 : ch.keys.front(), last = ch.keys.empty() ? 1.0 : ch.keys.back();
+  const double span = last - first;
+  const double lo = span > 0 ? first - span / 4 : first - 1, hi = span > 0 ? last + span / 4 : last + 1;
+  std::vector<double> ts = sample_parameters(lo, hi, settings(o.quick).eval_params);
+  ts.insert(ts.end(), ch.keys.begin(), ch.keys.end());
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+  csv_table t =
+      table(s.name, "value",
+            s.slope ? std::vector<std::string>{"t", "value", "dvalue"} : std::vector<std::string>{"t", "value"});
+  for (double x : ts) {
+    std::vector<double> row{x, call(s.name, "value(t = " + num(x) + ")", s.value, x)};
+    if (s.slope) {
+      // Where the channel's slope is unbounded or infinite there is nothing to compare: not asked.
+      const std::optional<double> d = ch.at(x, 1);
+      row.push_back(d && std::isfinite(*d) ? call(s.name, "slope(t = " + num(x) + ")", s.slope, x)
+                                           : std::numeric_limits<double>::quiet_NaN());
+    }
+    add_row(t, std::move(row));
+  }
+  check_options co;
+  co.name = s.name;
+  co.case_name = info.name;
+  co.group = o.group.empty() ? info.group : o.group;
+  co.against = o.against;
+  co.unit = value_unit::ulp_double;
+  const std::vector<check_result> results = run_checks(spec, {{check_kind::times, std::move(t)}}, co);
+  return results_of({{"name", info.name},
+                     {"group", info.group},
+                     {"reason", info.reason},
+                     {"family", "channel"},
+                     {"dimension", 1},
+                     {"against", results.front().against},
+                     {"value_range", results.front().size}},
+                    results, s.name, o.quick);
+}
+
+/// The case of a spec given in JSON (its name, group and reason when it has them).
+case_info spec_case(const json& spec, const std::string& file) {
   case_info c;
   c.spec = spec;
   c.file = file;
@@ -176,7 +234,36 @@ json measure_spec(const json& spec, const subject<Dim>& s, const subject_options
   c.group = root.has("group") ? root.member("group").string() : "subject";
   c.reason = root.has("reason") ? root.member("reason").string() : "";
   c.dimension = io::spec_dimension(root);
-  return measure<Dim>(c, s, options);
+  return c;
+}
+
+/// The case named case_name in cases_dir.
+case_info find_case(const std::string& cases_dir, const std::string& case_name) {
+  for (const case_info& c : load_cases(cases_dir))
+    if (c.name == case_name) return c;
+  throw invalid_input("case " + case_name + ": no such case in " + cases_dir + " (curvebench list cases)");
+}
+
+}  // namespace
+
+json measure_case(const std::string& cases_dir, const std::string& case_name, const channel_subject& s,
+                  const subject_options& options) {
+  return measure_channel(find_case(cases_dir, case_name), s, options);
+}
+
+json measure_spec(const json& spec, const channel_subject& s, const subject_options& options, const std::string& file) {
+  return measure_channel(spec_case(spec, file), s, options);
+}
+
+template <int Dim>
+json measure_case(const std::string& cases_dir, const std::string& case_name, const subject<Dim>& s,
+                  const subject_options& options) {
+  return measure<Dim>(find_case(cases_dir, case_name), s, options);
+}
+
+template <int Dim>
+json measure_spec(const json& spec, const subject<Dim>& s, const subject_options& options, const std::string& file) {
+  return measure<Dim>(spec_case(spec, file), s, options);
 }
 
 std::vector<std::string> subject_gate(const json& results, const std::string& thresholds_path) {

@@ -3,6 +3,7 @@
 //   eval     u -> P(u)            your curve (any callable, or a curvebench::curve via curve_subject)
 //   length   (u0, u1) -> length    your arc length between two parameters
 //   inverse  s -> u                your parameter at arc length s from the domain's start
+// or, for a keyframe channel's case, a channel_subject: t -> value (and optionally its slope).
 // measure_case / measure_spec sample the case's parameters as the accuracy runner does
 // (harness/sweeps.hpp: the eval sweep's sample_parameters, the s(u) and u(s) sweeps' counts of
 // harness/sweep.hpp), call your functions there, and measure them through the check core
@@ -27,6 +28,8 @@
 //   h::write_results(results, "subject.json");            // harness/writers.hpp
 //   for (const auto& b : h::subject_gate(results, "thresholds.json")) std::puts(b.c_str());
 #pragma once
+
+#include "harness/check.hpp"
 
 #include "curvebench/core/curve.hpp"
 #include "curvebench/core/point.hpp"
@@ -63,8 +66,20 @@ requires std::same_as<typename C::real_type, double>
   return s;
 }
 
+/// Your keyframe channel or easing (a channel spec's case): a name (as subject's) and its value at
+/// time t, optionally its slope dvalue/dt. It is called at times across the keys and a quarter of
+/// their span beyond each end (extrapolation included) and at the key times.
+struct channel_subject {
+  std::string name;
+  std::function<double(double)> value;  ///< t -> value
+  std::function<double(double)> slope;  ///< t -> dvalue/dt (optional)
+};
+
 struct subject_options {
-  bool quick = false;         ///< the quick sweep's sample counts (65 eval, 9 s(u)/u(s); full: 257, 33)
+  bool quick = false;  ///< the quick sweep's sample counts (65 eval, 9 s(u)/u(s); full: 257, 33)
+  /// A channel subject's reference: the channel's truth, or the tool's own evaluation (what the
+  /// tool shows; harness/check.hpp).
+  check_against against = check_against::truth;
   std::string group;          ///< the records' group (default: the case's group)
   bool with_methods = false;  ///< also curvebench's own records for the case (the accuracy runner's
                               ///< sweeps, seconds), so that the results compare both side by side
@@ -83,6 +98,15 @@ template <int Dim>
 /// optional: they default to "spec", "subject" and ""). `file` names the spec in errors.
 template <int Dim>
 [[nodiscard]] nlohmann::json measure_spec(const nlohmann::json& spec, const subject<Dim>& s,
+                                          const subject_options& options = {}, const std::string& file = "spec");
+
+/// A channel subject on a channel case or spec: records quantity eval (the value; setting
+/// "derivative=1" for the slope) in ulps of double of the channel's value range, measured through
+/// the check core's times check (harness/check.hpp) against options.against. A row whose value is
+/// not finite is an error naming the subject and t.
+[[nodiscard]] nlohmann::json measure_case(const std::string& cases_dir, const std::string& case_name,
+                                          const channel_subject& s, const subject_options& options = {});
+[[nodiscard]] nlohmann::json measure_spec(const nlohmann::json& spec, const channel_subject& s,
                                           const subject_options& options = {}, const std::string& file = "spec");
 
 /// The gate (harness/gate.hpp) on results with the thresholds file at `thresholds_path` (its rules

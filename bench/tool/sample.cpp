@@ -3,6 +3,8 @@
 // --range), as CSV on stdout with the column names `curvebench check --values` reads back.
 #include "tool/tool.hpp"
 
+#include "harness/check.hpp"
+
 #include "harness/csv.hpp"
 #include "harness/length_methods.hpp"
 #include "harness/vocabulary.hpp"
@@ -120,8 +122,9 @@ std::vector<parameter> parse_at(const std::string& text) {
   return out;
 }
 
-/// One value per line, or a CSV whose header names a u column (its other columns are ignored).
-std::vector<parameter> parse_at_file(const std::string& path) {
+/// One value per line, or a CSV whose header names the parameter's column (u, or t for a channel
+/// spec: the CSV `sample` writes); its other columns are ignored, lines starting with # too.
+std::vector<parameter> parse_at_file(const std::string& path, const std::string& name) {
   const std::string text = read_file(path);
   std::vector<parameter> out;
   std::size_t line_no = 0, u_column = std::string::npos, columns = 1;
@@ -130,7 +133,8 @@ std::vector<parameter> parse_at_file(const std::string& path) {
     ++line_no;
     std::string line = raw;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    const auto first_char = line.find_first_not_of(" \t");
+    if (first_char == std::string::npos || line[first_char] == '#') continue;
     const std::string row = "--at-file " + path + ": row " + std::to_string(line_no);
     const std::vector<std::string> cells = split(line, ',');
     double u = 0;
@@ -140,12 +144,13 @@ std::vector<parameter> parse_at_file(const std::string& path) {
         columns = cells.size();
         for (std::size_t c = 0; c < cells.size(); ++c) {
           const auto b = cells[c].find_first_not_of(" \t"), e = cells[c].find_last_not_of(" \t");
-          const std::string name = b == std::string::npos ? "" : cells[c].substr(b, e - b + 1);
-          if (name == "u") u_column = c;
+          const std::string cell = b == std::string::npos ? "" : cells[c].substr(b, e - b + 1);
+          if (cell == name) u_column = c;
         }
         if (u_column == std::string::npos)
-          throw invalid_input(row + ": " + quote_cell(line) +
-                              " is neither a finite number nor a CSV header naming a u column");
+          throw invalid_input(row + ": " + quote_cell(line) + " is neither a finite number nor a CSV header naming a " +
+                              name + " column" +
+                              (name == "t" ? " (this spec is a channel: its parameter is time t)" : ""));
         continue;
       }
       u_column = 0;
@@ -153,7 +158,7 @@ std::vector<parameter> parse_at_file(const std::string& path) {
     if (cells.size() != columns)
       throw invalid_input(row + ": " + std::to_string(cells.size()) + " values, expected " + std::to_string(columns) +
                           (columns == 1 ? " (one value per line)" : " (as many as the header names)"));
-    const std::string where = row + (columns > 1 ? ", column u" : "");
+    const std::string where = row + (columns > 1 ? ", column " + name : "");
     if (!parse_finite(cells[u_column], u))
       throw invalid_input(where + ": " + quote_cell(cells[u_column]) + " is not a finite number");
     out.push_back({u, where});
@@ -262,10 +267,11 @@ std::vector<parameter> parse_range(const std::string& text, const std::string& o
   return out;
 }
 
-/// The parameters that --at, --at-file, --range or --frames give (empty when none does).
-std::vector<parameter> given_parameters(const sample_args& a) {
+/// The parameters that --at, --at-file, --range or --frames give (empty when none does); `name`
+/// is the parameter's column in an --at-file CSV (u, or t for a channel).
+std::vector<parameter> given_parameters(const sample_args& a, const std::string& name = "u") {
   if (!a.at.empty()) return parse_at(a.at);
-  if (!a.at_file.empty()) return parse_at_file(a.at_file);
+  if (!a.at_file.empty()) return parse_at_file(a.at_file, name);
   if (!a.range.empty()) return parse_range(a.range);
   if (!a.frames.empty()) return parse_range(a.frames, "--frames", 1.0);
   return {};
@@ -378,53 +384,56 @@ void sample_rotation(const io::field& spec, const sample_args& a, const std::vec
   }
 }
 
-/// A channel spec at given times: t, the value and its time derivatives (orders 1..min(K, 2)) under
-/// the spec's tool (io/families/channel.hpp). A vertical tangent's slope is printed as inf or -inf.
+/// A channel spec at given times: t, the value and its time derivatives (orders 1..min(K, 2)):
+/// the channel's truth rounded to double, or with --as-tool the tool's own evaluation
+/// (harness::channel_values_of), said by a first comment line. A derivative cell is empty where
+/// the derivative is infinite or unbounded (said on stderr), as `check` reads it back.
 void sample_times(const io::field& spec, const sample_args& a) {
-  const std::vector<parameter> given = given_parameters(a);
+  const std::vector<parameter> given = given_parameters(a, "t");
   if (a.derivatives > 2)
     throw invalid_input("--derivatives " + std::to_string(a.derivatives) +
                         ": a channel's time derivatives go to order 2 (d2value)");
-  if (io::is_gltf_rotation(spec)) return sample_rotation(spec, a, given);
-  const io::channel_model<double> ch = io::channel_model_of_spec<double>(spec);
+  if (io::is_gltf_rotation(spec)) {
+    if (a.as_tool) throw invalid_input("--as-tool: a glTF rotation is printed as its sampler evaluates it already");
+    return sample_rotation(spec, a, given);
+  }
+  const harness::channel_values ch =
+      harness::channel_values_of(spec, a.as_tool ? harness::check_against::tool : harness::check_against::truth);
+  std::cout << "# curvebench sample: " << ch.what
+            << (a.as_tool ? "" : ", rounded to double; --as-tool for the tool's own evaluation") << "\n";
   std::cout << "t,value";
   for (int k = 1; k <= a.derivatives; ++k) std::cout << (k == 1 ? ",dvalue" : ",d2value");
-  std::cout << "\n" << std::setprecision(17);
+  std::cout << "\n" << std::setprecision(ch.bits == 32 ? 9 : 17);
   progress shown("sample", given.size(), a.quiet);
-  // A derivative that is unbounded at t (a circ ease at its key, a cusp) or that overflows double
-  // (keys 1e308 apart) leaves its cell empty and is reported on stderr: the values, which are
-  // finite, are still printed and the CSV stays parseable. An infinite derivative prints inf or -inf.
+  // A derivative that is infinite or unbounded at t (a vertical tangent, a circ ease at its key) or
+  // not representable leaves its cell empty and is reported on stderr: the values, which are
+  // finite, are still printed and `check` reads the CSV back (an empty cell: not given there).
   std::size_t empty_cells = 0;
   std::string first_empty;
   for (std::size_t i = 0; i < given.size(); ++i) {
     shown.update(i);
     const double t = given[i].u;
-    const double v = ch.at(t, 0);
-    if (!std::isfinite(v))
-      throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): the value is " + to_text(v));
-    std::cout << shortest(t) << "," << v;
+    const std::optional<double> v = ch.at(t, 0);
+    if (!v || !std::isfinite(*v))
+      throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) +
+                          "): the value is not representable in double");
+    std::cout << shortest(t) << "," << *v;
     for (int k = 1; k <= a.derivatives; ++k) {
-      std::string why;
-      double d = std::numeric_limits<double>::quiet_NaN();
-      try {
-        d = ch.at(t, k);
-        if (std::isnan(d)) why = "not representable in double (an overflow in its arithmetic)";
-      } catch (const std::domain_error& e) {
-        why = e.what();
-      }
       std::cout << ",";
-      if (why.empty()) {
-        std::cout << d;
+      const std::optional<double> d = ch.at(t, k);
+      if (d && std::isfinite(*d)) {
+        std::cout << *d;
         continue;
       }
       if (empty_cells++ == 0)
-        first_empty = given[i].where + " (t = " + to_text(t) + "), " + (k == 1 ? "dvalue" : "d2value") + ": " + why;
+        first_empty = given[i].where + " (t = " + to_text(t) + "), " + (k == 1 ? "dvalue" : "d2value") + ": " +
+                      (d ? "infinite (a vertical tangent)" : "unbounded or not representable in double");
     }
     std::cout << "\n";
   }
   if (empty_cells > 0)
     std::cerr << "curvebench: note: " << empty_cells << " derivative cell" << (empty_cells == 1 ? " is" : "s are")
-              << " empty (unbounded or not representable); the first: " << first_empty << "\n";
+              << " empty (infinite, unbounded or not representable); the first: " << first_empty << "\n";
 }
 
 }  // namespace
@@ -451,7 +460,7 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
                  ->check(non_empty());
   auto* at_file = samp->add_option("--at-file", a.at_file,
                                    "evaluate at the parameters of FILE: one value per line, or a CSV whose header "
-                                   "names a u column (other columns ignored)")
+                                   "names a u column (t for a channel spec; other columns and # lines ignored)")
                       ->check(CLI::ExistingFile);
   auto* range = samp->add_option("--range", a.range,
                                  "evaluate at A, A+STEP, ... up to B (inclusive when B lies on the grid): A:B:STEP");
@@ -467,8 +476,12 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
                    "derivative columns of orders 1..K (0-3; default 1): dx,dy for the first, d2x,d2y, d3x,d3y")
       ->check(CLI::Range(0, 3));
   samp->add_flag("--quiet", a.quiet, "no progress lines on stderr (printed once a run takes over a second)");
+  samp->add_flag("--as-tool", a.as_tool,
+                 "channel specs: print what the tool itself evaluates (its time solver, in its precision: WebKit's "
+                 "table and Newton for css, float32 for blender) instead of the channel's exact value");
   samp->footer(
-      example("curvebench sample bench/cases/arch_cubic_bezier.json --at 0,0.25,0.5 --derivatives 2 > values.csv"));
+      example("curvebench sample bench/cases/arch_cubic_bezier.json --at 0,0.25,0.5 --derivatives 2 > values.csv") +
+      example("curvebench sample bench/cases/css_overshoot.json --frames 0:1:0.125 --as-tool > easing.csv"));
   return samp;
 }
 

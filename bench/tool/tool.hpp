@@ -100,12 +100,13 @@ struct sample_args {
   std::string method;  ///< u(s) method for --by arclength (add_sample sets hermite_table)
   bool polish = false;
   std::string ease = "linear";
-  std::string at;       ///< --at V1,V2,...
-  std::string at_file;  ///< --at-file FILE
-  std::string range;    ///< --range A:B:STEP
-  std::string frames;   ///< --frames A:B[:STEP] (STEP 1 by default)
-  int derivatives = 1;  ///< derivative columns: orders 1..K
-  bool quiet = false;   ///< no progress on stderr
+  std::string at;        ///< --at V1,V2,...
+  std::string at_file;   ///< --at-file FILE
+  std::string range;     ///< --range A:B:STEP
+  std::string frames;    ///< --frames A:B[:STEP] (STEP 1 by default)
+  int derivatives = 1;   ///< derivative columns: orders 1..K
+  bool quiet = false;    ///< no progress on stderr
+  bool as_tool = false;  ///< channels: the tool's own evaluation instead of the truth
 };
 /// The most samples --count asks for and parameters --at, --at-file and --range may give.
 inline constexpr std::size_t max_sample_values = 1000000;
@@ -119,7 +120,10 @@ struct check_args {
   std::string values, lengths, inverse;
   std::string name = "values";
   bool json = false;
-  double max_error = -1;  ///< < 0: none
+  double max_error = -1;  ///< < 0: none; every kind's limit unless its own is given
+  double max_value_error = -1, max_length_error = -1, max_inverse_error = -1;  ///< < 0: --max-error's
+  std::string unit;                                                            ///< empty: from the digits
+  std::string against = "truth";                                               ///< channels: truth or tool
   std::string thresholds;
   std::size_t worst = 5;
   bool quiet = false;  ///< no progress on stderr

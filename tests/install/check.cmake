@@ -47,7 +47,7 @@ run(0 "configuring the example" ${CMAKE_COMMAND} -S ${example} -B ${WORK_DIR}/ex
     -DCMAKE_CXX_COMPILER=${CXX})
 run(0 "building the example" ${CMAKE_COMMAND} --build ${WORK_DIR}/example)
 run(0 "the example's ctest" ${CMAKE_CTEST_COMMAND} --test-dir ${WORK_DIR}/example --output-on-failure)
-foreach(test own_gate own_csv_values own_csv_lengths)
+foreach(test own_gate own_csv_values own_csv_lengths own_csv_easing)
   if(NOT out MATCHES "${test} [.]+ +Passed")
     message(FATAL_ERROR "the example's ctest did not run ${test}:\n${out}")
   endif()
@@ -66,7 +66,7 @@ endif()
 # 4. The deliberate bug must be caught.
 run(0 "configuring the example with OWN_BUG" ${CMAKE_COMMAND} -S ${example} -B ${WORK_DIR}/bug
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} -DOWN_BUG=ON)
-run(0 "building the example with OWN_BUG" ${CMAKE_COMMAND} --build ${WORK_DIR}/bug --target own_measure own_write_csv)
+run(0 "building the example with OWN_BUG" ${CMAKE_COMMAND} --build ${WORK_DIR}/bug --target own_measure own_write_csv own_write_easing)
 run(1 "the example's gate with OWN_BUG" ${WORK_DIR}/bug/own_measure ${prefix}/share/curvebench/cases
     ${example}/thresholds.json ${WORK_DIR}/bug/own_results.json)
 if(NOT err MATCHES "eval/own_catmull_rom/\\* at case catmull_rom_centripetal_2d")
@@ -75,4 +75,11 @@ endif()
 run(0 "the example's CSV writer with OWN_BUG" ${WORK_DIR}/bug/own_write_csv values.csv lengths.csv inverse.csv)
 run(1 "installed curvebench check on OWN_BUG's CSV" ${tool} check ${example}/spec.json --values values.csv
     --max-error 64)
+# The easing checked by time: the bug (y(t) without the inversion) is 2.4e6 float ulps off.
+run(0 "the example's easing writer with OWN_BUG" ${WORK_DIR}/bug/own_write_easing easing.csv)
+run(1 "installed curvebench check on OWN_BUG's easing" ${tool} check ${example}/easing.json --values easing.csv
+    --unit ulp-float --max-value-error 16)
+if(NOT out MATCHES "OVER easing.csv: row [0-9]+ [(]t = [0-9.e-]+[)]: error [0-9.e+]+ > allowed 16 ulps of float")
+  message(FATAL_ERROR "the check of OWN_BUG's easing did not name a row over its limit:\n${out}")
+endif()
 run(8 "the example's ctest with OWN_BUG" ${CMAKE_CTEST_COMMAND} --test-dir ${WORK_DIR}/bug)

@@ -67,6 +67,31 @@ class ToolCli(unittest.TestCase):
         u, s, x, y = row.split(",")
         self.assertEqual((u, x, y), ("0.5", "2", "1.5"))  # the arch's closed form at 1/2: exact
         self.assertAlmostEqual(float(s), 2.6341827715092569, delta=1e-14)  # s(1/2) = L/2 by symmetry
+        # Issue 30 items 1 and 2: the truth and the tool's own evaluation, apart and named; the CSV
+        # sample writes is what sample --at-file and check --values read back. cubic-bezier(0, 1,
+        # 0, 1) at t = 1e-5 is 1 - (1 - cbrt(1e-5))^3 = 0.0632506 exactly; WebKit's table and
+        # Newton give 0.0630783.
+        with tempfile.TemporaryDirectory() as tmp:
+            snappy = os.path.join(tmp, "snappy.json")
+            with open(snappy, "w") as out:
+                json.dump({"type": "channel", "tool": "css", "easing": "cubic-bezier(0, 1, 0, 1)"}, out)
+            truth = run("sample", snappy, "--at", "1e-5,0.5", "--derivatives", "0")
+            tool = run("sample", snappy, "--at", "1e-5,0.5", "--derivatives", "0", "--as-tool")
+            self.assertEqual(truth.returncode + tool.returncode, 0, truth.stderr + tool.stderr)
+            self.assertAlmostEqual(float(truth.stdout.splitlines()[2].split(",")[1]), 0.0632506, delta=5e-8)
+            self.assertAlmostEqual(float(tool.stdout.splitlines()[2].split(",")[1]), 0.0630783, delta=5e-8)
+            self.assertIn("tool css's own evaluation (solver table_newton", tool.stdout.splitlines()[0])
+            mine = os.path.join(tmp, "mine.csv")
+            with open(mine, "w") as out:
+                out.write(tool.stdout)
+            again = run("sample", snappy, "--at-file", mine, "--derivatives", "0", "--as-tool")
+            self.assertEqual(again.stdout, tool.stdout, again.stderr)
+            against_truth = run("check", snappy, "--values", mine, "--max-error", "4")
+            self.assertEqual(against_truth.returncode, 1, against_truth.stdout)
+            self.assertIn("row 3 (t = 1.0000000000000001e-05)", against_truth.stdout)
+            self.assertIn("absolute: max 0.000172", against_truth.stdout)
+            against_tool = run("check", snappy, "--values", mine, "--max-error", "0", "--against", "tool")
+            self.assertEqual(against_tool.returncode, 0, against_tool.stdout + against_tool.stderr)
         # B is kept when it lies on the grid up to rounding (0.1 steps do not add up to 1 exactly).
         self.assertEqual(self.sample("--range", "0:1:0.1").splitlines()[-1].split(",")[0], "1")
 
@@ -81,8 +106,9 @@ class ToolCli(unittest.TestCase):
                     # A glTF rotation's value is a quaternion: t, x, y, z, w and their derivatives.
                     header = ("t,x,y,z,w,dx,dy,dz,dw,d2x,d2y,d2z,d2w" if j.get("path") == "rotation"
                               else "t,value,dvalue,d2value")
-                    self.assertEqual(p.stdout.splitlines()[0], header, name)
-                    self.assertEqual(len(p.stdout.splitlines()), 4, name)
+                    lines = [line for line in p.stdout.splitlines() if not line.startswith("#")]
+                    self.assertEqual(lines[0], header, name)
+                    self.assertEqual(len(lines), 4, name)
                     continue
             # The domain, from the error of a parameter outside it (sample --count builds a u(s)
             # table: minutes on degree-20 Runge).
@@ -255,30 +281,32 @@ class ToolCli(unittest.TestCase):
         spec = os.path.join(CASES, "channel_regression_limit.json")
         p = run("sample", spec, "--at", "0,4.5,9,12", "--derivatives", "2")
         self.assertEqual(p.returncode, 0, p.stderr)
-        rows = p.stdout.splitlines()
+        # Issue 30 item 2: a first comment line says what the values are (the truth by default).
+        self.assertTrue(p.stdout.startswith("# curvebench sample: the channel at 50 digits"), p.stdout[:200])
+        rows = p.stdout.splitlines()[1:]
         self.assertEqual(rows[0], "t,value,dvalue,d2value")
         self.assertEqual([r.split(",")[:2] for r in rows[1:]][0], ["0", "0"])
         self.assertEqual(rows[3].split(",")[1], "1")  # the last key
         self.assertEqual(rows[4].split(",")[1:3], ["1", "0"])  # constant extrapolation after it
         f = run("sample", os.path.join(CASES, "css_overshoot.json"), "--frames", "0:1:0.25", "--derivatives", "0")
         self.assertEqual(f.returncode, 0, f.stderr)
-        self.assertEqual(len(f.stdout.splitlines()), 6)
+        self.assertEqual(len(f.stdout.splitlines()), 7)
         self.assertEqual(f.stdout.splitlines()[-1], "1,1")
         # Issue 30 item 6: --frames A:B steps by 1 (its errors name --frames), and a decimal grid
         # prints the decimals it names (0.3, not 0.30000000000000004).
         g = run("sample", spec, "--frames", "1:4", "--derivatives", "0")
         self.assertEqual(g.returncode, 0, g.stderr)
-        self.assertEqual([r.split(",")[0] for r in g.stdout.splitlines()[1:]], ["1", "2", "3", "4"])
+        self.assertEqual([r.split(",")[0] for r in g.stdout.splitlines()[2:]], ["1", "2", "3", "4"])
         d = run("sample", spec, "--frames", "0:1:0.1", "--derivatives", "0")
         self.assertEqual(d.returncode, 0, d.stderr)
-        self.assertEqual([r.split(",")[0] for r in d.stdout.splitlines()[1:]],
+        self.assertEqual([r.split(",")[0] for r in d.stdout.splitlines()[2:]],
                          ["0", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"])
         # A grid whose exact decimal needs more than 10^30 (17 decimals of A against a 17-digit STEP)
         # takes double arithmetic: every time within rounding of A + i STEP, none from an overflow.
         step = 99999999999999999
         w = run("sample", spec, "--range", f"0.00000000000000001:1e22:{step}", "--derivatives", "0")
         self.assertEqual(w.returncode, 0, w.stderr)
-        times = [float(r.split(",")[0]) for r in w.stdout.splitlines()[1:]]
+        times = [float(r.split(",")[0]) for r in w.stdout.splitlines()[2:]]
         self.assertEqual(len(times), 100001)
         for i in (1, 1000, 100000):
             self.assertLess(abs(times[i] - i * float(step)), 1e-15 * i * step, i)
@@ -385,9 +413,9 @@ class ToolCli(unittest.TestCase):
                 self.assertTrue(tail[1].startswith(f"  curvebench {sub} "), tail[1])
                 # Issue 30 item 6: the files an example reads exist (from the repository's root):
                 # its spec, thresholds and cases (values.csv is what sample's example writes, and
-                # reports/accuracy.json what accuracy's writes).
+                # easing.csv sample's channel example, reports/accuracy.json what accuracy's writes).
                 words = tail[1].split()
-                made = {"values.csv", "reports/accuracy.json"}
+                made = {"values.csv", "easing.csv", "reports/accuracy.json"}
                 for w in words:
                     if w.endswith((".json", ".csv")) and w not in made:
                         self.assertTrue(os.path.isfile(os.path.join(ROOT, w)), f"{sub}: {w} in {tail[1]}")
