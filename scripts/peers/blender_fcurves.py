@@ -172,6 +172,27 @@ def script_arguments(argv):
     return args
 
 
+def read_fcurve(fc):
+    """An F-curve as Blender holds it: {"keys", "extrapolation", "auto_smoothing"} and "cycles" when it
+    has a Cycles modifier, in Blender's names (the request's format); "modifiers" lists the types of
+    any other modifiers (which curvebench's Blender model does not evaluate)."""
+    keys = [{"time": kp.co[0], "value": kp.co[1], "interpolation": kp.interpolation, "easing": kp.easing,
+             "back": kp.back, "amplitude": kp.amplitude, "period": kp.period,
+             "handle_left_type": kp.handle_left_type, "handle_right_type": kp.handle_right_type,
+             "handle_left": list(kp.handle_left), "handle_right": list(kp.handle_right)}
+            for kp in fc.keyframe_points]
+    r = {"keys": keys, "extrapolation": fc.extrapolation, "auto_smoothing": fc.auto_smoothing}
+    others = []
+    for m in fc.modifiers:
+        if m.type == "CYCLES" and "cycles" not in r:
+            r["cycles"] = {f: getattr(m, f) for f in CYCLE_FIELDS}
+        else:
+            others.append(m.type)
+    if others:
+        r["modifiers"] = others
+    return r
+
+
 def evaluate_in_blender(bpy, channels):
     """Builds one F-curve per channel and evaluates it; returns the channels with keys read back and values."""
     scene = bpy.context.scene
@@ -202,15 +223,7 @@ def evaluate_in_blender(bpy, channels):
             for f in CYCLE_FIELDS:
                 setattr(m, f, ch["cycles"][f])
         fc.update()
-        keys = [{"time": kp.co[0], "value": kp.co[1], "interpolation": kp.interpolation, "easing": kp.easing,
-                 "back": kp.back, "amplitude": kp.amplitude, "period": kp.period,
-                 "handle_left_type": kp.handle_left_type, "handle_right_type": kp.handle_right_type,
-                 "handle_left": list(kp.handle_left), "handle_right": list(kp.handle_right)}
-                for kp in fc.keyframe_points]
-        r = {"name": ch["name"], "keys": keys, "extrapolation": fc.extrapolation,
-             "auto_smoothing": fc.auto_smoothing}
-        if "cycles" in ch:
-            r["cycles"] = ch["cycles"]
+        r = {"name": ch["name"], **read_fcurve(fc)}
         r["times"] = ch["times"]
         r["values"] = [fc.evaluate(t) for t in ch["times"]]
         results.append(r)

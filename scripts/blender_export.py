@@ -1,0 +1,166 @@
+"""Export the F-curves of a .blend file as curvebench channel specs, so that an animator's real scene
+is checked without typing keys.
+
+Run inside Blender:
+    blender -b scene.blend --python scripts/blender_export.py -- OUT_DIR [--values]
+
+Writes one spec per F-curve of every action, OUT_DIR/<action>.<data path>.<index>.json, in the
+"blender" tool's format (keys with their handles, handle types, interpolation, easing and its
+parameters; extrapolation; auto-handle smoothing; the Cycles modifier), and OUT_DIR/index.json
+listing them with Blender's version and the file. An F-curve with another modifier (noise,
+envelope, ...) or a Cycles modifier with a restricted frame range or influence is listed under
+"skipped" with the reason, not exported: curvebench's Blender model would not evaluate what Blender
+does. With --values, OUT_DIR/<same name>.blender.csv holds Blender's own fcurve.evaluate(t) every
+half frame of the scene's range widened by 10 frames on each side (extrapolation and cycles
+included; t,value: float32 results written exactly), so that
+    curvebench check OUT_DIR/X.json --values OUT_DIR/X.blender.csv --against tool
+shows whether curvebench reproduces Blender on this scene, and `curvebench sample OUT_DIR/X.json
+--frames A:B` gives the truth to check an engine's values against.
+
+The mapping from Blender's F-curve to the spec (spec_of) does not import bpy and is tested with
+plain Python on recorded F-curves (tests/python/test_blender_export.py).
+"""
+
+import json
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "peers"))
+import blender_fcurves  # noqa: E402  (read_fcurve: the F-curve as Blender holds it)
+
+HANDLE_TYPES = {"FREE": "free", "ALIGNED": "aligned", "VECTOR": "vector", "AUTO": "auto",
+                "AUTO_CLAMPED": "auto_clamped"}
+EASINGS = {"AUTO": "auto", "EASE_IN": "in", "EASE_OUT": "out", "EASE_IN_OUT": "in_out"}
+# Easing parameters, written only for the interpolations that read them (Blender keeps them on
+# every key).
+PARAMETERS = {"BACK": ("back",), "ELASTIC": ("amplitude", "period")}
+EASED = {"SINE", "QUAD", "CUBIC", "QUART", "QUINT", "EXPO", "CIRC", "BACK", "BOUNCE", "ELASTIC"}
+
+
+class ExportError(ValueError):
+    """An F-curve the blender tool's spec cannot hold; the message says why."""
+
+
+def spec_of(fcurve, name):
+    """The channel spec of an F-curve read by blender_fcurves.read_fcurve (Blender's names)."""
+    if fcurve.get("modifiers"):
+        raise ExportError("modifiers " + ", ".join(fcurve["modifiers"]) + " are not modelled (only Cycles)")
+    if not fcurve["keys"]:
+        raise ExportError("no keyframes")
+    keys = []
+    for k in fcurve["keys"]:
+        key = {"time": k["time"], "value": k["value"], "interpolation": k["interpolation"].lower(),
+               "handle_left": list(k["handle_left"]), "handle_right": list(k["handle_right"]),
+               "handle_left_type": HANDLE_TYPES[k["handle_left_type"]],
+               "handle_right_type": HANDLE_TYPES[k["handle_right_type"]]}
+        if k["interpolation"] in EASED:
+            key["easing"] = EASINGS[k["easing"]]
+            for p in PARAMETERS.get(k["interpolation"], ()):
+                key[p] = k[p]
+        keys.append(key)
+    spec = {"name": name, "type": "channel", "tool": "blender", "keys": keys,
+            "extrapolation": fcurve["extrapolation"].lower(),
+            "smoothing": fcurve.get("auto_smoothing", "CONT_ACCEL").lower()}
+    cy = fcurve.get("cycles")
+    if cy is not None:
+        spec["cycles"] = {"before": cy["mode_before"].lower(), "after": cy["mode_after"].lower(),
+                          "count_before": int(cy["cycles_before"]), "count_after": int(cy["cycles_after"])}
+    return spec
+
+
+def spec_text(spec):
+    """The spec as JSON with one key per line (numbers as repr: the float32 values Blender stores,
+    exactly)."""
+    lines = []
+    for k, v in spec.items():
+        if k == "keys":
+            inner = ",\n".join("  " + json.dumps(key, separators=(", ", ": ")) for key in v)
+            lines.append(f' "keys": [\n{inner}\n ]')
+        else:
+            lines.append(f" {json.dumps(k)}: {json.dumps(v)}")
+    return "{\n" + ",\n".join(lines) + "\n}\n"
+
+
+def file_name(action, data_path, index):
+    """<action>.<data path>.<index>, with every character but letters, digits, '_' and '-' as '_'."""
+    def clean(s):
+        return re.sub(r"[^A-Za-z0-9_-]", "_", s)
+    return f"{clean(action)}.{clean(data_path)}.{index}"
+
+
+def cycles_restricted(fc):
+    """Why a Cycles modifier does more than repeat (a frame range, a blend, an influence), or None."""
+    for m in fc.modifiers:
+        if m.type != "CYCLES":
+            continue
+        if m.use_restricted_range:
+            return "its Cycles modifier has a restricted frame range"
+        if m.use_influence and m.influence != 1:
+            return "its Cycles modifier has an influence below 1"
+        if m.mute:
+            return "its Cycles modifier is muted"
+    return None
+
+
+def export(bpy, out_dir, with_values):
+    os.makedirs(out_dir, exist_ok=True)
+    scene = bpy.context.scene
+    index = {"blender_version": ".".join(str(v) for v in bpy.app.version), "file": os.path.basename(bpy.data.filepath),
+             "frames": [scene.frame_start, scene.frame_end], "channels": [], "skipped": []}
+    for action in bpy.data.actions:
+        for fc in action.fcurves:
+            name = file_name(action.name, fc.data_path, fc.array_index)
+            try:
+                why = cycles_restricted(fc)
+                if why:
+                    raise ExportError(why)
+                if fc.mute:
+                    raise ExportError("the F-curve is muted")
+                spec = spec_of(blender_fcurves.read_fcurve(fc), name)
+            except ExportError as e:
+                index["skipped"].append({"name": name, "why": str(e)})
+                print(f"blender_export.py: {name}: skipped: {e}", file=sys.stderr)
+                continue
+            with open(os.path.join(out_dir, name + ".json"), "w", encoding="utf-8") as f:
+                f.write(spec_text(spec))
+            entry = {"name": name, "spec": name + ".json"}
+            if with_values:
+                with open(os.path.join(out_dir, name + ".blender.csv"), "w", encoding="utf-8") as f:
+                    f.write(f"# Blender {index['blender_version']} fcurve.evaluate every half frame of the scene's "
+                            "range widened by 10 frames on each side\n")
+                    f.write("t,value\n")
+                    for i in range(2 * (scene.frame_end - scene.frame_start + 20) + 1):
+                        t = scene.frame_start - 10 + i / 2
+                        f.write(f"{t!r},{fc.evaluate(t)!r}\n")
+                entry["values"] = name + ".blender.csv"
+            index["channels"].append(entry)
+    with open(os.path.join(out_dir, "index.json"), "w", encoding="utf-8") as f:
+        json.dump(index, f, indent=1)
+        f.write("\n")
+    return index
+
+
+def arguments(argv):
+    args = argv[argv.index("--") + 1:] if "--" in argv else []
+    values = "--values" in args
+    rest = [a for a in args if a != "--values"]
+    if len(rest) != 1:
+        raise ExportError("usage: blender -b scene.blend --python scripts/blender_export.py -- OUT_DIR [--values]")
+    return rest[0], values
+
+
+def main(argv):
+    out_dir, values = arguments(argv)
+    import bpy  # only inside Blender
+    index = export(bpy, out_dir, values)
+    print(f"blender_export.py: {len(index['channels'])} channels written to {out_dir}, "
+          f"{len(index['skipped'])} skipped")
+
+
+if __name__ == "__main__":
+    try:
+        main(sys.argv)
+    except ExportError as e:
+        print(f"blender_export.py: {e}", file=sys.stderr)
+        sys.exit(2)
