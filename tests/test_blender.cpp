@@ -155,22 +155,6 @@ double value_scale(const ch::blender_fcurve<double>& f, const ch::blender_evalua
   return mag + extent + (std::abs(t) + std::abs(t0) + period) * slope;
 }
 
-// Channels the model refuses on purpose (blender.hpp: cyclic auto_clamped under cont_accel): the
-// refusal is checked instead, so the list cannot hide a channel the model would accept.
-bool refused(const std::string& name, const nlohmann::json& c) {
-  const auto repeats = [](const nlohmann::json& m) { return m == "REPEAT" || m == "REPEAT_OFFSET"; };
-  const bool cyclic = c.contains("cycles") && repeats(c.at("cycles").at("mode_before")) &&
-                      repeats(c.at("cycles").at("mode_after")) && c.at("cycles").at("cycles_before") == 0 &&
-                      c.at("cycles").at("cycles_after") == 0;
-  bool clamped = false;
-  for (const auto& k : c.at("keys")) clamped = clamped || k.at("handle_left_type") == "AUTO_CLAMPED";
-  if (!(cyclic && clamped && c.at("auto_smoothing") == "CONT_ACCEL" && c.at("keys").size() > 1)) return false;
-  EXPECT_THAT(cbt::message_of([&] { (void)ch::blender_handles(fcurve_of<double>(c)); }),
-              HasSubstr("with auto_clamped keys under smoothing cont_accel is not modelled"))
-      << name;
-  return true;
-}
-
 bool at_key_time(const ch::blender_fcurve<double>& f, double t) {
   for (const auto& k : f.keys)
     if (t == k.time) return true;
@@ -200,7 +184,7 @@ TEST(blender, handles_match_recorded) {
   for (const auto& c : doc.at("channels")) {
     const std::string name = c.at("name");
     ch::blender_fcurve<double> f = fcurve_of<double>(c);
-    if (f.keys.size() < 2 || refused(name, c)) continue;
+    if (f.keys.size() < 2) continue;
     restore_request_handles(name, f);
     const std::vector<ch::blender_key<double>> got = ch::blender_handles(f);
     for (std::size_t i = 0; i < got.size(); ++i) {
@@ -231,7 +215,6 @@ TEST(blender, values_match_recorded) {
   std::size_t checked = 0;
   for (const auto& c : doc.at("channels")) {
     const std::string name = c.at("name");
-    if (refused(name, c)) continue;
     const ch::blender_fcurve<double> fd = fcurve_of<double>(c);
     const ch::blender_fcurve<float> ff = fcurve_of<float>(c);
     const auto md = ch::blender_model(fd, ch::time_solver::exact);
@@ -262,7 +245,6 @@ TEST(blender, float_model_against_truth) {
   double worst = 0, worst_abs = 0, worst_blender = 0, worst_blender_abs = 0;
   for (const auto& c : doc.at("channels")) {
     const std::string name = c.at("name");
-    if (refused(name, c)) continue;
     const ch::blender_fcurve<double> fd = fcurve_of<double>(c);
     const ch::blender_fcurve<float> ff = fcurve_of<float>(c);
     const auto md = ch::blender_model(fd, ch::time_solver::exact);

@@ -22,7 +22,6 @@ TOOL = os.environ.get("CURVEBENCH_TOOL", "")
 # Channels of the recording that curvebench's Blender model refuses, by design (issue 31): what it
 # cannot evaluate as Blender does it says so, with exit 1, instead of printing other numbers.
 REFUSED = {
-    "cycleAction.location.0": "is not modelled",             # cyclic, auto-clamped, cont_accel
     "handlesAction.location.2": "smoothing cont_accel is modelled for curves whose keys are all",
 }
 

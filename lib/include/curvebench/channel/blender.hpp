@@ -40,8 +40,10 @@
 // Cyclic curves: a Cycles modifier repeating without a count on both sides (repeat or
 // repeat_offset) makes key 0 and key n-1 one interior key for the rules above, its neighbours key
 // n-2 moved back and key 1 moved on by the period T and by v_last - v_first (under repeat too), and
-// cont_accel solves the periodic spline, with the end keys' handle lengths their own interval's
-// (auto; cyclic auto_clamped curves under cont_accel are not modelled: an invalid_input).
+// cont_accel solves the periodic spline, with the end keys' handle lengths their own interval's;
+// auto_clamped bounds the joint's slope with the wrapped neighbours' intervals, and a flat
+// extremum at the joint takes those as its handle lengths (measured on tests/data/blender_fcurves.json
+// and tests/data/blender_export).
 // cont_accel is modelled for curves whose keys are all auto / auto_clamped (Blender's default for
 // inserted keys) or none of them; a curve mixing them under cont_accel is an invalid_input (there
 // Blender blends vector handles into the solve, and fixed handles bound it; not yet measured).
@@ -69,7 +71,7 @@
 // Validation (invalid_input naming the key index and field, with the value): no keys; non-finite
 // numbers; keys not in increasing time order; handle_left after or handle_right before its key;
 // enum values outside their lists; aligned on one side only, auto / auto_clamped on one side beside
-// free or aligned; cont_accel mixing auto keys with others, or cyclic with auto_clamped keys;
+// free or aligned; cont_accel mixing auto keys with others;
 // negative cycle counts; amplitude < 0.
 // Cost: O(n) handles for none; cont_accel solves a (cyclic) tridiagonal system in O(n), again after
 // each round of newly clamped keys (at most n rounds, O(n^2) worst); evaluation as channel.hpp and
@@ -363,14 +365,23 @@ struct blender_neighbours {
   }
   /// The chord slope of segment i.
   [[nodiscard]] Real chord(std::size_t i) const { return (k[i + 1].value - k[i].value) / (k[i + 1].time - k[i].time); }
-  /// The time lengths (left, right) of key i's auto handles: f times the intervals, each limited
-  /// to 5 times the other under smoothing none.
+  /// The time lengths (left, right) of key i's auto handles: under smoothing none its neighbour
+  /// lengths; under cont_accel f times its own intervals (an end key's only interval on both
+  /// sides, even on a cyclic curve: measured).
   [[nodiscard]] std::pair<Real, Real> auto_lengths(std::size_t i) const {
+    if (!accel) return neighbour_lengths(i);
+    return {Real(f * interval(i, true)), Real(f * interval(i, false))};
+  }
+  /// The time lengths (left, right) of an interior key's auto handles: f times the intervals to
+  /// its neighbours (on a cyclic curve key 0 and key n-1 have the wrapped ones), each limited to 5
+  /// times the other under smoothing none. auto_clamped bounds every slope with these, and a
+  /// flat extremum at the cyclic joint takes them under cont_accel too (measured, where its
+  /// solved slope keeps the end key's own interval: auto_lengths).
+  [[nodiscard]] std::pair<Real, Real> neighbour_lengths(std::size_t i) const {
     using std::min;
     blender_point<Real> p, q;
-    // cont_accel keeps an end key's own interval on both sides even on a cyclic curve (measured).
-    Real l = !accel && prev(i, p) ? Real(k[i].time - p.time) : interval(i, true);
-    Real r = !accel && next(i, q) ? Real(q.time - k[i].time) : interval(i, false);
+    Real l = prev(i, p) ? Real(k[i].time - p.time) : interval(i, true);
+    Real r = next(i, q) ? Real(q.time - k[i].time) : interval(i, false);
     if (!accel) {
       const Real l5 = Real(5) * l, r5 = Real(5) * r;
       l = min(l, r5);
@@ -378,16 +389,24 @@ struct blender_neighbours {
     }
     return {Real(f * l), Real(f * r)};
   }
+  /// Whether key i has both neighbours and a value at or beyond both (auto_clamped makes it flat).
+  [[nodiscard]] bool extremum(std::size_t i) const {
+    blender_point<Real> p, q;
+    if (!prev(i, p) || !next(i, q)) return false;
+    const Real v = k[i].value;
+    return (v >= p.value && v >= q.value) || (v <= p.value && v <= q.value);
+  }
   /// auto_clamped's rule on the slope m of interior key i: 0 at a local extremum or against the
-  /// neighbours' direction, else reduced until neither handle passes its neighbour's value.
+  /// neighbours' direction, else reduced until neither handle (of the neighbour lengths) passes
+  /// its neighbour's value.
   [[nodiscard]] Real clamp(std::size_t i, Real m) const {
     using std::abs;
     blender_point<Real> p, q;
     if (!prev(i, p) || !next(i, q)) return m;
     const Real vp = p.value, v = k[i].value, vn = q.value;
-    if ((v >= vp && v >= vn) || (v <= vp && v <= vn)) return Real(0);
+    if (extremum(i)) return Real(0);
     if (m * (vn - vp) < Real(0)) return Real(0);
-    const auto [dl, dr] = auto_lengths(i);
+    const auto [dl, dr] = neighbour_lengths(i);
     if (abs(m * dr) > abs(vn - v)) m = (vn - v) / dr;
     if (abs(m * dl) > abs(v - vp)) m = (v - vp) / dl;
     return m;
@@ -458,13 +477,7 @@ template <class Real>
   // by round (measured: the extrema never take part in the solve).
   std::vector<bool> fixed(u, false);
   std::vector<Real> m(u, Real(0));
-  for (std::size_t i = 0; i < u; ++i) {
-    blender_point<Real> p, q;
-    if (blender_clamped(k[i]) && nb.prev(i, p) && nb.next(i, q)) {
-      const Real v = k[i].value;
-      fixed[i] = (v >= p.value && v >= q.value) || (v <= p.value && v <= q.value);
-    }
-  }
+  for (std::size_t i = 0; i < u; ++i) fixed[i] = blender_clamped(k[i]) && nb.extremum(i);
   const blender_c2_rows<Real> rows = blender_c2_system(nb, u, linear);
   const std::vector<bool> extremum = fixed;
   // Active set: clamp the keys whose solved slope breaks their bound, release a clamped key whose
@@ -562,18 +575,16 @@ template <class Real>
   const bool accel = c.smoothing == auto_smoothing::cont_accel;
   const bool linear = c.extrapolation == blender_extrapolation::linear;
   const bool cyclic = detail::blender_cyclic(c);
-  if (cyclic && accel && std::any_of(k.begin(), k.end(), detail::blender_clamped<Real>))
-    validate::fail(
-        "cycles: a cyclic curve (repeat or repeat_offset on both sides, no count) with auto_clamped keys "
-        "under smoothing cont_accel is not modelled (Blender's end-key handles there are recorded in "
-        "tests/data/blender_fcurves.json but their rule is not yet derived)");
   // The rules read only times and values, which the handles below leave unchanged.
   const detail::blender_neighbours<Real> nb(k, cyclic, accel);
   const std::vector<Real> slope =
       accel ? detail::blender_slopes_cont_accel(nb, linear) : detail::blender_slopes_none(nb, linear);
   for (std::size_t i = 0; i < k.size(); ++i) {
+    // A flat auto_clamped extremum at the cyclic joint has its neighbours' lengths (measured).
+    const bool joint_extremum =
+        cyclic && accel && (i == 0 || i + 1 == k.size()) && detail::blender_clamped(k[i]) && nb.extremum(i);
     if (detail::is_auto(k[i].handle_left_type) || detail::is_auto(k[i].handle_right_type))
-      detail::blender_place_auto(k[i], slope[i], nb.auto_lengths(i));
+      detail::blender_place_auto(k[i], slope[i], joint_extremum ? nb.neighbour_lengths(i) : nb.auto_lengths(i));
     else if (k[i].handle_left_type == handle_type::aligned)
       detail::blender_align(k[i]);
   }
