@@ -80,6 +80,16 @@ def request():
         k1 = {"time": 12.0, "value": 3.0, "interpolation": "BEZIER", "handle_left_type": "FREE",
               "handle_right_type": "FREE", "handle_left": [12.0 - 10 * c, -1.0], "handle_right": [13.0, 3.0]}
         channels.append({"name": f"free/{label}", "keys": [k0, k1], "times": grid(2, 12, 80)})
+    # 4b. Free handles under linear extrapolation: flat or steep outer handles, inner ones elsewhere,
+    #     and times beyond both ends (Blender follows the outer handle there).
+    for label, (left0, right1) in {"flat_outer": ([1.0, 1.0], [13.0, 3.0]),
+                                   "steep_outer": ([0.0, 2.5], [14.0, 1.0])}.items():
+        k0 = {"time": 2.0, "value": 1.0, "interpolation": "BEZIER", "handle_left_type": "FREE",
+              "handle_right_type": "FREE", "handle_left": left0, "handle_right": [4.0, 4.0]}
+        k1 = {"time": 12.0, "value": 3.0, "interpolation": "BEZIER", "handle_left_type": "FREE",
+              "handle_right_type": "FREE", "handle_left": [10.0, -1.0], "handle_right": right1}
+        channels.append({"name": f"free_linear/{label}", "keys": [k0, k1], "extrapolation": "LINEAR",
+                         "times": grid(-8, 22, 120)})
     # 5. Interpolation per segment: constant, linear, eased, bezier in one channel, both
     #    extrapolations.
     seq = [{"time": 0.0, "value": 0.0, "interpolation": "CONSTANT"},

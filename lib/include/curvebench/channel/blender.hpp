@@ -55,7 +55,8 @@
 // and this keeps time monotone); linear and constant as such; an eased segment is the chord in the
 // channel (it is what Blender's linear extrapolation uses at an eased end segment, measured) and
 // penner_ease(family, easing, params) inside. Extrapolation constant, or linear with the end
-// segment's slope (the handle's for bezier, flat for constant, the chord otherwise); a single key
+// segment's slope (the outer handle's for bezier: the first key's left handle before the keys, the
+// last key's right handle after them; flat for constant, the chord otherwise); a single key
 // extrapolates linearly along its handle on that side (its handles are not recomputed; a handle of
 // zero time length gives a flat line), measured.
 // Cycles modifier: outside [t_first, t_last] the time is wrapped into the keyed range for the first
@@ -669,6 +670,21 @@ class blender_evaluator {
 
   [[nodiscard]] Real inside(const Real& t, int order) const {
     const Real t_first = keys_.front().time, t_last = keys_.back().time;
+    // Linear extrapolation beyond a bezier end segment follows the outer handle: the first key's
+    // left one before the keys, the last key's right one after them (measured with free handles;
+    // every other handle type has both handles on one line).
+    if (linear_ && keys_.size() > 1 && (t < t_first || t > t_last)) {
+      const bool before = t < t_first;
+      const blender_key<Real>& k = before ? keys_.front() : keys_.back();
+      const blender_key<Real>& segment = before ? keys_.front() : keys_[keys_.size() - 2];
+      const blender_point<Real>& h = before ? k.handle_left : k.handle_right;
+      const Real dt = h.time - k.time;
+      if (segment.interpolation == blender_interpolation::bezier && dt != Real(0)) {
+        const Real slope = (h.value - k.value) / dt;
+        if (order == 0) return k.value + (t - k.time) * slope;
+        return order == 1 ? slope : Real(0);
+      }
+    }
     if (keys_.size() > 1 && t >= t_first && t < t_last) {
       const std::size_t i =
           curvebench::detail::breakpoint_at_or_below(std::span<const blender_key<Real>>(keys_), t,
