@@ -14,8 +14,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -191,4 +193,40 @@ TEST(check_times, empty_and_unbounded_derivative_cells_are_not_checked) {
   EXPECT_THAT(invalid_input_of([&] { (void)times(curve, "t,x,y\n0.5,1,1\n"); }),
               HasSubstr("time columns are for channel specs"));
   EXPECT_THAT(invalid_input_of([&] { (void)times(curve, "u,x,y\n0.5,,1\n"); }), HasSubstr("column x: an empty cell"));
+}
+
+// Blender evaluates an F-curve at float32(t): near frame 1e5 float32's spacing is 1/128 frame, so
+// on a steep segment (5 per frame) the time's rounding moves the value by up to 0.02. The tool's
+// own evaluation (sample --as-tool, check --against tool) reproduces Blender 3.4.1's recorded
+// values exactly there (float arithmetic on a linear segment with float-exact keys); the truth at
+// the double time does not, and says so in a check against it.
+TEST(check_times, blenders_own_evaluation_rounds_the_time_to_float) {
+  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/blender_fcurves.json");
+  const nlohmann::json data = nlohmann::json::parse(in);
+  const nlohmann::json* rec = nullptr;
+  for (const auto& c : data.at("channels"))
+    if (c.at("name") == "far/steep_linear") rec = &c;
+  ASSERT_NE(rec, nullptr);
+  const spec_doc s(R"({"type": "channel", "tool": "blender", "keys": [
+    {"time": 100000, "value": 0, "interpolation": "linear"}, {"time": 100010, "value": 50}]})");
+  const channel_values tool = channel_values_of(s.f, check_against::tool);
+  const channel_values truth = channel_values_of(s.f, check_against::truth);
+  EXPECT_EQ(tool.bits, 32);
+  double moved = 0;
+  std::string csv = "t,value\n";
+  for (std::size_t j = 0; j < rec->at("times").size(); ++j) {
+    const double t = rec->at("times")[j], blender = rec->at("values")[j];
+    EXPECT_EQ(*tool.at(t, 0), blender) << "t = " << t;
+    moved = std::max(moved, std::abs(*truth.at(t, 0) - blender));
+    csv += g17(t) + "," + g17(blender) + "\n";
+  }
+  EXPECT_GT(moved, 0.018);  // 0.0184 at t = 100000.301: 3.7 float32 time spacings x 5 per frame
+  check_options o;
+  o.against = check_against::tool;
+  EXPECT_EQ(times(s, csv, o).summary.max, 0.0);
+  // Blender's values carry float's digits, so the default unit is float ulps of the range 50:
+  // 0.0184 is 3093 of them.
+  const check_result against_truth = times(s, csv);
+  EXPECT_EQ(against_truth.unit, value_unit::ulp_float);
+  EXPECT_GT(against_truth.summary.max, 3000.0);
 }

@@ -90,6 +90,12 @@ def request():
               "handle_right_type": "FREE", "handle_left": [10.0, -1.0], "handle_right": right1}
         channels.append({"name": f"free_linear/{label}", "keys": [k0, k1], "extrapolation": "LINEAR",
                          "times": grid(-8, 22, 120)})
+    # 4c. Frames far from 0 on a steep segment: Blender evaluates at float32(t) (spacing 1/128 near
+    #     1e5), at times that float32 cannot hold.
+    far = [{"time": 100000.0, "value": 0.0, "interpolation": "LINEAR"},
+           {"time": 100010.0, "value": 50.0, "interpolation": "LINEAR"}]
+    channels.append({"name": "far/steep_linear", "keys": far, "extrapolation": "CONSTANT",
+                     "times": [100000.0 + 0.3 * i + 0.001 for i in range(7)]})
     # 5. Interpolation per segment: constant, linear, eased, bezier in one channel, both
     #    extrapolations.
     seq = [{"time": 0.0, "value": 0.0, "interpolation": "CONSTANT"},
