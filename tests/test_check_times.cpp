@@ -198,8 +198,8 @@ TEST(check_times, empty_and_unbounded_derivative_cells_are_not_checked) {
 // Blender evaluates an F-curve at float32(t): near frame 1e5 float32's spacing is 1/128 frame, so
 // on a steep segment (5 per frame) the time's rounding moves the value by up to 0.02. The tool's
 // own evaluation (sample --as-tool, check --against tool) reproduces Blender 3.4.1's recorded
-// values exactly there (float arithmetic on a linear segment with float-exact keys); the truth at
-// the double time does not, and says so in a check against it.
+// values there to float rounding; the truth at the double time does not, and says so in a check
+// against it.
 TEST(check_times, blenders_own_evaluation_rounds_the_time_to_float) {
   std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/blender_fcurves.json");
   const nlohmann::json data = nlohmann::json::parse(in);
@@ -216,14 +216,17 @@ TEST(check_times, blenders_own_evaluation_rounds_the_time_to_float) {
   std::string csv = "t,value\n";
   for (std::size_t j = 0; j < rec->at("times").size(); ++j) {
     const double t = rec->at("times")[j], blender = rec->at("values")[j];
-    EXPECT_EQ(*tool.at(t, 0), blender) << "t = " << t;
+    // Within one float ulp of the value: Blender's linear interpolation rounds in another order
+    // (7.5 against the model's 7.50000048 at t = 100001.501; equal at the other times).
+    EXPECT_LE(std::abs(*tool.at(t, 0) - blender), std::numeric_limits<float>::epsilon() * std::abs(blender))
+        << "t = " << t;
     moved = std::max(moved, std::abs(*truth.at(t, 0) - blender));
     csv += g17(t) + "," + g17(blender) + "\n";
   }
   EXPECT_GT(moved, 0.018);  // 0.0184 at t = 100000.301: 3.7 float32 time spacings x 5 per frame
   check_options o;
   o.against = check_against::tool;
-  EXPECT_EQ(times(s, csv, o).summary.max, 0.0);
+  EXPECT_LE(times(s, csv, o).summary.max, 1.0);  // float ulps of the range: 0.08 measured
   // Blender's values carry float's digits, so the default unit is float ulps of the range 50:
   // 0.0184 is 3093 of them.
   const check_result against_truth = times(s, csv);
