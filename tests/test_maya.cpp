@@ -583,6 +583,27 @@ double worst_against_truth(ch::time_solver solver, double bound, bool check, con
   return worst;
 }
 
+// Cycle pre-infinity at whole periods before the first key (issue 31, measured with Autodesk
+// AnimX built with 64-bit time on curves keyed on whole frames): Maya takes the last key's value
+// there, the end of the previous repeat; just after that time the repeat's start, the first
+// key's. Post-infinity and cycle_relative (continuous there) agree with the channel's rule.
+TEST(Maya, CyclePreInfinityAtWholePeriodsTakesTheLastKey) {
+  curve_d c =
+      curve_of({key(1, 2, maya_tangent::linear), key(2, 5, maya_tangent::linear), key(4, 3, maya_tangent::linear)});
+  c.pre = c.post = maya_infinity::cycle;
+  const auto e = ch::maya_model(c);
+  const double period = 3;
+  for (int k = 1; k <= 4; ++k) {
+    const double t = 1 - k * period;
+    EXPECT_EQ(e.value(t), 3.0) << "k = " << k;                                // the last key
+    EXPECT_DOUBLE_EQ(e.derivative(t, 1), -1.0) << "k = " << k;                // the last segment's slope
+    EXPECT_NEAR(e.value(std::nextafter(t, 2.0)), 2.0, 1e-12) << "k = " << k;  // the next repeat starts
+    EXPECT_EQ(e.value(4 + k * period), 2.0) << "k = " << k;                   // post: the first key
+  }
+  c.pre = maya_infinity::cycle_relative;  // each repeat offset by v_last - v_first = 1: continuous
+  EXPECT_DOUBLE_EQ(ch::maya_model(c).value(1 - 2 * period), 2.0 - 2.0);
+}
+
 TEST(Maya, DoubleModelAgainstTheExactTruth) {
   (void)worst_against_truth<double>(ch::time_solver::isolate_brent, model_vs_exact, true, "double");
 }

@@ -80,7 +80,10 @@
 // last key's out tangent's angle; a step type there is slope 0, not settled by AnimX), cycle,
 // cycle_relative (Cycle with Offset, channel cycle_offset: each period shifted by
 // v_last - v_first) and oscillate (channel oscillate: the period next to the keyed range is the
-// mirrored one), which agree with AnimX's wrapping. Linear infinity is evaluated here from the end
+// mirrored one), which agree with AnimX's wrapping, but for one boundary: under cycle
+// pre-infinity a time exactly k >= 1 periods before the first key takes the last key's value (the
+// end of the previous repeat; measured with AnimX, issue 31), where the channel's cycle takes the
+// first key's. Linear infinity is evaluated here from the end
 // key's own tangent; the other modes are the channel's. A one-key curve is constant under every
 // mode (the channel's rule; AnimX's code returns 0 outside a one-key curve's key under any
 // non-constant infinity, which this model does not follow: not settled).
@@ -441,6 +444,17 @@ class maya_evaluator {
     if (keys.size() > 1 && is_finite(t)) {  // non-finite t: the channel's domain_error
       if (pre_ == maya_infinity::linear && t < keys.front().time) return line(keys.front(), slope_pre_, t, order);
       if (post_ == maya_infinity::linear && t > keys.back().time) return line(keys.back(), slope_post_, t, order);
+      // Cycle pre-infinity at exactly k >= 1 whole periods before the first key: Maya (AnimX)
+      // maps the cycle's position 0 to the end of the previous repeat, the last key. Only an exact
+      // multiple counts (both differences exact in Real), so that a rounding does not move the
+      // boundary away from the truth's.
+      if (pre_ == maya_infinity::cycle && t < keys.front().time) {
+        using std::fmod;
+        Real before, period;
+        if (exact_difference(keys.front().time, t, before) &&
+            exact_difference(keys.back().time, keys.front().time, period) && fmod(before, period) == Real(0))
+          return channel_.derivative(keys.back().time, order);
+      }
     }
     return channel_.derivative(t, order);
   }
@@ -457,6 +471,14 @@ class maya_evaluator {
     return channel<Real>(std::move(keys),
                          c.pre == maya_infinity::linear ? extrapolation::constant : to_extrapolation(c.pre),
                          c.post == maya_infinity::linear ? extrapolation::constant : to_extrapolation(c.post), solver);
+  }
+
+  /// d = a - b; whether it is exact (Knuth's two-sum: the rounding error of the difference is 0).
+  static bool exact_difference(const Real& a, const Real& b, Real& d) {
+    d = a - b;
+    const Real nb = -b;
+    const Real bv = d - a, av = d - bv;
+    return (a - av) + (nb - bv) == Real(0);
   }
 
   static Real line(const key<Real>& k, const Real& slope, const Real& t, int order) {
