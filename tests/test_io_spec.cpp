@@ -207,6 +207,31 @@ TEST(io_spec, malformed_specs_name_the_field) {
   EXPECT_THAT(error_of(R"(["not", "an", "object"])"), HasSubstr("spec: expected an object"));
 }
 
+// end "duplicate" (issue 30: game engines clamp the index, so P_-1 = P_0 and P_n+1 = P_n): the
+// uniform Catmull-Rom through every point, from the first to the last on [1, n], whose slope at a
+// point is half the chord between its neighbours: at the ends half the end chord.
+TEST(io_spec, catmull_rom_end_duplicate_is_the_engines_clamped_index) {
+  const cb::point_list<double, 2> pts{{0, 0}, {1, 2}, {3, 3}, {4, 0}};
+  const auto j = io::parse(R"({"type": "catmull_rom", "points": [[0,0],[1,2],[3,3],[4,0]], "end": "duplicate"})");
+  const auto c = io::curve_from_spec<double, 2>(io::root(j));
+  EXPECT_EQ(c.domain().lo, 1.0);
+  EXPECT_EQ(c.domain().hi, 4.0);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(c(1.0 + i), pts[static_cast<std::size_t>(i)]) << i;
+  // Slopes in u (unit knot spacing): (P_1 - P_0) / 2 = (0.5, 1) at the start, (P_3 - P_2) / 2 =
+  // (0.5, -1.5) at the end, (P_2 - P_0) / 2 = (1.5, 1.5) at P_1: exact in double.
+  EXPECT_EQ(c.derivative(1.0, 1), (cb::point<double, 2>{0.5, 1}));
+  EXPECT_EQ(c.derivative(4.0, 1), (cb::point<double, 2>{0.5, -1.5}));
+  EXPECT_EQ(c.derivative(2.0, 1), (cb::point<double, 2>{1.5, 1.5}));
+  // The same at 50 digits, and the refusals name the field.
+  const auto c50 = io::curve_from_spec<cb::real50, 2>(io::root(j));
+  EXPECT_EQ(c50(cb::real50(2.5)), (cb::point<cb::real50, 2>(c(2.5))));
+  EXPECT_THAT(error_of(R"({"type": "catmull_rom", "points": [[0,0],[1,2],[3,3]], "end": "duplicate", "alpha": 0.5})"),
+              HasSubstr("spec.alpha"));
+  EXPECT_THAT(
+      error_of(R"({"type": "catmull_rom", "points": [[0,0],[1,2],[3,3]], "end": "duplicate", "knots": [0,1,2]})"),
+      HasSubstr("spec.knots"));
+}
+
 TEST(io_spec, catmull_rom_and_cardinal_with_end_control_points) {
   // The textbook Catmull-Rom: the first and last of the eight points only shape the end segments.
   const std::string points = "[[0,0],[1,2],[3,3],[4,0],[6,1],[7,4],[9,3],[10,0]]";

@@ -20,6 +20,7 @@ any_curve<Real, Dim> build_cardinal(const field& spec) {
   opt.alpha = real_or<Real>(spec, "alpha", Real(0));
   if (spec.has("end")) {
     const std::string e = spec.member("end").one_of({"phantom", "one_sided", "tangents", "closed", "control_points"});
+    // ("duplicate" is resolved into control_points before a build: resolve_duplicate_ends.)
     opt.end = e == "phantom"     ? cardinal_end::phantom
               : e == "one_sided" ? cardinal_end::one_sided
               : e == "tangents"  ? cardinal_end::given_tangents
@@ -38,7 +39,25 @@ any_curve<Real, Dim> build_cardinal(const field& spec) {
 inline constexpr std::string_view end_doc =
     "phantom (extrapolated end points, default), one_sided (2nd-order differences), tangents, closed, "
     "control_points (the textbook form: the first and last points only shape the end segments, the curve "
-    "runs from the second point to the second-to-last on [u_1, u_n-2]; at least 4 points)";
+    "runs from the second point to the second-to-last on [u_1, u_n-2]; at least 4 points), duplicate (game "
+    "engines' clamped index: P_-1 = P_0 and P_n+1 = P_n, the end slope half the end chord's; uniform knots "
+    "only, alpha 0)";
+
+/// end "duplicate" as control_points with the end points repeated (computed once in double): the
+/// curve runs from the first point to the last on uniform knots 1 .. n. A repeated point is a
+/// zero-length chord, so alpha > 0 (and given knots) are refused, naming the field.
+inline json resolve_duplicate_ends(json r, const field& spec) {
+  if (!spec.has("end") || spec.member("end").string() != "duplicate") return r;
+  if (spec.has("alpha") && spec.member("alpha").number() != 0)
+    spec.member("alpha").fail("end \"duplicate\" repeats the end points, a zero-length chord: alpha must be 0");
+  if (spec.has("knots")) spec.member("knots").fail("end \"duplicate\" takes uniform knots: give no knots");
+  json& p = r["points"];
+  if (!p.is_array() || p.size() < 2) spec.member("points").fail("end \"duplicate\" needs at least 2 points");
+  p.insert(p.begin(), p.front());
+  p.push_back(p.back());
+  r["end"] = "control_points";
+  return r;
+}
 
 /// Knots from |dP|^alpha (alpha > 0, no knots given) computed once in double, from all the points
 /// (closed: with the closing chord; control_points: the end points' chords too); alpha becomes 0.
@@ -86,7 +105,7 @@ struct cardinal_family : audited_by_points {
   /// Alpha knots, and s from tension, computed once in double.
   template <int Dim>
   static json resolve(const field& spec) {
-    json r = detail::resolve_alpha_knots<Dim>(spec);
+    json r = detail::resolve_duplicate_ends(detail::resolve_alpha_knots<Dim>(spec), spec);
     if (spec.has("tension") && !spec.has("s")) {
       r["s"] = (1 - spec.member("tension").number()) / 2;
       r.erase("tension");
@@ -122,10 +141,10 @@ struct catmull_rom_family : audited_by_points {
     return detail::build_cardinal<Real, Dim>(spec);
   }
 
-  /// Alpha knots computed once in double.
+  /// Alpha knots and duplicated ends computed once in double.
   template <int Dim>
   static json resolve(const field& spec) {
-    return detail::resolve_alpha_knots<Dim>(spec);
+    return detail::resolve_duplicate_ends(detail::resolve_alpha_knots<Dim>(spec), spec);
   }
 
   template <int Dim>
