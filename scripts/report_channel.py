@@ -173,18 +173,31 @@ def speed_goal(times, accurate):
     return out, (met if out else None)
 
 
+# The machine epsilon of each precision: the records' value errors are in ulps of their own
+# precision (eps x value range), so a plot of both precisions converts them to one unit first.
+EPS = {64: 2.0 ** -52, 32: 2.0 ** -23}
+
+
+def relative_to_range(ulps, bits):
+    """A value error in ulps of the precision `bits` (eps x value range) as a fraction of the range."""
+    return ulps * EPS[bits]
+
+
 def error_time_plot(records, times, plot_dir, plt, save):
-    """Error vs time per solver (max over the corpus against ns per value on keys:64, single calls)."""
+    """Error vs time per solver (max over the corpus against ns per value on keys:64, single calls),
+    double and float on one axis in one unit: the error as a fraction of the value range."""
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     plotted = False
+    floor = 1e-2 * EPS[64]  # an error of 0 drawn at 1 % of a double ulp
     for bits, marker in ((64, "o"), (32, "s")):
         for s in solver_order(records):
             v, _ = worst(records, "channel_value", s, bits)
             ns = times.get((s, "64", bits, "single"))
             if v is None or ns is None:
                 continue
-            ax.scatter([ns], [max(v, 1e-2)], marker=marker, label=f"{s} ({'double' if bits == 64 else 'float'})")
-            ax.annotate(s, (ns, max(v, 1e-2)), fontsize=6, xytext=(3, 3), textcoords="offset points")
+            y = max(relative_to_range(v, bits), floor)
+            ax.scatter([ns], [y], marker=marker, label=f"{s} ({'double' if bits == 64 else 'float'})")
+            ax.annotate(s, (ns, y), fontsize=6, xytext=(3, 3), textcoords="offset points")
             plotted = True
     if not plotted:
         plt.close(fig)
@@ -192,7 +205,7 @@ def error_time_plot(records, times, plot_dir, plt, save):
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("ns per value (64 bezier keys, random times)")
-    ax.set_ylabel("max error over the corpus (eps x value range)")
+    ax.set_ylabel("max error over the corpus / value range")
     ax.set_title("Keyframe channels: time solvers, error vs time")
     ax.legend(fontsize=6, ncol=2)
     path = os.path.join(plot_dir, "channel_solvers_error_time.png")

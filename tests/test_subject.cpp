@@ -201,16 +201,30 @@ TEST(Subject, BadSubjectsAreNamed) {
     EXPECT_THAT(e.what(), HasSubstr("column x"));
     EXPECT_THAT(e.what(), HasSubstr("is not finite"));
   }
+}
+
+// An inverse answer outside the domain is the subject's error, measured and recorded with a
+// finding naming it (issue 30: one float ulp past the end aborted the whole measurement and
+// recorded nothing). Beyond the end u = 2 by d the row is measured as (|s(2) - s| + 6 d) / L, the
+// polyline's last segment having speed 6 and L = 11.
+TEST(Subject, InverseOutsideTheDomainIsAFindingNotAnAbort) {
+  subject<2> ulp = exact_subject();
+  ulp.name = "one_ulp_past";
+  ulp.inverse = [](double s) { return s >= 11 ? std::nextafter(2.0, 3.0) : bent_u(s); };
+  const auto r = measure_spec(bent, ulp, quick);
+  const double beyond = std::nextafter(2.0, 3.0) - 2.0;
+  EXPECT_LE(record(r, "u_of_s")["error"].get<double>(), 6 * beyond / 11 + 2 * eps);
+  EXPECT_GT(record(r, "u_of_s")["error"].get<double>(), 0.0);
+  ASSERT_EQ(r["findings"].size(), 1u);
+  EXPECT_THAT(r["findings"][0].get<std::string>(), HasSubstr("subject one_ulp_past: "));
+  EXPECT_THAT(r["findings"][0].get<std::string>(), HasSubstr("is outside the domain [0, 2]"));
   subject<2> outside = exact_subject();
   outside.name = "outside";
   outside.inverse = [](double) { return 2.5; };
-  try {
-    (void)measure_spec(bent, outside);
-    FAIL();
-  } catch (const invalid_input& e) {
-    EXPECT_THAT(e.what(), HasSubstr("subject outside inverse"));
-    EXPECT_THAT(e.what(), HasSubstr("outside the curve's domain"));
-  }
+  const auto o = measure_spec(bent, outside, quick);
+  // The target s = 0 answered with 2.5: |s(2) - 0| / L + 0.5 x 6 / L = 1 + 3 / 11.
+  EXPECT_NEAR(record(o, "u_of_s")["error"].get<double>(), 1 + 3.0 / 11, 1e-12);
+  EXPECT_GE(o["findings"].size(), 9u);  // every target of the quick sweep
 }
 
 }  // namespace

@@ -313,7 +313,7 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
   const double s_max = res.length * (1 + 64 * std::numeric_limits<double>::epsilon());
   double worst = 0;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
-    check_domain(t, r, cu, d);
+    if (!o.outside_is_finding) check_domain(t, r, cu, d);
     const auto& row = t.rows[r];
     if (!(row[cs] >= 0 && row[cs] <= s_max))
       throw invalid_input(t.where(r, cs) + ": " + num(row[cs]) + " is outside [0, L] = [0, " + num(res.length) +
@@ -322,7 +322,17 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
     cr.line = t.lines[r];
     cr.s = row[cs];
     cr.u = row[cu];
-    cr.error = ref.ds(cr.u, cr.s);
+    const double inside = std::clamp(cr.u, d.lo, d.hi);
+    cr.error = ref.ds(inside, cr.s);
+    if (inside != cr.u) {  // outside_is_finding: beyond an end, along the end tangent
+      const point<double, Dim> tangent = ref.exact(inside, 1);
+      double speed = 0;
+      for (int i = 0; i < Dim; ++i) speed += tangent[i] * tangent[i];
+      cr.error += std::abs(cr.u - inside) * std::sqrt(speed) / res.length;
+      res.findings.push_back(t.where(r, cu) + ": u = " + num(cr.u) + " is outside the domain [" + num(d.lo) + ", " +
+                             num(d.hi) + "] by " + num(std::abs(cr.u - inside), 3) +
+                             "; measured at the end plus that distance along its tangent");
+    }
     cr.relative = cr.error;
     worst = std::max(worst, cr.error);
     res.rows.push_back(std::move(cr));
@@ -530,6 +540,7 @@ nlohmann::json to_json(const check_result& r) {
     j["unit_reason"] = r.unit_reason;
     if (!r.digits_warning.empty()) j["digits_warning"] = r.digits_warning;
   }
+  if (!r.findings.empty()) j["findings"] = r.findings;
   if (r.kind == check_kind::times) {
     j["against"] = r.against;
     j["value_range"] = r.size;

@@ -24,7 +24,10 @@
 //   lengths  error = |length - (s(u1) - s(u0))| / L (L: the curve's total length);
 //            relative = the same over the segment's own length (infinite for an empty segment
 //            with a non-zero length).
-//   inverse  error = relative = |s(u_user) - s| / L (the u_of_s measure of the accuracy runner).
+//   inverse  error = relative = |s(u_user) - s| / L (the u_of_s measure of the accuracy runner);
+//            with outside_is_finding (the subject API) a u beyond an end by d is measured as
+//            (|s(end) - s| + d |P'(end)|) / L, at least the error of the curve extended along its
+//            end tangent, and listed in findings.
 //   times    abs = |value - V(t)|, V the channel at 50 digits at the user's t (exactly as read): the
 //            truth (the spec's tool rules, the time solver "exact"), or with against = tool the
 //            tool's own evaluation (its default or the spec's solver, in its storage precision:
@@ -86,6 +89,10 @@ struct check_options {
   std::size_t worst = 5;                         ///< how many worst rows check_result::worst lists
   std::optional<value_unit> unit;                ///< values and times: the unit (none: chosen from the digits)
   check_against against = check_against::truth;  ///< times: what the user's values are compared with
+  /// inverse: a u outside the domain is a finding, not an error (the subject API): its row is
+  /// measured at the nearest end with the distance beyond it along the end tangent added, and the
+  /// result's findings say so.
+  bool outside_is_finding = false;
   /// Called after each row with (rows done, rows in the file, the file): the tool's progress line.
   std::function<void(std::size_t, std::size_t, const std::string&)> on_row;
 };
@@ -127,6 +134,7 @@ struct check_result {
   std::string digits_warning;                        ///< values, times: the CSV cannot carry the unit's precision
   std::string against;                               ///< times: what was compared with, in words
   std::size_t unchecked = 0;                         ///< times: derivative cells not checked (unbounded)
+  std::vector<std::string> findings;                 ///< inverse with outside_is_finding: rows outside the domain
   nlohmann::json records = nlohmann::json::array();  ///< accuracy.json records (see above)
 };
 

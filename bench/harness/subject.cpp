@@ -22,6 +22,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <string_view>
 
 namespace curvebench::harness {
 
@@ -132,7 +133,11 @@ json measure(const case_info& info, const subject<Dim>& s, const subject_options
       const double target = std::min(L * f, L);
       add_row(t, {target, call(s.name, "inverse(s = " + num(target) + ")", s.inverse, target)});
     }
-    results.push_back(run_check(spec, check_kind::inverse, t, co));
+    // A u outside the domain (one float ulp past the end, say) is the subject's error, measured
+    // and recorded, not a reason to record nothing.
+    check_options inverse_options = co;
+    inverse_options.outside_is_finding = true;
+    results.push_back(run_check(spec, check_kind::inverse, t, inverse_options));
   }
 
   json out{{"schema", 1},
@@ -154,8 +159,10 @@ json measure(const case_info& info, const subject<Dim>& s, const subject_options
                             {"segments", c.breakpoints().size() - 1},
                             {"reference_length", results.empty() ? std::string() : num(results.front().length)}});
   }
-  for (const check_result& r : results)
+  for (const check_result& r : results) {
     for (const json& rec : r.records) out["records"].push_back(rec);
+    for (const std::string& f : r.findings) out["findings"].push_back("subject " + s.name + ": " + f);
+  }
   out["context"] = {{"subject", s.name}, {"compiler", compiler_id()}, {"quick", o.quick}};
   return out;
 }
@@ -276,7 +283,8 @@ std::vector<std::string> subject_gate(const json& results, const std::string& th
 }
 
 json merge_results(json into, const json& more) {
-  for (const char* key : {"records", "orders", "cases"}) {
+  for (const char* key : {"records", "orders", "cases", "findings"}) {
+    if (std::string_view(key) == "findings" && !more.contains(key)) continue;  // only when there are some
     if (!into.contains(key)) into[key] = json::array();
     if (!more.contains(key)) continue;
     for (const json& x : more[key]) {

@@ -87,9 +87,10 @@ struct subject_options {
 
 /// Measures the subject on case `case_name` of the directory `cases_dir` (bench/cases, or the
 /// installed share/curvebench/cases: CMake's CURVEBENCH_CASES_DIR). Returns the results JSON
-/// {"schema", "suite", "records", "orders", "cases", "context"}. Throws invalid_input for an
+/// {"schema", "suite", "records", "orders", "cases", "context"}, and "findings" when an inverse
+/// answer lies outside the domain (measured, not refused: harness/check.hpp). Throws invalid_input for an
 /// unknown case, a case of another dimension, a subject without a name or functions, a function
-/// that throws or returns a parameter outside the domain.
+/// that throws (an inverse answer outside the domain is measured and listed in "findings").
 template <int Dim>
 [[nodiscard]] nlohmann::json measure_case(const std::string& cases_dir, const std::string& case_name,
                                           const subject<Dim>& s, const subject_options& options = {});
