@@ -27,7 +27,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "peers"))
-import blender_fcurves  # noqa: E402  (read_fcurve: the F-curve as Blender holds it)
+import blender_fcurves  # noqa: E402  (read_fcurve, blender_version: shared with the peer driver)
 
 HANDLE_TYPES = {"FREE": "free", "ALIGNED": "aligned", "VECTOR": "vector", "AUTO": "auto",
                 "AUTO_CLAMPED": "auto_clamped"}
@@ -106,7 +106,7 @@ def cycles_restricted(fc):
 def export(bpy, out_dir, with_values):
     os.makedirs(out_dir, exist_ok=True)
     scene = bpy.context.scene
-    index = {"blender_version": ".".join(str(v) for v in bpy.app.version), "file": os.path.basename(bpy.data.filepath),
+    index = {"blender_version": blender_fcurves.blender_version(bpy), "file": os.path.basename(bpy.data.filepath),
              "frames": [scene.frame_start, scene.frame_end], "channels": [], "skipped": []}
     for action in bpy.data.actions:
         for fc in action.fcurves:

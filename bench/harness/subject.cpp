@@ -59,15 +59,37 @@ void add_row(csv_table& t, std::vector<double> row) {
   t.lines.push_back(t.rows.size());
 }
 
-template <int Dim>
-void check_subject(const subject<Dim>& s) {
-  const bool name_ok = !s.name.empty() && std::all_of(s.name.begin(), s.name.end(), [](char ch) {
+/// A subject's name is the records' method: letters, digits, '_' and '-'.
+void check_name(const std::string& name) {
+  const bool name_ok = !name.empty() && std::all_of(name.begin(), name.end(), [](char ch) {
     return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == '-';
   });
   if (!name_ok)
-    throw invalid_input("subject name \"" + s.name + "\": must be letters, digits, '_' and '-' (the records' method)");
+    throw invalid_input("subject name \"" + name + "\": must be letters, digits, '_' and '-' (the records' method)");
+}
+
+template <int Dim>
+void check_subject(const subject<Dim>& s) {
+  check_name(s.name);
   if (!s.eval && !s.length && !s.inverse)
     throw invalid_input("subject " + s.name + ": has no function to measure (eval, length or inverse)");
+}
+
+/// The results JSON of one case: its entry, the records and orders given (curvebench's own when
+/// compared side by side), then every check result's records and findings, the context.
+json results_of(json case_entry, json records, json orders, const std::vector<check_result>& results,
+                const std::string& subject, bool quick) {
+  json out{{"schema", 1},
+           {"suite", {{"name", suite_name}, {"version", suite_version}, {"cases", 1}}},
+           {"records", std::move(records)},
+           {"orders", std::move(orders)},
+           {"cases", json::array({std::move(case_entry)})}};
+  for (const check_result& r : results) {
+    for (const json& rec : r.records) out["records"].push_back(rec);
+    for (const std::string& f : r.findings) out["findings"].push_back("subject " + subject + ": " + f);
+  }
+  out["context"] = {{"subject", subject}, {"compiler", compiler_id()}, {"quick", quick}};
+  return out;
 }
 
 template <int Dim>
@@ -140,51 +162,23 @@ json measure(const case_info& info, const subject<Dim>& s, const subject_options
     results.push_back(run_check(spec, check_kind::inverse, t, inverse_options));
   }
 
-  json out{{"schema", 1},
-           {"suite", {{"name", suite_name}, {"version", suite_version}, {"cases", 1}}},
-           {"records", json::array()},
-           {"orders", json::array()},
-           {"cases", json::array()}};
   if (o.with_methods) {
     json own = run_case(info, o.quick);
-    out["records"] = std::move(own["records"]);
-    out["orders"] = std::move(own["orders"]);
-    out["cases"].push_back(std::move(own["case"]));
-  } else {
-    out["cases"].push_back({{"name", info.name},
-                            {"group", info.group},
-                            {"reason", info.reason},
-                            {"family", c.family()},
-                            {"dimension", Dim},
-                            {"segments", c.breakpoints().size() - 1},
-                            {"reference_length", results.empty() ? std::string() : num(results.front().length)}});
+    return results_of(std::move(own["case"]), std::move(own["records"]), std::move(own["orders"]), results, s.name,
+                      o.quick);
   }
-  for (const check_result& r : results) {
-    for (const json& rec : r.records) out["records"].push_back(rec);
-    for (const std::string& f : r.findings) out["findings"].push_back("subject " + s.name + ": " + f);
-  }
-  out["context"] = {{"subject", s.name}, {"compiler", compiler_id()}, {"quick", o.quick}};
-  return out;
-}
-
-/// The results JSON around a measurement's records (its case entry given).
-json results_of(json case_entry, const std::vector<check_result>& results, const std::string& subject, bool quick) {
-  json out{{"schema", 1},
-           {"suite", {{"name", suite_name}, {"version", suite_version}, {"cases", 1}}},
-           {"records", json::array()},
-           {"orders", json::array()},
-           {"cases", json::array({std::move(case_entry)})}};
-  for (const check_result& r : results)
-    for (const json& rec : r.records) out["records"].push_back(rec);
-  out["context"] = {{"subject", subject}, {"compiler", compiler_id()}, {"quick", quick}};
-  return out;
+  return results_of({{"name", info.name},
+                     {"group", info.group},
+                     {"reason", info.reason},
+                     {"family", c.family()},
+                     {"dimension", Dim},
+                     {"segments", c.breakpoints().size() - 1},
+                     {"reference_length", results.empty() ? std::string() : num(results.front().length)}},
+                    json::array(), json::array(), results, s.name, o.quick);
 }
 
 json measure_channel(const case_info& info, const channel_subject& s, const subject_options& o) {
-  subject<1> named;  // the name's rules are the curve subject's
-  named.name = s.name;
-  named.eval = [](double) { return point<double, 1>{}; };
-  check_subject(named);
+  check_name(s.name);
   if (!s.value) throw invalid_input("subject " + s.name + ": has no value function to measure");
   const io::field spec = io::root(info.spec, info.file);
   if (!detail::is_channel_spec(spec))
@@ -228,7 +222,7 @@ json measure_channel(const case_info& info, const channel_subject& s, const subj
                      {"dimension", 1},
                      {"against", results.front().against},
                      {"value_range", results.front().size}},
-                    results, s.name, o.quick);
+                    json::array(), json::array(), results, s.name, o.quick);
 }
 
 /// The case of a spec given in JSON (its name, group and reason when it has them).

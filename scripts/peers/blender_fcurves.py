@@ -193,6 +193,11 @@ def read_fcurve(fc):
     return r
 
 
+def blender_version(bpy):
+    """Blender's version as "3.4.1"."""
+    return ".".join(str(v) for v in bpy.app.version)
+
+
 def evaluate_in_blender(bpy, channels):
     """Builds one F-curve per channel and evaluates it; returns the channels with keys read back and values."""
     scene = bpy.context.scene
@@ -234,8 +239,7 @@ def main(argv):
     in_path, out_path = script_arguments(argv)
     channels, note = read_request(in_path)
     import bpy  # only inside Blender
-    version = ".".join(str(v) for v in bpy.app.version)
-    write_result(out_path, result_document(version, note, evaluate_in_blender(bpy, channels)))
+    write_result(out_path, result_document(blender_version(bpy), note, evaluate_in_blender(bpy, channels)))
 
 
 if __name__ == "__main__":
