@@ -299,6 +299,11 @@ TEST(check, lengths_against_the_polylines_exact_segments) {
   EXPECT_NEAR(r.rows[2].error, d / 11, 1e-18);      // relative to L
   EXPECT_NEAR(r.rows[2].relative, d / 2.5, 1e-18);  // relative to the segment
   EXPECT_EQ(r.rows[3].relative, 0);                 // an empty segment measured as empty
+  // The absolute error beside them, in the curve's units: 2^-10 exactly (the lengths are exact).
+  EXPECT_EQ(r.rows[2].absolute, d);
+  EXPECT_EQ(r.summary.max_absolute, d);
+  EXPECT_EQ(to_json(r)["rows"][2]["absolute"], d);
+  EXPECT_EQ(to_json(r)["summary"]["max_absolute"], d);
   EXPECT_EQ(r.records[0]["quantity"], "length");
   const auto over = rows_over(r, 1e-6);
   ASSERT_EQ(over.size(), 1u);
@@ -319,6 +324,10 @@ TEST(check, inverse_against_the_polylines_exact_u_of_s) {
   EXPECT_LE(r.rows[0].error, 1e-30);
   EXPECT_LE(r.rows[1].error, 1e-30);
   EXPECT_NEAR(r.rows[2].error, 6 * du / 11, 1e-18);
+  // Absolute: |s(u) - s| = 6 du in the curve's units, to the rounding of dividing by L and back (2 ulps).
+  EXPECT_NEAR(r.rows[2].absolute, 6 * du, 2 * std::numeric_limits<double>::epsilon() * 6 * du);
+  EXPECT_NEAR(r.summary.max_absolute, 6 * du, 2 * std::numeric_limits<double>::epsilon() * 6 * du);
+  EXPECT_EQ(to_json(r)["rows"][2]["absolute"], r.rows[2].absolute);
   EXPECT_LE(r.rows[3].error, 1e-30);
   EXPECT_EQ(r.records[0]["quantity"], "u_of_s");
   EXPECT_THAT(invalid_input_of([&] { (void)run_check(s.f, check_kind::inverse, parse_csv("s,u\n12,2\n", "i.csv")); }),

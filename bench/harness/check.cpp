@@ -113,6 +113,7 @@ void summarize(check_result& res, std::size_t worst) {
   for (const check_row& r : res.rows) {
     s.max = std::max(s.max, r.error);
     s.max_relative = std::max(s.max_relative, r.relative);
+    if (!std::isnan(s.max_absolute) && !(r.absolute <= s.max_absolute)) s.max_absolute = r.absolute;  // NaN wins
     sq += r.error * r.error;
     sq_rel += r.relative * r.relative;
   }
@@ -288,6 +289,7 @@ check_result check_lengths(case_reference<Dim>& ref, const csv_table& t, const c
     cr.u1 = row[c1];
     const double diff = ref.length_between_error(cr.u, cr.u1, row[cl]);
     const double segment = std::abs(ref.length_between(cr.u, cr.u1));
+    cr.absolute = diff;
     cr.error = diff / res.length;
     cr.relative = segment > 0 ? diff / segment : (diff > 0 ? std::numeric_limits<double>::infinity() : 0.0);
     worst = std::max(worst, cr.error);
@@ -334,6 +336,7 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
                              "; measured at the end plus that distance along its tangent");
     }
     cr.relative = cr.error;
+    cr.absolute = cr.error * res.length;  // ds and the tangent's run are both divided by L
     worst = std::max(worst, cr.error);
     res.rows.push_back(std::move(cr));
     if (o.on_row) o.on_row(res.rows.size(), t.rows.size(), t.file);
@@ -395,10 +398,12 @@ nlohmann::json row_json(const check_result& res, const check_row& r) {
     case check_kind::lengths:
       j["u0"] = r.u;
       j["u1"] = r.u1;
+      j["absolute"] = finite_or_null(r.absolute);
       break;
     case check_kind::inverse:
       j["s"] = r.s;
       j["u"] = r.u;
+      j["absolute"] = finite_or_null(r.absolute);
       break;
   }
   j["error"] = finite_or_null(r.error);
@@ -531,7 +536,8 @@ nlohmann::json to_json(const check_result& r) {
                      {"max", finite_or_null(r.summary.max)},
                      {"rms", finite_or_null(r.summary.rms)},
                      {"max_relative", finite_or_null(r.summary.max_relative)},
-                     {"rms_relative", finite_or_null(r.summary.rms_relative)}}},
+                     {"rms_relative", finite_or_null(r.summary.rms_relative)},
+                     {"max_absolute", finite_or_null(r.summary.max_absolute)}}},
                    {"worst", worst},
                    {"rows", rows},
                    {"records", r.records}};

@@ -109,7 +109,8 @@ struct check_row {
   std::vector<double> derivative_ulps;    ///< values: order k = 1..K at index k - 1 (empty without)
   double s_error = -1;                    ///< values with an s column: |s_user - s(u)| / L; -1 without
   double t = 0;                           ///< times: the row's time
-  double absolute = 0;                    ///< values: |p - P|_inf; times: |value - V(t)|
+  double absolute = 0;                    ///< values: |p - P|_inf; times: |value - V(t)|; lengths: |l - L(u0, u1)|;
+                                          ///< inverse: |s(u) - s| (in the curve's units)
   std::vector<double> derivative_errors;  ///< times: dvalue, d2value in the unit (NaN: not checked)
   double time_error = 0;                  ///< times: abs / |V'(t)| (infinite where V' is 0 or unbounded)
 };
@@ -118,6 +119,7 @@ struct check_summary {
   std::size_t rows = 0;
   double max = 0, rms = 0;                    ///< of the rows' error
   double max_relative = 0, rms_relative = 0;  ///< of the rows' relative
+  double max_absolute = 0;                    ///< of the rows' absolute (NaN when a row's is)
 };
 
 struct check_result {

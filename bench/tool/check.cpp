@@ -48,11 +48,8 @@ void print_table(const check_result& r, const std::string& spec) {
   std::cout << "\n  error (" << harness::unit_text(r);
   if (values || times) std::cout << "; " << r.unit_reason << ", --unit to choose";
   std::cout << "): max " << g(r.summary.max) << ", rms " << g(r.summary.rms);
-  if (values || times) {
-    double worst_abs = 0;
-    for (const auto& row : r.rows) worst_abs = std::max(worst_abs, row.absolute);
-    std::cout << "; absolute: max " << g(worst_abs);
-  }
+  std::cout << "; absolute" << (values || times ? "" : " (in the curve's length units)") << ": max "
+            << g(r.summary.max_absolute);
   if (r.kind != check_kind::inverse && r.kind != check_kind::times)
     std::cout << "; relative" << (values ? " to size" : " to the segment") << ": max " << g(r.summary.max_relative)
               << ", rms " << g(r.summary.rms_relative);
@@ -80,7 +77,9 @@ void print_table(const check_result& r, const std::string& spec) {
       if (std::isfinite(r.derivative_sizes[k])) std::cout << std::setw(11) << ("d" + std::to_string(k + 1));
     if (!r.rows.empty() && r.rows.front().s_error >= 0) std::cout << std::setw(11) << "s_error/L";
   } else if (r.kind == check_kind::lengths) {
-    std::cout << std::setw(11) << "/segment";
+    std::cout << std::setw(11) << "/segment" << std::setw(11) << "absolute";
+  } else if (r.kind == check_kind::inverse) {
+    std::cout << std::setw(11) << "absolute";
   } else if (times) {
     std::cout << std::setw(11) << "absolute";
     for (std::size_t k = 0; k < r.derivative_sizes.size(); ++k)
@@ -104,7 +103,9 @@ void print_table(const check_result& r, const std::string& spec) {
         if (std::isfinite(r.derivative_sizes[k])) std::cout << std::setw(11) << g(row.derivative_ulps[k]);
       if (row.s_error >= 0) std::cout << std::setw(11) << g(row.s_error);
     } else if (r.kind == check_kind::lengths) {
-      std::cout << std::setw(11) << g(row.relative);
+      std::cout << std::setw(11) << g(row.relative) << std::setw(11) << g(row.absolute);
+    } else if (r.kind == check_kind::inverse) {
+      std::cout << std::setw(11) << g(row.absolute);
     } else if (times) {
       std::cout << std::setw(11) << g(row.absolute);
       for (std::size_t k = 0; k < row.derivative_errors.size(); ++k)
