@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job: build optimized, run the accuracy sweep against 50-digit references and every
 # benchmark, and write reports/ (REPORT.md, accuracy.json/.csv, bench_*.json, vocabulary.json,
-# plots/*.png).
+# fidelity.json, plots/*.png).
 #   scripts/bench.sh           full run (all cases and settings, 3 benchmark repetitions; < 20 min on 2 cores)
 #   scripts/bench.sh --quick   the quick suite and short benchmarks (a few minutes)
 #   scripts/bench.sh --publish full run, then docs/results.md, docs/results/ and the README's figures
@@ -59,6 +59,17 @@ echo "bench.sh: accuracy sweep$([[ $quick -eq 1 ]] && echo ' (quick)')"
 accuracy_args=(accuracy --out "$reports/accuracy.json")
 [[ $quick -eq 1 ]] && accuracy_args+=(--quick)
 "$build/bench/curvebench" "${accuracy_args[@]}"
+
+# The tool models against the values recorded from the real tools (Blender, AnimX, OpenUSD's Ts):
+# reports/fidelity.json, the report's "Tool models against the real tools".
+shopt -s nullglob
+recordings=("$root"/tests/data/recorded/*.json)
+shopt -u nullglob
+if [[ ${#recordings[@]} -gt 0 ]]; then
+  echo "bench.sh: tool models against ${#recordings[@]} recordings of the real tools"
+  "$build/bench/curvebench" fidelity --json "${recordings[@]}" >"$reports/fidelity.json.tmp"
+  mv "$reports/fidelity.json.tmp" "$reports/fidelity.json"
+fi
 
 # The optional peers (scripts/peers.sh installs them) when installed: reports/peers_*.json, which
 # the report joins; the C++ peers (GSL, Boost.Math, Eigen) ran inside the accuracy sweep above.

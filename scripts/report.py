@@ -406,6 +406,13 @@ def main():
     md += report_channel.channel_section(acc, bench_rows, plot_dir, plt, atomic_savefig,
                                          report_channel.tool_names(vocab))
 
+    fidelity_path = os.path.join(report_dir, "fidelity.json")
+    fidelity = None
+    if os.path.exists(fidelity_path):
+        with open(fidelity_path, encoding="utf-8") as f:
+            fidelity = json.load(f)
+    md += report_channel.fidelity_section(fidelity, list(vocab.tools.values()))
+
     if subjects:
         md += ["", "## Your implementations (subjects) beside curvebench's methods", ""]
         md.append("Records of a user's own implementation (`curvebench check`, or the subject API "

@@ -322,3 +322,49 @@ def channel_section(acc, bench_rows, plot_dir, plt, save, tools):
     if path:
         md += ["", "The stress cases, with their keys (black) and handles (red):", "", f"![channel cases]({path})"]
     return md
+
+
+def fidelity_section(fidelity, tools):
+    """The markdown lines of "Tool models against the real tools": `fidelity` the JSON of `curvebench
+    fidelity --json` (None when the run has none), `tools` the vocabulary's tool dicts (id,
+    verification)."""
+    md = ["", "## Tool models against the real tools", ""]
+    md += ["What each tool model is verified against, recorded from the real tool, and what it is not:", ""]
+    md.append(lib.table(["tool", "verified"], [[t["id"], t.get("verification", "-")] for t in tools]))
+    md.append("")
+    if not fidelity or not fidelity.get("recordings"):
+        return md + ["No recordings were measured in this run (`curvebench fidelity`)."]
+    ulps = fidelity.get("agree_ulps")
+    md += [f"Each recorded channel is read as a curvebench spec and evaluated as the tool evaluates it (its "
+           f"time solver, its storage precision); it agrees when the largest |model - tool| over its recorded "
+           f"times is at most {ulps:g} eps of the tool's precision times the channel's value range (the two "
+           f"programs' own roundings of the same operations stay well inside that; a different rule does not). "
+           f"Errors are fractions of the value range. `curvebench fidelity FILE` prints the same for a "
+           f"recording of your own.", ""]
+    rows = []
+    for r in fidelity["recordings"]:
+        s = r.get("source", {})
+        source = ", ".join(str(s[k]) for k in ("implementation", "version") if s.get(k))
+        if s.get("commit"):
+            source += f" (commit {str(s['commit'])[:12]})"
+        evaluated = r["channels"] - r["refused"]
+        rows.append([r["tool"], source or "-", os.path.basename(r["file"]), r["channels"],
+                     f"{r['agree']} of {evaluated}", r["refused"], r["max_error"]])
+    md.append(lib.table(["tool", "recorded from", "recording", "channels", "agree", "refused",
+                         "max error (x range)"], rows))
+    for r in fidelity["recordings"]:
+        md += ["", f"### {r['tool']}: {os.path.basename(r['file'])}", ""]
+        build = r.get("source", {}).get("build")
+        if build:
+            md += [f"Built: {build}.", ""]
+        md.append(lib.table(["feature", "channels", "agree", "refused", "max error (x range)"],
+                            [[f["feature"], f["channels"], f["agree"], f["refused"], f["max_error"]]
+                             for f in r["features"]]))
+        if r["disagree"]:
+            md += ["", "Channels that disagree (largest error, where):", ""]
+            md.append(lib.table(["channel", "error (x range)", "t", "model", "tool"],
+                                [[d["name"], d["error"], d["t"], d["model"], d["recorded"]] for d in r["disagree"]]))
+        if r["refused_channels"]:
+            md += ["", "Refused (not modelled): " + "; ".join(f"{c['name']} ({c['reason']})"
+                                                           for c in r["refused_channels"])]
+    return md

@@ -8,7 +8,7 @@ The vocabulary is the JSON of `curvebench list vocabulary --json` (bench/harness
    "peers": [{"id", "library", "doc"}], "operations": [{"id", "doc"}],
    "counters": [{"name", "kind", "doc"}], "algorithms": [{"id", "settings", "doc"}],
    "variant_keys": [{"id", "values", "doc"}],
-   "tools": [{"id", "storage_bits", "default_solver", "settings", "doc", "rules"}]}
+   "tools": [{"id", "storage_bits", "default_solver", "settings", "doc", "rules", "verification"}]}
 A benchmark name is family/algorithm[/key:value]..., the algorithm a method, a peer, an algorithm
 or a tool id; the per-case arc-length benchmarks are arclength_case/<case>/<method>/<setting>. Every
 benchmark labels the operation it times and sets items processed, so its time per operation is

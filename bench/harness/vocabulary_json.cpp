@@ -56,7 +56,8 @@ nlohmann::json vocabulary_json() {
                           {"default_solver", channel::to_string(T::default_solver)},
                           {"settings", words("bits")},
                           {"doc", str(T::summary)},
-                          {"rules", str(T::rules)}});
+                          {"rules", str(T::rules)},
+                          {"verification", str(T::verification)}});
   });
   return v;
 }

@@ -198,6 +198,9 @@ int main(int argc, char** argv) {
   tool::check_args ca;
   auto* chk = tool::add_check(app, ca);
 
+  tool::fidelity_args fa;
+  auto* fid = tool::add_fidelity(app, fa);
+
   length_args la;
   auto* len = app.add_subcommand(
       "length",
@@ -267,10 +270,18 @@ int main(int argc, char** argv) {
       if (list_json) throw cb::invalid_input("list " + list_what + " --json: only the vocabulary is listed as JSON");
       if (list_what == "families" || list_what == "all") {
         std::cout << "families (spec types):\n";
-        for (const cb::io::family_descriptor& f : cb::io::families())
+        for (const cb::io::family_descriptor& f : cb::io::families()) {
           std::cout << "  " << std::left << std::setw(18) << f.type << f.summary << "\n"
                     << "  " << std::setw(18) << ""
                     << "fields: " << cb::io::fields_line(f) << "\n";
+          if (f.type != "channel") continue;
+          std::string names;
+          cb::io::for_each_tool(
+              [&](auto t) { names += (names.empty() ? "" : ", ") + std::string(decltype(t)::type::name); });
+          std::cout << "  " << std::setw(18) << ""
+                    << "tools: " << names
+                    << " (curvebench list tools: each model's rules and what it is verified against)\n";
+        }
       }
       if (list_what == "tools" || list_what == "all" || list_what == "vocabulary") {
         std::cout << "tools (a channel spec's \"tool\"; name, storage bits, default time solver):\n";
@@ -278,7 +289,9 @@ int main(int argc, char** argv) {
           using T = typename decltype(t)::type;
           std::cout << "  " << std::left << std::setw(10) << T::name << std::setw(4)
                     << cb::channel::storage_bits_of<typename T::storage_type> << std::setw(16)
-                    << cb::channel::to_string(T::default_solver) << T::summary << "\n";
+                    << cb::channel::to_string(T::default_solver) << T::summary << "\n"
+                    << "  " << std::setw(30) << ""
+                    << "verification: " << T::verification << "\n";
         });
       }
       if (list_what == "methods" || list_what == "all") {
@@ -325,6 +338,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*chk) return tool::run_check(ca);
+    if (*fid) return tool::run_fidelity(fa);
     if (*len) {
       const auto j = tool::read_spec(la.spec);
       const auto spec = cb::io::root(j, la.spec);

@@ -132,4 +132,15 @@ CLI::App* add_check(CLI::App& app, check_args& a);
 /// 0 when every row is within the limits (or none is given), 1 otherwise.
 int run_check(const check_args& a);
 
+// ---- fidelity (fidelity.cpp) ----------------------------------------------------------------------
+
+struct fidelity_args {
+  std::vector<std::string> recordings;
+  bool json = false;
+  bool require = false;  ///< exit 1 on a disagreeing channel or a refusal the recording does not mark
+};
+CLI::App* add_fidelity(CLI::App& app, fidelity_args& a);
+/// 0 unless --require-agreement is given and a channel disagrees or is newly refused.
+int run_fidelity(const fidelity_args& a);
+
 }  // namespace curvebench::tool

@@ -161,6 +161,34 @@ class Publish(unittest.TestCase):
         with open(os.path.join(self.docs, "results", "headline.json"), encoding="utf-8") as f:
             self.assertEqual(json.load(f)["run"]["revision"], "abc1234")
 
+    def test_fidelity_block_is_written_and_refreshed_alone(self):
+        make_run(self.reports)
+        publish.publish(self.reports, self.docs, self.readme)
+        page = os.path.join(self.docs, "results.md")
+        with open(page, encoding="utf-8") as f:
+            before = f.read()
+        self.assertIn(publish.FIDELITY_BEGIN, before)
+        self.assertIn("No recordings were measured", before)
+        fidelity = {"agree_ulps": 128, "curvebench": "curvebench 9.9 (fff0000)", "recordings": [{
+            "file": "r.json", "tool": "maya", "source": {"implementation": "AnimX"}, "channels": 1, "agree": 1,
+            "refused": 0, "tolerance": 2.8e-14, "max_error": 0.0, "features": [], "disagree": [],
+            "refused_channels": []}]}
+        with open(os.path.join(self.reports, "fidelity.json"), "w", encoding="utf-8") as f:
+            json.dump(fidelity, f)
+        argv = sys.argv
+        sys.argv = ["publish.py", "--reports", self.reports, "--docs", self.docs, "--fidelity-only"]
+        try:
+            self.assertEqual(publish.main(), 0)
+        finally:
+            sys.argv = argv
+        with open(page, encoding="utf-8") as f:
+            after = f.read()
+        head = before[:before.index(publish.FIDELITY_BEGIN)]
+        self.assertTrue(after.startswith(head))  # the run's part is untouched
+        self.assertIn("| maya | AnimX | r.json | 1 | 1 of 1 | 0 | 0 |", after)
+        self.assertIn("Measured by curvebench 9.9 (fff0000).", after)
+        self.assertEqual(after.count(publish.FIDELITY_BEGIN), 1)
+
     def test_quick_run_is_refused(self):
         make_run(self.reports, quick=True)
         with self.assertRaises(publish.PublishError):
@@ -200,7 +228,11 @@ class CheckedIn(unittest.TestCase):
         self.assertLess(size + len(page.encode()), publish.MAX_PLOT_BYTES)
         # Same text as publish.py renders, whatever order the plots were chosen in.
         shown = [line[2:line.index("]")] for line in page.splitlines() if line.startswith("![")]
-        self.assertEqual(page, publish.render_results(self.h, shown) + "\n")
+        # The fidelity block (refreshed alone by publish.py --fidelity-only) follows the run's part.
+        i, j = page.find(publish.FIDELITY_BEGIN), page.find(publish.FIDELITY_END)
+        self.assertTrue(0 <= i < j, "docs/results.md has its fidelity block")
+        block = page[i:j + len(publish.FIDELITY_END)]
+        self.assertEqual(page, publish.replace_fidelity(publish.render_results(self.h, shown) + "\n", block))
 
 
 if __name__ == "__main__":

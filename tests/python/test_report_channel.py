@@ -120,5 +120,37 @@ class ChannelSection(unittest.TestCase):
         self.assertEqual(rc.relative_to_range(4, 32), 4 * 2.0 ** -23)
 
 
+FIDELITY = {"agree_ulps": 128, "curvebench": "curvebench 0.1.0 (abc1234)", "recordings": [{
+    "file": "tests/data/recorded/animx_curves.json", "tool": "maya",
+    "source": {"implementation": "Autodesk AnimX", "commit": "0123456789abcdef0123", "build": "64-bit time"},
+    "channels": 3, "agree": 1, "refused": 1, "tolerance": 2.8e-14, "max_error": 0.25,
+    "features": [{"feature": "tangent:auto", "channels": 2, "agree": 1, "refused": 0, "max_error": 0.25},
+                 {"feature": "tangent:spline", "channels": 1, "agree": 0, "refused": 1, "max_error": 0}],
+    "disagree": [{"name": "c2", "features": ["tangent:auto"], "error": 0.25, "t": 3.0, "model": 1.0,
+                  "recorded": 1.5}],
+    "refused_channels": [{"name": "c3", "reason": "not modelled"}]}]}
+TOOLS = [{"id": "maya", "verification": "against AnimX; spline tangents not verified"}]
+
+
+class FidelitySection(unittest.TestCase):
+    def test_counts_sources_disagreements_and_refusals(self):
+        md = "\n".join(rc.fidelity_section(FIDELITY, TOOLS))
+        self.assertIn("## Tool models against the real tools", md)
+        self.assertIn("| maya | against AnimX; spline tangents not verified |", md)
+        # One row per recording: evaluated channels are those not refused (3 - 1).
+        self.assertIn("| maya | Autodesk AnimX (commit 0123456789ab) | animx_curves.json | 3 | 1 of 2 | 1 | 0.25 |",
+                      md)
+        self.assertIn("Built: 64-bit time.", md)
+        self.assertIn("| tangent:auto | 2 | 1 | 0 | 0.25 |", md)
+        self.assertIn("| c2 | 0.25 | 3 | 1 | 1.5 |", md)
+        self.assertIn("Refused (not modelled): c3 (not modelled)", md)
+        self.assertIn("at most 128 eps", md)
+
+    def test_without_recordings_the_verification_table_stays(self):
+        md = "\n".join(rc.fidelity_section(None, TOOLS))
+        self.assertIn("| maya | against AnimX", md)
+        self.assertIn("No recordings were measured", md)
+
+
 if __name__ == "__main__":
     unittest.main()

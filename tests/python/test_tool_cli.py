@@ -403,8 +403,42 @@ class ToolCli(unittest.TestCase):
         head = subprocess.run([git, "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True)
         self.assertEqual(p.stdout.split("(")[1].split(")")[0].split("+")[0], head.stdout.strip())
 
+    # ---- fidelity: the tool models against recordings of the real tools ------------------------
+
+    def test_fidelity_counts_agreement_and_gates_on_request(self):
+        spec = {"type": "channel", "tool": "maya", "keys": [
+            {"time": 0, "value": 0, "in_type": "linear", "out_type": "linear"},
+            {"time": 10, "value": 5, "in_type": "linear", "out_type": "linear"}]}
+        rec = {"tool": "maya", "source": {"implementation": "closed form", "version": "1"}, "channels": [
+            {"name": "right", "features": ["tangent:linear"], "spec": spec, "t": [0, 5, 20], "value": [0, 2.5, 5]},
+            # 0.25 off, the recorded range 2.75: 0.0909 of it.
+            {"name": "late", "features": ["tangent:linear"], "spec": spec, "t": [0, 5], "value": [0, 2.75]}]}
+        path = self.write("rec.json", json.dumps(rec))
+        p = run("fidelity", path)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertIn("1 of 2 evaluated channels agree", p.stdout)
+        self.assertIn("disagrees: late: 0.0909 of the range at t = 5 (model 2.5, tool 2.75)", p.stdout)
+        p = run("fidelity", path, "--require-agreement")
+        self.assertEqual(p.returncode, 1)
+        self.assertIn("late disagrees with the tool", p.stderr)
+        j = json.loads(run("fidelity", path, "--json").stdout)
+        self.assertEqual(j["recordings"][0]["agree"], 1)
+        self.assertTrue(j["curvebench"].startswith("curvebench "))
+        rec["channels"] = rec["channels"][:1]
+        self.assertEqual(run("fidelity", self.write("ok.json", json.dumps(rec)), "--require-agreement").returncode, 0)
+        rec["channels"][0]["value"] = [0]
+        self.assert_error(run("fidelity", self.write("bad.json", json.dumps(rec))), "bad.json.channels[0]",
+                          "3 times and 1 values")
+
+    def test_every_tool_says_what_it_is_verified_against(self):
+        p = run("list", "tools")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertEqual(p.stdout.count("verification: "), 6, p.stdout)
+        self.assertIn("spline, clamped and plateau tangents", p.stdout)  # Maya's, documented, not verified
+        self.assertIn("(curvebench list tools:", run("list", "families").stdout)
+
     def test_every_subcommand_help_ends_with_an_example(self):
-        for sub in ["list", "sample", "check", "length", "accuracy", "gate"]:
+        for sub in ["list", "sample", "check", "length", "accuracy", "gate", "fidelity"]:
             with self.subTest(sub=sub):
                 p = run(sub, "--help")
                 self.assertEqual(p.returncode, 0, p.stderr)

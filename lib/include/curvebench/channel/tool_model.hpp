@@ -12,7 +12,8 @@
 //   storage_bits                    the precision the tool itself stores and evaluates in (32 for
 //                                   Blender's float32, 64 for the others).
 // A tool (concept tool) is the struct that names it and makes its models:
-//   name, summary (one line), rules (what from_keys applies, for the report), storage_type (float
+//   name, summary (one line), rules (what from_keys applies, for the report), verification (what
+//   the model is verified against, recorded from the real tool, and what is not), storage_type (float
 //   or double: storage_bits of its models), default_solver (the time solver of its bezier
 //   segments), model<Real> (a tool_model), and from_keys<Real>(keys): the model of a channel's
 //   generic keys (time, value, per-side handles, constant / linear / bezier segments) as the tool
@@ -50,6 +51,7 @@ concept tool = requires(std::span<const key<double>> keys) {
   { T::name } -> std::convertible_to<std::string_view>;
   { T::summary } -> std::convertible_to<std::string_view>;
   { T::rules } -> std::convertible_to<std::string_view>;
+  { T::verification } -> std::convertible_to<std::string_view>;
   { T::default_solver } -> std::convertible_to<time_solver>;
   typename T::storage_type;
   { T::template from_keys<double>(keys) } -> std::same_as<typename T::template model<double>>;

@@ -17,6 +17,10 @@ struct exact {
   static constexpr std::string_view summary =
       "the keys as given: per-side handles, each segment's interpolation, extrapolation, any time solver";
   static constexpr std::string_view rules = "the keys as given";
+  /// What the model is verified against (recorded values of the real tool) and what is not.
+  static constexpr std::string_view verification =
+      "nothing to reproduce: the keys' own mathematical channel, the truth the other tools are measured "
+      "against";
   using storage_type = double;
   static constexpr time_solver default_solver = time_solver::exact;
 

@@ -51,6 +51,10 @@ struct gltf {
   static constexpr std::string_view summary =
       "a glTF 2.0 animation sampler (step, linear or cubicspline; scalar weights or rotation quaternions)";
   static constexpr std::string_view rules = "cubicspline: the handles' slopes, lengths dropped (1/3 of the interval)";
+  /// What the model is verified against (recorded values of the real tool) and what is not.
+  static constexpr std::string_view verification =
+      "against three.js's GLTFLoader interpolants (scripts/peers.sh, the Peers section) as the glTF 2.0 "
+      "specification: step, linear and cubicspline scalars and rotations";
   using storage_type = double;
   static constexpr time_solver default_solver = time_solver::exact;
 

@@ -23,6 +23,12 @@ struct maya {
       "a Maya animCurve: tangent types per side, fixed tangent vectors, weighted or not, pre and post infinity";
   static constexpr std::string_view rules =
       "weighted fixed tangents; regressive handles past the other key pulled back (AnimX)";
+  /// What the model is verified against (recorded values of the real tool) and what is not.
+  static constexpr std::string_view verification =
+      "against Autodesk AnimX (Maya's evaluator; tests/data/animx_curves.json, curvebench fidelity): fixed, "
+      "auto, flat, linear, step and step_next tangents, weights, regressive handles, every infinity; "
+      "spline, clamped and plateau tangents follow Maya's documentation and are not verified (AnimX "
+      "evaluates stored tangents and does not compute them)";
   using storage_type = double;
   static constexpr time_solver default_solver = time_solver::isolate_brent;
 

@@ -57,6 +57,10 @@ struct usd {
       "anti-regression, extrapolation, inner loops";
   static constexpr std::string_view rules =
       "bezier knots (width, slope), keep_ratio anti-regression, closed-form solver";
+  /// What the model is verified against (recorded values of the real tool) and what is not.
+  static constexpr std::string_view verification =
+      "not yet against OpenUSD's Ts library: the rules of its documentation (knots, widths, "
+      "anti-regression, extrapolation, loops)";
   using storage_type = double;
   static constexpr time_solver default_solver = time_solver::closed_form;
 

@@ -1,0 +1,164 @@
+// The fidelity of the tool models against recordings of the real tools (harness/fidelity.hpp).
+#include "harness/fidelity.hpp"
+
+#include "harness/check.hpp"
+#include "harness/files.hpp"
+
+#include "curvebench/core/error.hpp"
+#include "curvebench/io/json_fields.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+
+namespace curvebench::harness {
+
+namespace {
+
+nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+
+/// Measures one channel of a recording; refused when its spec or the model refuses it.
+fidelity_channel measure_channel(const io::field& c) {
+  fidelity_channel out;
+  out.name = c.member("name", "each recorded channel has a name").string();
+  if (c.has("features")) {
+    const io::field f = c.member("features");
+    for (std::size_t i = 0; i < f.array_size(); ++i) out.features.push_back(f.element(i).string());
+  }
+  const std::vector<double> ts = c.member("t", "the times the tool evaluated").reals<double>();
+  const std::vector<double> vs = c.member("value", "the tool's values at t").reals<double>();
+  if (ts.size() != vs.size())
+    c.fail("has " + std::to_string(ts.size()) + " times and " + std::to_string(vs.size()) +
+           " values: one value per time");
+  if (ts.empty()) c.member("t").fail("is empty: a recorded channel has at least one time");
+  out.times = ts.size();
+  out.marked_refused = c.has("refused");
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo, magnitude = 0;
+  for (double v : vs) lo = std::min(lo, v), hi = std::max(hi, v), magnitude = std::max(magnitude, std::abs(v));
+  out.scale = hi > lo ? hi - lo : (magnitude > 0 ? magnitude : 1.0);
+
+  const io::field spec = c.member("spec", "the channel as a curvebench channel spec");
+  std::optional<channel_values> model;
+  try {
+    model = channel_values_of(spec, check_against::tool);
+  } catch (const invalid_input& e) {  // the reader or the model refuses it (spec_error is one)
+    out.refused = true;
+    out.reason = e.what();
+    return out;
+  }
+  out.bits = model->bits;
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const std::optional<double> m = model->at(ts[i], 0);
+    const double e =
+        m && std::isfinite(*m) ? std::abs(*m - vs[i]) / out.scale : std::numeric_limits<double>::infinity();
+    if (i == 0 || e > out.error) {
+      out.error = e;
+      out.worst_t = ts[i];
+      out.model = m ? *m : std::numeric_limits<double>::quiet_NaN();
+      out.recorded = vs[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+double fidelity_channel::tolerance() const {
+  const double eps =
+      bits == 32 ? static_cast<double>(std::numeric_limits<float>::epsilon()) : std::numeric_limits<double>::epsilon();
+  return agree_ulps * eps;
+}
+
+fidelity_result measure_fidelity(const nlohmann::json& recording, const std::string& path) {
+  const io::field root = io::root(recording, path);
+  root.only_members({"tool", "source", "channels", "note"});
+  fidelity_result r;
+  r.file = path;
+  r.tool = root.member("tool", "the tool whose evaluation was recorded").string();
+  r.source = root.member("source", "where the values come from (implementation, version, build)").value;
+  if (!r.source.is_object()) root.member("source").fail("must be an object");
+  const io::field channels = root.member("channels", "the recorded channels");
+  std::map<std::string, fidelity_feature> features;
+  for (std::size_t i = 0; i < channels.array_size(); ++i) {
+    const io::field c = channels.element(i);
+    c.only_members({"name", "features", "spec", "t", "value", "refused", "note"});
+    fidelity_channel fc = measure_channel(c);
+    if (!fc.refused) {
+      const io::field tool = c.member("spec").member("tool", "a channel spec names its tool");
+      if (tool.string() != r.tool)
+        tool.fail("is not the recording's tool \"" + r.tool + "\": a recording holds one tool's channels");
+    }
+    std::vector<std::string> tags = fc.features;
+    tags.push_back("all");
+    for (const std::string& tag : tags) {
+      fidelity_feature& f = features[tag];
+      f.feature = tag;
+      ++f.channels;
+      if (fc.refused) {
+        ++f.refused;
+      } else {
+        f.agree += fc.agrees() ? 1 : 0;
+        f.max_error = std::max(f.max_error, fc.error);
+      }
+    }
+    if (fc.refused) {
+      ++r.refused;
+    } else {
+      r.agree += fc.agrees() ? 1 : 0;
+      r.max_error = std::max(r.max_error, fc.error);
+    }
+    r.channels.push_back(std::move(fc));
+  }
+  features.erase("all");
+  for (auto& [tag, f] : features) r.features.push_back(std::move(f));
+  return r;
+}
+
+fidelity_result measure_fidelity(const std::string& path) {
+  return measure_fidelity(io::parse(read_input_file(path, "recording "), path), path);
+}
+
+nlohmann::json to_json(const std::vector<fidelity_result>& results) {
+  nlohmann::json recs = nlohmann::json::array();
+  for (const fidelity_result& r : results) {
+    nlohmann::json features = nlohmann::json::array(), disagree = nlohmann::json::array(),
+                   refused = nlohmann::json::array();
+    for (const fidelity_feature& f : r.features)
+      features.push_back({{"feature", f.feature},
+                          {"channels", f.channels},
+                          {"agree", f.agree},
+                          {"refused", f.refused},
+                          {"max_error", finite_or_null(f.max_error)}});
+    double tolerance = 0;
+    for (const fidelity_channel& c : r.channels) {
+      if (c.refused) {
+        refused.push_back({{"name", c.name}, {"reason", c.reason}});
+        continue;
+      }
+      tolerance = std::max(tolerance, c.tolerance());
+      if (!c.agrees())
+        disagree.push_back({{"name", c.name},
+                            {"features", c.features},
+                            {"error", finite_or_null(c.error)},
+                            {"t", c.worst_t},
+                            {"model", finite_or_null(c.model)},
+                            {"recorded", c.recorded}});
+    }
+    recs.push_back({{"file", r.file},
+                    {"tool", r.tool},
+                    {"source", r.source},
+                    {"channels", r.channels.size()},
+                    {"agree", r.agree},
+                    {"refused", r.refused},
+                    {"tolerance", tolerance},
+                    {"max_error", finite_or_null(r.max_error)},
+                    {"features", features},
+                    {"disagree", disagree},
+                    {"refused_channels", refused}});
+  }
+  return {{"agree_ulps", agree_ulps}, {"recordings", recs}};
+}
+
+}  // namespace curvebench::harness

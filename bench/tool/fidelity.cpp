@@ -1,0 +1,94 @@
+// curvebench fidelity: how many channels recorded from the real tools (tests/data/*.json in the
+// recording format of harness/fidelity.hpp) each tool model reproduces, and to what error.
+#include "tool/tool.hpp"
+
+#include "harness/fidelity.hpp"
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace curvebench::tool {
+
+namespace {
+
+std::string g(double x, int digits = 3) {
+  std::ostringstream os;
+  os << std::setprecision(digits) << x;
+  return os.str();
+}
+
+std::string source_line(const nlohmann::json& s) {
+  std::string out;
+  for (const char* k : {"implementation", "version", "commit", "build"})
+    if (s.contains(k) && s[k].is_string() && !s[k].get<std::string>().empty())
+      out += (out.empty() ? "" : ", ") + std::string(k == std::string("commit") ? "commit " : "") +
+             s[k].get<std::string>();
+  return out.empty() ? "(no source given)" : out;
+}
+
+void print(const harness::fidelity_result& r) {
+  const std::size_t evaluated = r.channels.size() - r.refused;
+  const int bits = r.channels.empty() ? 64 : r.channels.front().bits;
+  std::cout << r.tool << " against " << source_line(r.source) << " (" << r.file << "):\n  " << r.agree << " of "
+            << evaluated << " evaluated channels agree to " << harness::agree_ulps << " eps("
+            << (bits == 32 ? "float" : "double") << ") of their range; max error " << g(r.max_error) << " of the range";
+  if (r.refused > 0) std::cout << "; " << r.refused << " refused (not modelled)";
+  std::cout << "\n  " << std::left << std::setw(28) << "feature" << std::setw(10) << "channels" << std::setw(8)
+            << "agree" << std::setw(9) << "refused"
+            << "max error\n";
+  for (const harness::fidelity_feature& f : r.features)
+    std::cout << "  " << std::setw(28) << f.feature << std::setw(10) << f.channels << std::setw(8) << f.agree
+              << std::setw(9) << f.refused << g(f.max_error) << "\n";
+  for (const harness::fidelity_channel& c : r.channels) {
+    if (c.refused)
+      std::cout << "  refused: " << c.name << ": " << c.reason << "\n";
+    else if (!c.agrees())
+      std::cout << "  disagrees: " << c.name << ": " << g(c.error) << " of the range at t = " << g(c.worst_t, 17)
+                << " (model " << g(c.model, 17) << ", tool " << g(c.recorded, 17) << ")\n";
+  }
+  std::cout << std::right;
+}
+
+}  // namespace
+
+CLI::App* add_fidelity(CLI::App& app, fidelity_args& a) {
+  auto* f = app.add_subcommand(
+      "fidelity",
+      "how many channels recorded from the real tools (Blender, AnimX for Maya, OpenUSD's Ts) each tool model "
+      "reproduces, per feature, and to what error (relative to the channel's value range)");
+  f->add_option("recordings", a.recordings,
+                "recording files (tests/data/blender_heldout.json, animx_curves.json, usd_ts_splines.json: "
+                "{\"tool\", \"source\", \"channels\": [{\"name\", \"features\", \"spec\", \"t\", \"value\"}]})")
+      ->required()
+      ->check(CLI::ExistingFile);
+  f->add_flag("--json", a.json, "JSON on stdout (the report's reports/fidelity.json)");
+  f->add_flag("--require-agreement", a.require,
+              "exit 1 when a channel disagrees, or is refused without the recording saying it was");
+  f->footer(example("curvebench fidelity tests/data/animx_curves.json"));
+  return f;
+}
+
+int run_fidelity(const fidelity_args& a) {
+  std::vector<harness::fidelity_result> results;
+  for (const std::string& path : a.recordings) results.push_back(harness::measure_fidelity(path));
+  if (a.json) {
+    nlohmann::json j = harness::to_json(results);
+    j["curvebench"] = version_line();  // the models measured: the published table names them
+    std::cout << std::setw(1) << j << "\n";
+  }
+  else
+    for (const auto& r : results) print(r);
+  int failed = 0;
+  for (const auto& r : results)
+    for (const auto& c : r.channels)
+      if ((c.refused && !c.marked_refused) || (!c.refused && !c.agrees())) {
+        if (a.require)
+          std::cerr << "curvebench: fidelity: " << r.file << ": " << c.name
+                    << (c.refused ? " is refused but not recorded as refused" : " disagrees with the tool") << "\n";
+        ++failed;
+      }
+  return a.require && failed > 0 ? 1 : 0;
+}
+
+}  // namespace curvebench::tool

@@ -1,0 +1,122 @@
+// The fidelity measure (harness/fidelity.hpp) on recordings whose tool values are known in closed
+// form: linear keys (the value at any time is the chord, exact in binary at the chosen times), a
+// value moved by a known amount (a disagreement of exactly that fraction of the range), a refused
+// channel, the per-feature counts and the file errors.
+#include "harness/fidelity.hpp"
+
+#include "support/fixtures.hpp"
+
+#include "curvebench/core/error.hpp"
+#include "curvebench/io/json_fields.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace cb = curvebench;
+namespace h = curvebench::harness;
+using ::testing::HasSubstr;
+
+namespace {
+
+// Maya, linear tangents from (0, 0) to (10, 5) and constant infinity: v(t) = t / 2 inside, 5 after.
+const char* maya_linear = R"({"type": "channel", "tool": "maya",
+  "keys": [{"time": 0, "value": 0, "in_type": "linear", "out_type": "linear"},
+           {"time": 10, "value": 5, "in_type": "linear", "out_type": "linear"}]})";
+
+nlohmann::json recording(const std::string& channels) {
+  return cb::io::parse(R"({"tool": "maya", "source": {"implementation": "closed form", "commit": "none"},
+                           "channels": [)" +
+                           channels + "]}",
+                       "test");
+}
+
+std::string channel(const std::string& name, const std::string& features, const std::string& spec,
+                    const std::string& values, const std::string& extra = "") {
+  return R"({"name": ")" + name + R"(", "features": [)" + features + R"(], "spec": )" + spec +
+         R"(, "t": [0, 2.5, 5, 10, 20], "value": )" + values + extra + "}";
+}
+
+}  // namespace
+
+TEST(fidelity, exact_values_agree_and_a_moved_value_is_measured) {
+  // Range 5; moving one value by 2^-20 (2.5 + 2^-20 = 2.50000095367431640625 exactly) is an error of 2^-20 / 5 of the
+  // range: well above agree_ulps eps(double) (2.8e-14), so a disagreement, measured to rounding (one division).
+  const double moved = std::ldexp(1.0, -20);
+  const h::fidelity_result r =
+      h::measure_fidelity(recording(channel("exact", R"("tangent:linear")", maya_linear, "[0, 1.25, 2.5, 5, 5]") + "," +
+                                    channel("moved", R"("tangent:linear", "post:constant")", maya_linear,
+                                            "[0, 1.25, 2.50000095367431640625, 5, 5]")),
+                          "rec.json");
+  ASSERT_EQ(r.channels.size(), 2u);
+  EXPECT_EQ(r.tool, "maya");
+  EXPECT_EQ(r.channels[0].error, 0);
+  EXPECT_TRUE(r.channels[0].agrees());
+  EXPECT_EQ(r.channels[0].bits, 64);
+  EXPECT_DOUBLE_EQ(r.channels[1].error, moved / 5);
+  EXPECT_EQ(r.channels[1].worst_t, 5);
+  EXPECT_EQ(r.channels[1].model, 2.5);
+  EXPECT_FALSE(r.channels[1].agrees());
+  EXPECT_EQ(r.agree, 1u);
+  EXPECT_EQ(r.refused, 0u);
+  EXPECT_DOUBLE_EQ(r.max_error, moved / 5);
+  // Per feature: tangent:linear has both channels, post:constant only the moved one.
+  ASSERT_EQ(r.features.size(), 2u);
+  EXPECT_EQ(r.features[0].feature, "post:constant");
+  EXPECT_EQ(r.features[0].channels, 1u);
+  EXPECT_EQ(r.features[0].agree, 0u);
+  EXPECT_EQ(r.features[1].feature, "tangent:linear");
+  EXPECT_EQ(r.features[1].channels, 2u);
+  EXPECT_EQ(r.features[1].agree, 1u);
+  const nlohmann::json j = h::to_json({r});
+  EXPECT_EQ(j["recordings"][0]["disagree"].size(), 1u);
+  EXPECT_EQ(j["recordings"][0]["disagree"][0]["name"], "moved");
+  EXPECT_EQ(j["recordings"][0]["source"]["implementation"], "closed form");
+}
+
+TEST(fidelity, a_refused_channel_is_counted_with_todays_reason) {
+  const std::string bad = R"({"type": "channel", "tool": "maya",
+    "keys": [{"time": 0, "value": 0, "in_type": "bogus"}, {"time": 10, "value": 5}]})";
+  const h::fidelity_result r = h::measure_fidelity(
+      recording(channel("bogus", R"("tangent:bogus")", bad, "[0, 1, 2, 3, 4]", R"(, "refused": "old reason")")),
+      "rec.json");
+  ASSERT_EQ(r.channels.size(), 1u);
+  EXPECT_TRUE(r.channels[0].refused);
+  EXPECT_TRUE(r.channels[0].marked_refused);
+  EXPECT_FALSE(r.channels[0].agrees());
+  EXPECT_THAT(r.channels[0].reason, HasSubstr("keys[0].in_type: not a Maya tangent type"));
+  EXPECT_EQ(r.refused, 1u);
+  EXPECT_EQ(r.features[0].refused, 1u);
+}
+
+TEST(fidelity, a_float_tool_is_held_to_float) {
+  // Blender's linear interpolation in float: v(2.5) = 1.25 exactly; agree_ulps eps(float) is the bound.
+  const char* blender = R"({"type": "channel", "tool": "blender", "keys": [
+    {"time": 0, "value": 0, "interpolation": "linear"}, {"time": 10, "value": 5, "interpolation": "linear"}]})";
+  const h::fidelity_result r =
+      h::measure_fidelity(cb::io::parse(R"({"tool": "blender", "source": {}, "channels": [)" +
+                                            channel("linear", "", blender, "[0, 1.25, 2.5, 5, 5.0000001]") + "]}",
+                                        "b.json"),
+                          "b.json");
+  EXPECT_EQ(r.channels[0].bits, 32);
+  EXPECT_DOUBLE_EQ(r.channels[0].tolerance(), h::agree_ulps * std::numeric_limits<float>::epsilon());
+  EXPECT_NEAR(r.channels[0].error, 1e-7 / 5, 1e-15);  // the last value's 1e-7 (constant extrapolation)
+  EXPECT_TRUE(r.channels[0].agrees());
+}
+
+TEST(fidelity, malformed_recordings_name_the_field) {
+  const auto msg = [](const std::string& text) {
+    return cb::testing::invalid_input_of([&] { (void)h::measure_fidelity(cb::io::parse(text, "r.json"), "r.json"); });
+  };
+  EXPECT_THAT(msg(R"({"source": {}, "channels": []})"), HasSubstr("tool"));
+  EXPECT_THAT(msg(R"({"tool": "maya", "source": {}, "channels": [], "extra": 1})"), HasSubstr("extra"));
+  EXPECT_THAT(msg(R"({"tool": "maya", "source": {}, "channels": [)" + channel("n", "", maya_linear, "[0, 1]") + "]}"),
+              HasSubstr("5 times and 2 values"));
+  // A channel of another tool in a maya recording.
+  const char* blender = R"({"type": "channel", "tool": "blender", "keys": [{"time": 0, "value": 0}]})";
+  EXPECT_THAT(msg(R"({"tool": "maya", "source": {}, "channels": [)" + channel("b", "", blender, "[0,0,0,0,0]") + "]}"),
+              HasSubstr("not the recording's tool"));
+}
