@@ -365,6 +365,6 @@ def fidelity_section(fidelity, tools):
             md.append(lib.table(["channel", "error (x range)", "t", "model", "tool"],
                                 [[d["name"], d["error"], d["t"], d["model"], d["recorded"]] for d in r["disagree"]]))
         if r["refused_channels"]:
-            md += ["", "Refused (not modelled): " + "; ".join(f"{c['name']} ({c['reason']})"
-                                                           for c in r["refused_channels"])]
+            refused = "; ".join(f"{c['name']} ({c['reason']})" for c in r["refused_channels"])
+            md += ["", "Refused (not modelled): " + refused]
     return md
