@@ -76,8 +76,7 @@ int run_fidelity(const fidelity_args& a) {
     nlohmann::json j = harness::to_json(results);
     j["curvebench"] = version_line();  // the models measured: the published table names them
     std::cout << std::setw(1) << j << "\n";
-  }
-  else
+  } else
     for (const auto& r : results) print(r);
   int failed = 0;
   for (const auto& r : results)
