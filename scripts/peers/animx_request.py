@@ -148,7 +148,8 @@ def hand_picked():
     h = 0.5  # seconds, keys on quarter seconds
     cases = {
         "out_past_upper": (1.2, 0.9),
-        "out_past_lower": (1.1, 0.05),
+        "out_just_past_upper": (1.2, 0.76),  # the upper edge at a = 1.2 is c = 0.7464
+        "out_past_lower": (1.1, 0.005),  # the lower edge at a = 1.1 is c = 0.0112
         "out_beyond_tip": (2.5, 0.6),
         "in_past": (0.2, 1.7),
         "both_past": (1.6, 1.6),
