@@ -78,13 +78,26 @@
 // first key's in tangent, the last key's out tangent: the Help says linear infinity continues
 // along the end key's tangent, and AnimX extends the line at the first key's in tangent's and the
 // last key's out tangent's angle; a step type there is slope 0, not settled by AnimX), cycle,
-// cycle_relative (Cycle with Offset, channel cycle_offset: each period shifted by
-// v_last - v_first) and oscillate (channel oscillate: the period next to the keyed range is the
-// mirrored one), which agree with AnimX's wrapping, but for one boundary: under cycle
-// pre-infinity a time exactly k >= 1 periods before the first key takes the last key's value (the
-// end of the previous repeat; measured with AnimX, issue 31), where the channel's cycle takes the
-// first key's. Linear infinity is evaluated here from the end
-// key's own tangent; the other modes are the channel's. A one-key curve is constant under every
+// cycle_relative (Cycle with Offset: each period shifted by v_last - v_first) and oscillate (the
+// period next to the keyed range mirrored), wrapped as AnimX wraps them (measured against AnimX's
+// values, tests/data/animx_curves.json, issue 31): with T = t_last - t_first and r = (t - t_end) / T
+// computed in Real (t_end the first key before the keys, the last after), N = |trunc(r)| + 1 and
+// the fraction f = T |r - trunc(r)|, the time evaluated is t_last - f before the keys and
+// t_first + f after them (cycle, cycle_relative), for oscillate t_first + f before and t_last - f
+// after when N is odd (the mirrored repeats; dv/dt changes sign), else as for cycle;
+// cycle_relative adds -N (v_last - v_first) before and +N (v_last - v_first) after. So at exactly
+// k >= 1 whole periods before the first key cycle gives the last key's value (f = 0 maps to the
+// end of the previous repeat) and after the last key the first key's. Whether a time is such a
+// boundary is decided by r's rounding in Real, as AnimX decides it in double: with times in seconds
+// on frames (n / 24, inexact), t - t_end = k T in exact arithmetic may round to a fraction just
+// under 1 (then the other side's key) or just over 0. AnimX then rounds the wrapped time to Maya's
+// ticks (1/141120000 s, in 64-bit time), which lands a time within rounding of a key on the key;
+// times here have no unit, so the wrapped time is snapped to a key within the wrap's own rounding,
+// 4 eps (|t| + 2 max(|t_first|, |t_last|) + T), instead (the same key on tick-aligned times; a
+// wrapped time off the ticks, which Maya's times never are, is not rounded). The channel keeps its
+// own cycle / cycle_offset / oscillate (its curve view), which differ from these only within
+// rounding of the period boundaries. Linear infinity is evaluated here from the end key's own
+// tangent. A one-key curve is constant under every
 // mode (the channel's rule; AnimX's code returns 0 outside a one-key curve's key under any
 // non-constant infinity, which this model does not follow: not settled).
 // Evaluation: maya_model(curve) builds the evaluator in double with the isolate_brent time solver
@@ -92,8 +105,12 @@
 // which isolates the roots of x(u) - t between the zeros of its derivative and refines with
 // Brent-Dekker). Not modelled from AnimX's evaluator: its shortcuts (a weighted segment whose
 // handles lie within 1e-6 of the thirds in time is solved as u = (t - t0) / h; a non-weighted
-// segment whose two slopes are within 2e-7 relative of the chord is the chord), the rounding of
-// Bezier span times to float unless built with 64-bit time, and the float storage of tangents.
+// segment whose two slopes are within 2e-7 relative of the chord is the chord), AnimX's key
+// snapping (a time within 1e-10 of a key is the key), and, in builds without 64-bit time, the
+// float storage of tangents and the rounding of Bezier span times to float. Measured against
+// AnimX (tests/test_maya_animx.cpp: fixed, auto, flat, linear, step and step_next tangents,
+// weighted and not, regressive handles, every infinity on both sides): every recorded value
+// within 8 eps(double) of V + |dv/dt| (|t| + H).
 // maya_exact<High>(curve) builds the same keys converted exactly to High (real50) with the exact
 // solver; the tangent rules are then applied in High too.
 // Validation (invalid_input naming the key index and field with the value): no keys, non-finite
@@ -118,6 +135,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -444,17 +462,10 @@ class maya_evaluator {
     if (keys.size() > 1 && is_finite(t)) {  // non-finite t: the channel's domain_error
       if (pre_ == maya_infinity::linear && t < keys.front().time) return line(keys.front(), slope_pre_, t, order);
       if (post_ == maya_infinity::linear && t > keys.back().time) return line(keys.back(), slope_post_, t, order);
-      // Cycle pre-infinity at exactly k >= 1 whole periods before the first key: Maya (AnimX)
-      // maps the cycle's position 0 to the end of the previous repeat, the last key. Only an exact
-      // multiple counts (both differences exact in Real), so that a rounding does not move the
-      // boundary away from the truth's.
-      if (pre_ == maya_infinity::cycle && t < keys.front().time) {
-        using std::fmod;
-        Real before, period;
-        if (exact_difference(keys.front().time, t, before) &&
-            exact_difference(keys.back().time, keys.front().time, period) && fmod(before, period) == Real(0))
-          return channel_.derivative(keys.back().time, order);
-      }
+      const bool before = (t < keys.front().time);
+      const bool after = (t > keys.back().time);
+      const maya_infinity mode = before ? pre_ : post_;
+      if ((before || after) && mode != maya_infinity::constant) return wrapped(t, before, mode, order);
     }
     return channel_.derivative(t, order);
   }
@@ -473,12 +484,42 @@ class maya_evaluator {
                          c.post == maya_infinity::linear ? extrapolation::constant : to_extrapolation(c.post), solver);
   }
 
-  /// d = a - b; whether it is exact (Knuth's two-sum: the rounding error of the difference is 0).
-  static bool exact_difference(const Real& a, const Real& b, Real& d) {
-    d = a - b;
-    const Real nb = -b;
-    const Real bv = d - a, av = d - bv;
-    return (a - av) + (nb - bv) == Real(0);
+  // A cyclic infinity (cycle, cycle_relative, oscillate) as AnimX computes it (the header comment,
+  // "Infinity"): the ratio of t's distance from the end key to the period, its whole part and the
+  // fraction, the fraction times the period from the end the mode maps it to; then the wrapped time
+  // within the wrap's rounding of a key is that key (AnimX rounds it to Maya's ticks).
+  Real wrapped(const Real& t, bool before, maya_infinity mode, int order) const {
+    using std::abs;
+    using std::fmod;
+    using std::max;
+    using std::trunc;
+    const auto keys = channel_.keys();
+    const Real t_first = keys.front().time, t_last = keys.back().time;
+    const Real period = t_last - t_first;
+    const Real ratio = (t - (before ? t_first : t_last)) / period;
+    const Real whole = trunc(ratio);
+    const Real offset = period * abs(ratio - whole);  // ratio - whole: exact (the fraction)
+    const Real cycles = abs(whole) + Real(1);
+    const bool odd = fmod(cycles, Real(2)) != Real(0);
+    const bool mirrored = mode == maya_infinity::oscillate && odd;
+    const bool from_first = before ? mirrored : !(mode == maya_infinity::oscillate && odd);
+    Real at = std::clamp(from_first ? Real(t_first + offset) : Real(t_last - offset), t_first, t_last);
+    // Snap to a key: the wrap's rounding is a few eps of |t|, the key times and the period.
+    const Real snap = Real(4) * epsilon<Real>() * (abs(t) + Real(2) * max(abs(t_first), abs(t_last)) + period);
+    const auto next =
+        std::lower_bound(keys.begin(), keys.end(), at, [](const key<Real>& k, const Real& x) { return k.time < x; });
+    if (next != keys.end() && next->time - at <= snap) {
+      at = next->time;
+    } else if (next != keys.begin() && at - std::prev(next)->time <= snap) {
+      at = std::prev(next)->time;
+    }
+    Real result = channel_.derivative(at, order);
+    if (mirrored && order == 1) result = -result;
+    if (mode == maya_infinity::cycle_relative && order == 0) {
+      const Real shift = cycles * (keys.back().value - keys.front().value);
+      result = before ? Real(result - shift) : Real(result + shift);
+    }
+    return result;
   }
 
   static Real line(const key<Real>& k, const Real& slope, const Real& t, int order) {
