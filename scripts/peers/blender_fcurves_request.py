@@ -326,6 +326,17 @@ def heldout_request(seed=HELDOUT_SEED):
             times = sample_times(layout, rng, between=10)
             times += [t + 0.001 * j for t, _ in layout for j in (1, 3)]  # below float32's spacing there
             add(f"far/{int(start)}/{what}/{width}", feats, keys, sorted(set(times)), ex, "CONT_ACCEL", cycles)
+    #    The control: the same channels moved to start at frame 0 (what differs there and not here
+    #    is the rounding of absolute frames near 1e4 and 1e5).
+    for far in [c for c in channels if c["name"].startswith("far/")]:
+        start = far["keys"][0]["time"]
+        keys = [dict(k, time=k["time"] - start) for k in far["keys"]]
+        for k in keys:
+            for side in ("handle_left", "handle_right"):
+                if side in k:
+                    k[side] = [k[side][0] - start, k[side][1]]
+        add("far/0/" + far["name"].split("/", 2)[2], ["far:0"] + far["features"][1:], keys,
+            [t - start for t in far["times"]], far["extrapolation"], far["auto_smoothing"], far.get("cycles"))
     # 6. Linear extrapolation past an end key whose own interpolation differs from its segment's:
     #    the last key's interpolation (which no segment uses) against the one of the segment
     #    before it; and a single key of each interpolation.
