@@ -379,6 +379,65 @@ TEST(blender, cycles_with_counts) {
   for (double t : {-9.5, -20.0}) EXPECT_EQ(m.value(t), plain.value(t)) << t;
 }
 
+// Linear extrapolation goes by the end key's own interpolation, not its segment's (measured on
+// tests/data/blender_heldout.json: end_key/*, single_key/*, easing/*): constant, flat; linear, the
+// chord to the neighbour key; bezier and eased, the outer handle's slope. Closed forms on free
+// handles, in double: the lines through the key with those slopes.
+TEST(blender, linear_extrapolation_follows_the_end_keys_interpolation) {
+  ch::blender_fcurve<double> f;
+  f.extrapolation = ch::blender_extrapolation::linear;
+  f.smoothing = ch::auto_smoothing::none;
+  for (auto [t, v] : std::vector<std::pair<double, double>>{{0, 1}, {4, 3}, {10, -2}}) {
+    ch::blender_key<double> k;
+    k.time = t;
+    k.value = v;
+    k.handle_left_type = k.handle_right_type = handle_type::free;
+    k.handle_left = {t - 2, v - 3};   // slope 1.5 on the left
+    k.handle_right = {t + 1, v + 2};  // slope 2 on the right
+    f.keys.push_back(k);
+  }
+  const double chord_before = (3.0 - 1.0) / 4, chord_after = (-2.0 - 3.0) / 6;
+  const double before = -3, after = 14;  // 3 frames before the first key, 4 after the last
+  for (blender_interpolation end : {blender_interpolation::constant, blender_interpolation::linear,
+                                    blender_interpolation::bezier, blender_interpolation::quad}) {
+    // The segments are bezier (the first key's interpolation is also its segment's); the last
+    // key's is the one no segment uses.
+    f.keys.front().interpolation = end;
+    f.keys[1].interpolation = blender_interpolation::bezier;
+    f.keys.back().interpolation = end;
+    const auto m = ch::blender_model(f, ch::time_solver::exact);
+    const double s_before = end == blender_interpolation::constant ? 0.0
+                            : end == blender_interpolation::linear ? chord_before
+                                                                   : 1.5;
+    const double s_after = end == blender_interpolation::constant ? 0.0
+                           : end == blender_interpolation::linear ? chord_after
+                                                                  : 2.0;
+    EXPECT_NEAR(m.value(before), 1 + (before - 0) * s_before, exact_rel * 10) << ch::to_string(end);
+    EXPECT_NEAR(m.value(after), -2 + (after - 10) * s_after, exact_rel * 10) << ch::to_string(end);
+    EXPECT_EQ(m.derivative(before, 1), s_before) << ch::to_string(end);
+    EXPECT_EQ(m.derivative(after, 1), s_after) << ch::to_string(end);
+    EXPECT_EQ(m.derivative(after, 2), 0.0);
+  }
+  // The last key's interpolation alone decides after the keys: constant after a bezier segment is
+  // flat, linear after it is the chord.
+  f.keys.front().interpolation = f.keys[1].interpolation = blender_interpolation::bezier;
+  f.keys.back().interpolation = blender_interpolation::constant;
+  EXPECT_EQ(ch::blender_model(f).value(after), -2.0);
+  f.keys.back().interpolation = blender_interpolation::linear;
+  EXPECT_NEAR(ch::blender_model(f).value(after), -2 + 4 * chord_after, exact_rel * 10);
+  // A single key: along its handle when bezier or eased, flat when constant or linear.
+  ch::blender_fcurve<double> one = f;
+  one.keys.resize(1);
+  for (blender_interpolation i : {blender_interpolation::constant, blender_interpolation::linear,
+                                  blender_interpolation::bezier, blender_interpolation::sine}) {
+    one.keys[0].interpolation = i;
+    const bool flat = i == blender_interpolation::constant || i == blender_interpolation::linear;
+    const auto m = ch::blender_model(one);
+    EXPECT_NEAR(m.value(-2), flat ? 1.0 : 1 - 2 * 1.5, exact_rel * 10) << ch::to_string(i);
+    EXPECT_NEAR(m.value(3), flat ? 1.0 : 1 + 3 * 2.0, exact_rel * 10) << ch::to_string(i);
+  }
+}
+
 TEST(blender, validation_messages) {
   const auto msg = [](auto&& fn) { return cbt::message_of(fn); };
   ch::blender_fcurve<double> f;

@@ -1,7 +1,8 @@
 """Evaluate keyframe channels with real Blender: the peer that records Blender's F-curve values.
 
 Run inside Blender:
-    blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- IN.json OUT.json
+    blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- IN.json OUT.json \
+        [--common CURVEBENCH]
 
 IN.json is a list of channels, or an object {"channels": [...], "note": "..."} (the note, e.g. the
 command that regenerated the file, is copied to the output). A channel:
@@ -28,12 +29,20 @@ OUT.json: {"blender_version": "3.4.1", "note": ..., "channels": [{"name", "keys"
 the float32 values Blender stores: back = 1.70158 reads back as 1.7015800476074219) and "values"
 are fcurve.evaluate(t) at each time (float32 results, written as exact doubles).
 
+With --common CURVEBENCH (the path of curvebench's CLI), OUT.json is written in the common recording
+format of tests/data (tool, source, channels of {name, features, spec, t, value}): each channel's
+spec is the "blender" tool's channel spec of the F-curve Blender holds after update(), made by
+scripts/blender_export.py's spec_of (one conversion for both), and a spec that `CURVEBENCH sample`
+refuses keeps its values with "refused": the CLI's message. A channel may carry "features" (tags,
+copied).
+
 The reading, checking and writing functions do not import bpy, so they can be tested with plain
 Python (tests/python/test_blender_fcurves.py).
 """
 
 import json
 import math
+import os
 import sys
 
 INTERPOLATIONS = ("CONSTANT", "LINEAR", "BEZIER", "SINE", "QUAD", "CUBIC", "QUART", "QUINT", "EXPO", "CIRC",
@@ -44,7 +53,7 @@ EXTRAPOLATIONS = ("CONSTANT", "LINEAR")
 CYCLE_MODES = ("NONE", "REPEAT", "REPEAT_OFFSET", "MIRROR")
 KEY_FIELDS = ("time", "value", "interpolation", "easing", "back", "amplitude", "period", "handle_left_type",
               "handle_right_type", "handle_left", "handle_right")
-CHANNEL_FIELDS = ("name", "keys", "extrapolation", "auto_smoothing", "cycles", "times")
+CHANNEL_FIELDS = ("name", "features", "keys", "extrapolation", "auto_smoothing", "cycles", "times")
 AUTO_SMOOTHINGS = ("NONE", "CONT_ACCEL")
 CYCLE_FIELDS = ("mode_before", "mode_after", "cycles_before", "cycles_after")
 
@@ -117,9 +126,14 @@ def check_request(data):
         times = ch.get("times")
         if not isinstance(times, list) or not times:
             raise RequestError(f"{p}.times: expected a non-empty list of numbers")
+        features = ch.get("features", [])
+        if not isinstance(features, list) or not all(isinstance(f, str) for f in features):
+            raise RequestError(f"{p}.features = {features!r}: expected a list of strings")
         c = {"name": str(ch.get("name", f"channel{ci}")), "keys": checked_keys,
              "extrapolation": _choice(f"{p}.extrapolation", ch.get("extrapolation", "CONSTANT"), EXTRAPOLATIONS),
              "times": [_number(f"{p}.times[{i}]", t) for i, t in enumerate(times)]}
+        if features:
+            c["features"] = features
         if "auto_smoothing" in ch:
             c["auto_smoothing"] = _choice(f"{p}.auto_smoothing", ch["auto_smoothing"], AUTO_SMOOTHINGS)
         if "cycles" in ch:
@@ -165,11 +179,61 @@ def write_result(path, doc):
 
 
 def script_arguments(argv):
-    """The arguments after Blender's "--" separator: [IN.json, OUT.json]."""
+    """The arguments after Blender's "--" separator: [IN.json, OUT.json] (and the CLI's path after
+    --common, when given: [IN.json, OUT.json, CURVEBENCH])."""
     args = argv[argv.index("--") + 1:] if "--" in argv else []
+    if len(args) == 4 and args[2] == "--common":
+        return [args[0], args[1], args[3]]
     if len(args) != 2:
-        raise RequestError("usage: blender -b --factory-startup --python blender_fcurves.py -- IN.json OUT.json")
+        raise RequestError("usage: blender -b --factory-startup --python blender_fcurves.py -- IN.json OUT.json "
+                           "[--common CURVEBENCH]")
     return args
+
+
+def refusal(curvebench, spec, times):
+    """None when `curvebench sample` evaluates the spec at the times (values only), as the truth and
+    with --as-tool, else its message."""
+    import subprocess
+    import tempfile
+    with tempfile.TemporaryDirectory() as d:
+        path = f"{d}/spec.json"
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(spec, f)
+        with open(f"{d}/t.txt", "w", encoding="utf-8") as f:
+            f.write("".join(f"{t!r}\n" for t in times))
+        for tool in ([], ["--as-tool"]):  # the spec's reader, then the tool's own (float32) evaluation
+            run = subprocess.run([curvebench, "sample", path, "--at-file", f"{d}/t.txt", "--derivatives", "0",
+                                  "--quiet"] + tool, capture_output=True, text=True)
+            if run.returncode != 0:
+                return " ".join(run.stderr.replace(path, "spec.json").split())
+    return None
+
+
+def common_document(source, channels, spec_of, curvebench):
+    """The common recording format: {"tool": "blender", "source", "channels": [{"name", "features",
+    "spec", "t", "value"} and "refused" when curvebench's reader refuses the spec]}."""
+    out = []
+    for ch in channels:
+        spec = spec_of(ch, ch["name"])
+        entry = {"name": ch["name"], "features": ch.get("features", []), "spec": spec, "t": ch["times"],
+                 "value": ch["values"]}
+        why = refusal(curvebench, spec, ch["times"])
+        if why is not None:
+            entry["refused"] = why
+        out.append(entry)
+    return {"tool": "blender", "source": source, "channels": out}
+
+
+def write_common(path, doc):
+    """One channel per line, numbers as repr (17 significant digits at most, exact)."""
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("{\n")
+        for k, v in doc.items():
+            if k != "channels":
+                f.write(f" {json.dumps(k)}: {json.dumps(v)},\n")
+        f.write(' "channels": [\n')
+        f.write(",\n".join("  " + json.dumps(ch, separators=(",", ":")) for ch in doc["channels"]))
+        f.write("\n ]\n}\n")
 
 
 def read_fcurve(fc):
@@ -229,17 +293,41 @@ def evaluate_in_blender(bpy, channels):
                 setattr(m, f, ch["cycles"][f])
         fc.update()
         r = {"name": ch["name"], **read_fcurve(fc)}
+        if "features" in ch:
+            r["features"] = ch["features"]
         r["times"] = ch["times"]
         r["values"] = [fc.evaluate(t) for t in ch["times"]]
         results.append(r)
     return results
 
 
+def source_of(bpy, note):
+    """The "source" of the common recording format for this Blender."""
+    import datetime
+    import platform
+
+    def text(b):
+        return b.decode() if isinstance(b, bytes) else str(b)
+    return {"implementation": "Blender", "repository": "https://projects.blender.org/blender/blender",
+            "commit": f"{bpy.app.version_string} (build hash {text(bpy.app.build_hash)})",
+            "version": bpy.app.version_string,
+            "build": f"the distribution's binary ({platform.system()} {platform.machine()}, build type "
+                     f"{text(bpy.app.build_type)}); F-curves evaluated in float32 by fcurve.evaluate",
+            "recorded": datetime.date.today().isoformat(),
+            "command": note.split("regenerate with: ", 1)[-1] if note else "scripts/peers/blender_fcurves.py"}
+
+
 def main(argv):
-    in_path, out_path = script_arguments(argv)
-    channels, note = read_request(in_path)
+    args = script_arguments(argv)
+    channels, note = read_request(args[0])
     import bpy  # only inside Blender
-    write_result(out_path, result_document(blender_version(bpy), note, evaluate_in_blender(bpy, channels)))
+    results = evaluate_in_blender(bpy, channels)
+    if len(args) == 3:
+        sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+        import blender_export  # noqa: E402  (spec_of: the one conversion of an F-curve to a spec)
+        write_common(args[1], common_document(source_of(bpy, note), results, blender_export.spec_of, args[2]))
+    else:
+        write_result(args[1], result_document(blender_version(bpy), note, results))
 
 
 if __name__ == "__main__":

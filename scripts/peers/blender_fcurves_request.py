@@ -7,8 +7,19 @@ Regenerate the fixture (Blender 3.4.1 from Debian bookworm was used):
     python3 scripts/peers/blender_fcurves_request.py > /tmp/blender_fcurves_request.json
     blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- \
         /tmp/blender_fcurves_request.json tests/data/blender_fcurves.json
+
+With --heldout it writes instead the request behind tests/data/blender_heldout.json: channels never
+used to find the rules (seeded pseudo-random key layouts, not the hand-picked ones above) covering
+every handle type with each extrapolation on both sides, free handles (broken, long, crossing),
+every interpolation and easing sampled at and between the key times, the Cycles modifier with every
+handle type and smoothing, and frames far from 0. Each channel carries its "features" (the tags of
+the common recording format). Regenerate (curvebench's CLI marks the channels its reader refuses):
+    python3 scripts/peers/blender_fcurves_request.py --heldout > /tmp/blender_heldout_request.json
+    blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- \
+        /tmp/blender_heldout_request.json tests/data/blender_heldout.json --common build-test/bench/curvebench
 """
 
+import itertools
 import json
 import random
 import sys
@@ -149,6 +160,218 @@ def request():
     return {"note": "recorded output of real Blender; regenerate with: " + COMMAND, "channels": channels}
 
 
+HELDOUT_COMMAND = ("python3 scripts/peers/blender_fcurves_request.py --heldout > /tmp/blender_heldout_request.json && "
+                   "blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- "
+                   "/tmp/blender_heldout_request.json tests/data/blender_heldout.json --common "
+                   "build-test/bench/curvebench")
+HELDOUT_SEED = 3102026
+FAMILIES = ("SINE", "QUAD", "CUBIC", "QUART", "QUINT", "EXPO", "CIRC", "BACK", "BOUNCE", "ELASTIC")
+EASING_NAMES = {"AUTO": "auto", "EASE_IN": "in", "EASE_OUT": "out", "EASE_IN_OUT": "in_out"}
+
+
+def random_layout(rng, n_min=3, n_max=7, start=None, spread=10.0):
+    """Keys (frame, value) at uneven random spacings: frames on a 1/8 grid (exact in float32 up to
+    1e5), values to 3 decimals."""
+    t = round(rng.uniform(-20, 20) * 8) / 8 if start is None else start
+    layout = []
+    for _ in range(rng.randint(n_min, n_max)):
+        layout.append((t, round(rng.uniform(-spread, spread), 3)))
+        t += rng.choice((1, 2, 3, 5, 8, 13, 24)) * rng.randint(2, 10) / 8
+    return layout
+
+
+def sample_times(layout, rng, beyond=None, between=5):
+    """Every key time, `between` random times inside each segment, and 6 times beyond each end
+    (up to `beyond` frames away; the span by default)."""
+    t0, t1 = layout[0][0], layout[-1][0]
+    span = t1 - t0 if t1 > t0 else 4.0
+    beyond = span if beyond is None else beyond
+    ts = [t for t, _ in layout]
+    for (a, _), (b, _) in zip(layout, layout[1:]):
+        ts += [a + (b - a) * rng.random() for _ in range(between)]
+    ts += [t0 - beyond * rng.random() for _ in range(6)] + [t1 + beyond * rng.random() for _ in range(6)]
+    return sorted(set(ts))
+
+
+def handle_keys(layout, ht, rng):
+    """Keys with handle type ht on both sides; aligned and free get random handles (aligned ones
+    are given pointing apart, as the UI would leave them; Blender's update() turns the right one),
+    free ones broken: each side its own direction and length, some past the neighbour key."""
+    keys = []
+    for i, (t, v) in enumerate(layout):
+        k = {"time": t, "value": v, "interpolation": "BEZIER", "handle_left_type": ht, "handle_right_type": ht}
+        if ht in ("ALIGNED", "FREE"):
+            dl = (t - layout[i - 1][0]) if i > 0 else (layout[1][0] - t if len(layout) > 1 else 2.0)
+            dr = (layout[i + 1][0] - t) if i + 1 < len(layout) else dl
+            sl = rng.uniform(-3, 3)
+            sr = sl if ht == "ALIGNED" else rng.uniform(-3, 3)
+            ll, lr = dl * rng.uniform(0.1, 1.6), dr * rng.uniform(0.1, 1.6)
+            k["handle_left"] = [t - ll, v - sl * ll]
+            k["handle_right"] = [t + lr, v + sr * lr]
+        keys.append(k)
+    return keys
+
+
+def heldout_request(seed=HELDOUT_SEED):
+    rng = random.Random(seed)
+    channels = []
+
+    def add(name, features, keys, times, extrapolation="CONSTANT", smoothing="CONT_ACCEL", cycles=None):
+        ch = {"name": name, "features": features, "keys": keys, "extrapolation": extrapolation,
+              "auto_smoothing": smoothing, "times": times}
+        if cycles is not None:
+            ch["cycles"] = cycles
+        channels.append(ch)
+
+    handle_types = ("AUTO", "AUTO_CLAMPED", "VECTOR", "ALIGNED", "FREE")
+    # 1. Every handle type with each extrapolation, times beyond both ends; the automatic types
+    #    under both smoothings, two layouts each.
+    for ht in handle_types:
+        for ex in ("CONSTANT", "LINEAR"):
+            for sm in (("NONE", "CONT_ACCEL") if ht.startswith("AUTO") else ("CONT_ACCEL",)):
+                for r in range(2):
+                    layout = random_layout(rng)
+                    add(f"handles/{ht.lower()}/{ex.lower()}/{sm.lower()}/{r}",
+                        [f"handle:{ht.lower()}", f"pre:{ex.lower()}", f"post:{ex.lower()}", f"smoothing:{sm.lower()}"],
+                        handle_keys(layout, ht, rng), sample_times(layout, rng), ex, sm)
+    # 2. Free handles: broken (each side its own direction), long (past the neighbour key, which
+    #    Blender's correction shortens), crossing (the two handles of a segment overtaking each
+    #    other in time), with both extrapolations (the outer handles' slopes beyond the ends).
+    for kind in ("broken", "long", "crossing"):
+        for ex in ("CONSTANT", "LINEAR"):
+            layout = random_layout(rng, 2, 4)
+            keys = handle_keys(layout, "FREE", rng)
+            for i, k in enumerate(keys):
+                t, v = k["time"], k["value"]
+                dl = t - layout[i - 1][0] if i > 0 else layout[1][0] - t
+                dr = layout[i + 1][0] - t if i + 1 < len(layout) else dl
+                if kind == "long":
+                    k["handle_left"] = [t - dl * rng.uniform(1.2, 3.0), v + rng.uniform(-6, 6)]
+                    k["handle_right"] = [t + dr * rng.uniform(1.2, 3.0), v + rng.uniform(-6, 6)]
+                elif kind == "crossing":
+                    k["handle_left"] = [t - dl * rng.uniform(0.6, 0.95), v + rng.uniform(-6, 6)]
+                    k["handle_right"] = [t + dr * rng.uniform(0.6, 0.95), v + rng.uniform(-6, 6)]
+            add(f"free/{kind}/{ex.lower()}", ["handle:free", f"free:{kind}", f"pre:{ex.lower()}", f"post:{ex.lower()}"],
+                keys, sample_times(layout, rng, between=8), ex)
+    # 3. Every interpolation on every segment (three or four keys), sampled at the key times and
+    #    between them; the eased families with each easing and random back / amplitude / period.
+    for interp in ("CONSTANT", "LINEAR", "BEZIER"):
+        for ex in ("CONSTANT", "LINEAR"):
+            layout = random_layout(rng, 3, 4)
+            keys = [{"time": t, "value": v, "interpolation": interp} for t, v in layout]
+            add(f"interpolation/{interp.lower()}/{ex.lower()}",
+                [f"interpolation:{interp.lower()}", f"pre:{ex.lower()}", f"post:{ex.lower()}"], keys,
+                sample_times(layout, rng, between=8), ex)
+    for fam in FAMILIES:
+        for easing in ("AUTO", "EASE_IN", "EASE_OUT", "EASE_IN_OUT"):
+            layout = random_layout(rng, 3, 4)
+            ex = rng.choice(("CONSTANT", "LINEAR"))
+            keys = []
+            for t, v in layout:
+                k = {"time": t, "value": v, "interpolation": fam, "easing": easing}
+                if fam == "BACK":
+                    k["back"] = round(rng.uniform(0, 4), 3)
+                if fam == "ELASTIC":
+                    k["amplitude"] = round(rng.uniform(0, 3), 3)
+                    k["period"] = round(rng.uniform(0.2, 8), 3)
+                keys.append(k)
+            add(f"easing/{fam.lower()}/{EASING_NAMES[easing]}",
+                [f"interpolation:{fam.lower()}", f"easing:{EASING_NAMES[easing]}", "at:key_times",
+                 f"pre:{ex.lower()}", f"post:{ex.lower()}"], keys, sample_times(layout, rng, between=8), ex)
+    # 4. The Cycles modifier with every handle type and both smoothings: repeating forever on both
+    #    sides (the handle rules see a cyclic curve), and random modes with counts (they do not).
+    modes = ("REPEAT", "REPEAT_OFFSET", "MIRROR")
+    for ht in handle_types:
+        for sm in ("NONE", "CONT_ACCEL"):
+            for form in ("infinite", "counted"):
+                layout = random_layout(rng, 3, 6)
+                if form == "infinite":
+                    before, after = rng.choice(modes[:2]), rng.choice(modes[:2])
+                    nb = na = 0
+                else:
+                    before, after = rng.choice(modes), rng.choice(modes)
+                    nb, na = rng.randint(1, 3), rng.randint(1, 3)
+                ex = rng.choice(("CONSTANT", "LINEAR"))
+                span = layout[-1][0] - layout[0][0]
+                add(f"cycles/{ht.lower()}/{sm.lower()}/{form}",
+                    [f"handle:{ht.lower()}", f"smoothing:{sm.lower()}", f"pre:cycles_{before.lower()}",
+                     f"post:cycles_{after.lower()}", f"cycles:{form}", f"pre:{ex.lower()}", f"post:{ex.lower()}"],
+                    handle_keys(layout, ht, rng), sample_times(layout, rng, beyond=span * 4.5, between=3) +
+                    [layout[0][0] - span * j for j in range(1, 5)] + [layout[-1][0] + span * j for j in range(1, 5)],
+                    ex, sm, {"mode_before": before, "mode_after": after, "cycles_before": nb, "cycles_after": na})
+    # 5. Frames far from 0 (float32's spacing 1/1024 near 1e4, 1/128 near 1e5): bezier with auto
+    #    clamped handles, linear, an eased family and a cycle, keys starting there.
+    #    Key spacings as random as elsewhere (some below what curvebench's float model resolves
+    #    there: 2^8 float32 spacings, 3 frames near 1e5) and 8 times wider.
+    for start in (10000.0, 100000.0):
+        for what, width in itertools.product(("auto_clamped", "linear", "quad", "cycles"), ("narrow", "wide")):
+            layout = random_layout(rng, 3, 5, start=start, spread=50.0)
+            if width == "wide":
+                layout = [(start + 8 * (t - start), v) for t, v in layout]
+            ex = "LINEAR"
+            if what == "linear":
+                keys = [{"time": t, "value": v, "interpolation": "LINEAR"} for t, v in layout]
+            elif what == "quad":
+                keys = [{"time": t, "value": v, "interpolation": "QUAD", "easing": "EASE_IN_OUT"} for t, v in layout]
+            else:
+                keys = handle_keys(layout, "AUTO_CLAMPED", rng)
+            cycles = None
+            feats = [f"far:{int(start)}", f"interpolation:{'bezier' if what in ('auto_clamped', 'cycles') else what}"]
+            if what == "cycles":
+                cycles = {"mode_before": "REPEAT_OFFSET", "mode_after": "REPEAT", "cycles_before": 0,
+                          "cycles_after": 0}
+                feats += ["pre:cycles_repeat_offset", "post:cycles_repeat"]
+            else:
+                feats += ["pre:linear", "post:linear"]
+            times = sample_times(layout, rng, between=10)
+            times += [t + 0.001 * j for t, _ in layout for j in (1, 3)]  # below float32's spacing there
+            add(f"far/{int(start)}/{what}/{width}", feats, keys, sorted(set(times)), ex, "CONT_ACCEL", cycles)
+    #    The control: the same channels moved to start at frame 0 (what differs there and not here
+    #    is the rounding of absolute frames near 1e4 and 1e5).
+    for far in [c for c in channels if c["name"].startswith("far/")]:
+        start = far["keys"][0]["time"]
+        keys = [dict(k, time=k["time"] - start) for k in far["keys"]]
+        for k in keys:
+            for side in ("handle_left", "handle_right"):
+                if side in k:
+                    k[side] = [k[side][0] - start, k[side][1]]
+        add("far/0/" + far["name"].split("/", 2)[2], ["far:0"] + far["features"][1:], keys,
+            [t - start for t in far["times"]], far["extrapolation"], far["auto_smoothing"], far.get("cycles"))
+    # 6. Linear extrapolation past an end key whose own interpolation differs from its segment's:
+    #    the last key's interpolation (which no segment uses) against the one of the segment
+    #    before it; and a single key of each interpolation.
+    for last, seg in itertools.product(("CONSTANT", "LINEAR", "BEZIER", "SINE"), ("BEZIER", "LINEAR", "ELASTIC")):
+        layout = random_layout(rng, 3, 4)
+        keys = handle_keys(layout, "AUTO_CLAMPED", rng)
+        for k in keys[:-1]:
+            k["interpolation"] = seg
+        keys[-1]["interpolation"] = last
+        add(f"end_key/{last.lower()}_after_{seg.lower()}",
+            ["post:linear", f"end_key:{last.lower()}", f"interpolation:{seg.lower()}"], keys,
+            sample_times(layout, rng), "LINEAR")
+    for interp in ("CONSTANT", "LINEAR", "BEZIER", "SINE"):
+        t, v = round(rng.uniform(-20, 20) * 8) / 8, round(rng.uniform(-10, 10), 3)
+        k = {"time": t, "value": v, "interpolation": interp, "handle_left_type": "FREE", "handle_right_type": "FREE",
+             "handle_left": [t - 1.5, v - 2.0], "handle_right": [t + 0.5, v + 1.5]}
+        add(f"single_key/{interp.lower()}", ["single_key", f"end_key:{interp.lower()}", "pre:linear", "post:linear"],
+            [k], [t - 7.25, t - 1.0, t, t + 0.75, t + 9.5], "LINEAR")
+    # 7. What curvebench does not model, kept to be counted: a free key among auto ones under
+    #    cont_accel, and auto on one side of a key beside free on the other.
+    layout = random_layout(rng, 4, 5)
+    keys = handle_keys(layout, "AUTO_CLAMPED", rng)
+    keys[1].update({"handle_left_type": "FREE", "handle_right_type": "FREE",
+                    "handle_left": [layout[1][0] - 0.5, layout[1][1] + 1.0],
+                    "handle_right": [layout[1][0] + 0.5, layout[1][1] - 1.0]})
+    add("mixed/free_among_auto_clamped/cont_accel", ["handle:mixed", "smoothing:cont_accel"], keys,
+        sample_times(layout, rng))
+    layout = random_layout(rng, 4, 5)
+    keys = handle_keys(layout, "AUTO", rng)
+    keys[2].update({"handle_right_type": "FREE", "handle_right": [layout[2][0] + 0.75, layout[2][1] + 2.0]})
+    add("mixed/auto_left_free_right/none", ["handle:mixed", "smoothing:none"], keys, sample_times(layout, rng),
+        "LINEAR", "NONE")
+    return {"note": "recorded output of real Blender; regenerate with: " + HELDOUT_COMMAND, "channels": channels}
+
+
 if __name__ == "__main__":
-    json.dump(request(), sys.stdout, indent=1)
+    json.dump(heldout_request() if "--heldout" in sys.argv[1:] else request(), sys.stdout, indent=1)
     sys.stdout.write("\n")

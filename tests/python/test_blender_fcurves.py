@@ -1,7 +1,7 @@
 """scripts/peers/blender_fcurves.py without Blender: the request checker names bad fields by their
 path, the writer keeps float32 values exact and writes a document json reads back, the easing
 request covers every family x easing, and the recorded fixtures were produced from their requests
-(blender_easing.json, blender_fcurves.json)."""
+(blender_easing.json, blender_fcurves.json, blender_heldout.json)."""
 import json
 import os
 import sys
@@ -121,6 +121,23 @@ class FcurvesFixture(unittest.TestCase):
             self.assertEqual(len(rec["keys"]), len(asked["keys"]))
             if "auto_smoothing" in asked:
                 self.assertEqual(rec["auto_smoothing"], asked["auto_smoothing"])
+
+
+class HeldoutFixture(unittest.TestCase):
+    def test_fixture_is_the_recorded_output_of_the_heldout_request(self):
+        with open(os.path.join(ROOT, "tests", "data", "blender_heldout.json"), encoding="utf-8") as f:
+            fixture = json.load(f)
+        req = blender_fcurves_request.heldout_request()
+        channels, _ = bf.check_request(req)
+        self.assertEqual(fixture["tool"], "blender")
+        self.assertEqual(fixture["source"]["command"], blender_fcurves_request.HELDOUT_COMMAND)
+        self.assertEqual([c["name"] for c in fixture["channels"]], [c["name"] for c in channels])
+        for rec, asked in zip(fixture["channels"], channels):
+            self.assertEqual(rec["t"], asked["times"])
+            self.assertEqual(rec["features"], asked["features"])
+            self.assertEqual(len(rec["value"]), len(asked["times"]))
+            self.assertEqual(len(rec["spec"]["keys"]), len(asked["keys"]))
+            self.assertEqual(rec["spec"]["extrapolation"], asked["extrapolation"].lower())
 
 
 if __name__ == "__main__":
