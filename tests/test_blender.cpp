@@ -380,7 +380,7 @@ TEST(blender, cycles_with_counts) {
 }
 
 // Linear extrapolation goes by the end key's own interpolation, not its segment's (measured on
-// tests/data/blender_heldout.json: end_key/*, single_key/*, easing/*): constant, flat; linear, the
+// tests/data/recorded/blender_heldout.json: end_key/*, single_key/*, easing/*): constant, flat; linear, the
 // chord to the neighbour key; bezier and eased, the outer handle's slope. Closed forms on free
 // handles, in double: the lines through the key with those slopes.
 TEST(blender, linear_extrapolation_follows_the_end_keys_interpolation) {

@@ -1,5 +1,5 @@
 // The "blender" tool model against Blender 3.4.1 on held-out F-curves
-// (tests/data/blender_heldout.json, the common recording format; made by
+// (tests/data/recorded/blender_heldout.json, the common recording format; made by
 // scripts/peers/blender_fcurves_request.py --heldout and scripts/peers/blender_fcurves.py --common):
 // seeded random key layouts that were not used to find the rules, over every handle type with each
 // extrapolation, free handles (broken, long, crossing), every interpolation and easing at and between
@@ -53,8 +53,8 @@ constexpr double range_tol = 1e-5;
 
 const nlohmann::json& recording() {
   static const nlohmann::json doc = [] {
-    std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/blender_heldout.json");
-    if (!in) throw std::runtime_error("tests/data/blender_heldout.json not found");
+    std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/recorded/blender_heldout.json");
+    if (!in) throw std::runtime_error("tests/data/recorded/blender_heldout.json not found");
     return nlohmann::json::parse(in);
   }();
   return doc;

@@ -1,5 +1,5 @@
 // The Maya animCurve model (channel/maya.hpp, tool "maya") against Autodesk AnimX, Maya's own
-// evaluator: tests/data/animx_curves.json holds curves and AnimX's values at given times, recorded
+// evaluator: tests/data/recorded/animx_curves.json holds curves and AnimX's values at given times, recorded
 // by scripts/peers/animx_record.cpp from AnimX built with 64-bit time (the file's "source" says
 // which commit and how). Every channel's spec is read with curvebench's own reader (the
 // "channel" family, tool "maya"), evaluated by the double model at each recorded time and compared
@@ -51,8 +51,8 @@ struct feature_stats {
 }  // namespace
 
 TEST(maya_animx, model_reproduces_animx_values) {
-  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/animx_curves.json");
-  ASSERT_TRUE(in) << "tests/data/animx_curves.json not found";
+  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/recorded/animx_curves.json");
+  ASSERT_TRUE(in) << "tests/data/recorded/animx_curves.json not found";
   const nlohmann::json data = nlohmann::json::parse(in);
   ASSERT_EQ(data.at("tool"), "maya");
   const auto& source = data.at("source");

@@ -58,14 +58,14 @@ CLI::App* add_fidelity(CLI::App& app, fidelity_args& a) {
       "how many channels recorded from the real tools (Blender, AnimX for Maya, OpenUSD's Ts) each tool model "
       "reproduces, per feature, and to what error (relative to the channel's value range)");
   f->add_option("recordings", a.recordings,
-                "recording files (tests/data/blender_heldout.json, animx_curves.json, usd_ts_splines.json: "
+                "recording files (tests/data/recorded/*.json: Blender, AnimX, OpenUSD Ts; "
                 "{\"tool\", \"source\", \"channels\": [{\"name\", \"features\", \"spec\", \"t\", \"value\"}]})")
       ->required()
       ->check(CLI::ExistingFile);
   f->add_flag("--json", a.json, "JSON on stdout (the report's reports/fidelity.json)");
   f->add_flag("--require-agreement", a.require,
               "exit 1 when a channel disagrees, or is refused without the recording saying it was");
-  f->footer(example("curvebench fidelity tests/data/animx_curves.json"));
+  f->footer(example("curvebench fidelity tests/data/recorded/animx_curves.json"));
   return f;
 }
 

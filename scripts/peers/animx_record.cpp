@@ -1,5 +1,5 @@
 // Records Maya animCurve values from Autodesk AnimX (Apache-2.0, github.com/Autodesk/animx), Maya's
-// own animation-curve evaluator published as a library: the peer behind tests/data/animx_curves.json.
+// own animation-curve evaluator published as a library: the peer behind tests/data/recorded/animx_curves.json.
 // This file is curvebench's code; it only calls AnimX's public entry points (evaluateCurve,
 // autoTangent) and its flat-tangent helper, through AnimX's header. It downloads nothing.
 //
@@ -15,7 +15,7 @@
 //       /tmp/animx/build/src/libAnimX.a -o /tmp/animx_record
 // Run:
 //   python3 scripts/peers/animx_request.py --commit <AnimX commit> > /tmp/animx_request.json
-//   /tmp/animx_record /tmp/animx_request.json tests/data/animx_curves.json
+//   /tmp/animx_record /tmp/animx_request.json tests/data/recorded/animx_curves.json
 //
 // The request (scripts/peers/animx_request.py) is {"source": {...}, "channels": [{"name", "features",
 // "weighted", "pre", "post", "keys": [{"time", "value", "in_type", "out_type", "in": [x, y],

@@ -1,4 +1,4 @@
-"""Writes the request behind tests/data/animx_curves.json: Maya animCurves for Autodesk AnimX to
+"""Writes the request behind tests/data/recorded/animx_curves.json: Maya animCurves for Autodesk AnimX to
 evaluate (scripts/peers/animx_record.cpp, which says how to build AnimX and the driver in /tmp).
 
 Covers every tangent type AnimX evaluates (fixed, auto, flat, linear, step, step_next; spline,
@@ -25,7 +25,7 @@ FPS = 24.0
 TANGENTS = ("fixed", "auto", "flat", "linear", "step", "step_next")
 INFINITIES = ("constant", "linear", "cycle", "cycle_relative", "oscillate")
 COMMAND = ("python3 scripts/peers/animx_request.py --commit HASH > /tmp/animx_request.json && "
-           "/tmp/animx_record /tmp/animx_request.json tests/data/animx_curves.json "
+           "/tmp/animx_record /tmp/animx_request.json tests/data/recorded/animx_curves.json "
            "(driver and AnimX built as scripts/peers/animx_record.cpp says)")
 
 

@@ -8,7 +8,7 @@ Regenerate the fixture (Blender 3.4.1 from Debian bookworm was used):
     blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- \
         /tmp/blender_fcurves_request.json tests/data/blender_fcurves.json
 
-With --heldout it writes instead the request behind tests/data/blender_heldout.json: channels never
+With --heldout it writes instead the request behind tests/data/recorded/blender_heldout.json: channels never
 used to find the rules (seeded pseudo-random key layouts, not the hand-picked ones above) covering
 every handle type with each extrapolation on both sides, free handles (broken, long, crossing),
 every interpolation and easing sampled at and between the key times, the Cycles modifier with every
@@ -16,7 +16,7 @@ handle type and smoothing, and frames far from 0. Each channel carries its "feat
 the common recording format). Regenerate (curvebench's CLI marks the channels its reader refuses):
     python3 scripts/peers/blender_fcurves_request.py --heldout > /tmp/blender_heldout_request.json
     blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- \
-        /tmp/blender_heldout_request.json tests/data/blender_heldout.json --common build-test/bench/curvebench
+        /tmp/blender_heldout_request.json tests/data/recorded/blender_heldout.json --common build-test/bench/curvebench
 """
 
 import itertools
@@ -162,7 +162,7 @@ def request():
 
 HELDOUT_COMMAND = ("python3 scripts/peers/blender_fcurves_request.py --heldout > /tmp/blender_heldout_request.json && "
                    "blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- "
-                   "/tmp/blender_heldout_request.json tests/data/blender_heldout.json --common "
+                   "/tmp/blender_heldout_request.json tests/data/recorded/blender_heldout.json --common "
                    "build-test/bench/curvebench")
 HELDOUT_SEED = 3102026
 FAMILIES = ("SINE", "QUAD", "CUBIC", "QUART", "QUINT", "EXPO", "CIRC", "BACK", "BOUNCE", "ELASTIC")

@@ -125,7 +125,7 @@ class FcurvesFixture(unittest.TestCase):
 
 class HeldoutFixture(unittest.TestCase):
     def test_fixture_is_the_recorded_output_of_the_heldout_request(self):
-        with open(os.path.join(ROOT, "tests", "data", "blender_heldout.json"), encoding="utf-8") as f:
+        with open(os.path.join(ROOT, "tests", "data", "recorded", "blender_heldout.json"), encoding="utf-8") as f:
             fixture = json.load(f)
         req = blender_fcurves_request.heldout_request()
         channels, _ = bf.check_request(req)

@@ -60,7 +60,7 @@
 // eased family, the outer handle's slope (the first key's left handle before the keys, the last
 // key's right handle after them; flat for a handle of zero time length; the handles of eased and
 // other keys are computed by the rules above all the same). Measured on the held-out recording
-// tests/data/blender_heldout.json (end_key/*, single_key/*, easing/*): before it the model took
+// tests/data/recorded/blender_heldout.json (end_key/*, single_key/*, easing/*): before it the model took
 // the end segment's interpolation and the chord at an eased end, off by up to 20 times the value
 // range on those channels.
 // Cycles modifier: outside [t_first, t_last] the time is wrapped into the keyed range for the first
@@ -677,7 +677,7 @@ class blender_evaluator {
   /// uses): constant, flat; linear, the chord to its neighbour key (flat for a single key);
   /// bezier or eased, the line along its outer handle (the left one before the keys, the right
   /// one after; flat for a handle of zero time length). Measured on
-  /// tests/data/blender_heldout.json (end_key/*, single_key/*, easing/* past their ends). The
+  /// tests/data/recorded/blender_heldout.json (end_key/*, single_key/*, easing/* past their ends). The
   /// slope and value are formed as s = (v_k - v_h) / (t_k - t_h), v_k - s (t_k - t), Blender's
   /// float rounding (the same on the recorded values to the last bit).
   [[nodiscard]] Real extrapolate(const Real& t, int order) const {
