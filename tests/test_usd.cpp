@@ -366,18 +366,23 @@ TYPED_TEST(usd_test, loop_repeat_reset_and_oscillate) {
       const Real mirror_t = mirrored ? Real(period - r) : t;
       if (!(mirrored && r == Real(0))) {
         EXPECT_EQ(oscillate.value(tk), oscillate.value(mirror_t)) << "t = " << t << " k = " << k;
+        // A reversed iteration shows the left side: at the knot at 1 (pre slope 1, post slope -1)
+        // the pre slope, negated (OpenUSD Ts evaluates reversed iterations on the pre side).
+        const Real side = mirrored && mirror_t == Real(1) ? Real(-1) : Real(1);
         EXPECT_EQ(oscillate.derivative(tk, 1),
-                  mirrored ? Real(-oscillate.derivative(mirror_t, 1)) : oscillate.derivative(t, 1));
+                  mirrored ? Real(side * -oscillate.derivative(mirror_t, 1)) : oscillate.derivative(t, 1));
       } else {
         EXPECT_EQ(oscillate.value(tk), Real(0));  // a mirrored iteration starts at the last knot's value
       }
     }
   }
-  // Joins: repeat meets (v_last at t_last, iteration 1 starts there at v_first + offset = v_last);
-  // reset jumps from v_last (at t_last) to v_first just after; oscillate turns back.
+  // Joins: repeat meets (iteration 1 starts at t_last at v_first + offset = v_last); reset jumps
+  // there from v_last (its value an instant before) to v_first (OpenUSD Ts: a looping
+  // extrapolation after the knots starts its first iteration at t_last); oscillate turns back.
   EXPECT_EQ(repeat.value(Real(3)), Real(0));
   EXPECT_EQ(repeat.value(Real(6)), Real(-1));
-  EXPECT_EQ(reset.value(Real(3)), Real(0));
+  EXPECT_EQ(reset.value(Real(3)), Real(1));
+  EXPECT_NEAR(static_cast<double>(reset.value(Real(3) - Real(1) / Real(1024))), 0.0, 0.01);
   EXPECT_NEAR(static_cast<double>(reset.value(Real(3) + Real(1) / Real(1024))), 1.0, 0.01);
   EXPECT_EQ(reset.value(Real(6)), Real(1));
   EXPECT_EQ(oscillate.value(Real(6)), Real(1));
