@@ -342,6 +342,43 @@ TYPED_TEST(usd_test, extrapolation_held_linear_sloped) {
 
 // Loops against their closed forms on the three-knot spline (period 3, dyadic sample times so that
 // t + k T is exact in every type).
+// Rules found by OpenUSD Ts's recorded values (tests/test_usd_ts.cpp), each on a small spline:
+// linear extrapolation from a dual-valued end knot is flat; the repeat offset starts from the first
+// knot's pre-value; a looping extrapolation after the knots starts iteration 1 at t_last.
+TYPED_TEST(usd_test, ts_rules_of_dual_valued_ends_and_loop_joins) {
+  using Real = TypeParam;
+  ch::usd_spline<Real> s;
+  s.knots = {knot<Real>(0, 1, ch::usd_interpolation::linear), knot<Real>(2, 3, ch::usd_interpolation::held),
+             knot<Real>(3, 0, ch::usd_interpolation::linear)};
+  s.knots[0].dual_valued = true;  // pre-value 4 before the first knot
+  s.knots[0].pre_value = Real(4);
+  s.pre = {ch::usd_extrapolation_mode::linear, Real(0)};
+  s.post = {ch::usd_extrapolation_mode::linear, Real(0)};
+  ch::usd_model<Real> m(s);
+  EXPECT_EQ(m.value(Real(-10)), Real(4));  // flat from the pre-value, not the segment's slope 1
+  EXPECT_EQ(m.linear_slope_before(), Real(0));
+  s.knots[2].dual_valued = true;  // after a held segment; the last knot's value still starts the line
+  s.knots[2].pre_value = Real(-5);
+  m = ch::usd_model<Real>(s);
+  EXPECT_EQ(m.value(Real(10)), Real(0));
+  EXPECT_EQ(m.linear_slope_after(), Real(0));
+  s.pre.mode = s.post.mode = ch::usd_extrapolation_mode::loop_repeat;
+  m = ch::usd_model<Real>(s);
+  // offset = v_last - pre-value of the first knot = 0 - 4 = -4 per period 3.
+  EXPECT_EQ(m.value(Real(4)), Real(2 - 4));   // t = 1 one period on: 2 - 4
+  EXPECT_EQ(m.value(Real(-2)), Real(2 + 4));  // one period before
+  EXPECT_EQ(m.value(Real(3)), Real(1 - 4));   // t_last: iteration 1 starts at v_first - 4
+  s.pre.mode = s.post.mode = ch::usd_extrapolation_mode::loop_reset;
+  m = ch::usd_model<Real>(s);
+  EXPECT_EQ(m.value(Real(3)), Real(1));  // t_last: the reset to v_first
+  s.pre.mode = s.post.mode = ch::usd_extrapolation_mode::loop_oscillate;
+  m = ch::usd_model<Real>(s);
+  EXPECT_EQ(m.value(Real(3)), Real(3));   // t_last, reversed: the last knot's left side, the held 3
+  EXPECT_EQ(m.value(Real(4)), Real(3));   // 2 in reverse: the knot at 2 from the left, 1 -> 3 linear
+  EXPECT_EQ(m.value(Real(6)), Real(1));   // t_first + 2 T: iteration 2 starts, not reversed
+  EXPECT_EQ(m.value(Real(-3)), Real(3));  // t_first - T: iteration -1 starts reversed, at the left side
+}
+
 TYPED_TEST(usd_test, loop_repeat_reset_and_oscillate) {
   using Real = TypeParam;
   auto s = three_knots<Real>();
@@ -366,18 +403,23 @@ TYPED_TEST(usd_test, loop_repeat_reset_and_oscillate) {
       const Real mirror_t = mirrored ? Real(period - r) : t;
       if (!(mirrored && r == Real(0))) {
         EXPECT_EQ(oscillate.value(tk), oscillate.value(mirror_t)) << "t = " << t << " k = " << k;
+        // A reversed iteration shows the left side: at the knot at 1 (pre slope 1, post slope -1)
+        // the pre slope, negated (OpenUSD Ts evaluates reversed iterations on the pre side).
+        const Real side = mirrored && mirror_t == Real(1) ? Real(-1) : Real(1);
         EXPECT_EQ(oscillate.derivative(tk, 1),
-                  mirrored ? Real(-oscillate.derivative(mirror_t, 1)) : oscillate.derivative(t, 1));
+                  mirrored ? Real(side * -oscillate.derivative(mirror_t, 1)) : oscillate.derivative(t, 1));
       } else {
         EXPECT_EQ(oscillate.value(tk), Real(0));  // a mirrored iteration starts at the last knot's value
       }
     }
   }
-  // Joins: repeat meets (v_last at t_last, iteration 1 starts there at v_first + offset = v_last);
-  // reset jumps from v_last (at t_last) to v_first just after; oscillate turns back.
+  // Joins: repeat meets (iteration 1 starts at t_last at v_first + offset = v_last); reset jumps
+  // there from v_last (its value an instant before) to v_first (OpenUSD Ts: a looping
+  // extrapolation after the knots starts its first iteration at t_last); oscillate turns back.
   EXPECT_EQ(repeat.value(Real(3)), Real(0));
   EXPECT_EQ(repeat.value(Real(6)), Real(-1));
-  EXPECT_EQ(reset.value(Real(3)), Real(0));
+  EXPECT_EQ(reset.value(Real(3)), Real(1));
+  EXPECT_NEAR(static_cast<double>(reset.value(Real(3) - Real(1) / Real(1024))), 0.0, 0.01);
   EXPECT_NEAR(static_cast<double>(reset.value(Real(3) + Real(1) / Real(1024))), 1.0, 0.01);
   EXPECT_EQ(reset.value(Real(6)), Real(1));
   EXPECT_EQ(oscillate.value(Real(6)), Real(1));

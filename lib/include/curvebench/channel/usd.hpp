@@ -3,7 +3,14 @@
 // time that USD evaluates, so that the same knots can be measured against their 50-digit truth.
 // The rules are read from OpenUSD's public documentation of Ts (the Ts overview and "Regressive
 // Splines in USD" pages, the documentation comments of TsKnot, TsSpline and types.h, and the
-// USD Anim proposal; docs/references.md); no OpenUSD code is used.
+// USD Anim proposal; docs/references.md); no OpenUSD code is used. It is checked against values
+// recorded from OpenUSD's Ts library itself (24.11, commit 899c19e; tests/test_usd_ts.cpp,
+// tests/data/usd_ts_splines.json): where they differed, the rule was read in Ts's source (facts
+// only) and is marked "(Ts 24.11)" below. Not modelled (tests/test_usd_ts.cpp lists each): Ts sets
+// a limited tangent 1e-5 of the interval short of the ellipse, not on it (a difference of up to
+// about 2 % of a segment's rise next to its vertical); and two Ts defects (a looping
+// post-extrapolation takes repeat or oscillate from the pre-extrapolation's mode; next to inner
+// loops, a knot they shadow still gives the pre-value and linear slope of the knot after them).
 //
 // Knots: usd_knot { time, value, next_interp, pre/post tangent as width (a time length >= 0) and
 // slope (dv/dt), dual_valued, pre_value }. next_interp is the interpolation of the segment that
@@ -36,18 +43,24 @@
 // usd_is_regressive is the exact test. A limited segment lies on the ellipse up to rounding; its
 // widths are then moved inside by 2 eps relative steps until the rounded control times pass the
 // channel's monotonicity check (a few ulps; see detail::usd_settle). The model applies the
-// spline's mode and then keep_ratio (USD's runtime limiting) to what still regresses.
+// spline's mode to the authored knots, bakes the inner loops, and then applies keep_ratio (USD's
+// runtime limiting) to what still regresses (Ts 24.11: the authoring mode acts on the authored
+// knots only; segments made by inner loops get the runtime keep_ratio alone).
 // Extrapolation, before the first and after the last knot (usd_extrapolation { mode, slope }):
 // - held: the end knot's value; linear: the line through the end knot whose slope is 0 after a held
 //   end segment, the segment's slope for a linear one, and for a curve end segment the knot's
 //   tangent on the segment's side (the first knot's post slope, the last knot's pre slope); sloped:
 //   the line through the end knot with the given slope. Before the first knot the line starts from
 //   its pre-value when it is dual-valued (the value an instant before the knot), after the last knot
-//   from its ordinary value;
+//   from its ordinary value; linear extrapolation from a dual-valued end knot is flat (Ts 24.11);
 // - loop_repeat: the knot range [t_first, t_last] repeated, iteration k (k whole periods
 //   T = t_last - t_first away, negative before) offset by k (v_last - v_first) so that the ends
-//   meet; loop_reset: repeated exactly (a jump at each join when v_last != v_first); loop_oscillate:
-//   every other iteration reversed in time (t_last - r instead of t_first + r), dv/dt negated there.
+//   meet, v_first the first knot's pre-value when it is dual-valued (Ts 24.11); loop_reset:
+//   repeated exactly (a jump at each join when v_last != v_first); loop_oscillate: every other
+//   iteration reversed in time (t_last - r instead of t_first + r), dv/dt negated there, showing the
+//   left side of each knot (after a held segment the previous knot's value, else the pre-value;
+//   Ts 24.11). A looping extrapolation after the knots starts its iteration 1 at t_last itself
+//   (reset: v_first there, oscillate: the last knot's left side; Ts 24.11).
 // Inner loops (usd_loops, TsLoopParams; "Continue" mode): the prototype [proto_start, proto_end)
 // is repeated num_pre_loops times before and num_post_loops times after itself by copying its knots
 // whole (tangents kept), iteration j shifted by j P in time (P = proto_end - proto_start) and by
@@ -62,7 +75,8 @@
 // A one-knot spline is constant, except sloped extrapolation, which keeps its line.
 // Side convention: at a knot time the segment that starts there applies (the ordinary value; its
 // derivatives from the right); the last knot's time gives its ordinary value and the left
-// derivatives of the last segment; a loop join t_first + k T starts iteration k.
+// derivatives of the last segment, unless the extrapolation after it loops; a loop join
+// t_first + k T starts iteration k.
 // Evaluation: usd_model<Real>(spline, solver) resolves the rules above into one two-key
 // channel<Real> per segment (channel/channel.hpp) and evaluates value(t) and derivative(t, order)
 // (order 0, 1, 2, exact) by locating the segment (binary search) and mapping times for the
@@ -488,7 +502,7 @@ class usd_model {
 
   explicit usd_model(const usd_spline<Real>& spline, time_solver solver = time_solver::closed_form)
       : resolved_(usd_apply_anti_regression(
-            usd_apply_anti_regression(usd_bake_inner_loops(validated(spline)), spline.anti_regression),
+            usd_bake_inner_loops(usd_apply_anti_regression(validated(spline), spline.anti_regression)),
             usd_anti_regression::keep_ratio)),
         solver_(solver) {
     if (std::string_view(to_string(solver)) == "unknown")
@@ -535,6 +549,7 @@ class usd_model {
   [[nodiscard]] Real end_slope(std::size_t seg, bool first) const {
     const auto& k0 = resolved_.knots[seg];
     const auto& k1 = resolved_.knots[seg + 1];
+    if (first ? k0.dual_valued : k1.dual_valued) return Real(0);  // a dual-valued end knot: flat
     switch (k0.next_interp) {
       case usd_interpolation::held: return Real(0);
       case usd_interpolation::linear:
@@ -549,8 +564,27 @@ class usd_model {
     const auto& k = resolved_.knots;
     const Real t_first = times_.front(), t_last = times_.back();
     if (t < t_first) return extrapolate(resolved_.pre, true, t, order);
-    if (t > t_last || k.size() == 1) return extrapolate(resolved_.post, false, t, order);
+    if (t > t_last || k.size() == 1 || (t == t_last && looping(resolved_.post.mode)))
+      return extrapolate(resolved_.post, false, t, order);
     return inside(t, order);
+  }
+
+  [[nodiscard]] static bool looping(usd_extrapolation_mode m) {
+    return m == usd_extrapolation_mode::loop_repeat || m == usd_extrapolation_mode::loop_reset ||
+           m == usd_extrapolation_mode::loop_oscillate;
+  }
+
+  // The value an instant before t inside [t_first, t_last] (the side a reversed loop iteration
+  // shows): at a knot after a held segment the previous knot's value, at another knot its pre-value
+  // (its value when not dual-valued), between knots the value; derivatives from the left at knots.
+  [[nodiscard]] Real inside_left(const Real& t, int order) const {
+    const auto it = std::lower_bound(times_.begin(), times_.end(), t);
+    if (it == times_.end() || *it != t) return inside(t, order);
+    const std::size_t i = static_cast<std::size_t>(it - times_.begin());
+    const auto& k = resolved_.knots;
+    if (order > 0) return i == 0 ? inside(t, order) : segments_[i - 1].derivative(t, order);
+    if (i > 0 && k[i - 1].next_interp == usd_interpolation::held) return k[i - 1].value;
+    return k[i].dual_valued ? k[i].pre_value : k[i].value;
   }
 
   [[nodiscard]] Real inside(const Real& t, int order) const {
@@ -582,7 +616,7 @@ class usd_model {
       case usd_extrapolation_mode::loop_repeat:
       case usd_extrapolation_mode::loop_reset:
       case usd_extrapolation_mode::loop_oscillate: {
-        if (single) return order == 0 ? end.value : Real(0);
+        if (single) return order == 0 ? v0 : Real(0);
         using std::abs;
         using std::fmod;
         using std::round;
@@ -595,11 +629,13 @@ class usd_model {
         const Real iteration = round((offset - r) / period);
         const bool mirrored =
             e.mode == usd_extrapolation_mode::loop_oscillate && fmod(abs(iteration), Real(2)) == Real(1);
-        const Real local = mirrored ? t_last - r : t_first + r;
-        Real result = inside(std::clamp(local, t_first, t_last), order);
+        const Real local = std::clamp(mirrored ? t_last - r : t_first + r, t_first, t_last);
+        Real result = mirrored ? inside_left(local, order) : inside(local, order);
         if (mirrored && order == 1) result = -result;
-        if (e.mode == usd_extrapolation_mode::loop_repeat && order == 0)
-          result += iteration * (k.back().value - k.front().value);
+        if (e.mode == usd_extrapolation_mode::loop_repeat && order == 0) {
+          const usd_knot<Real>& first = k.front();
+          result += iteration * (k.back().value - (first.dual_valued ? first.pre_value : first.value));
+        }
         return result;
       }
     }
