@@ -347,19 +347,20 @@ def fidelity_section(fidelity, tools):
         source = ", ".join(str(s[k]) for k in ("implementation", "version") if s.get(k))
         if s.get("commit"):
             source += f" (commit {str(s['commit'])[:12]})"
-        evaluated = r["channels"] - r["refused"]
+        unverified = r.get("unverified", 0)
+        evaluated = r["channels"] - r["refused"] - unverified
         rows.append([r["tool"], source or "-", os.path.basename(r["file"]), r["channels"],
-                     f"{r['agree']} of {evaluated}", r["refused"], r["max_error"]])
-    md.append(lib.table(["tool", "recorded from", "recording", "channels", "agree", "refused",
-                         "max error (x range)"], rows))
+                     f"{r['agree']} of {evaluated}", r["refused"], unverified, r["max_error"]])
+    md.append(lib.table(["tool", "recorded from", "recording", "channels", "agree", "refused (not modelled)",
+                         "unverified (no tool values)", "max error (x range)"], rows))
     for r in fidelity["recordings"]:
         md += ["", f"### {r['tool']}: {os.path.basename(r['file'])}", ""]
         build = r.get("source", {}).get("build")
         if build:
             md += [f"Built: {build}.", ""]
-        md.append(lib.table(["feature", "channels", "agree", "refused", "max error (x range)"],
-                            [[f["feature"], f["channels"], f["agree"], f["refused"], f["max_error"]]
-                             for f in r["features"]]))
+        md.append(lib.table(["feature", "channels", "agree", "refused", "unverified", "max error (x range)"],
+                            [[f["feature"], f["channels"], f["agree"], f["refused"], f.get("unverified", 0),
+                              f["max_error"]] for f in r["features"]]))
         if r["disagree"]:
             md += ["", "Channels that disagree (largest error, where):", ""]
             md.append(lib.table(["channel", "error (x range)", "t", "model", "tool"],
@@ -367,4 +368,7 @@ def fidelity_section(fidelity, tools):
         if r["refused_channels"]:
             refused = "; ".join(f"{c['name']} ({c['reason']})" for c in r["refused_channels"])
             md += ["", "Refused (not modelled): " + refused]
+        if r.get("unverified_channels"):
+            md += ["", "Unverified (the tool gave no values): " + "; ".join(
+                f"{c['name']} ({c['reason']})" for c in r["unverified_channels"])]
     return md

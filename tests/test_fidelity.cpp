@@ -120,3 +120,19 @@ TEST(fidelity, malformed_recordings_name_the_field) {
   EXPECT_THAT(msg(R"({"tool": "maya", "source": {}, "channels": [)" + channel("b", "", blender, "[0,0,0,0,0]") + "]}"),
               HasSubstr("not the recording's tool"));
 }
+
+TEST(fidelity, a_channel_the_tool_gave_no_values_for_is_unverified) {
+  // Recorder fields of its own (Ts's pre_value) are kept and not measured.
+  const h::fidelity_result r = h::measure_fidelity(
+      recording(R"({"name": "hermite", "features": ["curve:hermite"], "spec": )" + std::string(maya_linear) +
+                R"(, "t": [0, 1], "unverified": "the tool does not evaluate these", "pre_value": [0, 0]})"),
+      "rec.json");
+  ASSERT_EQ(r.channels.size(), 1u);
+  EXPECT_TRUE(r.channels[0].unverified);
+  EXPECT_FALSE(r.channels[0].agrees());
+  EXPECT_EQ(r.channels[0].reason, "the tool does not evaluate these");
+  EXPECT_EQ(r.unverified, 1u);
+  EXPECT_EQ(r.agree, 0u);
+  EXPECT_EQ(r.features[0].unverified, 1u);
+  EXPECT_EQ(h::to_json({r})["recordings"][0]["unverified_channels"][0]["name"], "hermite");
+}

@@ -1,5 +1,5 @@
 // The OpenUSD Ts model (channel/usd.hpp, tool "usd") against values recorded from OpenUSD's own Ts
-// library (tests/data/usd_ts_splines.json: TsSpline::Eval and EvalPreValue at the commit in its
+// library (tests/data/recorded/usd_ts_splines.json: TsSpline::Eval and EvalPreValue at the commit in its
 // "source", scripts/peers/usd_ts_record.cpp and usd_ts_request.py). Each channel's spec is read by
 // curvebench's reader (io/families/channel.hpp) and evaluated by the double model; a spec the
 // reader refuses (recorded with "refused": its message) is evaluated by usd_model on the same
@@ -49,8 +49,8 @@ constexpr double tol_ulps = 4096;
 
 const nlohmann::json& recording() {
   static const nlohmann::json doc = [] {
-    std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/usd_ts_splines.json");
-    if (!in) throw std::runtime_error("tests/data/usd_ts_splines.json not found");
+    std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/recorded/usd_ts_splines.json");
+    if (!in) throw std::runtime_error("tests/data/recorded/usd_ts_splines.json not found");
     return nlohmann::json::parse(in);
   }();
   return doc;

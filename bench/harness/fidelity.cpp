@@ -27,6 +27,11 @@ fidelity_channel measure_channel(const io::field& c) {
     const io::field f = c.member("features");
     for (std::size_t i = 0; i < f.array_size(); ++i) out.features.push_back(f.element(i).string());
   }
+  if (c.has("unverified")) {  // the tool computes no value for it (Ts 24.11 and Hermite segments)
+    out.unverified = true;
+    out.reason = c.member("unverified").string();
+    return out;
+  }
   const std::vector<double> ts = c.member("t", "the times the tool evaluated").reals<double>();
   const std::vector<double> vs = c.member("value", "the tool's values at t").reals<double>();
   if (ts.size() != vs.size())
@@ -83,9 +88,8 @@ fidelity_result measure_fidelity(const nlohmann::json& recording, const std::str
   std::map<std::string, fidelity_feature> features;
   for (std::size_t i = 0; i < channels.array_size(); ++i) {
     const io::field c = channels.element(i);
-    c.only_members({"name", "features", "spec", "t", "value", "refused", "note"});
     fidelity_channel fc = measure_channel(c);
-    if (!fc.refused) {
+    if (fc.evaluated()) {
       const io::field tool = c.member("spec").member("tool", "a channel spec names its tool");
       if (tool.string() != r.tool)
         tool.fail("is not the recording's tool \"" + r.tool + "\": a recording holds one tool's channels");
@@ -98,6 +102,8 @@ fidelity_result measure_fidelity(const nlohmann::json& recording, const std::str
       ++f.channels;
       if (fc.refused) {
         ++f.refused;
+      } else if (fc.unverified) {
+        ++f.unverified;
       } else {
         f.agree += fc.agrees() ? 1 : 0;
         f.max_error = std::max(f.max_error, fc.error);
@@ -105,6 +111,8 @@ fidelity_result measure_fidelity(const nlohmann::json& recording, const std::str
     }
     if (fc.refused) {
       ++r.refused;
+    } else if (fc.unverified) {
+      ++r.unverified;
     } else {
       r.agree += fc.agrees() ? 1 : 0;
       r.max_error = std::max(r.max_error, fc.error);
@@ -124,17 +132,18 @@ nlohmann::json to_json(const std::vector<fidelity_result>& results) {
   nlohmann::json recs = nlohmann::json::array();
   for (const fidelity_result& r : results) {
     nlohmann::json features = nlohmann::json::array(), disagree = nlohmann::json::array(),
-                   refused = nlohmann::json::array();
+                   refused = nlohmann::json::array(), unverified = nlohmann::json::array();
     for (const fidelity_feature& f : r.features)
       features.push_back({{"feature", f.feature},
                           {"channels", f.channels},
                           {"agree", f.agree},
                           {"refused", f.refused},
+                          {"unverified", f.unverified},
                           {"max_error", finite_or_null(f.max_error)}});
     double tolerance = 0;
     for (const fidelity_channel& c : r.channels) {
-      if (c.refused) {
-        refused.push_back({{"name", c.name}, {"reason", c.reason}});
+      if (c.refused || c.unverified) {
+        (c.refused ? refused : unverified).push_back({{"name", c.name}, {"reason", c.reason}});
         continue;
       }
       tolerance = std::max(tolerance, c.tolerance());
@@ -152,11 +161,13 @@ nlohmann::json to_json(const std::vector<fidelity_result>& results) {
                     {"channels", r.channels.size()},
                     {"agree", r.agree},
                     {"refused", r.refused},
+                    {"unverified", r.unverified},
                     {"tolerance", tolerance},
                     {"max_error", finite_or_null(r.max_error)},
                     {"features", features},
                     {"disagree", disagree},
-                    {"refused_channels", refused}});
+                    {"refused_channels", refused},
+                    {"unverified_channels", unverified}});
   }
   return {{"agree_ulps", agree_ulps}, {"recordings", recs}};
 }

@@ -5,7 +5,9 @@
 //   {"tool": "blender" | "maya" | "usd" | ...,
 //    "source": {"implementation", "repository", "commit", "version", "build", "recorded", "command"},
 //    "channels": [{"name", "features": ["tangent:auto", ...], "spec": {a channel spec},
-//                  "t": [times], "value": [the real tool's values], "refused": "why" (optional)}]}
+//                  "t": [times], "value": [the real tool's values], "refused": "why" (optional),
+//                  "unverified": "why the tool gave no values" (then no "value"), and fields of
+//                  the recorder's own (Ts's "pre_value", "ts_widths", ...), kept, not measured}]}
 // Each channel's spec is read by curvebench's own reader and evaluated as the tool evaluates it
 // (harness::channel_values_of(spec, check_against::tool): the tool's solver and storage precision).
 // The channel's error is max over its times of |model - recorded| / scale, the scale being the
@@ -43,12 +45,13 @@ struct fidelity_channel {
   std::string reason;                      ///< why it was refused
   bool marked_refused = false;             ///< the recording says the model refused it when it was recorded
   [[nodiscard]] double tolerance() const;  ///< agree_ulps eps(bits)
-  [[nodiscard]] bool agrees() const { return !refused && error <= tolerance(); }
+  [[nodiscard]] bool agrees() const { return !refused && !unverified && error <= tolerance(); }
+  [[nodiscard]] bool evaluated() const { return !refused && !unverified; }
 };
 
 struct fidelity_feature {
   std::string feature;
-  std::size_t channels = 0, agree = 0, refused = 0;
+  std::size_t channels = 0, agree = 0, refused = 0, unverified = 0;
   double max_error = 0;  ///< over its evaluated channels
 };
 
@@ -58,7 +61,7 @@ struct fidelity_result {
   nlohmann::json source;  ///< the recording's "source" as written
   std::vector<fidelity_channel> channels;
   std::vector<fidelity_feature> features;  ///< sorted by feature
-  std::size_t agree = 0, refused = 0;
+  std::size_t agree = 0, refused = 0, unverified = 0;
   double max_error = 0;  ///< over the evaluated channels
 };
 
@@ -70,8 +73,8 @@ struct fidelity_result {
 [[nodiscard]] fidelity_result measure_fidelity(const nlohmann::json& recording, const std::string& path);
 
 /// {"agree_ulps", "recordings": [{"file", "tool", "source", "channels", "agree", "refused",
-///   "max_error", "features": [...], "disagree": [{"name", "error", "t", "model", "recorded"}],
-///   "refused_channels": [{"name", "reason"}]}]}
+///   "unverified", "max_error", "features": [...], "disagree": [{"name", "error", "t", "model",
+///   "recorded"}], "refused_channels": [{"name", "reason"}], "unverified_channels": [...]}]}
 [[nodiscard]] nlohmann::json to_json(const std::vector<fidelity_result>& results);
 
 }  // namespace curvebench::harness

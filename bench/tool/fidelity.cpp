@@ -28,12 +28,13 @@ std::string source_line(const nlohmann::json& s) {
 }
 
 void print(const harness::fidelity_result& r) {
-  const std::size_t evaluated = r.channels.size() - r.refused;
+  const std::size_t evaluated = r.channels.size() - r.refused - r.unverified;
   const int bits = r.channels.empty() ? 64 : r.channels.front().bits;
   std::cout << r.tool << " against " << source_line(r.source) << " (" << r.file << "):\n  " << r.agree << " of "
             << evaluated << " evaluated channels agree to " << harness::agree_ulps << " eps("
             << (bits == 32 ? "float" : "double") << ") of their range; max error " << g(r.max_error) << " of the range";
   if (r.refused > 0) std::cout << "; " << r.refused << " refused (not modelled)";
+  if (r.unverified > 0) std::cout << "; " << r.unverified << " without the tool's values (unverified)";
   std::cout << "\n  " << std::left << std::setw(28) << "feature" << std::setw(10) << "channels" << std::setw(8)
             << "agree" << std::setw(9) << "refused"
             << "max error\n";
@@ -41,8 +42,8 @@ void print(const harness::fidelity_result& r) {
     std::cout << "  " << std::setw(28) << f.feature << std::setw(10) << f.channels << std::setw(8) << f.agree
               << std::setw(9) << f.refused << g(f.max_error) << "\n";
   for (const harness::fidelity_channel& c : r.channels) {
-    if (c.refused)
-      std::cout << "  refused: " << c.name << ": " << c.reason << "\n";
+    if (c.refused || c.unverified)
+      std::cout << (c.refused ? "  refused: " : "  unverified: ") << c.name << ": " << c.reason << "\n";
     else if (!c.agrees())
       std::cout << "  disagrees: " << c.name << ": " << g(c.error) << " of the range at t = " << g(c.worst_t, 17)
                 << " (model " << g(c.model, 17) << ", tool " << g(c.recorded, 17) << ")\n";

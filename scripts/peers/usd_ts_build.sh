@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds OpenUSD's Ts library (the `ts` target and what it links: arch, tf, gf, pegtl, js, trace,
 # work, plug, vt) and the recorder scripts/peers/usd_ts_record.cpp, in /tmp/usd, for
-# tests/data/usd_ts_splines.json. Nothing is downloaded: OpenUSD's source comes from a local git
+# tests/data/recorded/usd_ts_splines.json. Nothing is downloaded: OpenUSD's source comes from a local git
 # clone (USD_GIT_DIR, a bare or ordinary git directory holding commit USD_COMMIT) and TBB from
 # Debian (apt-get install libtbb-dev). Only pxr/base, pxr/external and cmake/ are extracted; the
 # top-level CMakeLists.txt's `extras` and pxr/CMakeLists.txt's `usd` subdirectories, which are not

@@ -5,7 +5,7 @@
 // authoring mode (TsAntiRegressionAuthoringSelector while the knots are set, so that SetKnots
 // adjusts regressive tangents as an authoring tool would), then evaluated at each requested time
 // with TsSpline::Eval (the value) and TsSpline::EvalPreValue (the value an instant before). The
-// output is tests/data/usd_ts_splines.json in the common recording format, plus per channel the
+// output is tests/data/recorded/usd_ts_splines.json in the common recording format, plus per channel the
 // tangent widths Ts holds after authoring ("ts_widths": [pre, post] per knot), its pre-values, and
 // the internal checks Ts reported failed while evaluating ("ts_errors": time and message).
 // A channel whose spline has a Hermite curve segment gets "unverified" and no values: at the
@@ -23,8 +23,8 @@
 //     -L/tmp/usd/build/pxr/base/ts -lusd_ts ... (vt gf tf trace js arch) -ltbb
 // Then:
 //   python3 scripts/peers/usd_ts_request.py > /tmp/usd_ts_request.json
-//   /tmp/usd/usd_ts_record /tmp/usd_ts_request.json tests/data/usd_ts_splines.json
-//   build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/usd_ts_splines.json
+//   /tmp/usd/usd_ts_record /tmp/usd_ts_request.json tests/data/recorded/usd_ts_splines.json
+//   build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/recorded/usd_ts_splines.json
 // (the last step records which specs curvebench's reader refuses, and why).
 #include "pxr/base/tf/errorMark.h"
 #include "pxr/base/tf/type.h"
@@ -152,8 +152,9 @@ int main(int argc, char** argv) {
       {"recorded", "2026-11-26"},
       {"command",
        "python3 scripts/peers/usd_ts_request.py > /tmp/usd_ts_request.json && bash scripts/peers/usd_ts_build.sh "
-       "&& /tmp/usd/usd_ts_record /tmp/usd_ts_request.json tests/data/usd_ts_splines.json && "
-       "build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/usd_ts_splines.json"}};
+       "&& /tmp/usd/usd_ts_record /tmp/usd_ts_request.json tests/data/recorded/usd_ts_splines.json && "
+       "build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py "
+       "tests/data/recorded/usd_ts_splines.json"}};
   out["channels"] = nlohmann::json::array();
   for (const auto& c : request.at("channels")) {
     nlohmann::json r = c;

@@ -1,8 +1,8 @@
-"""Records in tests/data/usd_ts_splines.json which specs curvebench's reader refuses, and why: the
+"""Records in tests/data/recorded/usd_ts_splines.json which specs curvebench's reader refuses, and why: the
 "refused" reason of each channel, read from the lines "refused<TAB>NAME<TAB>REASON" that
 tests/test_usd_ts.cpp prints for a refusal the file does not hold yet. Run after
 scripts/peers/usd_ts_record.cpp has written the file:
-    build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/usd_ts_splines.json
+    build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/recorded/usd_ts_splines.json
 """
 
 import json

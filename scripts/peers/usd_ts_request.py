@@ -1,4 +1,4 @@
-"""Writes the request behind tests/data/usd_ts_splines.json: OpenUSD Ts splines, each as a
+"""Writes the request behind tests/data/recorded/usd_ts_splines.json: OpenUSD Ts splines, each as a
 curvebench "usd" channel spec with the times to evaluate, covering every interpolation (held,
 linear, curve), both curve types, every anti-regression mode on regressive and non-regressive
 segments (centre, fringe, beyond 4/3, one zero width, contained but long), every extrapolation on
@@ -8,8 +8,8 @@ one-knot splines, and seeded random splines; times on and between knots, at loop
 Regenerate the fixture (see scripts/peers/usd_ts_record.cpp for building the recorder against a
 local OpenUSD build):
     python3 scripts/peers/usd_ts_request.py > /tmp/usd_ts_request.json
-    /tmp/usd/usd_ts_record /tmp/usd_ts_request.json tests/data/usd_ts_splines.json
-    build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/usd_ts_splines.json
+    /tmp/usd/usd_ts_record /tmp/usd_ts_request.json tests/data/recorded/usd_ts_splines.json
+    build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/recorded/usd_ts_splines.json
 """
 
 import json

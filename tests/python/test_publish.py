@@ -185,7 +185,7 @@ class Publish(unittest.TestCase):
             after = f.read()
         head = before[:before.index(publish.FIDELITY_BEGIN)]
         self.assertTrue(after.startswith(head))  # the run's part is untouched
-        self.assertIn("| maya | AnimX | r.json | 1 | 1 of 1 | 0 | 0 |", after)
+        self.assertIn("| maya | AnimX | r.json | 1 | 1 of 1 | 0 | 0 | 0 |", after)
         self.assertIn("Measured by curvebench 9.9 (fff0000).", after)
         self.assertEqual(after.count(publish.FIDELITY_BEGIN), 1)
 

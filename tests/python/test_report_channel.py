@@ -123,12 +123,13 @@ class ChannelSection(unittest.TestCase):
 FIDELITY = {"agree_ulps": 128, "curvebench": "curvebench 0.1.0 (abc1234)", "recordings": [{
     "file": "tests/data/recorded/animx_curves.json", "tool": "maya",
     "source": {"implementation": "Autodesk AnimX", "commit": "0123456789abcdef0123", "build": "64-bit time"},
-    "channels": 3, "agree": 1, "refused": 1, "tolerance": 2.8e-14, "max_error": 0.25,
+    "channels": 4, "agree": 1, "refused": 1, "unverified": 1, "tolerance": 2.8e-14, "max_error": 0.25,
     "features": [{"feature": "tangent:auto", "channels": 2, "agree": 1, "refused": 0, "max_error": 0.25},
                  {"feature": "tangent:spline", "channels": 1, "agree": 0, "refused": 1, "max_error": 0}],
     "disagree": [{"name": "c2", "features": ["tangent:auto"], "error": 0.25, "t": 3.0, "model": 1.0,
                   "recorded": 1.5}],
-    "refused_channels": [{"name": "c3", "reason": "not modelled"}]}]}
+    "refused_channels": [{"name": "c3", "reason": "not modelled"}],
+    "unverified_channels": [{"name": "c4", "reason": "no hermite in Ts"}]}]}
 TOOLS = [{"id": "maya", "verification": "against AnimX; spline tangents not verified"}]
 
 
@@ -137,11 +138,12 @@ class FidelitySection(unittest.TestCase):
         md = "\n".join(rc.fidelity_section(FIDELITY, TOOLS))
         self.assertIn("## Tool models against the real tools", md)
         self.assertIn("| maya | against AnimX; spline tangents not verified |", md)
-        # One row per recording: evaluated channels are those not refused (3 - 1).
-        self.assertIn("| maya | Autodesk AnimX (commit 0123456789ab) | animx_curves.json | 3 | 1 of 2 | 1 | 0.25 |",
+        # One row per recording: evaluated channels are those neither refused nor unverified (4 - 1 - 1).
+        self.assertIn("| maya | Autodesk AnimX (commit 0123456789ab) | animx_curves.json | 4 | 1 of 2 | 1 | 1 | 0.25 |",
                       md)
+        self.assertIn("Unverified (the tool gave no values): c4 (no hermite in Ts)", md)
         self.assertIn("Built: 64-bit time.", md)
-        self.assertIn("| tangent:auto | 2 | 1 | 0 | 0.25 |", md)
+        self.assertIn("| tangent:auto | 2 | 1 | 0 | 0 | 0.25 |", md)
         self.assertIn("| c2 | 0.25 | 3 | 1 | 1.5 |", md)
         self.assertIn("Refused (not modelled): c3 (not modelled)", md)
         self.assertIn("at most 128 eps", md)

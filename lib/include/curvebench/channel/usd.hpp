@@ -5,7 +5,7 @@
 // Splines in USD" pages, the documentation comments of TsKnot, TsSpline and types.h, and the
 // USD Anim proposal; docs/references.md); no OpenUSD code is used. It is checked against values
 // recorded from OpenUSD's Ts library itself (24.11, commit 899c19e; tests/test_usd_ts.cpp,
-// tests/data/usd_ts_splines.json): where they differed, the rule was read in Ts's source (facts
+// tests/data/recorded/usd_ts_splines.json): where they differed, the rule was read in Ts's source (facts
 // only) and is marked "(Ts 24.11)" below. Not modelled (tests/test_usd_ts.cpp lists each): Ts sets
 // a limited tangent 1e-5 of the interval short of the ellipse, not on it (a difference of up to
 // about 2 % of a segment's rise next to its vertical); and two Ts defects (a looping
