@@ -42,8 +42,9 @@ struct fidelity_channel {
   double scale = 1;                        ///< the recorded values' range
   int bits = 64;                           ///< the model's precision (32: float)
   bool refused = false;                    ///< the spec was refused (reason below)
-  std::string reason;                      ///< why it was refused
+  std::string reason;                      ///< why it was refused or is unverified
   bool marked_refused = false;             ///< the recording says the model refused it when it was recorded
+  bool unverified = false;                 ///< the tool recorded no values (its "unverified" says why, in reason)
   [[nodiscard]] double tolerance() const;  ///< agree_ulps eps(bits)
   [[nodiscard]] bool agrees() const { return !refused && !unverified && error <= tolerance(); }
   [[nodiscard]] bool evaluated() const { return !refused && !unverified; }
