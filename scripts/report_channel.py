@@ -337,10 +337,11 @@ def fidelity_section(fidelity, tools):
     ulps = fidelity.get("agree_ulps")
     md += [f"Each recorded channel is read as a curvebench spec and evaluated as the tool evaluates it (its "
            f"time solver, its storage precision); it agrees when the largest |model - tool| over its recorded "
-           f"times is at most {ulps:g} eps of the tool's precision times the channel's value range (the two "
-           f"programs' own roundings of the same operations stay well inside that; a different rule does not). "
-           f"Errors are fractions of the value range. `curvebench fidelity FILE` prints the same for a "
-           f"recording of your own.", ""]
+           f"times is at most {ulps:g} eps of the tool's precision times the channel's scale, its value range "
+           f"plus |t V'(t)| (the reach of the time's own rounding, large for a cycle wrapped far out or a frame "
+           f"near 1e5): the two programs' own roundings of the same operations stay well inside that; a "
+           f"different rule does not. Errors are fractions of that scale. `curvebench fidelity FILE` prints "
+           f"the same for a recording of your own.", ""]
     rows = []
     for r in fidelity["recordings"]:
         s = r.get("source", {})
@@ -352,18 +353,18 @@ def fidelity_section(fidelity, tools):
         rows.append([r["tool"], source or "-", os.path.basename(r["file"]), r["channels"],
                      f"{r['agree']} of {evaluated}", r["refused"], unverified, r["max_error"]])
     md.append(lib.table(["tool", "recorded from", "recording", "channels", "agree", "refused (not modelled)",
-                         "unverified (no tool values)", "max error (x range)"], rows))
+                         "unverified (no tool values)", "max error (x scale)"], rows))
     for r in fidelity["recordings"]:
         md += ["", f"### {r['tool']}: {os.path.basename(r['file'])}", ""]
         build = r.get("source", {}).get("build")
         if build:
             md += [f"Built: {build}.", ""]
-        md.append(lib.table(["feature", "channels", "agree", "refused", "unverified", "max error (x range)"],
+        md.append(lib.table(["feature", "channels", "agree", "refused", "unverified", "max error (x scale)"],
                             [[f["feature"], f["channels"], f["agree"], f["refused"], f.get("unverified", 0),
                               f["max_error"]] for f in r["features"]]))
         if r["disagree"]:
             md += ["", "Channels that disagree (largest error, where):", ""]
-            md.append(lib.table(["channel", "error (x range)", "t", "model", "tool"],
+            md.append(lib.table(["channel", "error (x scale)", "t", "model", "tool"],
                                 [[d["name"], d["error"], d["t"], d["model"], d["recorded"]] for d in r["disagree"]]))
         if r["refused_channels"]:
             refused = "; ".join(f"{c['name']} ({c['reason']})" for c in r["refused_channels"])

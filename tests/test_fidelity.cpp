@@ -43,8 +43,9 @@ std::string channel(const std::string& name, const std::string& features, const 
 }  // namespace
 
 TEST(fidelity, exact_values_agree_and_a_moved_value_is_measured) {
-  // Range 5; moving one value by 2^-20 (2.5 + 2^-20 = 2.50000095367431640625 exactly) is an error of 2^-20 / 5 of the
-  // range: well above agree_ulps eps(double) (2.8e-14), so a disagreement, measured to rounding (one division).
+  // Range 5; moving the value at t = 5 (slope 1/2: the scale there is 5 + 5 / 2 = 7.5) by 2^-20
+  // (2.5 + 2^-20 = 2.50000095367431640625 exactly) is an error of 2^-20 / 7.5: well above agree_ulps eps(double)
+  // (2.8e-14), so a disagreement, measured to rounding (one division).
   const double moved = std::ldexp(1.0, -20);
   const h::fidelity_result r =
       h::measure_fidelity(recording(channel("exact", R"("tangent:linear")", maya_linear, "[0, 1.25, 2.5, 5, 5]") + "," +
@@ -56,13 +57,13 @@ TEST(fidelity, exact_values_agree_and_a_moved_value_is_measured) {
   EXPECT_EQ(r.channels[0].error, 0);
   EXPECT_TRUE(r.channels[0].agrees());
   EXPECT_EQ(r.channels[0].bits, 64);
-  EXPECT_DOUBLE_EQ(r.channels[1].error, moved / 5);
+  EXPECT_DOUBLE_EQ(r.channels[1].error, moved / 7.5);
   EXPECT_EQ(r.channels[1].worst_t, 5);
   EXPECT_EQ(r.channels[1].model, 2.5);
   EXPECT_FALSE(r.channels[1].agrees());
   EXPECT_EQ(r.agree, 1u);
   EXPECT_EQ(r.refused, 0u);
-  EXPECT_DOUBLE_EQ(r.max_error, moved / 5);
+  EXPECT_DOUBLE_EQ(r.max_error, moved / 7.5);
   // Per feature: tangent:linear has both channels, post:constant only the moved one.
   ASSERT_EQ(r.features.size(), 2u);
   EXPECT_EQ(r.features[0].feature, "post:constant");

@@ -56,8 +56,12 @@ fidelity_channel measure_channel(const io::field& c) {
   out.bits = model->bits;
   for (std::size_t i = 0; i < ts.size(); ++i) {
     const std::optional<double> m = model->at(ts[i], 0);
+    // The time's own rounding moves a value by up to |t| eps |V'(t)| in either program (a wrapped
+    // cycle far out, a frame near 1e5), so the scale at t adds |t| |V'(t)| to the range.
+    const std::optional<double> slope = model->at(ts[i], 1);
+    const double reach = slope && std::isfinite(*slope) ? std::abs(ts[i] * *slope) : 0.0;
     const double e =
-        m && std::isfinite(*m) ? std::abs(*m - vs[i]) / out.scale : std::numeric_limits<double>::infinity();
+        m && std::isfinite(*m) ? std::abs(*m - vs[i]) / (out.scale + reach) : std::numeric_limits<double>::infinity();
     if (i == 0 || e > out.error) {
       out.error = e;
       out.worst_t = ts[i];

@@ -10,8 +10,10 @@
 //                  the recorder's own (Ts's "pre_value", "ts_widths", ...), kept, not measured}]}
 // Each channel's spec is read by curvebench's own reader and evaluated as the tool evaluates it
 // (harness::channel_values_of(spec, check_against::tool): the tool's solver and storage precision).
-// The channel's error is max over its times of |model - recorded| / scale, the scale being the
-// recorded values' range (their largest magnitude when they are all equal, 1 when that is 0). A
+// The channel's error is max over its times of |model - recorded| / (R + |t| |V'(t)|): R the
+// recorded values' range (their largest magnitude when they are all equal, 1 when that is 0), and
+// |t| |V'(t)| (the model's slope) the reach of the time's own rounding, which both programs suffer
+// where t is large (a cycle wrapped a thousand periods out, a frame near 1e5). A
 // channel agrees when its error is at most agree_ulps eps of the model's precision (float for a
 // float tool): the tool's and the model's own roundings of the same operations, a few dozen ulps
 // of the range between them at most (handles, the time solve, de Casteljau, the time's rounding
@@ -34,17 +36,17 @@ inline constexpr double agree_ulps = 128;
 struct fidelity_channel {
   std::string name;
   std::vector<std::string> features;
-  std::size_t times = 0;                   ///< evaluated times
-  double error = 0;                        ///< max |model - recorded| / scale (inf where the model has no value)
-  double worst_t = 0;                      ///< the time of that error
-  double model = 0;                        ///< the model's value there
-  double recorded = 0;                     ///< the tool's value there
-  double scale = 1;                        ///< the recorded values' range
-  int bits = 64;                           ///< the model's precision (32: float)
-  bool refused = false;                    ///< the spec was refused (reason below)
-  std::string reason;                      ///< why it was refused or is unverified
-  bool marked_refused = false;             ///< the recording says the model refused it when it was recorded
-  bool unverified = false;                 ///< the tool recorded no values (its "unverified" says why, in reason)
+  std::size_t times = 0;        ///< evaluated times
+  double error = 0;             ///< max |model - recorded| / (scale + |t V'(t)|) (inf where the model has none)
+  double worst_t = 0;           ///< the time of that error
+  double model = 0;             ///< the model's value there
+  double recorded = 0;          ///< the tool's value there
+  double scale = 1;             ///< the recorded values' range
+  int bits = 64;                ///< the model's precision (32: float)
+  bool refused = false;         ///< the spec was refused (reason below)
+  std::string reason;           ///< why it was refused or is unverified
+  bool marked_refused = false;  ///< the recording says the model refused it when it was recorded
+  bool unverified = false;      ///< the tool recorded no values (its "unverified" says why, in reason)
   [[nodiscard]] double tolerance() const;  ///< agree_ulps eps(bits)
   [[nodiscard]] bool agrees() const { return !refused && !unverified && error <= tolerance(); }
   [[nodiscard]] bool evaluated() const { return !refused && !unverified; }

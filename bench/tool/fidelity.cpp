@@ -32,7 +32,8 @@ void print(const harness::fidelity_result& r) {
   const int bits = r.channels.empty() ? 64 : r.channels.front().bits;
   std::cout << r.tool << " against " << source_line(r.source) << " (" << r.file << "):\n  " << r.agree << " of "
             << evaluated << " evaluated channels agree to " << harness::agree_ulps << " eps("
-            << (bits == 32 ? "float" : "double") << ") of their range; max error " << g(r.max_error) << " of the range";
+            << (bits == 32 ? "float" : "double") << ") of their scale (the value range + |t V'(t)|); max error "
+            << g(r.max_error) << " of the scale";
   if (r.refused > 0) std::cout << "; " << r.refused << " refused (not modelled)";
   if (r.unverified > 0) std::cout << "; " << r.unverified << " without the tool's values (unverified)";
   std::cout << "\n  " << std::left << std::setw(28) << "feature" << std::setw(10) << "channels" << std::setw(8)
@@ -45,7 +46,7 @@ void print(const harness::fidelity_result& r) {
     if (c.refused || c.unverified)
       std::cout << (c.refused ? "  refused: " : "  unverified: ") << c.name << ": " << c.reason << "\n";
     else if (!c.agrees())
-      std::cout << "  disagrees: " << c.name << ": " << g(c.error) << " of the range at t = " << g(c.worst_t, 17)
+      std::cout << "  disagrees: " << c.name << ": " << g(c.error) << " of the scale at t = " << g(c.worst_t, 17)
                 << " (model " << g(c.model, 17) << ", tool " << g(c.recorded, 17) << ")\n";
   }
   std::cout << std::right;
@@ -57,7 +58,8 @@ CLI::App* add_fidelity(CLI::App& app, fidelity_args& a) {
   auto* f = app.add_subcommand(
       "fidelity",
       "how many channels recorded from the real tools (Blender, AnimX for Maya, OpenUSD's Ts) each tool model "
-      "reproduces, per feature, and to what error (relative to the channel's value range)");
+      "reproduces, per feature, and to what error (relative to the channel's value range plus |t V'(t)|, the reach "
+      "of the time's rounding)");
   f->add_option("recordings", a.recordings,
                 "recording files (tests/data/recorded/*.json: Blender, AnimX, OpenUSD Ts; "
                 "{\"tool\", \"source\", \"channels\": [{\"name\", \"features\", \"spec\", \"t\", \"value\"}]})")

@@ -411,13 +411,13 @@ class ToolCli(unittest.TestCase):
             {"time": 10, "value": 5, "in_type": "linear", "out_type": "linear"}]}
         rec = {"tool": "maya", "source": {"implementation": "closed form", "version": "1"}, "channels": [
             {"name": "right", "features": ["tangent:linear"], "spec": spec, "t": [0, 5, 20], "value": [0, 2.5, 5]},
-            # 0.25 off, the recorded range 2.75: 0.0909 of it.
+            # 0.25 off at t = 5, where the scale is the recorded range 2.75 + |t V'(t)| = 2.5: 0.0476.
             {"name": "late", "features": ["tangent:linear"], "spec": spec, "t": [0, 5], "value": [0, 2.75]}]}
         path = self.write("rec.json", json.dumps(rec))
         p = run("fidelity", path)
         self.assertEqual(p.returncode, 0, p.stderr)
         self.assertIn("1 of 2 evaluated channels agree", p.stdout)
-        self.assertIn("disagrees: late: 0.0909 of the range at t = 5 (model 2.5, tool 2.75)", p.stdout)
+        self.assertIn("disagrees: late: 0.0476 of the scale at t = 5 (model 2.5, tool 2.75)", p.stdout)
         p = run("fidelity", path, "--require-agreement")
         self.assertEqual(p.returncode, 1)
         self.assertIn("late disagrees with the tool", p.stderr)
@@ -429,6 +429,33 @@ class ToolCli(unittest.TestCase):
         rec["channels"][0]["value"] = [0]
         self.assert_error(run("fidelity", self.write("bad.json", json.dumps(rec))), "bad.json.channels[0]",
                           "3 times and 1 values")
+
+    def test_the_published_fidelity_block_is_what_the_models_measure_now(self):
+        # docs/results.md's fidelity block (scripts/publish.py --fidelity-only) must say what the
+        # models and the recordings of this checkout give: a model change that alters a count fails
+        # here until the block is refreshed. Only the line naming the measuring revision may differ.
+        import glob
+        import sys
+        sys.path.insert(0, os.path.join(ROOT, "scripts"))
+        import publish
+        recordings = sorted(glob.glob(os.path.join(ROOT, "tests", "data", "recorded", "*.json")))
+        self.assertTrue(recordings)
+        p = subprocess.run([TOOL, "fidelity", "--json", *[os.path.relpath(r, ROOT) for r in recordings]],
+                           capture_output=True, text=True, timeout=600, cwd=ROOT)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        vocab = json.loads(run("list", "vocabulary", "--json").stdout)
+        block = publish.render_fidelity(json.loads(p.stdout), vocab["tools"])
+        with open(os.path.join(ROOT, "docs", "results.md"), encoding="utf-8") as f:
+            page = f.read()
+        i, j = page.find(publish.FIDELITY_BEGIN), page.find(publish.FIDELITY_END)
+        self.assertTrue(0 <= i < j, "docs/results.md has no fidelity block")
+
+        def body(text):
+            return [line for line in text.splitlines() if not line.startswith("Measured by ")]
+        self.assertEqual(body(page[i:j + len(publish.FIDELITY_END)]), body(block),
+                         "refresh it: curvebench fidelity --json tests/data/recorded/*.json > reports/fidelity.json; "
+                         "curvebench list vocabulary --json > reports/vocabulary.json; "
+                         "python3 scripts/publish.py --fidelity-only")
 
     def test_every_tool_says_what_it_is_verified_against(self):
         p = run("list", "tools")
