@@ -346,8 +346,11 @@ def fidelity_section(fidelity, tools):
     for r in fidelity["recordings"]:
         s = r.get("source", {})
         source = ", ".join(str(s[k]) for k in ("implementation", "version") if s.get(k))
-        if s.get("commit"):
-            source += f" (commit {str(s['commit'])[:12]})"
+        commit = str(s.get("commit", ""))
+        if commit and commit != str(s.get("version", "")):
+            # A git hash is shortened; anything else (a release name) is shown as written.
+            short = commit[:12] if len(commit) == 40 and all(c in "0123456789abcdef" for c in commit) else commit
+            source += f" (commit {short})"
         unverified = r.get("unverified", 0)
         evaluated = r["channels"] - r["refused"] - unverified
         rows.append([r["tool"], source or "-", os.path.basename(r["file"]), r["channels"],

@@ -25,9 +25,9 @@ struct maya {
       "weighted fixed tangents; regressive handles past the other key pulled back (AnimX)";
   /// What the model is verified against (recorded values of the real tool) and what is not.
   static constexpr std::string_view verification =
-      "against Autodesk AnimX (Maya's evaluator; tests/data/animx_curves.json, curvebench fidelity): fixed, "
-      "auto, flat, linear, step and step_next tangents, weights, regressive handles, every infinity; "
-      "spline, clamped and plateau tangents follow Maya's documentation and are not verified (AnimX "
+      "against Autodesk AnimX (Maya's evaluator, 64-bit time; tests/data/recorded/animx_curves.json, curvebench "
+      "fidelity): fixed, auto, flat, linear, step and step_next tangents, weights, regressive handles, every "
+      "infinity; spline, clamped and plateau tangents follow Maya's documentation and are not verified (AnimX "
       "evaluates stored tangents and does not compute them)";
   using storage_type = double;
   static constexpr time_solver default_solver = time_solver::isolate_brent;
