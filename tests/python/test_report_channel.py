@@ -122,7 +122,8 @@ class ChannelSection(unittest.TestCase):
 
 FIDELITY = {"agree_ulps": 128, "curvebench": "curvebench 0.1.0 (abc1234)", "recordings": [{
     "file": "tests/data/recorded/animx_curves.json", "tool": "maya",
-    "source": {"implementation": "Autodesk AnimX", "commit": "0123456789abcdef0123456789abcdef01234567", "build": "64-bit time"},
+    "source": {"implementation": "Autodesk AnimX", "commit": "0123456789abcdef0123456789abcdef01234567",
+               "build": "64-bit time"},
     "channels": 4, "agree": 1, "refused": 1, "unverified": 1, "tolerance": 2.8e-14, "max_error": 0.25,
     "features": [{"feature": "tangent:auto", "channels": 2, "agree": 1, "refused": 0, "max_error": 0.25},
                  {"feature": "tangent:spline", "channels": 1, "agree": 0, "refused": 1, "max_error": 0}],
