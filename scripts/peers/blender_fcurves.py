@@ -224,18 +224,6 @@ def common_document(source, channels, spec_of, curvebench):
     return {"tool": "blender", "source": source, "channels": out}
 
 
-def write_common(path, doc):
-    """One channel per line, numbers as repr (17 significant digits at most, exact)."""
-    with open(path, "w", encoding="utf-8") as f:
-        f.write("{\n")
-        for k, v in doc.items():
-            if k != "channels":
-                f.write(f" {json.dumps(k)}: {json.dumps(v)},\n")
-        f.write(' "channels": [\n')
-        f.write(",\n".join("  " + json.dumps(ch, separators=(",", ":")) for ch in doc["channels"]))
-        f.write("\n ]\n}\n")
-
-
 def read_fcurve(fc):
     """An F-curve as Blender holds it: {"keys", "extrapolation", "auto_smoothing"} and "cycles" when it
     has a Cycles modifier, in Blender's names (the request's format); "modifiers" lists the types of
@@ -325,7 +313,7 @@ def main(argv):
     if len(args) == 3:
         sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
         import blender_export  # noqa: E402  (spec_of: the one conversion of an F-curve to a spec)
-        write_common(args[1], common_document(source_of(bpy, note), results, blender_export.spec_of, args[2]))
+        write_result(args[1], common_document(source_of(bpy, note), results, blender_export.spec_of, args[2]))
     else:
         write_result(args[1], result_document(blender_version(bpy), note, results))
 
