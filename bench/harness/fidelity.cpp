@@ -113,16 +113,11 @@ fidelity_result measure_fidelity(const nlohmann::json& recording, const std::str
         f.max_error = std::max(f.max_error, fc.error);
       }
     }
-    if (fc.refused) {
-      ++r.refused;
-    } else if (fc.unverified) {
-      ++r.unverified;
-    } else {
-      r.agree += fc.agrees() ? 1 : 0;
-      r.max_error = std::max(r.max_error, fc.error);
-    }
     r.channels.push_back(std::move(fc));
   }
+  // The recording's totals are the tally of the tag every channel carries.
+  const fidelity_feature& all = features["all"];
+  r.agree = all.agree, r.refused = all.refused, r.unverified = all.unverified, r.max_error = all.max_error;
   features.erase("all");
   for (auto& [tag, f] : features) r.features.push_back(std::move(f));
   return r;
