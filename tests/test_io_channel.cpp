@@ -204,8 +204,8 @@ TEST(io_channel, exact_tool_against_its_50_digit_twin) {
     const nlohmann::json j = read_case(name);
     const auto m = cb::io::channel_model_of_spec<double>(spec_of(j));
     const auto truth = cb::io::channel_model_of_spec<R>(spec_of(j));
-    double lo = m.source.keys().front().time, hi = m.source.keys().back().time, vmin = 0, vmax = 0;
-    for (const auto& k : m.source.keys()) vmin = std::min(vmin, k.value), vmax = std::max(vmax, k.value);
+    double lo = m.source().keys().front().time, hi = m.source().keys().back().time, vmin = 0, vmax = 0;
+    for (const auto& k : m.source().keys()) vmin = std::min(vmin, k.value), vmax = std::max(vmax, k.value);
     const R range = R(vmax - vmin) + R(1e-300);
     for (double t : grid(lo - 1, hi + 1, 3001)) {
       const R err = abs(R(m.at(t, 0)) - truth.at(R(t), 0)) / (range * R(cb::epsilon<double>()));
@@ -409,6 +409,19 @@ TEST(io_channel, usd_tool_matches_the_model_and_its_50_digit_twin) {
   jump["knots"][2]["interpolation"] = "linear";
   const std::string msg2 = cbt::message_of([&] { (void)cb::io::curve_from_spec<double, 2>(spec_of(jump)); });
   EXPECT_NE(msg2.find("knots[3] is dual-valued"), std::string::npos) << msg2;
+  // ... but the values are there: sample --at, check --values and fidelity evaluate the jump (the
+  // linear segment from 1 at t = 8 ends at knots[3]'s pre_value 5; at t = 9, the last knot, the
+  // oscillating post loop begins reversed and shows the knot's left side, 5, as Ts does
+  // (usd_ts_splines.json, dual/oscillate_last_dual). Exact in double: the interpolation weight 0.5
+  // and the values are small integers.
+  const auto mj = cb::io::channel_model_of_spec<double>(spec_of(jump));
+  EXPECT_FALSE(mj.view.has_value());
+  EXPECT_EQ(mj.key_times, (std::vector<double>{0, 6, 8, 9}));
+  EXPECT_EQ(mj.at(8.5, 0), 3.0);
+  EXPECT_EQ(mj.at(9.0, 0), 5.0);
+  EXPECT_EQ(mj.at(8.5, 1), 4.0);
+  const std::string msg3 = cbt::message_of([&] { (void)mj.source(); });
+  EXPECT_NE(msg3.find("spec.json: knots[3] is dual-valued"), std::string::npos) << msg3;
   // Bad USD input names the field.
   nlohmann::json bad = j;
   bad["knots"][1]["interpolation"] = "cubic";

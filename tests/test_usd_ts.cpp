@@ -144,12 +144,14 @@ channel_result check_channel(const nlohmann::json& c) {
     refusal = e.what();
   }
   // The recorded reason is the message without its spec path ("NAME: "); a refusal not recorded is
-  // printed as "refused<TAB>NAME<TAB>reason" (scripts/peers/usd_ts_refusals.py records them).
+  // printed as "refused<TAB>NAME<TAB>reason", a recorded refusal the reader no longer makes as
+  // "accepted<TAB>NAME" (scripts/peers/usd_ts_refusals.py updates the file from these lines).
   const std::string prefix = r.name + ": ";
   const std::string reason =
       refusal && refusal->rfind(prefix, 0) == 0 ? refusal->substr(prefix.size()) : refusal.value_or("");
   EXPECT_EQ(refusal.has_value(), c.contains("refused")) << r.name << ": " << refusal.value_or("read");
   if (refusal && !c.contains("refused")) std::printf("refused\t%s\t%s\n", r.name.c_str(), reason.c_str());
+  if (!refusal && c.contains("refused")) std::printf("accepted\t%s\n", r.name.c_str());
   if (refusal && c.contains("refused")) {
     EXPECT_EQ(reason, c.at("refused").get<std::string>()) << r.name;
   }

@@ -60,7 +60,7 @@ channel_reference channel_reference_of(const io::field& spec, check_against agai
   exact["solver"] = "exact";
   const io::channel_model<real50> truth = io::channel_model_of_spec<real50>(io::field{exact, spec.path});
   channel_reference out;
-  for (const auto& k : truth.source.keys()) out.keys.push_back(static_cast<double>(k.time));
+  for (const auto& k : truth.key_times) out.keys.push_back(static_cast<double>(k));
   if (against == check_against::truth) {
     out.at = reference_of(truth);
     out.what = "the channel at 50 digits (the tool's rules, the time solver exact)";

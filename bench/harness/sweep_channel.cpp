@@ -100,17 +100,17 @@ solver_figures measure_solver(const io::channel_model<Real>& m, const std::vecto
     f.key_ulps = std::max(
         f.key_ulps, static_cast<double>(abs(real50(m.at(static_cast<Real>(key_ts[j]), 0)) - key_truth[j])) / unit);
   // The solver alone, on the bezier segments of the channel the tool evaluates.
-  const auto keys = m.source.keys();
+  const auto keys = m.source().keys();
   double iterations = 0, solved = 0;
   for (double td : ts) {
     const Real t = static_cast<Real>(td);
     if (keys.size() < 2 || t < keys.front().time || t > keys.back().time) continue;
-    const std::size_t i = m.source.segment_at(t);
+    const std::size_t i = m.source().segment_at(t);
     if (keys[i].interp != channel::interpolation::bezier) continue;
     if (t == keys[i + 1].time) continue;  // the segment's end: the key, no inversion
     // The cubic the channel inverts (control times relative to the segment's start).
-    const channel::time_cubic<Real> c = m.source.segment_time_cubic(i);
-    const auto s = channel::solve_time(m.source.solver(), c, Real(t - keys[i].time));
+    const channel::time_cubic<Real> c = m.source().segment_time_cubic(i);
+    const auto s = channel::solve_time(m.source().solver(), c, Real(t - keys[i].time));
     const double h = static_cast<double>(c.t3);
     f.time_ulps = std::max(f.time_ulps, static_cast<double>(time_residual(keys[i], keys[i + 1], s.u, t)) /
                                             (static_cast<double>(std::numeric_limits<Real>::epsilon()) * h));
@@ -150,7 +150,7 @@ json picture(const io::channel_model<double>& m, double lo, double hi) {
     p["t"].push_back(t);
     p["v"].push_back(m.at(t, 0));
   }
-  const auto keys = m.source.keys();
+  const auto keys = m.source().keys();
   if (keys.size() <= 60)
     for (std::size_t i = 0; i < keys.size(); ++i) {
       const auto& k = keys[i];
@@ -243,7 +243,7 @@ json sweep_channel(record_sink& k, const case_info& info, const sweep& w) {
   const json& spec = info.spec;
   const io::channel_model<real50> truth = model_of<real50>(with_solver(spec, "exact"), info.name);
   const io::channel_model<double> plain = model_of<double>(spec, info.name);
-  const auto keys = plain.source.keys();
+  const auto keys = plain.source().keys();
   const double first = keys.front().time, last = keys.back().time;
   const std::vector<double> ts = sample_times(first, last, w.channel_times);
   std::vector<double> key_ts;

@@ -1,8 +1,8 @@
 // The "usd" tool: an OpenUSD Ts spline (channel/usd.hpp: usd_spline, anti-regression, inner
 // loops, extrapolation, usd_model) as USD evaluates it, solver closed_form (USD's). The view is the
 // channel over the resolved knots (usd_channel_keys: each segment's keys from usd_segment_keys); a
-// dual-valued knot after a linear or curve segment (a jump at the knot) has no view, so such a
-// spline has no tool model (usd_view_refusal says why).
+// dual-valued knot after a linear or curve segment (a jump at the knot) has no view: the model
+// evaluates such a spline and view() refuses it (usd_view_refusal says why).
 // from_keys: bezier knots with widths and slopes (the handle's time length and dv / dt), held,
 // linear or curve after each knot, anti-regression keep_ratio; a vertical handle (zero time
 // length, nonzero value) is refused (it has no slope).
@@ -27,8 +27,8 @@ template <class Real>
   for (std::size_t i = 1; i < r.knots.size(); ++i)
     if (r.knots[i].dual_valued && r.knots[i - 1].next_interp != usd_interpolation::held)
       return "knots[" + std::to_string(i) +
-             "] is dual-valued: a jump at a knot has no curve view (sample --at "
-             "evaluates it)";
+             "] is dual-valued: a jump at a knot has no curve view (sample --at, "
+             "check --values and fidelity evaluate it)";
   return std::nullopt;
 }
 
@@ -63,7 +63,8 @@ struct usd {
       "and curve segments, anti-regression, dual values, extrapolation and loops; not modelled: Ts's padding "
       "of limited regressive tangents (1e-5 of the interval inside the ellipse), two Ts 24.11 defects (a "
       "looping post-extrapolation taking the pre-extrapolation's mode, a knot shadowed by inner loops still "
-      "setting the extrapolation), a dual-valued knot after a linear or curve segment (refused); Hermite "
+      "setting the extrapolation), a dual-valued knot after a linear or curve segment (evaluated, no curve view); "
+      "Hermite "
       "segments unverified (Ts 24.11 does not evaluate them)";
   using storage_type = double;
   static constexpr time_solver default_solver = time_solver::closed_form;
@@ -76,20 +77,35 @@ struct usd {
     static constexpr std::string_view name = usd::name;
     static constexpr int storage_bits = storage_bits_of<usd::storage_type>;
 
-    explicit model(const usd_model<Real>& m)
-        : model_(m),
-          view_(usd_channel_keys(m.resolved()), extrapolation::constant, extrapolation::constant, m.solver()) {}
+    explicit model(const usd_model<Real>& m) : model_(m), refusal_(usd_view_refusal(m.resolved())) {
+      if (!refusal_)
+        view_.emplace(usd_channel_keys(m.resolved()), extrapolation::constant, extrapolation::constant, m.solver());
+    }
     explicit model(const usd_spline<Real>& s, time_solver solver = default_solver)
         : model(usd_model<Real>(s, solver)) {}
 
     [[nodiscard]] Real value(const Real& t) const { return model_.value(t); }
     [[nodiscard]] Real derivative(const Real& t, int order) const { return model_.derivative(t, order); }
-    [[nodiscard]] const channel<Real>& view() const { return view_; }
+    /// The curve view; invalid_input saying why when the spline has none (view_refusal).
+    [[nodiscard]] const channel<Real>& view() const {
+      if (!view_) validate::fail(*refusal_);
+      return *view_;
+    }
+    /// Why the spline has no curve view (a dual-valued knot after a linear or curve segment), or
+    /// nothing. value() and derivative() do not need the view.
+    [[nodiscard]] const std::optional<std::string>& view_refusal() const { return refusal_; }
+    /// The knot times of the resolved spline (the keys' times, with or without a view).
+    [[nodiscard]] std::vector<Real> key_times() const {
+      std::vector<Real> out;
+      for (const auto& k : model_.resolved().knots) out.push_back(k.time);
+      return out;
+    }
     [[nodiscard]] const usd_model<Real>& evaluator() const { return model_; }
 
    private:
     usd_model<Real> model_;
-    channel<Real> view_;
+    std::optional<std::string> refusal_;
+    std::optional<channel<Real>> view_;
   };
 
   /// The spline USD holds for the keys (see the header).

@@ -26,16 +26,26 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace curvebench::io {
 
-/// A channel spec under its tool's rules: the channel whose curve() is the spec's curve (the tool
-/// model's view), and the value and time derivatives (orders 0 to 2) at a time as the tool
-/// evaluates them (the tool model's derivative).
+/// A channel spec under its tool's rules: the value and time derivatives (orders 0 to 2) at a time
+/// as the tool evaluates them (the tool model's derivative), the keys' times, and the channel whose
+/// curve() is the spec's curve (the tool model's view). A model may have no view (a USD
+/// dual-valued knot after a linear or curve segment: a jump); source() then fails with the reason,
+/// naming the spec, and `at` still evaluates.
 template <class Real>
 struct channel_model {
-  channel::channel<Real> source;
+  std::optional<channel::channel<Real>> view;
+  std::string no_view;  // why view is empty, with the spec's path
+  std::vector<Real> key_times;
   std::function<Real(const Real&, int)> at;
+
+  [[nodiscard]] const channel::channel<Real>& source() const {
+    if (!view) throw spec_error(no_view);
+    return *view;
+  }
 };
 
 namespace detail {
@@ -79,7 +89,19 @@ channel_model<Real> channel_model_of_spec(const field& spec) {
     using T = typename decltype(t)::type;
     detail::check_tool_fields<T>(spec, all_tools{});
     const auto m = tool_spec<T>::template parse<Real>(spec);
-    out = channel_model<Real>{m.view(), [m](const Real& x, int order) { return m.derivative(x, order); }};
+    channel_model<Real> cm;
+    cm.at = [m](const Real& x, int order) { return m.derivative(x, order); };
+    if constexpr (requires { m.view_refusal(); }) {  // a model that may lack a view (usd)
+      if (const auto& why = m.view_refusal()) {
+        cm.no_view = spec.path + ": " + *why;
+        cm.key_times = m.key_times();
+        out = std::move(cm);
+        return;
+      }
+    }
+    cm.view = m.view();
+    for (const auto& k : cm.view->keys()) cm.key_times.push_back(k.time);
+    out = std::move(cm);
   });
   if (!known) {
     std::string list;
@@ -92,7 +114,7 @@ channel_model<Real> channel_model_of_spec(const field& spec) {
 /// The channel a "channel" spec describes, under its tool's rules, in Real (see the header).
 template <class Real>
 channel::channel<Real> channel_of_spec(const field& spec) {
-  return channel_model_of_spec<Real>(spec).source;
+  return channel_model_of_spec<Real>(spec).source();
 }
 
 namespace detail {

@@ -2,7 +2,8 @@
 // with interpolation held / linear / curve, pre / post tangent width and slope, a pre_value for a
 // dual-valued knot; curve_type, anti_regression, extrapolation before / after with USD's mode
 // names and slopes, inner loops; solver default closed_form (USD's). A dual-valued knot after a
-// linear or curve segment has no curve view, so such a spec has no model (refused naming the knot).
+// linear or curve segment has no curve view: the model evaluates it (sample --at, check, fidelity),
+// the curve (length, accuracy) is refused naming the knot (io::channel_model's source()).
 #pragma once
 
 #include "curvebench/channel/tools/usd.hpp"
@@ -106,7 +107,6 @@ struct tool_spec<channel::tools::usd> {
   static channel::tools::usd::model<Real> parse(const field& spec) {
     const channel::usd_model<Real> u(detail::usd_spline_of<Real>(spec),
                                      detail::solver_of(spec, channel::tools::usd::default_solver));
-    if (const auto why = channel::usd_view_refusal(u.resolved())) spec.fail(*why);
     return channel::tools::usd::model<Real>(u);
   }
 };
