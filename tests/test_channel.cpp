@@ -670,6 +670,34 @@ TEST(channel, validation_names_key_field_and_value) {
               HasSubstr("order = 3"));
 }
 
+// A float channel keyed near frame 1e5, where floats are 1/128 of a frame apart, as Blender stores
+// it: keys 1.125 frames apart hold 144 representable times and evaluate (the curve families' rule
+// of 2^8 ulps refused them, and with them channels Blender evaluates:
+// tests/data/recorded/blender_heldout.json far/100000/*). A key interval of fewer than 16
+// representable times is still refused, naming the keys.
+TEST(channel, float_keys_near_frame_1e5_a_frame_apart_evaluate) {
+  const std::vector<ch::key<float>> keys{{100000.0F, 0.0F, {}, {0.375F, 1.0F}, ch::interpolation::bezier},
+                                         {100001.125F, 3.0F, {-0.375F, 0.0F}, {}, ch::interpolation::linear},
+                                         {100002.25F, 1.0F, {}, {}, ch::interpolation::linear}};
+  const ch::channel<float> c(keys, ch::extrapolation::constant, ch::extrapolation::constant,
+                             ch::time_solver::curvebench);
+  EXPECT_EQ(c.value(100001.125F), 3.0F);
+  EXPECT_EQ(c.value(100001.6875F), 2.0F);  // the linear segment's midpoint, exact in float
+  const float mid = c.value(100000.5625F);
+  EXPECT_GT(mid, 0.0F);
+  EXPECT_LT(mid, 3.0F);
+  auto narrow = keys;
+  narrow[1].time = 100000.1F;  // 13 floats after 1e5: fewer than 16
+  narrow[1].in.dt = -0.03125F;
+  narrow[0].out.dt = 0.03125F;
+  const std::string msg = cbt::message_of([&] {
+    (void)ch::channel<float>(narrow, ch::extrapolation::constant, ch::extrapolation::constant,
+                             ch::time_solver::curvebench);
+  });
+  EXPECT_THAT(msg, HasSubstr("keys[1].time - keys[0].time"));
+  EXPECT_THAT(msg, HasSubstr("2^4 units in the last place"));
+}
+
 TEST(channel, keys_far_from_time_zero_keep_their_digits) {
   // Keys at frame 1e5 with handle lengths that are not binary fractions (0.45 of a frame): the
   // absolute control time 100003.45 rounds by ulp(1e5) / 2 = 7e-12, which would move u by about

@@ -3,6 +3,8 @@
 Run inside Blender:
     blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- IN.json OUT.json \
         [--common CURVEBENCH]
+Without Blender, after a change of curvebench's model:
+    python3 scripts/peers/blender_fcurves.py --refresh-refusals RECORDING.json CURVEBENCH
 
 IN.json is a list of channels, or an object {"channels": [...], "note": "..."} (the note, e.g. the
 command that regenerated the file, is copied to the output). A channel:
@@ -305,7 +307,30 @@ def source_of(bpy, note):
             "command": note.split("regenerate with: ", 1)[-1] if note else "scripts/peers/blender_fcurves.py"}
 
 
+def refresh_refusals(path, curvebench):
+    """Recomputes each channel's "refused" in a common recording (no Blender needed): after a model
+    change, a refusal curvebench no longer makes is dropped and a new one recorded with its message.
+    Returns (dropped, added)."""
+    with open(path, encoding="utf-8") as f:
+        doc = json.load(f)
+    dropped = added = 0
+    for entry in doc["channels"]:
+        why = refusal(curvebench, entry["spec"], entry["t"])
+        if why is None and "refused" in entry:
+            del entry["refused"]
+            dropped += 1
+        elif why is not None and entry.get("refused") != why:
+            entry["refused"] = why
+            added += 1
+    write_result(path, doc)
+    return dropped, added
+
+
 def main(argv):
+    if len(argv) == 4 and argv[1] == "--refresh-refusals":
+        dropped, added = refresh_refusals(argv[2], argv[3])
+        print(f"{dropped} refusals dropped, {added} recorded", file=sys.stderr)
+        return
     args = script_arguments(argv)
     channels, note = read_request(args[0])
     import bpy  # only inside Blender

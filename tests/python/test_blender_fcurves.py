@@ -140,5 +140,31 @@ class HeldoutFixture(unittest.TestCase):
             self.assertEqual(rec["spec"]["extrapolation"], asked["extrapolation"].lower())
 
 
+class RefreshRefusals(unittest.TestCase):
+    """--refresh-refusals re-asks curvebench (here a stand-in CLI that refuses specs whose first key
+    is at time 1) and rewrites only the "refused" members: a stale one dropped, a new one recorded."""
+
+    def test_a_stale_refusal_is_dropped_and_a_new_one_recorded(self):
+        with tempfile.TemporaryDirectory() as d:
+            cli = os.path.join(d, "curvebench")
+            with open(cli, "w", encoding="utf-8") as f:
+                f.write("#!/bin/sh\ngrep -q '\"time\": 1' \"$2\" && { echo 'curvebench: error: no' >&2; exit 1; }\n"
+                        "exit 0\n")
+            os.chmod(cli, 0o755)
+            doc = {"tool": "blender", "source": {"version": "x"}, "channels": [
+                {"name": "was_refused", "spec": {"keys": [{"time": 0}]}, "t": [0.5], "value": [1.0],
+                 "refused": "curvebench: error: old"},
+                {"name": "now_refused", "spec": {"keys": [{"time": 1}]}, "t": [1.5], "value": [2.0]}]}
+            path = os.path.join(d, "rec.json")
+            bf.write_result(path, doc)
+            self.assertEqual(bf.refresh_refusals(path, cli), (1, 1))
+            with open(path, encoding="utf-8") as f:
+                out = json.load(f)
+            self.assertNotIn("refused", out["channels"][0])
+            self.assertEqual(out["channels"][1]["refused"], "curvebench: error: no")
+            self.assertEqual(out["channels"][1]["value"], [2.0])
+            self.assertEqual(bf.refresh_refusals(path, cli), (0, 0))
+
+
 if __name__ == "__main__":
     unittest.main()

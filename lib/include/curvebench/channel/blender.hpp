@@ -16,7 +16,8 @@
 // scripts/peers/blender_fcurves.py (tests/data/blender_fcurves.json; Blender's source was not
 // read). h_l, h_r are the key's intervals to its neighbours (at an end key both are the one
 // interval it has); s_l, s_r the chord slopes to the neighbours.
-// - auto and auto_clamped (both sides the same type, or one side beside a vector handle):
+// - auto and auto_clamped (both sides the same type, or one side beside a vector handle; auto
+//   beside a free handle, whose side stays as given):
 //   handles of time length f h_l (left) and f h_r (right) along one slope m. smoothing none:
 //   f = 1 / 2.5614, each length limited to 5 times the other side's, m = (s_l + s_r) / 2 at
 //   interior keys. smoothing cont_accel: f = 1/3 (the
@@ -281,13 +282,19 @@ void validate_fcurve(const blender_fcurve<Real>& c) {
     if (k.params.amplitude < Real(0))
       validate::fail(bkey_field(i, "amplitude") + " = " + to_text(k.params.amplitude) + ": must be >= 0");
     const handle_type l = k.handle_left_type, r = k.handle_right_type;
-    const bool auto_ok = !(is_auto(l) || is_auto(r)) || l == r || l == handle_type::vector || r == handle_type::vector;
+    // auto beside free: the auto side placed by the rule, the free side as given (measured). Not
+    // auto_clamped beside free: Blender re-aligns the other side where the clamp bites.
+    const auto auto_free = [](handle_type a, handle_type b) {
+      return a == handle_type::automatic && b == handle_type::free;
+    };
+    const bool auto_ok = !(is_auto(l) || is_auto(r)) || l == r || l == handle_type::vector ||
+                         r == handle_type::vector || auto_free(l, r) || auto_free(r, l);
     const bool aligned_ok = (l == handle_type::aligned) == (r == handle_type::aligned);
     if (!auto_ok || !aligned_ok)
       validate::fail(bkey_field(i, "handle_right_type") + " = " + to_string(r) + " with " +
                      bkey_field(i, "handle_left_type") + " = " + to_string(l) +
                      ": aligned is modelled on both sides of a key, auto and auto_clamped on both sides or "
-                     "beside a vector handle");
+                     "beside a vector handle, auto beside a free handle");
     const auto auto_key = [](const blender_key<Real>& x) {
       return is_auto(x.handle_left_type) && is_auto(x.handle_right_type);
     };

@@ -379,7 +379,8 @@ channel<Real>::channel(std::vector<key<Real>> keys, extrapolation before, extrap
       if (k.time < prev)
         validate::fail("keys must be in increasing time order: " + key_field(i, "time") + " = " + to_text(k.time) +
                        " < " + key_field(i - 1, "time") + " = " + to_text(prev));
-      validate::resolvable(key_field(i, "time") + " - " + key_field(i - 1, "time"), prev, k.time);
+      validate::resolvable(key_field(i, "time") + " - " + key_field(i - 1, "time"), prev, k.time,
+                           validate::channel_min_span_bits);
     }
   }
   for (std::size_t i = 0; i + 1 < keys.size(); ++i) {

@@ -113,7 +113,7 @@ void validate_time_cubic(const time_cubic<Real>& c) {
   if (!(c.t0 < c.t3))
     validate::fail("t3 = " + to_text(c.t3) + " <= t0 = " + to_text(c.t0) +
                    ": a segment's end time must follow its start");
-  validate::resolvable("t3 - t0", c.t0, c.t3);
+  validate::resolvable("t3 - t0", c.t0, c.t3, validate::channel_min_span_bits);
   if (!(c.t1 >= c.t0))
     validate::fail("t1 = " + to_text(c.t1) + ": must be >= t0 = " + to_text(c.t0) +
                    " (the handle points backwards in time)");

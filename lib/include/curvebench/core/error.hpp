@@ -108,17 +108,25 @@ template <class Real>
 
 /// hi - lo >= 2^min_span_bits ulps of max(|lo|, |hi|) (lo < hi finite assumed): "knots[1] - knots[0]
 /// = 2.2e-16 is too narrow to be resolved around 1: at least 2.9e-11 (2^17 ulps) is needed".
+/// `bits` may be smaller where fewer interior values serve (channel_min_span_bits).
 template <class Real>
-void resolvable(const std::string& span, const Real& lo, const Real& hi) {
+void resolvable(const std::string& span, const Real& lo, const Real& hi, int bits = min_span_bits<Real>()) {
   using std::abs;
   using std::ldexp;
   const Real big = abs(lo) > abs(hi) ? abs(lo) : abs(hi);
-  const Real need = ldexp(big * epsilon<Real>(), min_span_bits<Real>());
+  const Real need = ldexp(big * epsilon<Real>(), bits);
   if (hi - lo >= need) return;
   fail(span + " = " + to_text(Real(hi - lo)) + " is too narrow to be resolved around " + to_text(big) + ": at least " +
-       to_text(need) + " (2^" + std::to_string(min_span_bits<Real>()) +
+       to_text(need) + " (2^" + std::to_string(bits) +
        " units in the last place) is needed, so that the parameter can be sampled inside it");
 }
+
+/// The key interval of a keyframe channel holds at least 2^4 = 16 representable times: a channel
+/// is a value over time, evaluated at the times the tool can represent, and animation tools store
+/// times in their own precision at any magnitude (Blender's float32 frames near 1e5 are 1/128 apart,
+/// so keys 1.125 frames apart, which Blender evaluates, hold 144 of them). The curve families'
+/// 2^(digits/3) would refuse such keys; 16 leaves every segment an interior to sample.
+inline constexpr int channel_min_span_bits = 4;
 
 /// Finite and strictly increasing: "knots must be increasing: knots[3] = 0.5 <= knots[2] = 0.7".
 template <class Real>
