@@ -508,6 +508,23 @@ TEST(time_solvers, regression_limits_solve_inside) {
   }
 }
 
+// closed_form next to a double root at u = 0 (a zero-width start handle: x(u) = 1.2 u^2 - 0.2 u^3)
+// with t a few ulps after the start: the discriminant, truly -8 (t / h) + O(t^2), is a difference of
+// two 64s and rounds to >= 0, and the one root the formula then gives is u = 6, clamped to 1 (the
+// segment's end value; OpenUSD Ts's recorded random/17 showed it). The root is sqrt(t / 1.2) ~ 2e-8;
+// closed_form now bisects when it finds no root within 16 eps of [0, 1]. Checked: the residual
+// |x(u) - t| / h within the bisection's tolerance, 4 eps, and u below 1e-7 (u itself is
+// ill-conditioned there: a double root amplifies eps to sqrt(eps)).
+TEST(time_solvers, closed_form_finds_the_root_next_to_a_double_root_at_the_start) {
+  const ch::time_cubic<double> c{0, 0, 0.4, 1};
+  for (double t : {0x1p-52, 0x1p-51, 0x1p-50}) {
+    const auto s = ch::solve_time(ch::time_solver::closed_form, c, t);
+    EXPECT_LT(s.u, 1e-7) << t;
+    const double x = 1.2 * s.u * s.u - 0.2 * s.u * s.u * s.u;
+    EXPECT_LE(std::abs(x - t), 4 * std::numeric_limits<double>::epsilon()) << t;
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Interface and errors
 

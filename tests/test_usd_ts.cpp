@@ -238,13 +238,10 @@ std::vector<channel_result> check_all() {
 bool agrees(const channel_result& r) { return r.value_err <= tol_ulps && r.pre_err <= tol_ulps; }
 
 // Known model defects (outside channel/usd.hpp), each with the channel it shows in: the test fails
-// when one of them stops showing, so that the entry is removed with the fix.
-// - random/17: at t = t_first + 4 T (a loop join, oscillate), the local time lands 4e-16 after the
-//   first knot, whose start handle has zero width (x'(0) = 0: a double root of x(u) - t at u = 0);
-//   time_solver::closed_form returns the root u = 1 there, the segment's end value (-2.36 where Ts
-//   and the exact twin give -0.92).
-const std::map<std::string, std::string> model_defects{
-    {"random/17", "time_solver::closed_form takes u = 1 next to a double root at u = 0"}};
+// when one of them stops showing, so that the entry is removed with the fix. None at present
+// (random/17 showed time_solver::closed_form losing the root next to a double root at u = 0, fixed
+// and tested in tests/test_time_solvers.cpp).
+const std::map<std::string, std::string> model_defects{};
 
 }  // namespace
 

@@ -20,7 +20,8 @@
 // Solvers (each derived from its published description; no code is taken from the tools):
 // - closed_form: Cardano's / the trigonometric solution of the cubic in power form on the
 //   normalized segment (as Blender, USD and Unreal do), the root in [0, 1] (or the nearest one,
-//   clamped into it: rounding can push a root at an end just outside); a leading coefficient below
+//   clamped into it: rounding can push a root at an end just outside; no root within 16 eps of
+//   [0, 1], the formula having lost it, falls back to bisection); a leading coefficient below
 //   16 eps of the others makes it a quadratic or a linear equation. Cost: one cbrt or acos + cos,
 //   no iteration. Accuracy: the formula cancels near multiple roots; measured in
 //   tests/test_time_solvers.cpp.
@@ -66,8 +67,9 @@
 // rounding_limited when a residual-tolerance scheme's bisection bracket could not shrink in Real
 // before the residual met the tolerance (the tolerance is below what Real resolves there);
 // not_guaranteed for the schemes with no test of their answer (closed_form, whose formula cancels
-// near multiple roots, also when it finds no root within 1e-6 of [0, 1]; bisection12 and
-// bisection30, a fixed number of halvings with no residual check).
+// near multiple roots; when it finds no root within 16 eps of [0, 1] it bisects instead and reports
+// the bisection's status; bisection12 and bisection30, a fixed number of halvings with no residual
+// check).
 // Errors: a segment with non-finite times, t3 <= t0, a span t3 - t0 too narrow to be resolved
 // (validate::resolvable), t1 < t0 or t2 > t3 (a handle pointing backwards in time), or handles that
 // regress (x decreasing somewhere: the condition above) -> invalid_input naming the fields and
@@ -285,8 +287,8 @@ time_solution<Real> solve_closed_form(const time_cubic<Real>& c, const Real& t) 
       for (int k = 0; k < 3; ++k) roots[n++] = m * cos(phi - Real(k) * two_pi_3) + shift;
     }
   }
-  // The root in [0, 1]; else the nearest one within the slack, clamped; else the nearest root,
-  // clamped. No residual is tested either way: not_guaranteed.
+  // The root in [0, 1]; else the nearest one within rounding of it, clamped. No residual is tested:
+  // not_guaranteed.
   Real best = q.s;
   Real best_distance = std::numeric_limits<Real>::infinity();
   for (int i = 0; i < n; ++i) {
@@ -297,6 +299,12 @@ time_solution<Real> solve_closed_form(const time_cubic<Real>& c, const Real& t) 
       best = std::clamp(r, Real(0), Real(1));
     }
   }
+  // x is monotone on [0, 1] and 0 < s < 1, so a root lies in [0, 1]. No root within 16 eps of it
+  // means the formula lost it: next to a double root at an end (a zero-width handle, s a few ulps
+  // from 0 or 1) the discriminant's rounding can flip its sign, and the one real root the formula
+  // then gives lies far outside (at u = 6 where the root is 3e-8: OpenUSD Ts's recorded
+  // random/17, tests/data/recorded/usd_ts_splines.json). Bisection of [0, 1] finds it, with its status.
+  if (!(best_distance <= Real(16) * eps)) return bisect_to_residual(q, Real(0), Real(1), Real(4) * eps, 0, 0);
   return {best, 0, 0, result_status::not_guaranteed};
 }
 
