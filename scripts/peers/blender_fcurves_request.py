@@ -372,6 +372,66 @@ def heldout_request(seed=HELDOUT_SEED):
     return {"note": "recorded output of real Blender; regenerate with: " + HELDOUT_COMMAND, "channels": channels}
 
 
+MIXED_COMMAND = ("python3 scripts/peers/blender_fcurves_request.py --mixed > /tmp/blender_mixed_request.json && "
+                 "blender -b --factory-startup --python scripts/peers/blender_fcurves.py -- "
+                 "/tmp/blender_mixed_request.json tests/data/recorded/blender_mixed.json --common "
+                 "build-test/bench/curvebench")
+MIXED_SEED = 26112026
+
+
+def mixed_request(seed=MIXED_SEED):
+    """The request behind tests/data/recorded/blender_mixed.json: curves mixing automatic keys with
+    vector, aligned and free ones (and keys auto on one side, vector or free on the other), under
+    both smoothings and both extrapolations, free handles from 0.1 to 1.6 of their interval; a few
+    with an infinite Cycles modifier. Seeded, never used to find the rules."""
+    rng = random.Random(seed)
+    channels = []
+    whole = ("AUTO", "AUTO_CLAMPED", "VECTOR", "ALIGNED", "FREE")
+    for r in range(48):
+        smoothing = "CONT_ACCEL" if r % 4 != 3 else "NONE"
+        extrapolation = "LINEAR" if r % 2 else "CONSTANT"
+        layout = random_layout(rng, 4, 8)
+        keys = handle_keys(layout, "AUTO_CLAMPED" if r % 3 == 0 else "AUTO", rng)
+        types = set()
+        for i, k in enumerate(keys):
+            u = rng.random()
+            if u < 0.45:
+                continue  # stays automatic
+            if u < 0.85:
+                ht = rng.choice(whole[2:])
+                other = handle_keys(layout, ht, rng)[i]
+                k.update({f: other[f] for f in other if f.startswith("handle")})
+                types.add(ht.lower())
+            else:  # automatic on one side, vector or free on the other
+                side, kind = rng.choice(("left", "right")), rng.choice(("VECTOR", "FREE"))
+                if kind == "FREE" and k["handle_left_type"] == "AUTO_CLAMPED":
+                    kind = "VECTOR"  # auto_clamped beside free: refused by the model, kept out
+                k[f"handle_{side}_type"] = kind
+                if kind == "FREE":
+                    dt = (layout[1][0] - layout[0][0]) * rng.uniform(0.1, 1.6)
+                    t, v = layout[i]
+                    k[f"handle_{side}"] = [t - dt if side == "left" else t + dt, v + rng.uniform(-3, 3) * dt]
+                types.add(f"{k['handle_left_type'].lower()}_{k['handle_right_type'].lower()}")
+        features = ["handle:mixed", f"smoothing:{smoothing.lower()}", f"pre:{extrapolation.lower()}",
+                    f"post:{extrapolation.lower()}"] + sorted(f"with:{t}" for t in types)
+        ch = {"name": f"mixed/{r:02d}", "features": features, "keys": keys, "extrapolation": extrapolation,
+              "auto_smoothing": smoothing, "times": sample_times(layout, rng)}
+        channels.append(ch)
+    for r in range(4):
+        layout = random_layout(rng, 4, 6)
+        keys = handle_keys(layout, "AUTO_CLAMPED", rng)
+        keys[1 + r % 2].update(handle_keys(layout, ("VECTOR", "FREE")[r % 2], rng)[1 + r % 2])
+        features = ["handle:mixed", "smoothing:cont_accel", "cycles:infinite"]
+        channels.append({"name": f"mixed/cyclic/{r}", "features": features,
+                         "keys": keys, "extrapolation": "CONSTANT", "auto_smoothing": "CONT_ACCEL",
+                         "cycles": {"mode_before": "REPEAT", "mode_after": "REPEAT", "cycles_before": 0,
+                                    "cycles_after": 0},
+                         "times": sample_times(layout, rng, beyond=2 * (layout[-1][0] - layout[0][0]))})
+    return {"note": "recorded output of real Blender; regenerate with: " + MIXED_COMMAND, "channels": channels}
+
+
 if __name__ == "__main__":
-    json.dump(heldout_request() if "--heldout" in sys.argv[1:] else request(), sys.stdout, indent=1)
+    args = sys.argv[1:]
+    json.dump(heldout_request() if "--heldout" in args else mixed_request() if "--mixed" in args else request(),
+              sys.stdout, indent=1)
     sys.stdout.write("\n")

@@ -139,6 +139,19 @@ class HeldoutFixture(unittest.TestCase):
             self.assertEqual(len(rec["spec"]["keys"]), len(asked["keys"]))
             self.assertEqual(rec["spec"]["extrapolation"], asked["extrapolation"].lower())
 
+    def test_fixture_is_the_recorded_output_of_the_mixed_request(self):
+        with open(os.path.join(ROOT, "tests", "data", "recorded", "blender_mixed.json"), encoding="utf-8") as f:
+            fixture = json.load(f)
+        channels, _ = bf.check_request(blender_fcurves_request.mixed_request())
+        self.assertEqual(fixture["source"]["command"], blender_fcurves_request.MIXED_COMMAND)
+        self.assertEqual([c["name"] for c in fixture["channels"]], [c["name"] for c in channels])
+        for rec, asked in zip(fixture["channels"], channels):
+            self.assertEqual(rec["t"], asked["times"])
+            self.assertEqual(rec["features"], asked["features"])
+            self.assertEqual(len(rec["spec"]["keys"]), len(asked["keys"]))
+            self.assertEqual([k["handle_left_type"] for k in rec["spec"]["keys"]],
+                             [k["handle_left_type"].lower() for k in asked["keys"]])
+
 
 class RefreshRefusals(unittest.TestCase):
     """--refresh-refusals re-asks curvebench (here a stand-in CLI that refuses specs whose first key

@@ -14,8 +14,8 @@
 //
 // Handle rules (blender_handles), found by experiment with Blender 3.4.1 through
 // scripts/peers/blender_fcurves.py (tests/data/blender_fcurves.json; Blender's source was not
-// read). h_l, h_r are the key's intervals to its neighbours (at an end key both are the one
-// interval it has); s_l, s_r the chord slopes to the neighbours.
+// read for these; it was for the smoothing of mixed curves, below). h_l, h_r are the key's intervals to its neighbours
+// (at an end key both are the one interval it has); s_l, s_r the chord slopes to the neighbours.
 // - auto and auto_clamped (both sides the same type, or one side beside a vector handle; auto
 //   beside a free handle, whose side stays as given):
 //   handles of time length f h_l (left) and f h_r (right) along one slope m. smoothing none:
@@ -45,9 +45,14 @@
 // auto_clamped bounds the joint's slope with the wrapped neighbours' intervals, and a flat
 // extremum at the joint takes those as its handle lengths (measured on tests/data/blender_fcurves.json
 // and tests/data/blender_export).
-// cont_accel is modelled for curves whose keys are all auto / auto_clamped (Blender's default for
-// inserted keys) or none of them; a curve mixing them under cont_accel is an invalid_input (there
-// Blender blends vector handles into the solve, and fixed handles bound it; not yet measured).
+// cont_accel on a curve mixing auto keys with vector, aligned or free ones: the keys'
+// own rules first (auto slopes as under none, with the lengths f h of cont_accel; an auto_clamped
+// side keeps from passing its own neighbour only; an end key flat under constant extrapolation
+// only when both its sides are auto), then each run of auto keys between the others is smoothed
+// on its own, held at the other keys' handles (blender_smooth_run: Blender's rules, read in its
+// curve code for this case, and measured on tests/data/recorded/blender_mixed.json). On a cyclic
+// curve the handles are cyclic only when both end keys are auto on both sides, and the runs wrap
+// past the joint only when both end keys are free auto keys.
 // Sources: Blender's manual and API reference name the options (docs/references.md); the rules are
 // measured, as above.
 // Evaluation (blender_evaluator, built by blender_model): the keys with the handles above become a
@@ -97,6 +102,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -236,6 +242,9 @@ namespace detail {
 }
 
 template <class Real>
+[[nodiscard]] bool blender_cyclic(const blender_fcurve<Real>& c);
+
+template <class Real>
 void validate_fcurve(const blender_fcurve<Real>& c) {
   validate::count_at_least("keys", c.keys.size(), 1, "an F-curve needs a key");
   if (c.extrapolation != blender_extrapolation::constant && c.extrapolation != blender_extrapolation::linear)
@@ -295,17 +304,6 @@ void validate_fcurve(const blender_fcurve<Real>& c) {
                      bkey_field(i, "handle_left_type") + " = " + to_string(l) +
                      ": aligned is modelled on both sides of a key, auto and auto_clamped on both sides or "
                      "beside a vector handle, auto beside a free handle");
-    const auto auto_key = [](const blender_key<Real>& x) {
-      return is_auto(x.handle_left_type) && is_auto(x.handle_right_type);
-    };
-    const auto any_auto = [](const blender_key<Real>& x) {
-      return is_auto(x.handle_left_type) || is_auto(x.handle_right_type);
-    };
-    if (c.smoothing == auto_smoothing::cont_accel && !auto_key(k) &&
-        std::any_of(c.keys.begin(), c.keys.end(), any_auto))
-      validate::fail(bkey_field(i, "handle_left_type") + " = " + to_string(k.handle_left_type) +
-                     ": smoothing cont_accel is modelled for curves whose keys are all auto / auto_clamped or none "
-                     "of them (use smoothing none to mix)");
     if (i > 0 && !(k.time > c.keys[i - 1].time))
       validate::fail("keys must be in increasing time order: " + bkey_field(i, "time") + " = " + to_text(k.time) +
                      " <= " + bkey_field(i - 1, "time") + " = " + to_text(c.keys[i - 1].time));
@@ -319,6 +317,18 @@ template <class Real>
   const auto repeats = [](cycles_mode m) { return m == cycles_mode::repeat || m == cycles_mode::repeat_offset; };
   return c.cycles.enabled && repeats(c.cycles.mode_before) && repeats(c.cycles.mode_after) &&
          c.cycles.cycles_before == 0 && c.cycles.cycles_after == 0;
+}
+
+/// Whether a curve has both keys with an auto side and keys that are not auto on both sides.
+template <class Real>
+[[nodiscard]] bool blender_mixes_auto(const std::vector<blender_key<Real>>& k) {
+  const auto any = [](const blender_key<Real>& x) {
+    return is_auto(x.handle_left_type) || is_auto(x.handle_right_type);
+  };
+  const auto both = [](const blender_key<Real>& x) {
+    return is_auto(x.handle_left_type) && is_auto(x.handle_right_type);
+  };
+  return std::any_of(k.begin(), k.end(), any) && !std::all_of(k.begin(), k.end(), both);
 }
 
 template <class Real>
@@ -418,9 +428,11 @@ struct blender_neighbours {
     const Real vp = p.value, v = k[i].value, vn = q.value;
     if (extremum(i)) return Real(0);
     if (m * (vn - vp) < Real(0)) return Real(0);
+    // Only an auto_clamped side is kept from passing its neighbour's value (a vector side beside
+    // it is placed by its own rule).
     const auto [dl, dr] = neighbour_lengths(i);
-    if (abs(m * dr) > abs(vn - v)) m = (vn - v) / dr;
-    if (abs(m * dl) > abs(v - vp)) m = (v - vp) / dl;
+    if (k[i].handle_right_type == handle_type::auto_clamped && abs(m * dr) > abs(vn - v)) m = (vn - v) / dr;
+    if (k[i].handle_left_type == handle_type::auto_clamped && abs(m * dl) > abs(v - vp)) m = (v - vp) / dl;
     return m;
   }
 };
@@ -429,6 +441,9 @@ struct blender_neighbours {
 /// chord (linear extrapolation) or 0 (constant) at the ends; auto_clamped keys clamped.
 template <class Real>
 [[nodiscard]] std::vector<Real> blender_slopes_none(const blender_neighbours<Real>& nb, bool linear) {
+  const auto both_auto = [](const blender_key<Real>& x) {
+    return is_auto(x.handle_left_type) && is_auto(x.handle_right_type);
+  };
   const auto& k = nb.k;
   const std::size_t n = k.size();
   std::vector<Real> slope(n, Real(0));
@@ -438,10 +453,12 @@ template <class Real>
     Real mi;
     if (hp && hn)
       mi = ((k[i].value - p.value) / (k[i].time - p.time) + (q.value - k[i].value) / (q.time - k[i].time)) / Real(2);
+    // An end key: the chord, flat under constant extrapolation when both its sides are auto
+    // (Blender flattens only those).
     else if (!hp)
-      mi = linear ? nb.chord(0) : Real(0);
+      mi = linear || !both_auto(k[i]) ? nb.chord(0) : Real(0);
     else
-      mi = linear ? nb.chord(n - 2) : Real(0);
+      mi = linear || !both_auto(k[i]) ? nb.chord(n - 2) : Real(0);
     slope[i] = blender_clamped(k[i]) ? nb.clamp(i, mi) : mi;
   }
   return slope;
@@ -575,6 +592,203 @@ void blender_vector_handles(std::vector<blender_key<Real>>& k, const blender_nei
   }
 }
 
+/// Whether key i's handles are fixed before cont_accel smooths (Blender's locked auto keys): an
+/// auto / auto_clamped key made flat as an auto_clamped extremum, or at an end of a curve whose
+/// extrapolation is constant.
+template <class Real>
+[[nodiscard]] bool blender_locked(const blender_neighbours<Real>& nb, std::size_t i, bool linear) {
+  const auto& key = nb.k[i];
+  if (!is_auto(key.handle_left_type) || !is_auto(key.handle_right_type)) return false;
+  if (blender_clamped(key) && nb.extremum(i)) return true;
+  return !linear && !nb.cyclic && (i == 0 || i + 1 == nb.size());
+}
+
+/// cont_accel on a curve that mixes auto keys with vector, aligned or free ones (not cyclic; see
+/// the header): the keys whose handles are both auto and not locked (blender_locked) form runs
+/// between the other keys, and each run, with the key before and after it, is smoothed on its own.
+/// The unknowns are the handles' value offsets h_j (right side; the left side is -h_j / l_j,
+/// l_j = dx_{j+1} / dx_j, handles of time length dx / 3), the rows C2 continuity
+///   l_j^2 h_{j-1} + 2 (l_j + 1) h_j + h_{j+1} / l_{j+1} = dy_j l_j^2 + dy_{j+1}.
+/// An end of the run whose facing handle is vector, or auto at an end of the curve, takes the
+/// zero-acceleration row (2 h_0 + h_1 / l_1 = dy_1, or l^2 h_{n-2} + 2 l h_{n-1} = dy l^2) and
+/// its handle is set; any other end is held at its handle's offset, the handle first scaled to at
+/// most 2/3 of the interval, and its time length x enters its neighbour's row as
+/// (1 - 3 x / dx) (times l_1 at the start). auto_clamped keys bound their h by the adjacent value
+/// changes (no reversal, no overshoot), by an active set: an h past its bound is held at it
+/// (those pulled towards a nonzero bound first), a held one is released, at most twice, when its
+/// own row would move it back inside. A run of two keys with both ends held, or both solved, is
+/// left as it is. This is Blender's smoothing (BKE_nurb_handle_smooth_fcurve in Blender's curve
+/// code, read for the rules; measured on tests/data/recorded/blender_heldout.json mixed/*).
+/// A point of a run of blender_smooth_run: the key whose left side and the key whose right side it
+/// is (the same key but at a cyclic curve's joint, key n-1 and key 0).
+struct blender_run_point {
+  std::size_t left, right;
+};
+
+template <class Real>
+void blender_smooth_run(std::vector<blender_key<Real>>& k, std::span<const blender_run_point> run,
+                        const std::vector<bool>& locked, bool cyclic) {
+  using std::abs;
+  const std::size_t n = k.size(), count = run.size();
+  blender_key<Real>& first_key = k[run.front().right];
+  blender_key<Real>& last_key = k[run.back().left];
+  const bool solve_first =
+      first_key.handle_right_type == handle_type::vector ||
+      (!cyclic && run.front().right == 0 && is_auto(first_key.handle_right_type) && !locked[run.front().right]);
+  const bool solve_last =
+      last_key.handle_left_type == handle_type::vector ||
+      (!cyclic && run.back().left + 1 == n && is_auto(last_key.handle_left_type) && !locked[run.back().left]);
+  if (count < 2 || (count == 2 && solve_first == solve_last)) return;
+  std::vector<Real> dx(count, Real(0)), dy(count, Real(0)), l(count, Real(1));
+  for (std::size_t i = 1; i < count; ++i) {
+    dx[i] = k[run[i].left].time - k[run[i - 1].right].time;
+    dy[i] = k[run[i].left].value - k[run[i - 1].right].value;
+  }
+  for (std::size_t i = 1; i + 1 < count; ++i) l[i] = dx[i + 1] / dx[i];
+  // Bounds of auto_clamped keys: no reversal against, no overshoot of, the adjacent value change.
+  const Real big = std::numeric_limits<Real>::max();
+  std::vector<Real> hmin(count, -big), hmax(count, big);
+  const auto bound = [&](std::size_t i, const Real& d, bool on) {
+    if (!on) return;
+    if (d > Real(0)) {
+      hmax[i] = std::min(hmax[i], d);
+      hmin[i] = Real(0);
+    } else if (d < Real(0)) {
+      hmax[i] = Real(0);
+      hmin[i] = std::max(hmin[i], d);
+    } else {
+      hmax[i] = hmin[i] = Real(0);
+    }
+  };
+  const auto clamped = [&](const blender_run_point& q) {
+    return blender_clamped(k[q.left]) || blender_clamped(k[q.right]);
+  };
+  for (std::size_t i = 1; i < count; ++i) {
+    bound(i - 1, dy[i], clamped(run[i - 1]));
+    bound(i, Real(dy[i] * l[i]), clamped(run[i]));
+  }
+  std::vector<Real> a(count, Real(0)), b(count, Real(1)), c(count, Real(0)), d(count, Real(0));
+  // A held end: its handle (scaled to at most 2/3 of the interval) and the time-length correction.
+  const auto held = [](Real hx, Real hy, const Real& span, Real& adj) {
+    const Real fac = span / (hx + span / Real(3));
+    if (fac < Real(1)) hx *= fac, hy *= fac;
+    adj = Real(1) - Real(3) * hx / span;
+    return hy;
+  };
+  Real adj_first = 0, adj_last = 0;
+  if (solve_first) {
+    b[0] = Real(2), c[0] = Real(1) / l[1], d[0] = dy[1];
+  } else {
+    d[0] = held(first_key.handle_right.time - first_key.time, first_key.handle_right.value - first_key.value, dx[1],
+                adj_first);
+  }
+  if (solve_last) {
+    const Real ll = l[count - 1];
+    a[count - 1] = ll * ll, b[count - 1] = Real(2) * ll, c[count - 1] = Real(0), d[count - 1] = dy[count - 1] * ll * ll;
+  } else {
+    d[count - 1] = held(last_key.time - last_key.handle_left.time, last_key.value - last_key.handle_left.value,
+                        dx[count - 1], adj_last);
+  }
+  for (std::size_t i = 1; i + 1 < count; ++i) {
+    a[i] = l[i] * l[i];
+    b[i] = Real(2) * (l[i] + Real(1));
+    c[i] = Real(1) / l[i + 1];
+    d[i] = dy[i] * l[i] * l[i] + dy[i + 1];
+  }
+  if (count > 2 || solve_last) b[1] += l[1] * adj_first;
+  if (count > 2 || solve_first) b[count - 2] += adj_last;
+  // The active set on the bounds (see above).
+  const std::vector<Real> a0 = a, b0 = b, c0 = c, d0 = d;
+  std::vector<bool> is_held(count, false);
+  std::vector<int> releases(count, 0);
+  std::vector<Real> h(count);
+  for (std::size_t round = 0; round < 8 * count + 8; ++round) {
+    h = d;
+    curvebench::detail::solve_tridiagonal<Real, Real>(a, b, c, std::span<Real>(h));
+    bool over = false, locked_one = false, released = false;
+    for (bool all : {false, true}) {
+      for (std::size_t i = 0; i < count; ++i) {
+        if (h[i] >= hmin[i] && h[i] <= hmax[i]) continue;
+        over = true;
+        const Real target = h[i] > hmax[i] ? hmax[i] : hmin[i];
+        if (target != Real(0) || all) {
+          is_held[i] = true;
+          a[i] = c[i] = Real(0), b[i] = Real(1), d[i] = target;
+          locked_one = true;
+        }
+      }
+      if (!over || locked_one) break;
+    }
+    if (!locked_one)
+      for (std::size_t i = 0; i < count; ++i) {
+        if (!is_held[i] || releases[i] >= 2) continue;
+        const Real state =
+            a0[i] * (i > 0 ? h[i - 1] : Real(0)) + b0[i] * h[i] + c0[i] * (i + 1 < count ? h[i + 1] : Real(0)) - d0[i];
+        const Real relax = -state * b0[i];
+        if ((relax > Real(0) && h[i] < hmax[i]) || (relax < Real(0) && h[i] > hmin[i])) {
+          a[i] = a0[i], b[i] = b0[i], c[i] = c0[i], d[i] = d0[i];
+          is_held[i] = false;
+          ++releases[i];
+          released = true;
+        }
+      }
+    if (!over && !released) break;
+  }
+  // Output: only auto and vector handles take the result; at an end of the curve the key's other
+  // auto or vector handle mirrors it.
+  const auto output = [&](std::size_t j, bool right, const Real& dv) {
+    blender_key<Real>& key = k[j];
+    const handle_type mine = right ? key.handle_right_type : key.handle_left_type;
+    const handle_type other = right ? key.handle_left_type : key.handle_right_type;
+    if (!is_auto(mine) && mine != handle_type::vector) return;
+    blender_point<Real>& p = right ? key.handle_right : key.handle_left;
+    p.value = Real(key.value + dv);
+    const bool endpoint = j == 0 || j + 1 == n;
+    if (endpoint && (is_auto(other) || other == handle_type::vector)) {
+      blender_point<Real>& o = right ? key.handle_left : key.handle_right;
+      o = {Real(key.time + (key.time - p.time)), Real(key.value + (key.value - p.value))};
+    }
+  };
+  for (std::size_t i = 1; i + 1 < count; ++i) {
+    output(run[i].left, false, Real(-h[i] / l[i]));
+    output(run[i].right, true, h[i]);
+  }
+  if (solve_first) output(run.front().right, true, h[0]);
+  if (solve_last) output(run.back().left, false, Real(-h[count - 1] / l[count - 1]));
+}
+
+/// cont_accel on a mixed curve (see blender_smooth_run): the runs of free auto keys. On a cyclic
+/// curve whose end keys are free auto keys, key n-1 and key 0 are one point (its left side key
+/// n-1's, its right side key 0's), the runs start at the first other key and may pass the joint.
+template <class Real>
+void blender_smooth_mixed(std::vector<blender_key<Real>>& k, const blender_neighbours<Real>& nb, bool linear) {
+  const std::size_t n = k.size();
+  std::vector<bool> locked(n);
+  for (std::size_t i = 0; i < n; ++i) locked[i] = blender_locked(nb, i, linear);
+  const auto free_auto = [&](std::size_t i) {
+    return is_auto(k[i].handle_left_type) && is_auto(k[i].handle_right_type) && !locked[i];
+  };
+  const bool cyclic = nb.cyclic && free_auto(0) && free_auto(n - 1);
+  std::size_t start = 0;
+  if (cyclic)
+    for (std::size_t i = 1; i + 1 < n; ++i)
+      if (!free_auto(i)) {
+        start = i;
+        break;
+      }
+  std::vector<blender_run_point> run{{start, start}};
+  for (std::size_t i = 1, j = start + 1; i < n; ++i, ++j) {
+    blender_run_point q{j, j};
+    if (cyclic && j == n - 1) q = {n - 1, 0}, j = 0;
+    run.push_back(q);
+    if (!free_auto(q.right)) {
+      blender_smooth_run(k, std::span<const blender_run_point>(run), locked, cyclic);
+      run.assign(1, q);
+    }
+  }
+  if (run.size() > 1) blender_smooth_run(k, std::span<const blender_run_point>(run), locked, cyclic);
+}
+
 }  // namespace detail
 
 /// The keys with Blender's handle rules applied (see the header): auto, auto_clamped, vector and
@@ -586,11 +800,18 @@ template <class Real>
   if (k.size() < 2) return k;
   const bool accel = c.smoothing == auto_smoothing::cont_accel;
   const bool linear = c.extrapolation == blender_extrapolation::linear;
-  const bool cyclic = detail::blender_cyclic(c);
+  // Blender takes the handles as cyclic only when both end keys are auto on both sides.
+  const auto both_auto = [](const blender_key<Real>& x) {
+    return detail::is_auto(x.handle_left_type) && detail::is_auto(x.handle_right_type);
+  };
+  const bool cyclic = detail::blender_cyclic(c) && both_auto(k.front()) && both_auto(k.back());
   // The rules read only times and values, which the handles below leave unchanged.
   const detail::blender_neighbours<Real> nb(k, cyclic, accel);
+  // cont_accel on a curve mixing auto keys with others smooths runs of auto keys after the keys'
+  // own rules (blender_smooth_mixed); a curve of auto keys only is one C2 spline.
+  const bool mixed = accel && detail::blender_mixes_auto(k);
   const std::vector<Real> slope =
-      accel ? detail::blender_slopes_cont_accel(nb, linear) : detail::blender_slopes_none(nb, linear);
+      accel && !mixed ? detail::blender_slopes_cont_accel(nb, linear) : detail::blender_slopes_none(nb, linear);
   for (std::size_t i = 0; i < k.size(); ++i) {
     // A flat auto_clamped extremum at the cyclic joint has its neighbours' lengths (measured).
     const bool joint_extremum =
@@ -601,6 +822,7 @@ template <class Real>
       detail::blender_align(k[i]);
   }
   detail::blender_vector_handles(k, nb);
+  if (mixed) detail::blender_smooth_mixed(k, nb, linear);
   return k;
 }
 

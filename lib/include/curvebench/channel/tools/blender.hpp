@@ -27,9 +27,9 @@ struct blender {
   static constexpr std::string_view verification =
       "against Blender 3.4.1 (tests/data/blender_fcurves.json, recorded/blender_heldout.json, curvebench "
       "fidelity): every handle type, interpolation and easing, extrapolation, smoothing and the Cycles "
-      "modifier; near frame 1e4 and beyond to float rounding of the absolute frames, not bit for bit; keys "
-      "closer than the float model resolves there, and auto handles beside vector or free ones under "
-      "cont_accel smoothing, are refused (not modelled)";
+      "modifier, curves mixing auto keys with vector, aligned and free ones (recorded/blender_mixed.json); near "
+      "frame 1e4 and beyond to float rounding of the absolute frames, not bit for bit; refused (not "
+      "modelled): auto_clamped beside a free handle on one key";
   using storage_type = float;
   static constexpr time_solver default_solver = time_solver::exact;
 
