@@ -314,3 +314,35 @@ TEST(usd_ts, the_model_reproduces_ts_on_every_recorded_spline) {
     }
   std::printf("largest difference on an agreeing channel: %.4g ulps, %s\n", largest, where.c_str());
 }
+
+// A loop join decided as Ts decides it: the recorded times t_first + 4 T of these splines (rounded
+// in double) lie an ulp before the join in exact arithmetic, where an exact remainder (fmod) put
+// them at the end of iteration 3; Ts counts whole iterations from (t - t_last) / T rounded in
+// double, a whole 3, and evaluates the start of iteration 4 (reset: the first knot's value, repeat:
+// shifted). The model must give Ts's value there: within 4096 eps of the range (the tolerance
+// above; the two sides of a join differ by 0.03 to 1 of the range).
+TEST(usd_ts, loop_joins_are_decided_as_ts_decides_them) {
+  int checked = 0;
+  for (const auto& c : recording().at("channels")) {
+    const std::string name = c.at("name");
+    if (name != "random/08" && name != "random/21" && name != "random/24") continue;
+    const auto m = cb::io::channel_model_of_spec<double>(cb::io::root(c.at("spec"), name));
+    const auto& knots = c.at("spec").at("knots");
+    const double t_first = knots.front().at("time"), t_last = knots.back().at("time");
+    const double period = t_last - t_first;
+    const auto& ts = c.at("t");
+    const auto& vs = c.at("value");
+    double lo = 1e300, hi = -1e300;
+    for (const auto& v : vs) lo = std::min(lo, v.get<double>()), hi = std::max(hi, v.get<double>());
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      const double t = ts[i];
+      const double frac = (t - t_last) / period;
+      if (t <= t_last || frac != std::floor(frac)) continue;
+      EXPECT_LE(std::abs(m.at(t, 0) - vs[i].get<double>()),
+                tol_ulps * std::numeric_limits<double>::epsilon() * (hi - lo))
+          << name << " t = " << t;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 3);
+}

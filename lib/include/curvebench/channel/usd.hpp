@@ -76,7 +76,9 @@
 // Side convention: at a knot time the segment that starts there applies (the ordinary value; its
 // derivatives from the right); the last knot's time gives its ordinary value and the left
 // derivatives of the last segment, unless the extrapolation after it loops; a loop join
-// t_first + k T starts iteration k.
+// t_first + k T starts iteration k. Whether t is at a join is decided as Ts decides it (Ts 24.11):
+// the distance to the knots over T, rounded in Real, is a whole number (recorded random/08, 21, 24:
+// t computed as t_first + 4 T, where an exact remainder put it at the end of iteration 3).
 // Evaluation: usd_model<Real>(spline, solver) resolves the rules above into one two-key
 // channel<Real> per segment (channel/channel.hpp) and evaluates value(t) and derivative(t, order)
 // (order 0, 1, 2, exact) by locating the segment (binary search) and mapping times for the
@@ -618,18 +620,25 @@ class usd_model {
       case usd_extrapolation_mode::loop_oscillate: {
         if (single) return order == 0 ? v0 : Real(0);
         using std::abs;
+        using std::floor;
         using std::fmod;
         using std::round;
         const Real t_first = times_.front(), t_last = times_.back();
         const Real period = t_last - t_first;
-        const Real offset = t - t_first;
-        Real r = fmod(offset, period);  // exact, the sign of offset
-        if (r < Real(0)) r += period;
-        if (r >= period) r = Real(0);  // r + period rounded up to the period: the next iteration's start
-        const Real iteration = round((offset - r) / period);
+        // The whole iterations between t and the knots, as Ts counts them (Ts 24.11): the
+        // distance to the nearer end of the knots over the period, rounded in Real, truncated; one
+        // hop more, except before the knots at an exact boundary (the value there starts an
+        // iteration). t hops by whole periods (one rounding of n T, one of the sum).
+        const Real offset = before ? Real(t_first - t) : Real(t - t_last);
+        const Real frac = offset / period;
+        const Real whole = floor(frac);
+        const Real hops = before && whole == frac ? whole : Real(whole + Real(1));
+        const Real iteration = before ? Real(-hops) : hops;
+        const Real hopped = Real(t - Real(iteration * period));
         const bool mirrored =
             e.mode == usd_extrapolation_mode::loop_oscillate && fmod(abs(iteration), Real(2)) == Real(1);
-        const Real local = std::clamp(mirrored ? t_last - r : t_first + r, t_first, t_last);
+        const Real local =
+            std::clamp(mirrored ? Real(t_first + Real(period - Real(hopped - t_first))) : hopped, t_first, t_last);
         Real result = mirrored ? inside_left(local, order) : inside(local, order);
         if (mirrored && order == 1) result = -result;
         if (e.mode == usd_extrapolation_mode::loop_repeat && order == 0) {
