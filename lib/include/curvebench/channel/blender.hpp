@@ -319,16 +319,19 @@ template <class Real>
          c.cycles.cycles_before == 0 && c.cycles.cycles_after == 0;
 }
 
+/// Whether both of the key's handles are auto or auto_clamped.
+template <class Real>
+[[nodiscard]] bool blender_auto_key(const blender_key<Real>& x) {
+  return is_auto(x.handle_left_type) && is_auto(x.handle_right_type);
+}
+
 /// Whether a curve has both keys with an auto side and keys that are not auto on both sides.
 template <class Real>
 [[nodiscard]] bool blender_mixes_auto(const std::vector<blender_key<Real>>& k) {
   const auto any = [](const blender_key<Real>& x) {
     return is_auto(x.handle_left_type) || is_auto(x.handle_right_type);
   };
-  const auto both = [](const blender_key<Real>& x) {
-    return is_auto(x.handle_left_type) && is_auto(x.handle_right_type);
-  };
-  return std::any_of(k.begin(), k.end(), any) && !std::all_of(k.begin(), k.end(), both);
+  return std::any_of(k.begin(), k.end(), any) && !std::all_of(k.begin(), k.end(), blender_auto_key<Real>);
 }
 
 template <class Real>
@@ -441,9 +444,6 @@ struct blender_neighbours {
 /// chord (linear extrapolation) or 0 (constant) at the ends; auto_clamped keys clamped.
 template <class Real>
 [[nodiscard]] std::vector<Real> blender_slopes_none(const blender_neighbours<Real>& nb, bool linear) {
-  const auto both_auto = [](const blender_key<Real>& x) {
-    return is_auto(x.handle_left_type) && is_auto(x.handle_right_type);
-  };
   const auto& k = nb.k;
   const std::size_t n = k.size();
   std::vector<Real> slope(n, Real(0));
@@ -456,9 +456,9 @@ template <class Real>
     // An end key: the chord, flat under constant extrapolation when both its sides are auto
     // (Blender flattens only those).
     else if (!hp)
-      mi = linear || !both_auto(k[i]) ? nb.chord(0) : Real(0);
+      mi = linear || !blender_auto_key(k[i]) ? nb.chord(0) : Real(0);
     else
-      mi = linear || !both_auto(k[i]) ? nb.chord(n - 2) : Real(0);
+      mi = linear || !blender_auto_key(k[i]) ? nb.chord(n - 2) : Real(0);
     slope[i] = blender_clamped(k[i]) ? nb.clamp(i, mi) : mi;
   }
   return slope;
@@ -597,14 +597,19 @@ void blender_vector_handles(std::vector<blender_key<Real>>& k, const blender_nei
 /// extrapolation is constant.
 template <class Real>
 [[nodiscard]] bool blender_locked(const blender_neighbours<Real>& nb, std::size_t i, bool linear) {
-  const auto& key = nb.k[i];
-  if (!is_auto(key.handle_left_type) || !is_auto(key.handle_right_type)) return false;
-  if (blender_clamped(key) && nb.extremum(i)) return true;
+  if (!blender_auto_key(nb.k[i])) return false;
+  if (blender_clamped(nb.k[i]) && nb.extremum(i)) return true;
   return !linear && !nb.cyclic && (i == 0 || i + 1 == nb.size());
 }
 
-/// cont_accel on a curve that mixes auto keys with vector, aligned or free ones (not cyclic; see
-/// the header): the keys whose handles are both auto and not locked (blender_locked) form runs
+/// A point of a run of blender_smooth_run: the key whose left side and the key whose right side it
+/// is (the same key but at a cyclic curve's joint, key n-1 and key 0).
+struct blender_run_point {
+  std::size_t left, right;
+};
+
+/// cont_accel on a curve that mixes auto keys with vector, aligned or free ones (see the header):
+/// the keys whose handles are both auto and not locked (blender_locked) form runs
 /// between the other keys, and each run, with the key before and after it, is smoothed on its own.
 /// The unknowns are the handles' value offsets h_j (right side; the left side is -h_j / l_j,
 /// l_j = dx_{j+1} / dx_j, handles of time length dx / 3), the rows C2 continuity
@@ -618,13 +623,7 @@ template <class Real>
 /// (those pulled towards a nonzero bound first), a held one is released, at most twice, when its
 /// own row would move it back inside. A run of two keys with both ends held, or both solved, is
 /// left as it is. This is Blender's smoothing (BKE_nurb_handle_smooth_fcurve in Blender's curve
-/// code, read for the rules; measured on tests/data/recorded/blender_heldout.json mixed/*).
-/// A point of a run of blender_smooth_run: the key whose left side and the key whose right side it
-/// is (the same key but at a cyclic curve's joint, key n-1 and key 0).
-struct blender_run_point {
-  std::size_t left, right;
-};
-
+/// code, read for the rules; measured on tests/data/recorded/blender_mixed.json).
 template <class Real>
 void blender_smooth_run(std::vector<blender_key<Real>>& k, std::span<const blender_run_point> run,
                         const std::vector<bool>& locked, bool cyclic) {
@@ -765,9 +764,7 @@ void blender_smooth_mixed(std::vector<blender_key<Real>>& k, const blender_neigh
   const std::size_t n = k.size();
   std::vector<bool> locked(n);
   for (std::size_t i = 0; i < n; ++i) locked[i] = blender_locked(nb, i, linear);
-  const auto free_auto = [&](std::size_t i) {
-    return is_auto(k[i].handle_left_type) && is_auto(k[i].handle_right_type) && !locked[i];
-  };
+  const auto free_auto = [&](std::size_t i) { return blender_auto_key(k[i]) && !locked[i]; };
   const bool cyclic = nb.cyclic && free_auto(0) && free_auto(n - 1);
   std::size_t start = 0;
   if (cyclic)
@@ -801,10 +798,8 @@ template <class Real>
   const bool accel = c.smoothing == auto_smoothing::cont_accel;
   const bool linear = c.extrapolation == blender_extrapolation::linear;
   // Blender takes the handles as cyclic only when both end keys are auto on both sides.
-  const auto both_auto = [](const blender_key<Real>& x) {
-    return detail::is_auto(x.handle_left_type) && detail::is_auto(x.handle_right_type);
-  };
-  const bool cyclic = detail::blender_cyclic(c) && both_auto(k.front()) && both_auto(k.back());
+  const bool cyclic =
+      detail::blender_cyclic(c) && detail::blender_auto_key(k.front()) && detail::blender_auto_key(k.back());
   // The rules read only times and values, which the handles below leave unchanged.
   const detail::blender_neighbours<Real> nb(k, cyclic, accel);
   // cont_accel on a curve mixing auto keys with others smooths runs of auto keys after the keys'
