@@ -1,5 +1,6 @@
 // Core types: the curve concept, domain checks, validation messages and Real utilities.
 #include "support/accuracy.hpp"
+#include "support/fixtures.hpp"
 
 #include "curvebench/core/any_curve.hpp"
 #include "curvebench/core/curve.hpp"
@@ -225,6 +226,16 @@ TEST(core, unresolvable_spans_are_refused_with_their_values) {
   EXPECT_NO_THROW(cb::validate::non_decreasing<double>("knots", std::vector<double>{0.0, 0.0, 1.0, 1.0}));
   EXPECT_THROW(cb::validate::non_decreasing<double>("knots", std::vector<double>{0.0, 1.0, one_ulp}),
                cb::invalid_input);
+  // Below the smallest normal double the spacing is denorm_min: one subnormal ulp (or 2^16 of them)
+  // is refused, 2^17 accepted, and the width needed is named.
+  const double sub = std::numeric_limits<double>::denorm_min();
+  EXPECT_THAT(cb::testing::message_of([&] {
+                cb::validate::increasing<double>("knots", std::vector<double>{1e-310, 1e-310 + sub});
+              }),
+              HasSubstr("knots[1] - knots[0] = 4.9406564584124654e-324 is too narrow"));
+  EXPECT_THROW(cb::validate::increasing<double>("knots", std::vector<double>{0.0, std::ldexp(sub, 16)}),
+               cb::invalid_input);
+  EXPECT_NO_THROW(cb::validate::increasing<double>("knots", std::vector<double>{0.0, std::ldexp(sub, 17)}));
   // real50 resolves the double data that double cannot: the check is per precision.
   EXPECT_NO_THROW(cb::validate::increasing<cb::real50>("knots", std::vector<cb::real50>{1, cb::real50(one_ulp)}));
 }

@@ -333,6 +333,8 @@ class segment_lengths {
       for (; next_end + 1 < ends.size() && ends[next_end] < x1; ++next_end)
         if (ends[next_end] > x0) splits.push_back(ends[next_end]);
       splits.push_back(x1);
+      for (std::size_t j = 1; j < splits.size(); ++j)  // a far domain's sub-panels: no prefix, not an error
+        if (splits[j] > splits[j - 1] && !validate::is_resolvable(splits[j - 1], splits[j])) return;
       o.max_evaluations = opt.max_evaluations > prefix_evaluations_ ? opt.max_evaluations - prefix_evaluations_ : 0;
       if (o.max_evaluations == 0) return;
       const quadrature_result<Real> q = integrate_adaptive(f, std::span<const Real>(splits), o);

@@ -106,15 +106,34 @@ template <class Real>
   return std::numeric_limits<Real>::digits / 3;
 }
 
+/// The width a span [lo, hi] must have to be resolvable: 2^bits ulps of max(|lo|, |hi|). Below the
+/// smallest normal number the spacing stops shrinking (it is denorm_min, 4.9e-324 in double), so
+/// the width is at least 2^bits of that: a span of one subnormal ulp is as unresolvable as any.
+template <class Real>
+[[nodiscard]] Real resolvable_width(const Real& lo, const Real& hi, int bits = min_span_bits<Real>()) {
+  using std::abs;
+  using std::ldexp;
+  const Real big = abs(lo) > abs(hi) ? abs(lo) : abs(hi);
+  const Real spacing = big * epsilon<Real>();
+  const Real smallest = std::numeric_limits<Real>::denorm_min();
+  return ldexp(spacing > smallest ? spacing : smallest, bits);
+}
+
+/// Whether [lo, hi] passes `resolvable` (no throw): for optional work that is skipped on a span too
+/// narrow for it (an arc-length prefix's sub-panels on a far domain).
+template <class Real>
+[[nodiscard]] bool is_resolvable(const Real& lo, const Real& hi, int bits = min_span_bits<Real>()) {
+  return hi - lo >= resolvable_width(lo, hi, bits);
+}
+
 /// hi - lo >= 2^min_span_bits ulps of max(|lo|, |hi|) (lo < hi finite assumed): "knots[1] - knots[0]
 /// = 2.2e-16 is too narrow to be resolved around 1: at least 2.9e-11 (2^17 ulps) is needed".
 /// `bits` may be smaller where fewer interior values serve (channel_min_span_bits).
 template <class Real>
 void resolvable(const std::string& span, const Real& lo, const Real& hi, int bits = min_span_bits<Real>()) {
   using std::abs;
-  using std::ldexp;
   const Real big = abs(lo) > abs(hi) ? abs(lo) : abs(hi);
-  const Real need = ldexp(big * epsilon<Real>(), bits);
+  const Real need = resolvable_width(lo, hi, bits);
   if (hi - lo >= need) return;
   fail(span + " = " + to_text(Real(hi - lo)) + " is too narrow to be resolved around " + to_text(big) + ": at least " +
        to_text(need) + " (2^" + std::to_string(bits) +
