@@ -87,6 +87,29 @@ TYPED_TEST(cardinal_test, alpha_knots_interpolation_and_c1_for_each_parameteriza
   }
 }
 
+// Chords near the ends of double's exponent range: points scaled by 2^515 (about 1e155, where
+// |dP|^2 overflows) and 2^-540 (about 1e-162, where it underflows to 0 and the chord read as a
+// repeated point). The knot steps are the scaled chords' |dP|^alpha: checked against real50, whose
+// exponent range holds the squares, within knot_value_ulps (one sqrt, one pow, the scaling exact).
+TEST(cardinal_spline, alpha_knots_of_chords_whose_squares_leave_the_double_range) {
+  for (const int e : {515, -540}) {
+    cb::point_list<double, 2> p;
+    for (const auto& q : pd) p.push_back(cb::point<double, 2>(std::ldexp(q[0], e), std::ldexp(q[1], e)));
+    for (const double alpha : {0.5, 1.0}) {
+      cb::cardinal_spline<double, 2>::options opt;
+      opt.alpha = alpha;
+      const cb::cardinal_spline<double, 2> c(p, opt);
+      const auto k = c.breakpoints();
+      for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+        using std::pow;
+        const cb::real50 d = (cb::point_cast<cb::real50>(p[i + 1]) - cb::point_cast<cb::real50>(p[i])).norm();
+        ASSERT_TRUE(cbt::within_ulps(k[i + 1] - k[i], pow(d, cb::real50(alpha)), knot_value_ulps))
+            << "2^" << e << " alpha " << alpha << " chord " << i;
+      }
+    }
+  }
+}
+
 TYPED_TEST(cardinal_test, slopes_are_seed_000_finite_differences_with_the_erratum_fixed) {
   using Real = TypeParam;
   // Given non-uniform knots; s = 1/2 so the slopes are exactly seed 000's (no 2s factor).

@@ -79,7 +79,9 @@ template <class Real, int Dim>
     const std::size_t j = (i + 1) % n;
     Real step(1);
     if (alpha != Real(0)) {
-      const Real d = point<Real, Dim>(points[j] - points[i]).norm();
+      // safe_norm: the plain norm squares the components, which overflow from coordinates near
+      // 1e154 and underflow below 1e-154, where the chord itself is representable.
+      const Real d = safe_norm(point<Real, Dim>(points[j] - points[i]));
       if (!(d > Real(0)))
         validate::fail(validate::indexed("points", j) + " repeats " + validate::indexed("points", i) +
                        ": a zero chord gives a zero knot interval |dP|^alpha with alpha = " + to_text(alpha) +
