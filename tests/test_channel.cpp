@@ -454,7 +454,7 @@ TEST(channel, bezier_derivatives_in_double_against_closed_forms) {
 
 // Vertical tangents: a zero-length time handle with dv != 0 gives +-inf; a zero-length handle
 // (dt = dv = 0) gives the finite limit (the direction to the next control point); order 2 there
-// is a domain_error.
+// is a domain_error, except where the segment is a line in (t, v).
 TEST(channel, vertical_tangents_and_zero_length_handles) {
   using I = ch::interpolation;
   const ch::channel<double> v(keys_of<double>({{0, 0, 0, 0, 0, 1, I::bezier}, {1, 1, -0.5, 0, 0, 0, I::linear}}));
@@ -466,6 +466,15 @@ TEST(channel, vertical_tangents_and_zero_length_handles) {
   // Zero-length out handle: P1 = P0, so the tangent is P2 - P0 = (0.5, 1): slope 2.
   const ch::channel<double> z(keys_of<double>({{0, 0, 0, 0, 0, 0, I::bezier}, {1, 1, -0.5, 0, 0, 0, I::linear}}));
   EXPECT_DOUBLE_EQ(z.derivative(0.0, 1), 2.0);
+  EXPECT_THAT(cbt::message_of([&] { (void)z.derivative(0.0, 2); }), HasSubstr("d2v/dt2 at t = 0"));
+  // Zero-length handles at both keys of the line v = t / 2 (t in [0, 2]): x and v are one cubic
+  // up to the factor 2, so v is affine in t and d2v/dt2 = 0 at the keys too (the limit of
+  // (v'' x' - v' x'') / x'^3 = 0 inside, exactly so in binary), while dv/dt = 1/2 everywhere.
+  const ch::channel<double> line(keys_of<double>({{0, 0, 0, 0, 0, 0, I::bezier}, {2, 1, 0, 0, 0, 0, I::linear}}));
+  for (const double t : {0.0, 0.75, 2.0}) {
+    EXPECT_DOUBLE_EQ(line.derivative(t, 1), 0.5) << t;
+    EXPECT_EQ(line.derivative(t, 2), 0.0) << t;
+  }
   // Linear extrapolation from a vertical end is refused at construction.
   EXPECT_THAT(cbt::message_of([] {
                 ch::channel<double> c(

@@ -43,7 +43,8 @@
 // or the double root at a regression limit), order 1 returns the limit of dv/dt along the segment:
 // +-infinity (the sign of v'(u)) when v'(u) != 0, else the finite ratio of the first higher
 // derivatives (a zero-length handle gives the direction to the next control point); order 2 throws
-// std::domain_error there (unbounded). Steps and constant pieces have derivative 0; the jumps have
+// std::domain_error there (unbounded), except on a segment that is a line in (t, v) (zero-length
+// handles on v = a t + b), where it is 0. Steps and constant pieces have derivative 0; the jumps have
 // none.
 // Curve view: curve() is P(u) on [0, segments], segment i on [i, i+1] with local w = u - i, the
 // breakpoints the integers; derivative(u, order) exact for every order. P(i) is always key i. A

@@ -104,10 +104,15 @@ struct segment {
     return Real(0);  // not reached for a segment with t[0] < t[3]: x''' or x'' or x' is nonzero
   }
 
-  /// d^2 v / dt^2 at local parameter w: (v'' x' - v' x'') / x'^3; std::domain_error where x'(w) <= 0
-  /// (the second derivative is unbounded there except in degenerate alignments; none is made up).
+  /// d^2 v / dt^2 at local parameter w: (v'' x' - v' x'') / x'^3. Where x'(w) <= 0 it is unbounded
+  /// (std::domain_error) except in one alignment, which gives 0: x'(w) = v'(w) = 0 (zero-length
+  /// handles) and x'' v''' = x''' v'' at w. x - x(w) and v - v(w) are then c h^2 + d h^3 and
+  /// k (c h^2 + d h^3) in h = u - w (the segment is cubic), so v is affine in t on the whole segment
+  /// (a zero-length handle on the line v = t). The test is exact: no value is made up from rounding.
   [[nodiscard]] Real curvature_at(const Real& w, const Real& time) const {
     const Real xp = time_at(w, 1);
+    if (xp == Real(0) && value_at(w, 1) == Real(0) && time_at(w, 2) * value_at(w, 3) == time_at(w, 3) * value_at(w, 2))
+      return Real(0);
     if (!(xp > Real(0)))
       throw std::domain_error("d2v/dt2 at t = " + to_text(time) +
                               ": the segment's time derivative x'(u) vanishes there (vertical tangent or "
