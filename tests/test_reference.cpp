@@ -278,6 +278,12 @@ TEST(reference, s_between_matches_the_closed_forms_near_and_across_splits) {
     EXPECT_TRUE(cbt::within_relative(rb.s_between(a, b), exact, tol, 1)) << a << " " << b;
     EXPECT_TRUE(cbt::within_relative(rb.s_between(b, a), R(-exact), tol, 1)) << a << " " << b;
   }
+  // A chain of 1000 short steps (check's sorted rows, each one G7-K15 panel when its estimate meets
+  // the tolerance) up to 0.66, next to the speed minimum at 2/3 where the speed changes fastest:
+  // 1e-40 relative, as one panel (the steps' estimates add up to far less).
+  R chain(0);
+  for (int k = 0; k < 1000; ++k) chain += rb.s_between(R("0.00066") * k, R("0.00066") * (k + 1));
+  EXPECT_TRUE(cbt::within_relative(chain, parabola_s(R("0.66")), 1e-40, 1));
   EXPECT_THROW((void)rh.s_between(R(-1), R("0.5")), std::domain_error);
 }
 

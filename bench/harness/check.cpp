@@ -220,6 +220,7 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
   const int K = orders.empty() ? 0 : orders.back();
   res.derivative_sizes.assign(static_cast<std::size_t>(K), std::numeric_limits<double>::quiet_NaN());
   for (int k : orders) res.derivative_sizes[static_cast<std::size_t>(k - 1)] = size_of(k);
+  if (cs != csv_table::npos) ref.cache_s(std::span<const double>(us).subspan(size_grid));  // the rows' u
 
   constexpr double eps = std::numeric_limits<double>::epsilon();
   double worst_point = 0, worst_s = 0;
@@ -278,10 +279,16 @@ check_result check_lengths(case_reference<Dim>& ref, const csv_table& t, const c
   const std::size_t cl = need(t, "length", "your arc length from u0 to u1");
   only(t, {"u0", "u1", "length"}, "check --lengths");
   const interval<double> d = ref.domain();
-  double worst = 0;
+  std::vector<double> ends;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     check_domain(t, r, c0, d);
     check_domain(t, r, c1, d);
+    ends.push_back(t.rows[r][c0]);
+    ends.push_back(t.rows[r][c1]);
+  }
+  ref.cache_s(ends);
+  double worst = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const auto& row = t.rows[r];
     check_row cr;
     cr.line = t.lines[r];
@@ -313,13 +320,19 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
   const interval<double> d = ref.domain();
   // s may exceed the rounded L by a few ulps of rounding in the user's program.
   const double s_max = res.length * (1 + 64 * std::numeric_limits<double>::epsilon());
-  double worst = 0;
+  std::vector<double> answers;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     if (!o.outside_is_finding) check_domain(t, r, cu, d);
     const auto& row = t.rows[r];
     if (!(row[cs] >= 0 && row[cs] <= s_max))
       throw invalid_input(t.where(r, cs) + ": " + num(row[cs]) + " is outside [0, L] = [0, " + num(res.length) +
                           "], the curve's arc-length range");
+    answers.push_back(std::clamp(row[cu], d.lo, d.hi));
+  }
+  ref.cache_s(answers);
+  double worst = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const auto& row = t.rows[r];
     check_row cr;
     cr.line = t.lines[r];
     cr.s = row[cs];

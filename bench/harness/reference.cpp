@@ -25,6 +25,15 @@ struct case_reference<Dim>::impl {
   std::map<double, std::pair<real50, real50>> anchors;  // target s -> (u, s(u))
   std::vector<point<real50, Dim>> exact;                // P(u_j) of set_eval_parameters
   real50 scale{1};
+  std::vector<std::pair<double, real50>> s_cache;  // (u, s(u)) of cache_s, u increasing
+
+  /// s(u): from cache_s's table when u is in it, else integrated from the reference's splits.
+  [[nodiscard]] real50 s_at(double u) const {
+    const auto it = std::lower_bound(s_cache.begin(), s_cache.end(), u,
+                                     [](const std::pair<double, real50>& e, double x) { return e.first < x; });
+    if (it != s_cache.end() && it->first == u) return it->second;
+    return ref.s(real50(u));
+  }
 };
 
 template <int Dim>
@@ -83,7 +92,7 @@ double case_reference<Dim>::ds(double u, double s) {
   auto& anchors = impl_->anchors;
   const auto it = anchors.find(s);
   const real50 su =
-      it == anchors.end() ? impl_->ref.s(uq) : it->second.second + impl_->ref.s_between(it->second.first, uq);
+      it == anchors.end() ? impl_->s_at(u) : it->second.second + impl_->ref.s_between(it->second.first, uq);
   if (it == anchors.end()) anchors.emplace(s, std::make_pair(uq, su));
   return static_cast<double>(abs(su - real50(s)) / impl_->L);
 }
@@ -122,13 +131,28 @@ double case_reference<Dim>::difference(double u, int order, const point<double, 
 
 template <int Dim>
 double case_reference<Dim>::length_between(double u0, double u1) const {
-  return static_cast<double>(impl_->ref.s(real50(u1)) - impl_->ref.s(real50(u0)));
+  return static_cast<double>(impl_->s_at(u1) - impl_->s_at(u0));
 }
 
 template <int Dim>
 double case_reference<Dim>::length_between_error(double u0, double u1, double value) const {
   using std::abs;
-  return static_cast<double>(abs(real50(value) - (impl_->ref.s(real50(u1)) - impl_->ref.s(real50(u0)))));
+  return static_cast<double>(abs(real50(value) - (impl_->s_at(u1) - impl_->s_at(u0))));
+}
+
+template <int Dim>
+void case_reference<Dim>::cache_s(std::span<const double> us) {
+  std::vector<double> sorted(us.begin(), us.end());
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  auto& cache = impl_->s_cache;
+  cache.clear();
+  cache.reserve(sorted.size());
+  for (const double u : sorted) {
+    const real50 uq(u);
+    cache.emplace_back(u, cache.empty() ? impl_->ref.s(uq)
+                                        : cache.back().second + impl_->ref.s_between(real50(cache.back().first), uq));
+  }
 }
 
 template <int Dim>

@@ -125,7 +125,7 @@ class reference_arc_length {
     const auto last = std::lower_bound(splits_.begin(), splits_.end(), hi);   // first split >= hi
     Real err(0), v(0);
     if (first == last || first == splits_.end() || !(*first < hi)) {
-      v = integrate_panel(lo, hi, opt_.tolerance, err);
+      v = integrate_short(lo, hi, opt_.tolerance, err);
     } else {
       using std::max;
       const Real tol = max(opt_.tolerance, Real(1) / Real(1000000000000000LL) / Real(1000000000000000LL));
@@ -253,6 +253,30 @@ class reference_arc_length {
   struct panel_estimate {
     Real value, error;
   };
+
+  // A panel between nearby parameters (s_between's answers near one target, check's sorted rows):
+  // Boost's G7-K15 rule first, kept when its estimate |K15 - G7| meets the tolerance integrate_panel
+  // would ask, else integrate_panel. 15 evaluations instead of G30-K61's 61: at widths of 1e-4 of
+  // a smooth piece the 15-point rule is already exact to 50 digits.
+  [[nodiscard]] Real integrate_short(const Real& a, const Real& b, const Real& tolerance, Real& err) const {
+    using std::abs;
+    using std::max;
+    if (opt_.integrator != reference_integrator::tanh_sinh) {
+      const Real resolution = Real(64) * epsilon<Real>() * (abs(a) + abs(b)) / abs(b - a);
+      const Real half = (b - a) / Real(2), mid = a + half;
+      auto g = [&](const Real& x) {
+        using std::sqrt;
+        return Real(half * sqrt(speed2(mid + half * x)));
+      };
+      Real e(0);
+      const Real v = boost::math::quadrature::gauss_kronrod<Real, 15>::integrate(g, Real(-1), Real(1), 0, Real(0), &e);
+      if (e <= max(tolerance, resolution) * abs(v)) {
+        err += e;
+        return v;
+      }
+    }
+    return integrate_panel(a, b, tolerance, err);
+  }
 
   [[nodiscard]] panel_estimate rule(const Real& a, const Real& b) const {
     const Real half = (b - a) / Real(2), mid = a + half;
