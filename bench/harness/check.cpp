@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 namespace curvebench::harness {
 
@@ -161,47 +162,66 @@ void check_domain(const csv_table& t, std::size_t r, std::size_t c, interval<dou
                         num(d.hi) + "]");
 }
 
+/// The columns of a --values file: u, the coordinates, the derivative orders present (all of an
+/// order's coordinates, or none) and s (npos when absent). Throws on a missing or unknown column.
+template <int Dim>
+struct values_layout {
+  std::size_t cu{}, cs{};
+  std::array<std::size_t, Dim> cp{};
+  std::vector<int> orders;
+  std::vector<std::array<std::size_t, Dim>> cd;
+
+  explicit values_layout(const csv_table& t) {
+    cu = parameter_column(t);
+    std::vector<std::string> allowed{"u", "s"};
+    for (int i = 0; i < Dim; ++i) {
+      allowed.emplace_back(coordinate_names[i]);
+      cp[static_cast<std::size_t>(i)] =
+          need(t, coordinate_names[i], "coordinate " + std::to_string(i + 1) + " of the point");
+    }
+    for (int k = 1; k <= max_derivative; ++k) {
+      std::array<std::size_t, Dim> cols{};
+      int present = 0;
+      for (int i = 0; i < Dim; ++i) {
+        const std::string name = derivative_prefix(k) + coordinate_names[i];
+        allowed.push_back(name);
+        cols[static_cast<std::size_t>(i)] = t.column(name);
+        if (cols[static_cast<std::size_t>(i)] != csv_table::npos) ++present;
+      }
+      if (present == 0) continue;
+      for (int i = 0; i < Dim; ++i)
+        if (present != Dim)
+          need(t, derivative_prefix(k) + coordinate_names[i],
+               "derivative " + std::to_string(k) + " of coordinate " + coordinate_names[i]);
+      orders.push_back(k);
+      cd.push_back(cols);
+    }
+    only(t, allowed, "check --values");
+    cs = t.column("s");
+  }
+
+  /// Throws naming the first row whose u lies outside the domain d.
+  void check_rows(const csv_table& t, interval<double> d) const {
+    for (std::size_t r = 0; r < t.rows.size(); ++r) check_domain(t, r, cu, d);
+  }
+};
+
 template <int Dim>
 check_result check_values(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
   check_result res;
   res.kind = check_kind::values;
   res.file = t.file;
   res.length = ref.length();
-  const std::size_t cu = parameter_column(t);
-  std::vector<std::string> allowed{"u", "s"};
-  std::array<std::size_t, Dim> cp{};
-  for (int i = 0; i < Dim; ++i) {
-    allowed.emplace_back(coordinate_names[i]);
-    cp[static_cast<std::size_t>(i)] =
-        need(t, coordinate_names[i], "coordinate " + std::to_string(i + 1) + " of the point");
-  }
-  // Derivative orders present: all of an order's coordinates, or none.
-  std::vector<int> orders;
-  std::vector<std::array<std::size_t, Dim>> cd;
-  for (int k = 1; k <= max_derivative; ++k) {
-    std::array<std::size_t, Dim> cols{};
-    int present = 0;
-    for (int i = 0; i < Dim; ++i) {
-      const std::string name = derivative_prefix(k) + coordinate_names[i];
-      allowed.push_back(name);
-      cols[static_cast<std::size_t>(i)] = t.column(name);
-      if (cols[static_cast<std::size_t>(i)] != csv_table::npos) ++present;
-    }
-    if (present == 0) continue;
-    for (int i = 0; i < Dim; ++i)
-      if (present != Dim)
-        need(t, derivative_prefix(k) + coordinate_names[i],
-             "derivative " + std::to_string(k) + " of coordinate " + coordinate_names[i]);
-    orders.push_back(k);
-    cd.push_back(cols);
-  }
-  only(t, allowed, "check --values");
+  const values_layout<Dim> lay(t);
+  const std::size_t cu = lay.cu, cs = lay.cs;
+  const auto& cp = lay.cp;
+  const auto& orders = lay.orders;
+  const auto& cd = lay.cd;
   std::vector<std::size_t> value_columns(cp.begin(), cp.end());
   for (const auto& cols : cd) value_columns.insert(value_columns.end(), cols.begin(), cols.end());
   detail::choose_unit(res, t, value_columns, o);
-  const std::size_t cs = t.column("s");
   const interval<double> d = ref.domain();
-  for (std::size_t r = 0; r < t.rows.size(); ++r) check_domain(t, r, cu, d);
+  lay.check_rows(t, d);
 
   // Sizes: the largest exact coordinate magnitude at the rows' parameters and a grid.
   std::vector<double> us;
@@ -268,23 +288,36 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
   return res;
 }
 
+/// The columns of a --lengths file: u0, u1, length.
+struct lengths_layout {
+  std::size_t c0, c1, cl;
+  explicit lengths_layout(const csv_table& t)
+      : c0(need(t, "u0", "the segment's start parameter")),
+        c1(need(t, "u1", "the segment's end parameter")),
+        cl(need(t, "length", "your arc length from u0 to u1")) {
+    only(t, {"u0", "u1", "length"}, "check --lengths");
+  }
+  void check_rows(const csv_table& t, interval<double> d) const {
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+      check_domain(t, r, c0, d);
+      check_domain(t, r, c1, d);
+    }
+  }
+};
+
 template <int Dim>
 check_result check_lengths(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
   check_result res;
   res.kind = check_kind::lengths;
   res.file = t.file;
   res.length = ref.length();
-  const std::size_t c0 = need(t, "u0", "the segment's start parameter");
-  const std::size_t c1 = need(t, "u1", "the segment's end parameter");
-  const std::size_t cl = need(t, "length", "your arc length from u0 to u1");
-  only(t, {"u0", "u1", "length"}, "check --lengths");
-  const interval<double> d = ref.domain();
+  const lengths_layout lay(t);
+  const std::size_t c0 = lay.c0, c1 = lay.c1, cl = lay.cl;
+  lay.check_rows(t, ref.domain());
   std::vector<double> ends;
-  for (std::size_t r = 0; r < t.rows.size(); ++r) {
-    check_domain(t, r, c0, d);
-    check_domain(t, r, c1, d);
-    ends.push_back(t.rows[r][c0]);
-    ends.push_back(t.rows[r][c1]);
+  for (const auto& row : t.rows) {
+    ends.push_back(row[c0]);
+    ends.push_back(row[c1]);
   }
   ref.cache_s(ends);
   double worst = 0;
@@ -308,21 +341,34 @@ check_result check_lengths(case_reference<Dim>& ref, const csv_table& t, const c
   return res;
 }
 
+/// The columns of an --inverse file: s, u.
+struct inverse_layout {
+  std::size_t cs, cu;
+  explicit inverse_layout(const csv_table& t)
+      : cs(need(t, "s", "the arc length from the domain's start")), cu(parameter_column(t)) {
+    only(t, {"s", "u"}, "check --inverse");
+  }
+  /// The answers' domain (an answer outside it is a finding instead with outside_is_finding).
+  void check_rows(const csv_table& t, interval<double> d, const check_options& o) const {
+    if (o.outside_is_finding) return;
+    for (std::size_t r = 0; r < t.rows.size(); ++r) check_domain(t, r, cu, d);
+  }
+};
+
 template <int Dim>
 check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
   check_result res;
   res.kind = check_kind::inverse;
   res.file = t.file;
   res.length = ref.length();
-  const std::size_t cs = need(t, "s", "the arc length from the domain's start");
-  const std::size_t cu = parameter_column(t);
-  only(t, {"s", "u"}, "check --inverse");
+  const inverse_layout lay(t);
+  const std::size_t cs = lay.cs, cu = lay.cu;
   const interval<double> d = ref.domain();
+  lay.check_rows(t, d, o);
   // s may exceed the rounded L by a few ulps of rounding in the user's program.
   const double s_max = res.length * (1 + 64 * std::numeric_limits<double>::epsilon());
   std::vector<double> answers;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
-    if (!o.outside_is_finding) check_domain(t, r, cu, d);
     const auto& row = t.rows[r];
     if (!(row[cs] >= 0 && row[cs] <= s_max))
       throw invalid_input(t.where(r, cs) + ": " + num(row[cs]) + " is outside [0, L] = [0, " + num(res.length) +
@@ -362,6 +408,22 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
 template <int Dim>
 std::vector<check_result> run_dim(const io::field& spec, const std::vector<const check_input*>& inputs,
                                   const check_options& o) {
+  // Every file's columns, then its parameters against the double curve's domain, are checked before
+  // the 50-digit reference is built (seconds on hard curves): a wrong file fails at once. A spec
+  // whose double curve cannot be built (data only real50 resolves) skips the domain here; the
+  // checks below see it against the reference's domain, as they always do.
+  std::optional<interval<double>> domain;
+  try {
+    domain = io::curve_from_spec<double, Dim>(spec).domain();
+  } catch (const invalid_input&) {
+  }
+  for (const check_input* in : inputs) {
+    const interval<double> d = domain.value_or(
+        interval<double>{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()});
+    if (in->kind == check_kind::values) values_layout<Dim>(in->table).check_rows(in->table, d);
+    if (in->kind == check_kind::lengths) lengths_layout(in->table).check_rows(in->table, d);
+    if (in->kind == check_kind::inverse) inverse_layout(in->table).check_rows(in->table, d, o);
+  }
   case_reference<Dim> ref(spec);
   std::vector<check_result> out;
   for (const check_input* in : inputs) {
