@@ -142,6 +142,12 @@ TEST(csv, a_wide_header_is_read_in_linear_time) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(t.columns.size(), n);
   EXPECT_LT(seconds, 5.0);
+  // One row past max_csv_rows is refused naming its line (the header is line 1); the cap itself passes.
+  std::string rows = "u\n";
+  for (std::size_t r = 0; r < max_csv_rows; ++r) rows += "0\n";
+  EXPECT_EQ(parse_csv(rows, "in.csv").rows.size(), max_csv_rows);
+  EXPECT_THAT(invalid_input_of([&] { (void)parse_csv(rows + "0\n", "in.csv"); }),
+              HasSubstr("in.csv: row 1000002: more than 1000000 rows"));
   // A repeat far from its first use is still found.
   EXPECT_THAT(invalid_input_of([&] { (void)parse_csv("c0,c1,c2,c1\n1,2,3,4\n", "in.csv"); }),
               HasSubstr("column 4: column \"c1\" appears twice"));

@@ -130,6 +130,9 @@ csv_table parse_csv(std::string_view text, const std::string& file, bool empty_a
       throw invalid_input(row_name + ", column " + std::to_string(t.columns.size() + 1) + ": " +
                           quote_cell(cells[t.columns.size()]) + " has no column (" + std::to_string(cells.size()) +
                           " values, but the header names " + std::to_string(t.columns.size()) + " columns)");
+    if (t.rows.size() == max_csv_rows)
+      throw invalid_input(row_name + ": more than " + std::to_string(max_csv_rows) +
+                          " rows, the most a file may hold (split it into several checks)");
     std::vector<double> row(cells.size());
     for (std::size_t c = 0; c < cells.size(); ++c) {
       if (empty_as_nan && cells[c].empty()) {

@@ -2,7 +2,8 @@
 // then rows of finite numbers, comma-separated (spaces around a cell are ignored). Every problem
 // throws invalid_input naming the file, the row (its 1-based line number, as an editor shows it),
 // the column and the cell's text: a non-numeric cell ("1.5x", "", nan, inf), a row with too few or
-// too many values, a repeated or empty column name, an empty file, a file with a header only.
+// too many values, a repeated or empty column name, an empty file, a file with a header only, more
+// than max_csv_rows rows.
 // Messages show column names and cells cut to 40 characters, so their size does not grow with the
 // input's. Cost: linear in the text (repeated names are found by hashing).
 // Blank lines and lines starting with '#' (a comment, as `curvebench sample` writes one first) are
@@ -32,6 +33,11 @@ struct csv_table {
   /// "FILE: row N, column C" for row index r and column index c (c = npos: no column part).
   [[nodiscard]] std::string where(std::size_t r, std::size_t c = npos) const;
 };
+
+/// The most data rows a file may hold (as `curvebench sample` writes at most): a larger file is
+/// refused at the first row past it, before it is all parsed. check's 50-digit reference costs
+/// about 0.2 ms per row (docs/checking.md), so the cap bounds a check at minutes.
+inline constexpr std::size_t max_csv_rows = 1000000;
 
 /// Parses CSV text; `file` names it in errors. With empty_as_nan an empty cell is read as NaN
 /// (a value not given: `curvebench sample` leaves a derivative cell empty where the derivative is
