@@ -179,6 +179,11 @@ TEST(method_table, a_cost_known_before_the_work_is_refused_above_its_limit) {
               HasSubstr("--steps 10000000: 2 segments x 10000000 steps is more than the limit of 16777216"));
   EXPECT_EQ(h::method_rows::forward_difference.cost({{"steps", 256}}, 2).budget, 513u);
   EXPECT_TRUE(h::method_rows::adaptive_gk.cost({{"tol", 1e-12}}, 2).refusal.empty());
+  // adaptive_gk's first panels (31 per segment) are always computed: its budget is 2^24 up to
+  // 541200 segments, their count above (a 1e6-segment spline spent 31M evaluations against a
+  // budget that said 2^24).
+  EXPECT_EQ(h::method_rows::adaptive_gk.cost({{"tol", 1e-12}}, 541200).budget, 16777216u);
+  EXPECT_EQ(h::method_rows::adaptive_gk.cost({{"tol", 1e-12}}, 1000000).budget, 31000000u);
 }
 
 // Every length row, at the CLI's defaults and over the quick sweep, on a curve of known length:

@@ -162,6 +162,17 @@ void check_domain(const csv_table& t, std::size_t r, std::size_t c, interval<dou
                         num(d.hi) + "]");
 }
 
+/// Integrates the reference's s(u) at the parameters us (ref.cache_s), reporting progress as the
+/// share of the file's rows: this is where a check with arc lengths spends its time, and its rows
+/// are then quick lookups (which then report nothing more).
+template <int Dim>
+void cache_s(case_reference<Dim>& ref, std::span<const double> us, const csv_table& t, const check_options& o) {
+  const std::size_t rows = t.rows.size();
+  ref.cache_s(us, [&](std::size_t k, std::size_t n) {
+    if (o.on_row) o.on_row(n == 0 ? rows : k * rows / n, rows, t.file);
+  });
+}
+
 /// The columns of a --values file: u, the coordinates, the derivative orders present (all of an
 /// order's coordinates, or none) and s (npos when absent). Throws on a missing or unknown column.
 template <int Dim>
@@ -240,7 +251,8 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
   const int K = orders.empty() ? 0 : orders.back();
   res.derivative_sizes.assign(static_cast<std::size_t>(K), std::numeric_limits<double>::quiet_NaN());
   for (int k : orders) res.derivative_sizes[static_cast<std::size_t>(k - 1)] = size_of(k);
-  if (cs != csv_table::npos) ref.cache_s(std::span<const double>(us).subspan(size_grid));  // the rows' u
+  const bool cached = cs != csv_table::npos;
+  if (cached) cache_s(ref, std::span<const double>(us).subspan(size_grid), t, o);  // the rows' u
 
   constexpr double eps = std::numeric_limits<double>::epsilon();
   double worst_point = 0, worst_s = 0;
@@ -275,7 +287,7 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
       worst_s = std::max(worst_s, cr.s_error);
     }
     res.rows.push_back(std::move(cr));
-    if (o.on_row) o.on_row(res.rows.size(), t.rows.size(), t.file);
+    if (o.on_row && !cached) o.on_row(res.rows.size(), t.rows.size(), t.file);
   }
   detail::warn_digits(res, t, value_columns);
   const auto n = static_cast<double>(t.rows.size());
@@ -319,7 +331,7 @@ check_result check_lengths(case_reference<Dim>& ref, const csv_table& t, const c
     ends.push_back(row[c0]);
     ends.push_back(row[c1]);
   }
-  ref.cache_s(ends);
+  cache_s(ref, ends, t, o);
   double worst = 0;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const auto& row = t.rows[r];
@@ -334,7 +346,6 @@ check_result check_lengths(case_reference<Dim>& ref, const csv_table& t, const c
     cr.relative = segment > 0 ? diff / segment : (diff > 0 ? std::numeric_limits<double>::infinity() : 0.0);
     worst = std::max(worst, cr.error);
     res.rows.push_back(std::move(cr));
-    if (o.on_row) o.on_row(res.rows.size(), t.rows.size(), t.file);
   }
   res.records.push_back(
       subject_record(o.case_name, o.group, "length", o.name, "", worst, static_cast<double>(t.rows.size())));
@@ -375,7 +386,7 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
                           "], the curve's arc-length range");
     answers.push_back(std::clamp(row[cu], d.lo, d.hi));
   }
-  ref.cache_s(answers);
+  cache_s(ref, answers, t, o);
   double worst = 0;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const auto& row = t.rows[r];
@@ -398,7 +409,6 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
     cr.absolute = cr.error * res.length;  // ds and the tangent's run are both divided by L
     worst = std::max(worst, cr.error);
     res.rows.push_back(std::move(cr));
-    if (o.on_row) o.on_row(res.rows.size(), t.rows.size(), t.file);
   }
   res.records.push_back(
       subject_record(o.case_name, o.group, "u_of_s", o.name, "", worst, static_cast<double>(t.rows.size())));

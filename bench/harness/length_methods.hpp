@@ -218,7 +218,8 @@ inline constexpr setting_def tol_of_length{
     0,
     std::numeric_limits<double>::infinity(),
     false,
-    "relative tolerance of the length; stops at 2^24 evaluations with status cap_hit"};
+    "relative tolerance of the length; stops at 2^24 evaluations with status cap_hit (the first 31-point panel of "
+    "each segment always computed: 31 x segments when that is more)"};
 inline constexpr setting_def steps_per_segment{
     "steps", "--steps", 256, 1, 10000000, true, "table steps per segment (steps x segments nodes, at most 2^24)"};
 
@@ -277,13 +278,23 @@ inline constexpr length_method composite_gauss{
       return [&c, p, rule] { return al::composite_gauss_length(c, p, *rule); };
     }};
 
+/// adaptive_length computes one G15-K31 panel (31 evaluations) per segment before it refines any
+/// (arclength/length.hpp); the budget (2^24) bounds the refinement after them.
+inline constexpr std::size_t adaptive_first_panel_evaluations = 31;
+
+/// adaptive_gk's most evaluations: its budget, or the first panels where they alone pass it (more
+/// than 541200 segments), which are always computed (the progress total; the CLI's text says so).
+inline length_cost adaptive_cost(const setting_values&, std::size_t segments) {
+  const std::size_t budget = al::adaptive_options<double>{}.max_evaluations;
+  const std::size_t first = segments * adaptive_first_panel_evaluations;
+  return length_cost{first > budget ? first : budget, {}};
+}
+
 inline constexpr length_method adaptive_gk{&vocab::methods::adaptive_gk,
                                            std::array{tol_of_length},
                                            true,
                                            [](const sweep& w, double) { return series_of("tol", w.adaptive_tol); },
-                                           [](const setting_values&, std::size_t) {
-                                             return length_cost{al::adaptive_options<double>{}.max_evaluations, {}};
-                                           },
+                                           adaptive_cost,
                                            [](const auto& c, const setting_values& v, const run_context& x) {
                                              al::adaptive_options<double> o;
                                              o.relative_tolerance = value_of(v, "tol", "adaptive_gk");

@@ -141,7 +141,8 @@ double case_reference<Dim>::length_between_error(double u0, double u1, double va
 }
 
 template <int Dim>
-void case_reference<Dim>::cache_s(std::span<const double> us) {
+void case_reference<Dim>::cache_s(std::span<const double> us,
+                                  const std::function<void(std::size_t, std::size_t)>& on_done) {
   std::vector<double> sorted(us.begin(), us.end());
   std::sort(sorted.begin(), sorted.end());
   sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
@@ -152,6 +153,7 @@ void case_reference<Dim>::cache_s(std::span<const double> us) {
     const real50 uq(u);
     cache.emplace_back(u, cache.empty() ? impl_->ref.s(uq)
                                         : cache.back().second + impl_->ref.s_between(real50(cache.back().first), uq));
+    if (on_done) on_done(cache.size(), sorted.size());
   }
 }
 

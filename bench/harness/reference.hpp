@@ -11,6 +11,7 @@
 #include "curvebench/io/json_fields.hpp"
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -63,7 +64,8 @@ class case_reference {
   /// from the reference's splits (check's rows: 1e4 rows of the arch took 5.8 s with an s column
   /// and 61 s as lengths before, 1.6 s and 2.6 s with it). Each step's panel meets the reference's
   /// tolerance, so a chain of n rows adds at most n times that (test_reference: 1e-40 over 1000).
-  void cache_s(std::span<const double> us);
+  /// on_done(k, n) after each of the n distinct parameters (a progress line).
+  void cache_s(std::span<const double> us, const std::function<void(std::size_t, std::size_t)>& on_done = {});
 
   /// s(u1) - s(u0) (signed; u0, u1 inside the domain), the 50-digit arc length between them, rounded.
   [[nodiscard]] double length_between(double u0, double u1) const;

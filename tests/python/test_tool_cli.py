@@ -243,8 +243,9 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(q.returncode, 0, q.stderr)
         self.assertEqual(q.stderr, "")
         self.assertEqual(q.stdout, p.stdout)
-        # check: every row's 50-digit reference (its value and its s(u)); 300 rows of the degree-20
-        # Bezier take about 6 s here. (The Lissajous took 41 s to set up its 50-digit length first.)
+        # check: every row's 50-digit reference (its value and its s(u), where the time goes, so the
+        # progress counts the s(u) integrals as rows); 300 rows of the degree-20 Bezier take about
+        # 4.5 s here. (The Lissajous took 41 s to set up its 50-digit length first.)
         bezier = os.path.join(CASES, "bezier_degree_20.json")
         values = self.write("values.csv", run("sample", bezier, "--count", "300", "--quiet").stdout)
         c = run("check", bezier, "--values", values)
