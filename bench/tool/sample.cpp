@@ -427,7 +427,8 @@ void sample_times(const io::field& spec, const sample_args& a) {
       }
       if (empty_cells++ == 0)
         first_empty = given[i].where + " (t = " + to_text(t) + "), " + (k == 1 ? "dvalue" : "d2value") + ": " +
-                      (d ? "infinite (a vertical tangent)" : "unbounded or not representable in double");
+                      (d ? "infinite or past double's range (a vertical tangent, or a slope beyond 1.8e308)"
+                         : "unbounded or not representable in double");
     }
     std::cout << "\n";
   }
