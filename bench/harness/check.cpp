@@ -162,6 +162,15 @@ void check_domain(const csv_table& t, std::size_t r, std::size_t c, interval<dou
                         num(d.hi) + "]");
 }
 
+/// An empty result of a file: its kind, its name and the curve's length L.
+check_result result_of(check_kind kind, const csv_table& t, double length) {
+  check_result res;
+  res.kind = kind;
+  res.file = t.file;
+  res.length = length;
+  return res;
+}
+
 /// Integrates the reference's s(u) at the parameters us (ref.cache_s), reporting progress as the
 /// share of the file's rows: this is where a check with arc lengths spends its time, and its rows
 /// are then quick lookups (which then report nothing more).
@@ -219,10 +228,7 @@ struct values_layout {
 
 template <int Dim>
 check_result check_values(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
-  check_result res;
-  res.kind = check_kind::values;
-  res.file = t.file;
-  res.length = ref.length();
+  check_result res = result_of(check_kind::values, t, ref.length());
   const values_layout<Dim> lay(t);
   const std::size_t cu = lay.cu, cs = lay.cs;
   const auto& cp = lay.cp;
@@ -319,10 +325,7 @@ struct lengths_layout {
 
 template <int Dim>
 check_result check_lengths(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
-  check_result res;
-  res.kind = check_kind::lengths;
-  res.file = t.file;
-  res.length = ref.length();
+  check_result res = result_of(check_kind::lengths, t, ref.length());
   const lengths_layout lay(t);
   const std::size_t c0 = lay.c0, c1 = lay.c1, cl = lay.cl;
   lay.check_rows(t, ref.domain());
@@ -368,10 +371,7 @@ struct inverse_layout {
 
 template <int Dim>
 check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
-  check_result res;
-  res.kind = check_kind::inverse;
-  res.file = t.file;
-  res.length = ref.length();
+  check_result res = result_of(check_kind::inverse, t, ref.length());
   const inverse_layout lay(t);
   const std::size_t cs = lay.cs, cu = lay.cu;
   const interval<double> d = ref.domain();
