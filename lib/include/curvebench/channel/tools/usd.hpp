@@ -60,12 +60,11 @@ struct usd {
   /// What the model is verified against (recorded values of the real tool) and what is not.
   static constexpr std::string_view verification =
       "against OpenUSD's Ts 24.11 (tests/data/recorded/usd_ts_splines.json, curvebench fidelity): held, linear "
-      "and curve segments, anti-regression, dual values, extrapolation and loops; not modelled: Ts's padding "
-      "of limited regressive tangents (1e-5 of the interval inside the ellipse), two Ts 24.11 defects (a "
-      "looping post-extrapolation taking the pre-extrapolation's mode, a knot shadowed by inner loops still "
-      "setting the extrapolation), a dual-valued knot after a linear or curve segment (evaluated, no curve view); "
-      "Hermite "
-      "segments unverified (Ts 24.11 does not evaluate them)";
+      "and curve segments, anti-regression, dual values (a jump after a linear or curve segment has no curve "
+      "view: length and accuracy refuse it), extrapolation and loops; not modelled: Ts's padding of limited "
+      "regressive tangents (1e-5 of the interval inside the ellipse), two Ts 24.11 defects (a looping "
+      "post-extrapolation taking the pre-extrapolation's mode, a knot shadowed by inner loops still setting the "
+      "extrapolation); Hermite segments unverified (Ts 24.11 does not evaluate them)";
   using storage_type = double;
   static constexpr time_solver default_solver = time_solver::closed_form;
 
