@@ -20,6 +20,7 @@
 #include "support/fixtures.hpp"
 
 #include "curvebench/channel/tool_model.hpp"
+#include "curvebench/channel/tools/css.hpp"
 #include "curvebench/io/families/channel.hpp"
 #include "curvebench/io/spec.hpp"
 #include "curvebench/reference/multiprecision.hpp"
@@ -116,6 +117,66 @@ TEST(ChannelTools, ModelsOfKeysEvaluateTheKeys) {
   const std::vector<ch::key<double>> ease{{0, 0, {}, {0.25, 0.1}, ch::interpolation::bezier},
                                           {1, 1, {-0.75, 0}, {}, ch::interpolation::bezier}};
   EXPECT_LE(worst_against_exact<ch::tools::css>(ease) * std::numeric_limits<double>::epsilon(), 1e-6);
+}
+
+// steps() evaluates in closed form (css_steps), with no keys made: against the channel of the
+// n + 1 keys (its own binary search over the key times) it is bit-identical, at every key time,
+// one ulp either side of it and between keys, for every position and n up to 65537; above 2^20 the
+// model evaluates without a view (the reason named), the value the step algorithm's at times whose
+// key is known exactly (k / n for n a power of two), and n past 2^53 is refused.
+TEST(ChannelTools, CssStepsEvaluateInClosedFormForAnyCount) {
+  using ch::step_position;
+  for (const step_position pos :
+       {step_position::jump_start, step_position::jump_end, step_position::jump_none, step_position::jump_both}) {
+    for (const long long n : {2LL, 3LL, 7LL, 1000LL, 65537LL}) {
+      SCOPED_TRACE(std::to_string(n) + " " + std::string(ch::to_string(pos)));
+      const auto f = ch::css_easing<double>::steps(n, pos);
+      const auto m = ch::tools::css::of_easing<double>(f);
+      const ch::channel<double> keys(ch::css_keys<double>(f), ch::extrapolation::constant, ch::extrapolation::constant);
+      ASSERT_FALSE(m.view_refusal().has_value());
+      std::vector<double> ts{-1.0, -0.0, 1.0, 1.5, std::nextafter(1.0, 0.0), std::nextafter(0.0, 1.0)};
+      const long long stride = std::max(1LL, n / 257);
+      for (long long k = 1; k < n; k += stride) {
+        const double tk = static_cast<double>(k) / static_cast<double>(n);
+        ts.insert(ts.end(), {tk, std::nextafter(tk, 0.0), std::nextafter(tk, 1.0), tk + 0.5 / static_cast<double>(n)});
+      }
+      for (double t : ts) {
+        EXPECT_EQ(m.value(t), keys.value(t)) << "t = " << t;
+        EXPECT_EQ(m.derivative(t, 1), 0.0);
+        EXPECT_EQ(m.derivative(t, 2), 0.0);
+      }
+    }
+  }
+  EXPECT_THAT(
+      ch::tools::css::of_easing<double>(ch::css_easing<double>::steps(ch::css_max_step_keys + 1)).view_refusal(),
+      ::testing::Optional(HasSubstr("steps(1048577) has no curve view")));
+  // Past the view's cap: no view, the reason named; n = 2^30 (k / n exact), jump-end, so the value
+  // at k / n and just below it is k / n and (k - 1) / n.
+  const long long n = 1LL << 30;
+  const auto big = ch::tools::css::of_easing<double>(ch::css_easing<double>::steps(n));
+  ASSERT_TRUE(big.view_refusal().has_value());
+  EXPECT_THAT(*big.view_refusal(), HasSubstr("steps(1073741824) has no curve view"));
+  EXPECT_THAT(cbt::message_of([&] { (void)big.view(); }), HasSubstr("sample --at and check --values evaluate it"));
+  EXPECT_EQ(big.key_times(), (std::vector<double>{0, 1}));
+  for (const long long k : {1LL, 12345LL, n / 3, n - 1}) {
+    const double tk = std::ldexp(static_cast<double>(k), -30);
+    EXPECT_EQ(big.value(tk), tk) << k;
+    EXPECT_EQ(big.value(std::nextafter(tk, 0.0)), std::ldexp(static_cast<double>(k - 1), -30)) << k;
+  }
+  EXPECT_EQ(big.value(1.0), 1.0);
+  EXPECT_EQ(big.value(-3.0), 0.0);
+  EXPECT_THAT(cbt::message_of([&] { (void)big.value(std::numeric_limits<double>::infinity()); }),
+              HasSubstr("finite times only"));
+  // In 50 digits the same, and n = 1e9 (not a power of two): the key below t is the last k with
+  // k / n <= t, checked against the definition.
+  const auto b50 = ch::tools::css::of_easing<cb::real50>(ch::css_easing<double>::steps(1000000000));
+  for (const long long k : {1LL, 999999999LL, 333333333LL}) {
+    const cb::real50 tk = cb::real50(k) / cb::real50(1000000000);
+    EXPECT_EQ(b50.value(tk), tk) << k;
+    EXPECT_EQ(b50.value(tk - cb::real50(1e-30)), cb::real50(k - 1) / cb::real50(1000000000)) << k;
+  }
+  EXPECT_NO_THROW((void)ch::css_easing<double>::steps(1LL << 53, step_position::jump_both));
+  EXPECT_THAT(cbt::message_of([] { (void)ch::css_easing<double>::steps((1LL << 53) + 1); }), HasSubstr("at most 2^53"));
 }
 
 TEST(ChannelTools, KeysAToolCannotHoldAreRefusedWithTheReason) {

@@ -113,9 +113,16 @@ class css_easing {
     return e;
   }
 
+  /// The largest n of steps(n), 2^53.
+  static constexpr long long max_steps = 1LL << 53;
   /// steps(n, position).
   [[nodiscard]] static css_easing steps(long long n, step_position position = step_position::jump_end) {
     if (n < 1) validate::fail("steps argument 1 (n) = " + std::to_string(n) + ": must be >= 1");
+    // Above 2^53 the steps' times k / n are no longer distinct doubles (and n + 1 jumps overflow at
+    // the largest long long).
+    if (n > max_steps)
+      validate::fail("steps argument 1 (n) = " + std::to_string(n) + ": at most 2^53 = " + std::to_string(max_steps) +
+                     " (past it a double cannot tell the steps apart)");
     if (position == step_position::jump_none && n < 2)
       validate::fail("steps argument 1 (n) = " + std::to_string(n) + ": jump-none needs n >= 2");
     css_easing e(kind::steps);

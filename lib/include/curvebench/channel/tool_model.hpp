@@ -104,8 +104,7 @@ template <class Real>
   return out;
 }
 
-/// A model that is its channel (the exact and CSS tools): the channel evaluates, the channel is
-/// the view.
+/// A model that is its channel (the exact tool): the channel evaluates, the channel is the view.
 template <class Tool, class Real>
 class channel_tool_model {
  public:

@@ -3,9 +3,13 @@
 // the value held outside [0, 1] (constant extrapolation).
 // css_keys(easing): cubic-bezier(x1, y1, x2, y2) is one bezier segment from (0, 0) to (1, 1) with
 // handles (x1, y1) and (x2 - 1, y2 - 1); steps(n, position) are n + 1 keys at k / n joined by
-// constant segments whose values follow the specification's step algorithm (n <= 2^20); linear(...)
-// is one linear segment between consecutive stops (two stops at one input, a jump, is an
-// invalid_input: a channel has one value per time).
+// constant segments whose values follow the specification's step algorithm; linear(...) is one
+// linear segment between consecutive stops (two stops at one input, a jump, is an invalid_input: a
+// channel has one value per time).
+// The model of steps(n) evaluates in closed form (css_steps: the key below t found from floor(n t),
+// O(1) for any n up to 2^53); its curve view holds the n + 1 keys and is built for n <= 2^20 only
+// (css_max_step_keys): above, view() refuses with the reason, as a USD jump's does, and values
+// and derivatives still evaluate.
 // from_keys: a single bezier segment from (0, 0) to (1, 1) (handle times in [0, 1], as
 // cubic-bezier requires), or linear segments from time 0 to time 1 (linear() with the key times as
 // stop positions); constant segments are refused (steps() are equal steps, not arbitrary ones).
@@ -16,16 +20,59 @@
 #include "curvebench/channel/tool_model.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace curvebench::channel {
 
-/// steps(n) becomes n + 1 keys in a channel: n at most this (2^20, about what a 64 MiB spec holds).
+/// steps(n)'s curve view holds n + 1 keys: built for n at most this (2^20); above it the model
+/// evaluates without a view.
 inline constexpr long long css_max_step_keys = 1LL << 20;
+
+/// steps(n, position) as the constant segments of css_keys, in closed form: the value at time t is
+/// key k's for the last key time k / n <= t (rounded as css_keys rounds it), key 0's before time
+/// 0 and key n's after time 1 (constant extrapolation), so it equals the channel of the n + 1
+/// keys at every t, with no keys made. n <= 2^53 (css_easing::steps), so k and k / n are exact.
+template <class Real>
+class css_steps {
+ public:
+  explicit css_steps(const css_easing<double>& f)
+      : n_(f.step_count()),
+        start_(f.position() == step_position::jump_start || f.position() == step_position::jump_both),
+        jumps_(f.position() == step_position::jump_none   ? n_ - 1
+               : f.position() == step_position::jump_both ? n_ + 1
+                                                          : n_) {}
+
+  /// Key k's time, k / n.
+  [[nodiscard]] Real time_of(long long k) const { return Real(k) / Real(n_); }
+  /// Key k's value: the step algorithm's output at k / n (see css_keys).
+  [[nodiscard]] Real value_of(long long k) const { return Real(std::min(k + (start_ ? 1 : 0), jumps_)) / Real(jumps_); }
+  /// The key whose constant segment holds t (t finite).
+  [[nodiscard]] long long key_at(const Real& t) const {
+    using std::floor;
+    if (!(t > Real(0))) return 0;
+    if (!(t < Real(1))) return n_;
+    // floor(n t) is within one of the key: n t rounds, and so does k / n; the two loops settle it
+    // on css_keys' key times.
+    long long k = static_cast<long long>(floor(t * Real(n_)));
+    k = std::clamp(k, 0LL, n_);
+    while (k < n_ && time_of(k + 1) <= t) ++k;
+    while (k > 0 && time_of(k) > t) --k;
+    return k;
+  }
+  [[nodiscard]] Real value(const Real& t) const { return value_of(key_at(t)); }
+  [[nodiscard]] long long count() const { return n_; }
+
+ private:
+  long long n_;
+  bool start_;
+  long long jumps_;
+};
 
 /// The keys of a CSS easing (see the header).
 template <class Real>
@@ -41,18 +88,15 @@ template <class Real>
     // the start, the output that over the jumps (n, n - 1 without jumps at the ends, n + 1 with both),
     // at most 1. The value holds until the next step: constant segments, right-continuous like CSS.
     const long long n = f.step_count();
-    // n + 1 keys, materialised: capped before any is made (steps(1e7) took 63 s and 2.5 GB, and
-    // n + 1 overflows at the largest long long). css_easing evaluates steps() in closed form.
+    // n + 1 keys, materialised: capped before any is made (steps(1e7) took 63 s and 2.5 GB); the
+    // model evaluates larger n without keys (css_steps).
     if (n > css_max_step_keys)
       validate::fail("steps argument 1 (n) = " + std::to_string(n) +
-                     ": a channel holds steps() as n + 1 keys, n at most " + std::to_string(css_max_step_keys));
-    const step_position pos = f.position();
-    const bool start = pos == step_position::jump_start || pos == step_position::jump_both;
-    const long long jumps = pos == step_position::jump_none ? n - 1 : pos == step_position::jump_both ? n + 1 : n;
-    for (long long k = 0; k <= n; ++k) {
-      const long long step = std::min(k + (start ? 1 : 0), jumps);
-      keys.push_back({Real(k) / Real(n), Real(step) / Real(jumps), {}, {}, interpolation::constant});
-    }
+                     ": the curve view holds steps() as n + 1 keys, n at most " + std::to_string(css_max_step_keys) +
+                     " (sample --at and check --values evaluate any n)");
+    const css_steps<Real> st(f);
+    keys.reserve(static_cast<std::size_t>(n) + 1);
+    for (long long k = 0; k <= n; ++k) keys.push_back({st.time_of(k), st.value_of(k), {}, {}, interpolation::constant});
   } else {
     const auto pts = f.points();
     for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -82,13 +126,64 @@ struct css {
   using storage_type = double;
   static constexpr time_solver default_solver = time_solver::table_newton;
 
+  /// The channel of the easing's keys, evaluated by it; steps() evaluated in closed form, its view
+  /// built for n <= css_max_step_keys (see the header).
   template <class Real>
-  using model = curvebench::channel::detail::channel_tool_model<css, Real>;
+  class model {
+   public:
+    using real_type = Real;
+    using tool_type = css;
+    static constexpr std::string_view name = css::name;
+    static constexpr int storage_bits = storage_bits_of<css::storage_type>;
+
+    model(const css_easing<double>& f, time_solver solver) {
+      if (f.type() == css_easing<double>::kind::steps) {
+        steps_.emplace(f);
+        if (f.step_count() > css_max_step_keys) {
+          refusal_ = "steps(" + std::to_string(f.step_count()) +
+                     ") has no curve view: it would hold n + 1 keys, n at most " + std::to_string(css_max_step_keys) +
+                     " (sample --at and check --values evaluate it)";
+          return;
+        }
+      }
+      view_.emplace(css_keys<Real>(f), extrapolation::constant, extrapolation::constant, solver);
+    }
+
+    [[nodiscard]] Real value(const Real& t) const { return derivative(t, 0); }
+    [[nodiscard]] Real derivative(const Real& t, int order) const {
+      if (!steps_) return view_->derivative(t, order);
+      validate::derivative_order(order);
+      if (order > 2)
+        validate::fail("order = " + std::to_string(order) + ": a channel's time derivatives go to order 2");
+      if (!is_finite(t)) throw std::domain_error("t = " + to_text(t) + ": a channel is evaluated at finite times only");
+      return order == 0 ? steps_->value(t) : Real(0);  // constant segments and extrapolation
+    }
+    /// The curve view; invalid_input saying why when there is none (view_refusal).
+    [[nodiscard]] const channel<Real>& view() const {
+      if (!view_) validate::fail(*refusal_);
+      return *view_;
+    }
+    /// Why the easing has no curve view (steps() above css_max_step_keys), or nothing.
+    [[nodiscard]] const std::optional<std::string>& view_refusal() const { return refusal_; }
+    /// The key times; without a view (steps() above css_max_step_keys) the first and last only, 0
+    /// and 1.
+    [[nodiscard]] std::vector<Real> key_times() const {
+      if (!view_) return {Real(0), Real(1)};
+      std::vector<Real> out;
+      for (const auto& k : view_->keys()) out.push_back(k.time);
+      return out;
+    }
+
+   private:
+    std::optional<css_steps<Real>> steps_;
+    std::optional<channel<Real>> view_;
+    std::optional<std::string> refusal_;
+  };
 
   /// The model of an easing, solved by `solver`.
   template <class Real>
   [[nodiscard]] static model<Real> of_easing(const css_easing<double>& f, time_solver solver = default_solver) {
-    return model<Real>(channel<Real>(css_keys<Real>(f), extrapolation::constant, extrapolation::constant, solver));
+    return model<Real>(f, solver);
   }
 
   /// The easing that the keys are (see the header).

@@ -33,8 +33,9 @@ namespace curvebench::io {
 /// A channel spec under its tool's rules: the value and time derivatives (orders 0 to 2) at a time
 /// as the tool evaluates them (the tool model's derivative), the keys' times, and the channel whose
 /// curve() is the spec's curve (the tool model's view). A model may have no view (a USD
-/// dual-valued knot after a linear or curve segment: a jump); source() then fails with the reason,
-/// naming the spec, and `at` still evaluates.
+/// dual-valued knot after a linear or curve segment: a jump; CSS steps(n) above 2^20, whose key
+/// times are then given as 0 and 1 only); source() then fails with the reason, naming the spec,
+/// and `at` still evaluates.
 template <class Real>
 struct channel_model {
   std::optional<channel::channel<Real>> view;
@@ -91,7 +92,7 @@ channel_model<Real> channel_model_of_spec(const field& spec) {
     const auto m = tool_spec<T>::template parse<Real>(spec);
     channel_model<Real> cm;
     cm.at = [m](const Real& x, int order) { return m.derivative(x, order); };
-    if constexpr (requires { m.view_refusal(); }) {  // a model that may lack a view (usd)
+    if constexpr (requires { m.view_refusal(); }) {  // a model that may lack a view (usd, css)
       if (const auto& why = m.view_refusal()) {
         cm.no_view = spec.path + ": " + *why;
         cm.key_times = m.key_times();
