@@ -161,9 +161,26 @@ TEST(io_channel, gltf_rotation_bad_specs_name_the_field) {
   };
   const std::string head =
       R"({"type": "channel", "tool": "gltf", "path": "rotation", "interpolation": "linear", "times": [0, 1], )";
-  EXPECT_THAT(
-      message(head + R"("values": [0, 0, 0, 1, 0, 0, 0.8, 0.8]})"),
-      ::testing::AllOf(::testing::HasSubstr("output[1] (key 1 value)"), ::testing::HasSubstr("unit quaternions")));
+  EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 0.8, 0.8]})"),
+              ::testing::AllOf(::testing::HasSubstr("spec.json: values[4..7] (key 1 value)"),
+                               ::testing::HasSubstr("unit quaternions")));
+  // The sampler's errors name the spec's fields (times, values at their place in the flat list),
+  // not glTF's accessors (input, output).
+  EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, null, 0, 1]})"),
+              ::testing::HasSubstr("spec.json.values[5]: expected a number, got null"));
+  EXPECT_THAT(message(R"({"type": "channel", "tool": "gltf", "path": "rotation", "interpolation": "linear", )"
+                      R"("times": [0, 0], "values": [0, 0, 0, 1, 0, 0, 0, 1]})"),
+              ::testing::HasSubstr("spec.json: times[1] = 0 equals times[0]: duplicate key time"));
+  EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]})"),
+              ::testing::HasSubstr("spec.json: values: 3 elements of 4 numbers given, must match times: 2"));
+  EXPECT_THAT(message(R"({"type": "channel", "tool": "gltf", "interpolation": "cubicspline", "times": [0, -1], )"
+                      R"("values": [0, 0, 0, 0, 1, 0]})",
+                      true),
+              ::testing::HasSubstr("spec.json: times[1] = -1 < times[0] = 0: key times out of order"));
+  EXPECT_THAT(message(R"({"type": "channel", "tool": "gltf", "interpolation": "linear", "times": [0, 1, 2], )"
+                      R"("values": [0, 1]})",
+                      true),
+              ::testing::HasSubstr("spec.json: values: 2 given, must match times: 3"));
   EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 1]})"), ::testing::HasSubstr("7 numbers given"));
   EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 0, 1], "blend": "squad"})"),
               ::testing::AllOf(::testing::HasSubstr("spec.json.blend"), ::testing::HasSubstr("slerp")));
@@ -433,4 +450,25 @@ TEST(io_channel, usd_tool_matches_the_model_and_its_50_digit_twin) {
   bad["slope_after"] = 1;
   EXPECT_NE(cbt::message_of([&] { (void)cb::io::channel_model_of_spec<double>(spec_of(bad)); }).find("slope_after"),
             std::string::npos);
+}
+
+// Generated keys (tool exact, keys {generate: wave}) that leave double's range or cannot be told
+// apart are refused naming the generator's fields, not keys[i] the user never wrote.
+TEST(io_channel, generated_keys_refused_naming_the_generator) {
+  const auto message = [](const std::string& generator) {
+    const nlohmann::json j =
+        nlohmann::json::parse(R"({"type": "channel", "tool": "exact", "keys": )" + generator + "}");
+    return cbt::message_of([&] { (void)cb::io::channel_model_of_spec<double>(spec_of(j)); });
+  };
+  EXPECT_THAT(message(R"({"generate": "wave", "count": 3, "step": 1e308})"),
+              ::testing::AllOf(::testing::HasSubstr(
+                                   "spec.json.keys: generated key 2's time start + 2 x step is past double's range"),
+                               ::testing::HasSubstr("step 1e+308, count 3")));
+  EXPECT_THAT(message(R"({"generate": "wave", "count": 3, "start": 1e20, "step": 1})"),
+              ::testing::HasSubstr("spec.json.keys.step: generated keys 0 and 1 share the time 1e+20"));
+  EXPECT_THAT(message(R"({"generate": "wave", "count": 3, "step": 1e-320})"),
+              ::testing::HasSubstr("spec.json.keys.step: generated key 0's slope overflows double"));
+  // A generator within range builds.
+  EXPECT_NO_THROW((void)cb::io::channel_model_of_spec<double>(spec_of(nlohmann::json::parse(
+      R"({"type": "channel", "tool": "exact", "keys": {"generate": "wave", "count": 5, "start": -3, "step": 0.5}})"))));
 }

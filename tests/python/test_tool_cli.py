@@ -340,7 +340,7 @@ class ToolCli(unittest.TestCase):
         bad = self.write("bad.json", '{"type": "channel", "tool": "gltf", "path": "rotation", '
                                      '"interpolation": "linear", "times": [0, 1], '
                                      '"values": [0, 0, 0, 1, 0, 0, 0.8, 0.8]}')
-        self.assert_error(run("sample", bad, "--at", "0.5"), "output[1] (key 1 value)", "unit quaternions")
+        self.assert_error(run("sample", bad, "--at", "0.5"), "bad.json: values[4..7] (key 1 value)", "unit quaternions")
 
     def test_sample_count_has_a_documented_limit(self):
         p = run("sample", ARCH, "--count", "1000001")

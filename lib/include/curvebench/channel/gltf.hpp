@@ -155,21 +155,32 @@ template <class Real>
   return Real(769) / Real(100000);
 }
 
+/// The names that validation errors give the sampler's data: glTF's accessor names by default;
+/// a reader of another format passes its own (the spec's "times" and "values", whose values are
+/// one flat list: flat names element i's component d by its place in that list, i x Dim + d).
+struct accessor_names {
+  std::string_view input = "input";
+  std::string_view output = "output";
+  bool flat = false;
+};
+
 namespace detail {
 
 /// Time validation: count, finite, time[0] >= 0, strictly increasing, resolvable spans.
 template <class Real>
-void validate_input(std::span<const Real> input, interpolation mode) {
+void validate_input(std::span<const Real> input, interpolation mode, const accessor_names& names) {
+  const std::string name(names.input);
   if (mode == interpolation::cubicspline)
-    validate::count_at_least("input", input.size(), 2, "a cubicspline sampler needs 2 keys at least (glTF 2.0)");
+    validate::count_at_least(name, input.size(), 2, "a cubicspline sampler needs 2 keys at least (glTF 2.0)");
   else
-    validate::count_at_least("input", input.size(), 1, "a sampler needs 1 key at least (glTF 2.0: n > 0)");
+    validate::count_at_least(name, input.size(), 1, "a sampler needs 1 key at least (glTF 2.0: n > 0)");
   for (std::size_t i = 0; i < input.size(); ++i) {
-    validate::finite("input", input[i], i);
+    validate::finite(name, input[i], i);
     if (i == 0 && input[0] < Real(0))
-      validate::fail("input[0] = " + to_text(input[0]) + ": key times must be >= 0 (glTF 2.0: time[0] >= 0)");
+      validate::fail(validate::indexed(name, 0) + " = " + to_text(input[0]) +
+                     ": key times must be >= 0 (glTF 2.0: time[0] >= 0)");
     if (i == 0) continue;
-    const std::string here = validate::indexed("input", i), before = validate::indexed("input", i - 1);
+    const std::string here = validate::indexed(name, i), before = validate::indexed(name, i - 1);
     if (input[i] == input[i - 1])
       validate::fail(here + " = " + to_text(input[i]) + " equals " + before +
                      ": duplicate key time, key times must be strictly increasing");
@@ -180,33 +191,47 @@ void validate_input(std::span<const Real> input, interpolation mode) {
   }
 }
 
-/// Output count: n (step, linear) or 3 n (cubicspline).
-inline void validate_output_count(std::size_t output, std::size_t keys, interpolation mode) {
+/// Output count (elements of Dim numbers): n (step, linear) or 3 n (cubicspline).
+inline void validate_output_count(std::size_t output, std::size_t keys, interpolation mode, const accessor_names& names,
+                                  int dim) {
+  const std::string what = std::string(names.output) + ": " + std::to_string(output) +
+                           (names.flat && dim > 1 ? " elements of " + std::to_string(dim) + " numbers" : "") + " given";
   if (mode == interpolation::cubicspline) {
     if (output == 3 * keys) return;
-    validate::fail("output: " + std::to_string(output) + " given, must be 3 x input = " + std::to_string(3 * keys) +
+    validate::fail(what + ", must be 3 x " + std::string(names.input) + " = " + std::to_string(3 * keys) +
                    " (cubicspline stores an in-tangent, a value and an out-tangent per key)");
   }
   if (output == keys) return;
-  validate::fail("output: " + std::to_string(output) + " given, must match input: " + std::to_string(keys) + " (" +
+  validate::fail(what + ", must match " + std::string(names.input) + ": " + std::to_string(keys) + " (" +
                  to_string(mode) + " stores one value per key)");
 }
 
-/// "output[4] (key 1 value)": the element's index in the flat output and its role.
-inline std::string output_element(std::size_t i, interpolation mode) {
+/// "output[4] (key 1 value)": output element i and its role; with flat names, component d's place
+/// in the flat list ("values[9] (key 2 value, component 1)"), or the element's first number's.
+inline std::string output_element(std::size_t i, interpolation mode, const accessor_names& names, int dim,
+                                  int component = -1) {
   static constexpr const char* roles[3] = {"in-tangent", "value", "out-tangent"};
-  if (mode != interpolation::cubicspline)
-    return validate::indexed("output", i) + " (key " + std::to_string(i) + " value)";
-  return validate::indexed("output", i) + " (key " + std::to_string(i / 3) + " " + roles[i % 3] + ")";
+  const std::string name(names.output);
+  const auto d = static_cast<std::size_t>(dim);
+  const std::size_t index = names.flat ? i * d + static_cast<std::size_t>(component < 0 ? 0 : component) : i;
+  const std::string key = mode != interpolation::cubicspline ? "key " + std::to_string(i) + " value"
+                                                             : "key " + std::to_string(i / 3) + " " + roles[i % 3];
+  if (!names.flat)
+    return validate::indexed(name, index) + " (" + key + ")" +
+           (component >= 0 ? "[" + std::to_string(component) + "]" : "");
+  if (dim == 1) return validate::indexed(name, index) + " (" + key + ")";
+  if (component < 0)
+    return name + "[" + std::to_string(index) + ".." + std::to_string(index + d - 1) + "] (" + key + ")";
+  return validate::indexed(name, index) + " (" + key + ", component " + std::to_string(component) + ")";
 }
 
 template <class Real, int Dim>
-void validate_output_finite(std::span<const point<Real, Dim>> output, interpolation mode) {
+void validate_output_finite(std::span<const point<Real, Dim>> output, interpolation mode, const accessor_names& names) {
   for (std::size_t i = 0; i < output.size(); ++i)
     for (int d = 0; d < Dim; ++d)
       if (!is_finite(output[i][d]))
-        validate::fail(output_element(i, mode) + "[" + std::to_string(d) + "] = " + to_text(output[i][d]) +
-                       ": must be finite");
+        validate::fail(output_element(i, mode, names, Dim, names.flat && Dim == 1 ? -1 : d) + " = " +
+                       to_text(output[i][d]) + ": must be finite");
 }
 
 /// Where a time falls: on the constant piece before the first key or from the last key on
@@ -293,12 +318,13 @@ class sampler {
   static constexpr int dimension = Dim;
 
   /// input: key times; output: the output accessor's elements, n (step, linear) or 3 n
-  /// (cubicspline: in-tangent, value, out-tangent per key).
-  sampler(std::vector<Real> input, std::span<const point_type> output, interpolation mode)
+  /// (cubicspline: in-tangent, value, out-tangent per key). names: what errors call them.
+  sampler(std::vector<Real> input, std::span<const point_type> output, interpolation mode,
+          const accessor_names& names = {})
       : input_(std::move(input)), mode_(mode) {
-    detail::validate_input<Real>(input_, mode_);
-    detail::validate_output_count(output.size(), input_.size(), mode_);
-    detail::validate_output_finite<Real, Dim>(output, mode_);
+    detail::validate_input<Real>(input_, mode_, names);
+    detail::validate_output_count(output.size(), input_.size(), mode_, names, Dim);
+    detail::validate_output_finite<Real, Dim>(output, mode_, names);
     if (mode_ != interpolation::cubicspline) {
       values_.assign(output.begin(), output.end());
       return;
@@ -311,8 +337,9 @@ class sampler {
   }
 
   /// A scalar channel (Dim = 1) from scalar outputs.
-  sampler(std::vector<Real> input, std::span<const Real> output, interpolation mode) requires(Dim == 1)
-      : sampler(std::move(input), std::span<const point_type>(to_points(output)), mode) {}
+  sampler(std::vector<Real> input, std::span<const Real> output, interpolation mode,
+          const accessor_names& names = {}) requires(Dim == 1)
+      : sampler(std::move(input), std::span<const point_type>(to_points(output)), mode, names) {}
 
   /// The channel's value at time t (clamped to the end values outside the keys).
   [[nodiscard]] point_type operator()(const Real& t) const { return derivative(t, 0); }
@@ -377,11 +404,11 @@ class rotation_sampler {
   /// input: key times; output: n quaternions (step, linear) or 3 n (cubicspline: in-tangent,
   /// value, out-tangent per key; only the values must be unit). blend: slerp or nlerp for linear.
   rotation_sampler(std::vector<Real> input, std::span<const quaternion> output, interpolation mode,
-                   rotation_blend blend = rotation_blend::slerp)
+                   rotation_blend blend = rotation_blend::slerp, const accessor_names& names = {})
       : input_(std::move(input)), mode_(mode), blend_(blend) {
-    detail::validate_input<Real>(input_, mode_);
-    detail::validate_output_count(output.size(), input_.size(), mode_);
-    detail::validate_output_finite<Real, 4>(output, mode_);
+    detail::validate_input<Real>(input_, mode_, names);
+    detail::validate_output_count(output.size(), input_.size(), mode_, names, 4);
+    detail::validate_output_finite<Real, 4>(output, mode_, names);
     const std::size_t stride = mode_ == interpolation::cubicspline ? 3 : 1;
     const std::size_t offset = mode_ == interpolation::cubicspline ? 1 : 0;
     for (std::size_t k = 0; k < input_.size(); ++k) {
@@ -389,7 +416,7 @@ class rotation_sampler {
       using std::abs;
       const Real length = safe_norm<Real, 4>(output[i]);
       if (!(abs(length - Real(1)) <= unit_quaternion_tolerance<Real>()))
-        validate::fail(detail::output_element(i, mode_) + " = (" + to_text(output[i][0]) + ", " +
+        validate::fail(detail::output_element(i, mode_, names, 4) + " = (" + to_text(output[i][0]) + ", " +
                        to_text(output[i][1]) + ", " + to_text(output[i][2]) + ", " + to_text(output[i][3]) +
                        ") has length " + to_text(length) +
                        ": rotation values must be unit quaternions, | |q| - 1 | <= 0.00769 (glTF-Validator's "

@@ -42,14 +42,27 @@ inline nlohmann::json generate_keys(const field& g) {
   for (std::size_t i = 0; i < n; ++i)
     v[i] = std::sin(0.37 * static_cast<double>(i)) + std::sin(1.91 * static_cast<double>(i)) / 2;
   nlohmann::json keys = nlohmann::json::array();
+  // The keys are the generator's, not the user's: what goes wrong with them is said of the
+  // generator's fields (a time past double's range, times too close to tell apart, a slope that
+  // overflows), not of keys[i] the user never wrote.
+  const std::string given = "start " + to_text(t0) + ", step " + to_text(h) + ", count " + std::to_string(count);
+  double previous = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double m = i == 0 ? (v[1] - v[0]) / h : i + 1 == n ? (v[i] - v[i - 1]) / h : (v[i + 1] - v[i - 1]) / (2 * h);
     const double a = (i % 2 == 0 ? 0.25 : 0.45) * h, c = (i % 2 == 0 ? 0.45 : 0.25) * h;
-    keys.push_back({{"time", t0 + static_cast<double>(i) * h},
-                    {"value", v[i]},
-                    {"interpolation", "bezier"},
-                    {"in", {-c, -c * m}},
-                    {"out", {a, a * m}}});
+    const double t = t0 + static_cast<double>(i) * h;
+    if (!std::isfinite(t))
+      g.fail("generated key " + std::to_string(i) + "'s time start + " + std::to_string(i) +
+             " x step is past double's range (" + given + ")");
+    if (i > 0 && !(t > previous))
+      g.member("step").fail("generated keys " + std::to_string(i - 1) + " and " + std::to_string(i) +
+                            " share the time " + to_text(t) + ": the step is below the spacing of doubles there (" +
+                            given + ")");
+    if (!std::isfinite(a * m) || !std::isfinite(c * m))
+      g.member("step").fail("generated key " + std::to_string(i) + "'s slope overflows double (" + given + ")");
+    previous = t;
+    keys.push_back(
+        {{"time", t}, {"value", v[i]}, {"interpolation", "bezier"}, {"in", {-c, -c * m}}, {"out", {a, a * m}}});
   }
   return keys;
 }

@@ -37,12 +37,26 @@ inline bool is_gltf_rotation(const field& spec) {
                            "; `curvebench sample SPEC --at T1,T2` evaluates it (t, x, y, z, w)");
 }
 
+/// What sampler errors call the spec's data: its "times" and its flat "values".
+inline constexpr channel::gltf::accessor_names spec_names{"times", "values", true};
+
+/// make(), its sampler's invalid_input (which names times[i] or values[i]) as the spec's error.
+template <class F>
+auto sampler_of_spec(const field& spec, F&& make) {
+  try {
+    return make();
+  } catch (const invalid_input& x) {
+    spec.fail(x.what());
+  }
+}
+
 }  // namespace detail
 
 /// The rotation sampler of a gltf spec with "path": "rotation" (see the header): its times, its
 /// quaternions (x y z w; in-tangent, value, out-tangent per key for cubicspline) and its blend.
-/// The sampler validates them as glTF does, naming output[i] and the key's role (unit values,
-/// | |q| - 1 | <= 0.00769). invalid_input for another tool or path.
+/// The sampler validates them as glTF does, naming the spec's file, values[i] (its place in the flat
+/// list) and the key's role (unit values, | |q| - 1 | <= 0.00769). invalid_input for another tool
+/// or path.
 template <class Real>
 channel::gltf::rotation_sampler<Real> rotation_of_spec(const field& spec) {
   if (!detail::is_gltf_rotation(spec))
@@ -60,7 +74,9 @@ channel::gltf::rotation_sampler<Real> rotation_of_spec(const field& spec) {
     vf.fail(std::to_string(v.size()) + " numbers given: a rotation's values are quaternions, 4 numbers (x y z w) each");
   std::vector<point<Real, 4>> q(v.size() / 4);
   for (std::size_t i = 0; i < q.size(); ++i) q[i] = point<Real, 4>(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
-  return g::rotation_sampler<Real>(std::move(t), std::span<const point<Real, 4>>(q), mode, blend);
+  return detail::sampler_of_spec(spec, [&] {
+    return g::rotation_sampler<Real>(std::move(t), std::span<const point<Real, 4>>(q), mode, blend, detail::spec_names);
+  });
 }
 
 template <>
@@ -90,10 +106,13 @@ struct tool_spec<channel::tools::gltf> {
     // The sampler validates the counts, times and values as glTF does (in double, as glTF's
     // floats widened, so that every precision refuses the same specs).
     const std::vector<double> td = spec.member("times").reals<double>(), vd = vf.reals<double>();
-    (void)g::sampler<double, 1>(td, std::span<const double>(vd), g::from_string<g::interpolation>(mode));
-    return channel::tools::gltf::model<Real>(
-        g::sampler<Real, 1>(std::move(t), std::span<const Real>(v), g::from_string<g::interpolation>(mode)),
-        detail::solver_of(spec, channel::tools::gltf::default_solver));
+    const g::interpolation im = g::from_string<g::interpolation>(mode);
+    return detail::sampler_of_spec(spec, [&] {
+      (void)g::sampler<double, 1>(td, std::span<const double>(vd), im, detail::spec_names);
+      return channel::tools::gltf::model<Real>(
+          g::sampler<Real, 1>(std::move(t), std::span<const Real>(v), im, detail::spec_names),
+          detail::solver_of(spec, channel::tools::gltf::default_solver));
+    });
   }
 
   static int dimension(const field& spec) { return detail::is_gltf_rotation(spec) ? 4 : 2; }
