@@ -2,6 +2,8 @@
 // check.cpp hold the two that take a user's parameters and values; this header the shared helpers.
 #pragma once
 
+#include "tool/parameters.hpp"
+
 #include "curvebench/io/spec.hpp"
 
 #include <CLI/CLI.hpp>
@@ -108,8 +110,6 @@ struct sample_args {
   bool quiet = false;    ///< no progress on stderr
   bool as_tool = false;  ///< channels: the tool's own evaluation instead of the truth
 };
-/// The most samples --count asks for and parameters --at, --at-file and --range may give.
-inline constexpr std::size_t max_sample_values = 1000000;
 CLI::App* add_sample(CLI::App& app, sample_args& a);
 void run_sample(const sample_args& a);
 

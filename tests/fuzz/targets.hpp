@@ -6,6 +6,8 @@
 //          methods, s(u) and u(s) (targets_spec.cpp)
 //   gate   io::parse of a results and a thresholds file, then harness::check_gate (targets_gate.cpp)
 //   csv    harness::parse_csv, the reader of `curvebench check`'s tables (targets_csv.cpp)
+//   times  `sample --at / --range / --frames` on a channel spec: the tool's parsers of the option,
+//          the spec's tool model and its evaluation at those times (targets_times.cpp)
 //
 // A reader may refuse an input only with the exceptions the error policy documents
 // (core/error.hpp: invalid_input and its io::spec_error; std::domain_error outside a domain), with a
@@ -38,5 +40,6 @@ inline constexpr std::size_t max_message = 4096;
 int spec_target(const std::uint8_t* data, std::size_t size);
 int gate_target(const std::uint8_t* data, std::size_t size);
 int csv_target(const std::uint8_t* data, std::size_t size);
+int times_target(const std::uint8_t* data, std::size_t size);
 
 }  // namespace curvebench::fuzz
