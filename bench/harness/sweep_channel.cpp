@@ -211,7 +211,10 @@ json sweep_rotation(record_sink& k, const case_info& info, const sweep& w) {
   json refused = json::object();
   double largest = 0;
   for (std::size_t i = 0; i + 1 < plain.key_count(); ++i) largest = std::max(largest, plain.segment_angle(i));
-  for (const auto& [method, blend] : runs) {
+  for (const auto& run : runs) {
+    // Named copies, not a structured binding: clang 14 refuses bindings captured by the lambda below.
+    const auto* method = run.first;
+    const auto& blend = run.second;
     json spec = info.spec;
     spec["blend"] = blend;
     const io::field r = io::root(spec, info.name);
