@@ -6,7 +6,11 @@
 // segment width h is graded geometrically towards it, log2(h / delta) + 4 levels (at most 48, an
 // exact cusp 48), so no singularity is closer to a panel than the panel's size. Each panel: Boost's
 // G30-K61 rule, bisected while its estimate exceeds its share of the tolerance, to max_depth,
-// stopped at the speed's rounding floor (detail/roundoff.hpp); or tanh-sinh, ungraded. s(u) from
+// stopped at the speed's rounding floor (detail/roundoff.hpp); past max_depth (up to max_extra_depth
+// more levels) while its estimate is still truncation (above sqrt(eps) of its value, far from any
+// rounding) or its value falls short of its chord |P(b) - P(a)|: a burst of speed narrower than
+// the rule's node spacing (a conic of weight 1e6 covers its length within 1e-6 of its ends)
+// escapes both rules of the pair alike, and only the chord shows it; or tanh-sinh, ungraded. s(u) from
 // the split point at or left of u; u(s) by Boost's bracketed newton_raphson_iterate.
 // The estimates measure truncation, not the rounding of the speed itself.
 // Sources: Piessens et al. (1983, QUADPACK); Takahasi & Mori (1974, tanh-sinh); Brent (1973).
@@ -44,6 +48,9 @@ struct reference_options {
   /// Relative tolerance of each piece (Boost's criterion: error <= tol * integral |f|).
   Real tolerance{Real(4096) * epsilon<Real>()};
   unsigned max_depth{6};  // bisection levels per panel: 2^depth panels at worst; grading does the rest
+  /// Bisection levels beyond max_depth for a panel whose estimate is still truncation or whose value
+  /// falls short of its chord (only such halves go on): a burst 2^-64 of a panel wide is found.
+  unsigned max_extra_depth{64};
   std::size_t samples_per_segment{64};
   /// A speed minimum below split_ratio * (max sampled speed of its segment) becomes a split point.
   Real split_ratio{Real(1) / Real(4)};
@@ -247,7 +254,7 @@ class reference_arc_length {
     const panel_estimate whole = rule(a, b);
     const Real abs_tol = tol * abs(whole.value);
     err = Real(0);
-    return bisect(a, b, whole, depth, tol, abs_tol, false, err);
+    return bisect(a, b, whole, depth, opt_.max_extra_depth, tol, abs_tol, false, err);
   }
 
   struct panel_estimate {
@@ -270,7 +277,7 @@ class reference_arc_length {
       };
       Real e(0);
       const Real v = boost::math::quadrature::gauss_kronrod<Real, 15>::integrate(g, Real(-1), Real(1), 0, Real(0), &e);
-      if (e <= max(tolerance, resolution) * abs(v)) {
+      if (e <= max(tolerance, resolution) * abs(v) && !below_chord(a, b, {v, e}, max(tolerance, resolution))) {
         err += e;
         return v;
       }
@@ -289,13 +296,31 @@ class reference_arc_length {
     return e;
   }
 
+  // Whether a rule's value plus its estimate falls short of the chord |P(b) - P(a)| by more than
+  // the tolerance and the rounding of the two points (64 eps of their size): arc length is at
+  // least the chord, so the rule missed speed between its nodes, whatever its estimate says.
+  [[nodiscard]] bool below_chord(const Real& a, const Real& b, const panel_estimate& p, const Real& tol) const {
+    using std::abs;
+    const typename C::point_type pa = curve_(a), pb = curve_(b);
+    const Real chord = Real((pb - pa).norm());
+    const Real size = Real(pa.norm() + pb.norm());
+    return abs(p.value) + p.error + tol * chord + Real(64) * epsilon<Real>() * size < chord;
+  }
+
   // p is the rule's estimate on [a, b]; abs_tol the absolute tolerance of this panel; suspect: the
-  // bisection that made it stagnated (arclength/detail/roundoff.hpp), a second one stops it.
-  [[nodiscard]] Real bisect(const Real& a, const Real& b, const panel_estimate& p, unsigned depth, const Real& tol,
-                            const Real& abs_tol, bool suspect, Real& err) const {
+  // bisection that made it stagnated (arclength/detail/roundoff.hpp), a second one stops it;
+  // extra: the levels left past depth 0 to a panel whose estimate is still truncation (above
+  // sqrt(eps) of its value) or whose value falls short of its chord (below_chord, which bisects it
+  // whatever its estimate).
+  [[nodiscard]] Real bisect(const Real& a, const Real& b, const panel_estimate& p, unsigned depth, unsigned extra,
+                            const Real& tol, const Real& abs_tol, bool suspect, Real& err) const {
     using std::abs;
     using std::max;
-    if (depth == 0 || p.error <= max(abs_tol, tol * abs(p.value))) {
+    using std::sqrt;
+    const bool short_of_chord = extra > 0 && below_chord(a, b, p, tol);
+    const bool met = p.error <= max(abs_tol, tol * abs(p.value));
+    const bool truncation = p.error > sqrt(epsilon<Real>()) * abs(p.value);
+    if (!short_of_chord && (met || (depth == 0 && (extra == 0 || !truncation)))) {
       err += p.error;
       return p.value;
     }
@@ -303,12 +328,14 @@ class reference_arc_length {
     const panel_estimate left = rule(a, m), right = rule(m, b);
     const bool stagnated =
         arclength::detail::bisection_stagnated(p.error, Real(left.error + right.error), Real(abs(p.value)));
-    if (stagnated && suspect) {
+    if (stagnated && suspect && !short_of_chord) {
       err += left.error + right.error;
       return left.value + right.value;
     }
-    return bisect(a, m, left, depth - 1, tol, abs_tol / Real(2), stagnated, err) +
-           bisect(m, b, right, depth - 1, tol, abs_tol / Real(2), stagnated, err);
+    const unsigned next = depth > 0 ? depth - 1 : 0u;
+    const unsigned next_extra = (depth == 0 || short_of_chord) && extra > 0 ? extra - 1 : extra;
+    return bisect(a, m, left, next, next_extra, tol, abs_tol / Real(2), stagnated, err) +
+           bisect(m, b, right, next, next_extra, tol, abs_tol / Real(2), stagnated, err);
   }
 
   // Interior local minima of the speed on (a, b) below split_ratio * max speed, refined.
