@@ -94,10 +94,11 @@ std::string non_finite_cause(std::span<const double> breakpoints, double largest
 
 std::string example(const std::string& command) { return "\nExample:\n  " + command + "\n"; }
 
-progress::progress(std::string what, std::size_t total, bool quiet)
+progress::progress(std::string what, std::size_t total, bool quiet, bool planned)
     : what_(std::move(what)),
       total_(total),
       quiet_(quiet),
+      planned_(planned),
       start_(std::chrono::steady_clock::now()),
       next_(start_ + std::chrono::seconds(1)) {}
 
@@ -109,8 +110,12 @@ void progress::update(std::size_t done) {
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double percent = total_ == 0 ? 100.0 : 100.0 * static_cast<double>(done) / static_cast<double>(total_);
   std::ostringstream line;
-  line << what_ << ": " << done << " of " << total_ << " (" << std::fixed << std::setprecision(1) << percent << "%), "
-       << elapsed << " s elapsed\n";
+  if (planned_ && done > total_)
+    line << what_ << ": " << done << ", past the " << total_ << " planned (speed minima split segments), " << std::fixed
+         << std::setprecision(1) << elapsed << " s elapsed\n";
+  else
+    line << what_ << ": " << done << " of " << total_ << " (" << std::fixed << std::setprecision(1) << percent << "%), "
+         << elapsed << " s elapsed\n";
   std::cerr << line.str() << std::flush;
 }
 

@@ -66,7 +66,9 @@ struct length_option {
   std::string help;  ///< each row's help, "method: help; method: help"
   double real = 0;
   long long integer = 0;
+  const CLI::Option* cli = nullptr;  ///< the option as the command line has it (given or not)
   [[nodiscard]] double value() const { return def->integer ? static_cast<double>(integer) : real; }
+  [[nodiscard]] bool given() const { return cli != nullptr && cli->count() > 0; }
 };
 
 /// The options of `length`, in the order of the table's rows and settings.
@@ -128,6 +130,18 @@ void length(const cb::io::field& spec, const length_args& a) {
   h::for_each_row(h::length_methods, [&](const auto& row) {
     if (row.method->id != a.method) return;
     found = true;
+    // An option of another method would be ignored: refused, naming the method's own.
+    for (const length_option& o : a.options) {
+      if (!o.given()) continue;
+      const bool own = std::any_of(row.settings.begin(), row.settings.end(),
+                                   [&](const h::setting_def& d) { return d.option == o.def->option; });
+      if (own) continue;
+      std::string mine;
+      for (const h::setting_def& d : row.settings)
+        if (!d.option.empty()) mine += (mine.empty() ? "" : ", ") + std::string(d.option);
+      throw cb::invalid_input(std::string(o.def->option) + " does not apply to --method " + a.method + " (" +
+                              (mine.empty() ? "it takes no options" : "its options: " + mine) + ")");
+    }
     h::setting_values v;
     for (const h::setting_def& d : row.settings) {
       const auto o = std::find_if(a.options.begin(), a.options.end(), [&](const length_option& x) {
@@ -139,8 +153,9 @@ void length(const cb::io::field& spec, const length_args& a) {
     // known before the work is refused above its limit, naming the options.
     const h::length_cost cost = row.cost(v, segments);
     const cb::any_curve<double, Dim> c(
-        counted_curve<Dim>{plain,
-                           std::make_shared<tool::progress>("length: evaluations (at most)", cost.budget, a.quiet)},
+        counted_curve<Dim>{plain, std::make_shared<tool::progress>(
+                                      cost.at_most ? "length: evaluations (at most)" : "length: evaluations (planned)",
+                                      cost.budget, a.quiet, !cost.at_most)},
         plain.family());
     if (!cost.refusal.empty()) throw cb::invalid_input(cost.refusal);
     al::quadrature_result<double> r = row.prepare(c, v, h::run_context{})();
@@ -169,7 +184,9 @@ void length(const cb::io::field& spec, const length_args& a) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   CLI::App app{"curvebench: accuracy and speed of keyframe-animation curves"};
   // Usage errors keep CLI11's exit codes but carry the same prefix as every other error.
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
@@ -214,15 +231,16 @@ int main(int argc, char** argv) {
   for (length_option& o : la.options) {
     const h::setting_def& d = *o.def;
     if (d.integer) {
-      len->add_option(std::string(d.option), o.integer, o.help)
-          ->capture_default_str()
-          ->check(CLI::Range(static_cast<long long>(d.min), static_cast<long long>(d.max)));
+      o.cli = len->add_option(std::string(d.option), o.integer, o.help)
+                  ->capture_default_str()
+                  ->check(CLI::Range(static_cast<long long>(d.min), static_cast<long long>(d.max)));
     } else {
       auto* opt = len->add_option(std::string(d.option), o.real, o.help)->capture_default_str();
       if (d.min == 0 && d.max == std::numeric_limits<double>::infinity())
         opt->check(tool::positive_finite());
       else
         opt->check(CLI::Range(d.min, d.max));
+      o.cli = opt;
     }
   }
   len->add_flag(
@@ -362,4 +380,19 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int status = run(argc, argv);
+  // Output the system did not take (a full disk, stdout on /dev/full) is an error, not a silently
+  // truncated file with exit 0.
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "curvebench: error: writing the standard output failed (a full disk or device): the output is "
+                 "incomplete\n";
+    return status == 0 ? 1 : status;
+  }
+  return status;
 }

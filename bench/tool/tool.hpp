@@ -58,7 +58,9 @@ CLI::Validator non_empty();
 /// line a second, "sample: 1200 of 100000 (1.2%), 2.0 s elapsed"; nothing when quiet.
 class progress {
  public:
-  progress(std::string what, std::size_t total, bool quiet);
+  /// planned: the total is the work planned, not a cap; past it the line says so instead of a
+  /// percentage above 100.
+  progress(std::string what, std::size_t total, bool quiet, bool planned = false);
   /// `done` items of the total are finished.
   void update(std::size_t done);
 
@@ -66,6 +68,7 @@ class progress {
   std::string what_;
   std::size_t total_;
   bool quiet_;
+  bool planned_;
   std::chrono::steady_clock::time_point start_, next_;
 };
 
