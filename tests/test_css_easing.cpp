@@ -266,6 +266,12 @@ TEST(css_easing, bad_arguments) {
   EXPECT_THAT(msg("ease junk"), HasSubstr("unexpected text after the easing: 'junk'"));
   EXPECT_THAT(msg("steps(2) x"), HasSubstr("unexpected text after the easing: 'x' at offset 9"));
   EXPECT_THAT(msg(""), HasSubstr("expected an easing keyword or function, got the end"));
+  // The user's text is echoed visible and bounded: a NUL cut the message short, an invisible
+  // character hid the cause, and a long text was echoed whole.
+  EXPECT_THAT(cbt::message_of([] { (void)ch::parse_css_easing<double>(std::string("ease\0junk", 9)); }),
+              HasSubstr("ease\\x00junk"));
+  EXPECT_THAT(msg("ease\xe2\x80\x8b"), HasSubstr("\\xe2\\x80\\x8b"));
+  EXPECT_LT(msg(("linear(0, " + std::string(100000, '5') + " x, 1)").c_str()).size(), 400u);
   EXPECT_THROW((void)ch::parse_css_easing<double>("steps(0)"), cb::invalid_input);
 }
 

@@ -58,11 +58,7 @@ int significant_digits(std::string_view text) {
 
 }  // namespace
 
-std::string quote_cell(std::string_view text) {
-  constexpr std::size_t max = 40;
-  if (text.size() <= max) return "\"" + std::string(text) + "\"";
-  return "\"" + std::string(text.substr(0, max)) + "...\"";
-}
+std::string quote_cell(std::string_view text) { return "\"" + validate::visible(text, 40) + "\""; }
 
 bool parse_finite(std::string_view text, double& out) {
   text = trim(text);

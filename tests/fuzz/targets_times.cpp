@@ -115,8 +115,9 @@ int times_target(const std::uint8_t* data, std::size_t size) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (seconds > 10)
-    violation(name, "bounded work", "the input took " + std::to_string(seconds) + " s (" + std::to_string(size) +
-                                        " bytes, " + std::to_string(times.size()) + " times)");
+    violation(name, "bounded work",
+              "the input took " + std::to_string(seconds) + " s (" + std::to_string(size) + " bytes, " +
+                  std::to_string(times.size()) + " times)");
   return 0;
 }
 

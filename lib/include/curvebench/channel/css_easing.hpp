@@ -288,7 +288,7 @@ class css_reader {
   explicit css_reader(std::string_view text) : text_(text) {}
 
   [[noreturn]] void fail(const std::string& what) const {
-    validate::fail("css easing \"" + std::string(text_) + "\": " + what + " at offset " + std::to_string(pos_));
+    validate::fail("css easing \"" + validate::visible(text_) + "\": " + what + " at offset " + std::to_string(pos_));
   }
   void skip_space() {
     while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\n' ||
@@ -361,7 +361,7 @@ class css_reader {
     std::size_t end = pos_;
     while (end < text_.size() && end - pos_ < 20 && text_[end] != ',' && text_[end] != ')') ++end;
     if (end == pos_) ++end;
-    return "'" + std::string(text_.substr(pos_, end - pos_)) + "'";
+    return "'" + validate::visible(text_.substr(pos_, end - pos_)) + "'";
   }
   bool percent() {
     if (pos_ < text_.size() && text_[pos_] == '%') {
@@ -396,7 +396,7 @@ Real read_number(css_reader& in, const std::string& where) {
   const std::string_view t = in.number_token(&integer);
   if (t.empty()) in.fail(where + ": expected a number, got " + in.rest());
   const Real v = parse_real<Real>(t);
-  if (!is_finite(v)) in.fail(where + " = " + std::string(t) + ": not representable");
+  if (!is_finite(v)) in.fail(where + " = " + validate::visible(t) + ": not representable");
   return v;
 }
 
@@ -418,7 +418,7 @@ css_easing<Real> named_css_easing(std::string_view name, time_solver solver) {
   if (iequal(name, "ease-in-out")) return bez("0.42", "0", "0.58", "1");
   if (iequal(name, "step-start")) return css_easing<Real>::steps(1, step_position::jump_start);
   if (iequal(name, "step-end")) return css_easing<Real>::steps(1, step_position::jump_end);
-  validate::fail("css easing keyword \"" + std::string(name) +
+  validate::fail("css easing keyword \"" + validate::visible(name) +
                  "\": unknown, expected linear, ease, ease-in, ease-out, ease-in-out, step-start or step-end");
 }
 
@@ -449,12 +449,13 @@ css_easing<Real> parse_css_easing(std::string_view text, time_solver solver) {
     bool integer = false;
     const std::string_view t = in.number_token(&integer);
     if (t.empty() || !integer)
-      in.fail("steps argument 1: expected an integer, got " + (t.empty() ? in.rest() : "'" + std::string(t) + "'"));
+      in.fail("steps argument 1: expected an integer, got " +
+              (t.empty() ? in.rest() : "'" + validate::visible(t) + "'"));
     long long n = 0;
     std::string_view digits = t;
     if (digits.front() == '+') digits.remove_prefix(1);
     const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), n);
-    if (r.ec != std::errc()) in.fail("steps argument 1 = " + std::string(t) + ": out of range");
+    if (r.ec != std::errc()) in.fail("steps argument 1 = " + validate::visible(t) + ": out of range");
     step_position position = step_position::jump_end;
     if (in.peek(',')) {
       in.expect(',', "after steps argument 1");
@@ -469,7 +470,7 @@ css_easing<Real> parse_css_easing(std::string_view text, time_solver solver) {
         position = step_position::jump_both;
       else
         in.fail("steps argument 2: expected jump-start, jump-end, jump-none, jump-both, start or end, got " +
-                (p.empty() ? in.rest() : "'" + std::string(p) + "'"));
+                (p.empty() ? in.rest() : "'" + validate::visible(p) + "'"));
     }
     in.expect(')', "after steps' arguments");
     result = css_easing<Real>::steps(n, position);
@@ -483,9 +484,9 @@ css_easing<Real> parse_css_easing(std::string_view text, time_solver solver) {
         bool integer = false;
         const std::string_view t = in.number_token(&integer);
         if (t.empty()) break;
-        if (!in.percent()) in.fail(where + ": a position must be a percentage, got '" + std::string(t) + "'");
+        if (!in.percent()) in.fail(where + ": a position must be a percentage, got '" + validate::visible(t) + "'");
         const Real v = detail::parse_real<Real>(t) / Real(100);
-        if (!is_finite(v)) in.fail(where + " position " + std::string(t) + "%: not representable");
+        if (!is_finite(v)) in.fail(where + " position " + validate::visible(t) + "%: not representable");
         (k == 0 ? s.at : s.until) = v;
       }
       stops.push_back(s);
@@ -493,7 +494,7 @@ css_easing<Real> parse_css_easing(std::string_view text, time_solver solver) {
     in.expect(')', "after linear() stops");
     result = css_easing<Real>::linear(stops);
   } else {
-    in.fail("unknown easing function '" + std::string(name) + "', expected cubic-bezier, steps or linear");
+    in.fail("unknown easing function '" + validate::visible(name) + "', expected cubic-bezier, steps or linear");
   }
   if (!in.at_end()) in.fail("unexpected text after the easing: " + in.rest());
   return *result;

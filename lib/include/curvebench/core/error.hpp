@@ -28,6 +28,27 @@ class invalid_input : public std::invalid_argument {
 
 namespace validate {
 
+/// A user's text as a message shows it: every byte outside printable ASCII written \xNN (a NUL
+/// would cut the message, a control or an invisible character hide or garble it, and a name or
+/// number in a spec is ASCII), cut after `max` characters with "..." (an echo never grows with the
+/// input).
+[[nodiscard]] inline std::string visible(std::string_view text, std::size_t max = 80) {
+  static constexpr char hex[] = "0123456789abcdef";
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (out.size() >= max) return out + "...";
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out.push_back(static_cast<char>(c));
+    } else {
+      out += "\\x";
+      out.push_back(hex[c >> 4]);
+      out.push_back(hex[c & 15]);
+    }
+  }
+  return out;
+}
+
 /// "name[i]" (or "name" when index is npos).
 [[nodiscard]] inline std::string indexed(std::string_view name, std::size_t index = std::string::npos) {
   std::string s(name);

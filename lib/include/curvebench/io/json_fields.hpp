@@ -181,7 +181,7 @@ struct field {
     if (std::find(allowed.begin(), allowed.end(), s) != allowed.end()) return s;
     std::string list;
     for (auto a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-    fail("\"" + s + "\" is not one of: " + list);
+    fail(shown_string(s) + " is not one of: " + list);
   }
 
   /// Fails on any member not in `allowed` (catches misspelled options); `context` is added to the

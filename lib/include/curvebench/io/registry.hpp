@@ -129,7 +129,7 @@ template <class F>
 void visit_spec_family(const field& spec, F&& f) {
   const std::string type = spec.member("type").string();
   if (!visit_family(type, f))
-    spec.member("type").fail("\"" + type + "\" is not a curve type (types: " + type_names() + ")");
+    spec.member("type").fail(field::shown_string(type) + " is not a curve type (types: " + type_names() + ")");
 }
 
 }  // namespace detail
