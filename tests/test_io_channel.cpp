@@ -181,6 +181,10 @@ TEST(io_channel, gltf_rotation_bad_specs_name_the_field) {
                       R"("values": [0, 1]})",
                       true),
               ::testing::HasSubstr("spec.json: values: 2 given, must match times: 3"));
+  EXPECT_THAT(message(R"({"type": "channel", "tool": "gltf", "interpolation": "linear", "times": [0, 1], )"
+                      R"("values": [0, 1], "blend": "nlerp"})",
+                      true),
+              ::testing::HasSubstr("spec.json.blend: blend chooses how rotations interpolate"));
   EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 1]})"), ::testing::HasSubstr("7 numbers given"));
   EXPECT_THAT(message(head + R"("values": [0, 0, 0, 1, 0, 0, 0, 1], "blend": "squad"})"),
               ::testing::AllOf(::testing::HasSubstr("spec.json.blend"), ::testing::HasSubstr("slerp")));
@@ -290,6 +294,17 @@ TEST(io_channel, bad_specs_name_the_field) {
   EXPECT_NE(message(R"({"type": "channel", "tool": "maya", "keys": [{"time": 0, "value": 0, "in_type": "smooth"}]})")
                 .find("in_type"),
             std::string::npos);
+  // Maya tangent vectors in the spec's words ("out": [x, y]), not the library's out_x / out_y, and a
+  // vector on a side whose type would ignore it refused.
+  const std::string maya = R"({"type": "channel", "tool": "maya", "keys": [{"time": 0, "value": 0, "out_type": )";
+  EXPECT_THAT(message((maya + R"("fixed", "out": [0, 1]}, {"time": 1, "value": 1}]})").c_str()),
+              ::testing::HasSubstr("spec.json.keys[0].out: x = 0: a fixed tangent's x must be > 0"));
+  EXPECT_THAT(message((maya + R"("fixed", "out": [1e-320, 1]}, {"time": 1, "value": 1}]})").c_str()),
+              ::testing::AllOf(::testing::HasSubstr("spec.json.keys[0].out: the slope y / x = 1 / "),
+                               ::testing::HasSubstr("e-321 overflows")));
+  EXPECT_THAT(message((maya + R"("linear", "out": [1, 2]}, {"time": 1, "value": 1}]})").c_str()),
+              ::testing::HasSubstr("spec.json.keys[0].out: a tangent vector is used by a fixed tangent only, and this "
+                                   "side's type is linear"));
 }
 
 namespace {
@@ -471,4 +486,33 @@ TEST(io_channel, generated_keys_refused_naming_the_generator) {
   // A generator within range builds.
   EXPECT_NO_THROW((void)cb::io::channel_model_of_spec<double>(spec_of(nlohmann::json::parse(
       R"({"type": "channel", "tool": "exact", "keys": {"generate": "wave", "count": 5, "start": -3, "step": 0.5}})"))));
+}
+
+// The model's own refusals (raised by the channel, not the spec reader) name the spec's file too:
+// `sample` went through channel_model_of_spec and printed them without it.
+TEST(io_channel, model_refusals_name_the_file) {
+  const nlohmann::json j = nlohmann::json::parse(
+      R"({"type": "channel", "tool": "exact", "keys": [{"time": 1, "value": 0}, {"time": 0, "value": 1}]})");
+  EXPECT_THAT(cbt::message_of([&] { (void)cb::io::channel_model_of_spec<double>(spec_of(j)); }),
+              ::testing::AllOf(::testing::StartsWith("spec.json: "), ::testing::HasSubstr("keys[1].time = 0")));
+}
+
+// Blender stores F-curves in float32: a number past float's range, or two times that one float
+// holds, are refused in those words (they read "keys[0].back = inf" and "keys[1].time <= keys[0].time"
+// for a time the user wrote larger), in every precision.
+TEST(io_channel, blender_numbers_past_float_are_named) {
+  const auto message = [](const std::string& keys) {
+    const nlohmann::json j = nlohmann::json::parse(R"({"type": "channel", "tool": "blender", "keys": )" + keys + "}");
+    return cbt::message_of([&] { (void)cb::io::channel_model_of_spec<cb::real50>(spec_of(j)); });
+  };
+  EXPECT_THAT(message(R"([{"time": 1, "value": 0, "interpolation": "back", "back": 1e308}, {"time": 2, "value": 1}])"),
+              ::testing::AllOf(::testing::HasSubstr("spec.json.keys[0].back: 1"),
+                               ::testing::HasSubstr("e+308 is past float's range (3.4e38): Blender stores F-curves in "
+                                                    "float32")));
+  EXPECT_THAT(message(R"([{"time": 1, "value": 0, "handle_right": [2, 1e39]}, {"time": 2, "value": 1}])"),
+              ::testing::AllOf(::testing::HasSubstr("spec.json.keys[0].handle_right[1]: "),
+                               ::testing::HasSubstr("e+39 is past float's range")));
+  EXPECT_THAT(message(R"([{"time": 16777216, "value": 0}, {"time": 16777217, "value": 1}])"),
+              ::testing::HasSubstr("spec.json.keys[1].time: 16777217 rounds to the float 16777216, not after "
+                                   "keys[0].time 16777216: Blender stores frames in float32 (a spacing of 2 there)"));
 }

@@ -55,7 +55,9 @@ struct channel_reference {
 channel_reference channel_reference_of(const io::field& spec, check_against against) {
   if (io::is_gltf_rotation(spec))
     spec.fail("a glTF rotation channel's values are quaternions: check by time takes scalar channels");
-  // The truth: the spec under its tool's rules with the exact time inversion, at 50 digits.
+  // The truth: the spec under its tool's rules with the exact time inversion, at 50 digits. The
+  // spec's own solver is replaced there, and checked first: a misspelt one is an error either way.
+  (void)io::detail::solver_of(spec, channel::time_solver::exact);
   nlohmann::json exact = spec.value;
   exact["solver"] = "exact";
   const io::channel_model<real50> truth = io::channel_model_of_spec<real50>(io::field{exact, spec.path});

@@ -89,7 +89,16 @@ channel_model<Real> channel_model_of_spec(const field& spec) {
   const bool known = visit_tool(name, [&](auto t) {
     using T = typename decltype(t)::type;
     detail::check_tool_fields<T>(spec, all_tools{});
-    const auto m = tool_spec<T>::template parse<Real>(spec);
+    // The model's own refusals (keys out of order, a backwards handle) name the spec's file too.
+    const auto m = [&] {
+      try {
+        return tool_spec<T>::template parse<Real>(spec);
+      } catch (const spec_error&) {
+        throw;
+      } catch (const invalid_input& x) {
+        spec.fail(x.what());
+      }
+    }();
     channel_model<Real> cm;
     cm.at = [m](const Real& x, int order) { return m.derivative(x, order); };
     if constexpr (requires { m.view_refusal(); }) {  // a model that may lack a view (usd, css)
@@ -107,7 +116,7 @@ channel_model<Real> channel_model_of_spec(const field& spec) {
   if (!known) {
     std::string list;
     for (std::string_view n : all_tool_names) list += (list.empty() ? "" : ", ") + std::string(n);
-    tool.fail("\"" + name + "\" is not one of: " + list);
+    tool.fail(field::shown_string(name) + " is not one of: " + list);
   }
   return std::move(*out);
 }

@@ -11,6 +11,8 @@
 #include "curvebench/io/family.hpp"
 #include "curvebench/io/tools/common.hpp"
 
+#include <cmath>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,12 +28,24 @@ template <class Real>
 channel::blender_fcurve<Real> blender_fcurve_of(const field& spec) {
   channel::blender_fcurve<Real> c;
   const field keys = spec.member("keys", "tool \"blender\" takes keys");
-  auto point_of = [](const field& k, std::string_view side, const Real& t, const Real& v) {
+  // Blender stores an F-curve in float32: a number past float's range is no Blender F-curve, in
+  // any precision (the truth at 50 digits refuses it as the tool does), said in those words rather
+  // than as the inf it becomes.
+  auto stored = [](const field& f, double x) {
+    if (std::abs(x) > static_cast<double>(std::numeric_limits<float>::max()))
+      f.fail(to_text(x) + " is past float's range (3.4e38): Blender stores F-curves in float32");
+    return Real(x);
+  };
+  auto number = [&](const field& k, std::string_view name) {
+    const field f = k.member(name);
+    return stored(f, f.number());
+  };
+  auto point_of = [&](const field& k, std::string_view side, const Real& t, const Real& v) {
     if (!k.has(side)) return channel::blender_point<Real>{t, v};
     const field f = k.member(side);
-    const std::vector<Real> p = f.reals<Real>();
+    const std::vector<double> p = f.reals<double>();
     if (p.size() != 2) f.fail("expected [frame, value], two numbers, got " + std::to_string(p.size()));
-    return channel::blender_point<Real>{p[0], p[1]};
+    return channel::blender_point<Real>{stored(f.element(0), p[0]), stored(f.element(1), p[1])};
   };
   auto handle = [](const field& k, std::string_view side) {
     if (!k.has(side)) return channel::handle_type::auto_clamped;
@@ -49,8 +63,19 @@ channel::blender_fcurve<Real> blender_fcurve_of(const field& spec) {
         "easing", "back",  "amplitude",   "period"};
     k.only_members(key_fields, " in a Blender key");
     channel::blender_key<Real> b;
-    b.time = Real(k.member("time").number());
-    b.value = Real(k.member("value").number());
+    b.time = number(k, "time");
+    b.value = number(k, "value");
+    // Two times a double tells apart may be one float: said so, not "keys[1].time <= keys[0].time".
+    if (i > 0) {
+      const double t0 = keys.element(i - 1).member("time").number(), t1 = k.member("time").number();
+      if (t1 > t0 && !(static_cast<float>(t1) > static_cast<float>(t0)))
+        k.member("time").fail(to_text(t1) + " rounds to the float " + to_text(static_cast<float>(t1)) +
+                              ", not after keys[" + std::to_string(i - 1) + "].time " + to_text(t0) +
+                              ": Blender stores frames in float32 (a spacing of " +
+                              to_text(static_cast<double>(std::nextafter(static_cast<float>(t0), INFINITY)) -
+                                      static_cast<double>(static_cast<float>(t0))) +
+                              " there)");
+    }
     b.handle_left = point_of(k, "handle_left", b.time, b.value);
     b.handle_right = point_of(k, "handle_right", b.time, b.value);
     b.handle_left_type = handle(k, "handle_left_type");
@@ -67,9 +92,9 @@ channel::blender_fcurve<Real> blender_fcurve_of(const field& spec) {
       const std::string e = k.member("easing").one_of({"auto", "in", "out", "in_out"});
       b.easing = e == "auto" ? channel::ease_mode::automatic : channel::ease_mode_from_string(e);
     }
-    if (k.has("back")) b.params.back = Real(k.member("back").number());
-    if (k.has("amplitude")) b.params.amplitude = Real(k.member("amplitude").number());
-    if (k.has("period")) b.params.period = Real(k.member("period").number());
+    if (k.has("back")) b.params.back = number(k, "back");
+    if (k.has("amplitude")) b.params.amplitude = number(k, "amplitude");
+    if (k.has("period")) b.params.period = number(k, "period");
     c.keys.push_back(b);
   }
   if (spec.has("extrapolation"))

@@ -97,6 +97,10 @@ struct tool_spec<channel::tools::gltf> {
   template <class Real>
   static channel::tools::gltf::model<Real> parse(const field& spec) {
     if (detail::is_gltf_rotation(spec)) detail::refuse_rotation(spec, "scalar value v(t)");
+    if (spec.has("blend"))
+      spec.member("blend").fail(
+          "blend chooses how rotations interpolate; this channel's path is weights (a scalar "
+          "channel), which would ignore it");
     namespace g = channel::gltf;
     const std::string mode =
         spec.member("interpolation", "tool \"gltf\" takes an interpolation").one_of({"step", "linear", "cubicspline"});

@@ -45,6 +45,23 @@ channel::maya_curve<Real> maya_curve_of(const field& spec) {
     const channel::handle<Real> in = handle_of<Real>(k, "in"), out = handle_of<Real>(k, "out");
     if (k.has("in")) key.in_x = in.dt, key.in_y = in.dv;
     if (k.has("out")) key.out_x = out.dt, key.out_y = out.dv;
+    // A fixed tangent's vector, checked here in the spec's words ("in": [x, y]) before the curve
+    // checks it as in_x, in_y (the library's field names, which the spec does not have).
+    const auto vector = [&](std::string_view side, channel::maya_tangent type, const Real& x, const Real& y) {
+      if (!k.has(side)) return;
+      if (type != channel::maya_tangent::fixed)
+        k.member(side).fail("a tangent vector is used by a fixed tangent only, and this side's type is " +
+                            std::string(channel::to_string(type)) + " (which would ignore it): give \"" +
+                            std::string(side) + "_type\": \"fixed\" or drop it");
+      if (!(x > Real(0)))
+        k.member(side).fail("x = " + to_text(static_cast<double>(x)) +
+                            ": a fixed tangent's x must be > 0 (the vector points forwards in time)");
+      if (!is_finite(Real(y / x)))
+        k.member(side).fail("the slope y / x = " + to_text(static_cast<double>(y)) + " / " +
+                            to_text(static_cast<double>(x)) + " overflows");
+    };
+    vector("in", key.in_type, key.in_x, key.in_y);
+    vector("out", key.out_type, key.out_x, key.out_y);
     c.keys.push_back(key);
   }
   if (spec.has("weighted")) c.weighted = spec.member("weighted").boolean();
