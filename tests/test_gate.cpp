@@ -189,6 +189,11 @@ TEST(gate, each_rule_needs_a_check_and_values_of_the_right_type) {
             "thr.json rule 0: honest \"yes\" is not true or false");
   EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"method": 3, "max_error": 1}]})"),
             "thr.json rule 0: method 3 is not a string");
+  // A negative max_error breaches on every record, a min_order <= 0 checks nothing: refused.
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"max_error": -1}]})"),
+            "thr.json rule 0: max_error -1 is negative (an error is >= 0)");
+  EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"min_order": -5}]})"),
+            "thr.json rule 0: min_order -5 is not positive (an observed order of convergence is > 0)");
   // The vocabulary checks name the file too.
   EXPECT_EQ(gate_error(clean_results(), R"({"rules": [{"quantity": "lenght", "max_error": 1}]})"),
             "thr.json rule 0: quantity \"lenght\" is not a quantity of the vocabulary");

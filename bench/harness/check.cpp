@@ -319,6 +319,11 @@ struct lengths_layout {
     for (std::size_t r = 0; r < t.rows.size(); ++r) {
       check_domain(t, r, c0, d);
       check_domain(t, r, c1, d);
+      // A length runs forwards: a row from u0 to an earlier u1 would be charged against the signed
+      // -(s(u0) - s(u1)), twice its length off when the user wrote the length itself.
+      if (t.rows[r][c1] < t.rows[r][c0])
+        throw invalid_input(t.where(r, c1) + ": u1 = " + num(t.rows[r][c1]) + " is below u0 = " + num(t.rows[r][c0]) +
+                            ": a length runs from u0 to u1 >= u0 (swap them)");
     }
   }
 };

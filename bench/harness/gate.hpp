@@ -123,6 +123,13 @@ inline void check_thresholds_structure(const nlohmann::json& thresholds, const s
                             (number            ? "a number"
                              : key == "honest" ? "true or false"
                                                : "a string"));
+      // An error is >= 0 and an order > 0: a rule below that breaches on every record (max_error
+      // < 0) or checks nothing (min_order <= 0), and says the thresholds file is wrong.
+      if (key == "max_error" && !(value.get<double>() >= 0))
+        throw invalid_input(where + "max_error " + io::field::shown_value(value) + " is negative (an error is >= 0)");
+      if (key == "min_order" && !(value.get<double>() > 0))
+        throw invalid_input(where + "min_order " + io::field::shown_value(value) +
+                            " is not positive (an observed order of convergence is > 0)");
     }
     if (!rule.contains("max_error") && !rule.contains("min_order") && !rule.value("honest", false))
       throw invalid_input(where + "no check (give max_error, min_order or \"honest\": true)");

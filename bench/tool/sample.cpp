@@ -54,8 +54,14 @@ ease_fn parse_ease(const std::string& text) {
       if (!parse_finite(phases[i], t[i]))
         throw invalid_input(where + "phase T" + std::to_string(i + 1) + " " + quote_cell(phases[i]) +
                             " is not a finite number, " + expected);
-    if (name == "sine_plateau") return motion::sine_plateau_ease<double>(t[0], t[1]);
-    return motion::parabolic_ease<double>(t[0], t[1]);
+    // The ease's own refusals (t2 < t1, a phase outside [0, 1]) name the option and its phases.
+    try {
+      if (name == "sine_plateau") return motion::sine_plateau_ease<double>(t[0], t[1]);
+      return motion::parabolic_ease<double>(t[0], t[1]);
+    } catch (const invalid_input& x) {
+      throw invalid_input(where + "phases T1 " + quote_cell(phases[0]) + ", T2 " + quote_cell(phases[1]) + ": " +
+                          x.what());
+    }
   }
   if (colon != std::string::npos)
     throw invalid_input("--ease " + quote_cell(text) + ": " + name + " takes no parameters");
@@ -86,7 +92,8 @@ al::inversion_method parse_inversion(const std::string& m) {
 /// One value per line, or a CSV whose header names the parameter's column (u, or t for a channel
 /// spec: the CSV `sample` writes); its other columns are ignored, lines starting with # too.
 std::vector<parameter> parse_at_file(const std::string& path, const std::string& name) {
-  const std::string text = read_file(path);
+  std::string text = read_file(path);
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // a UTF-8 byte order mark, as editors on Windows write
   std::vector<parameter> out;
   std::size_t line_no = 0, u_column = std::string::npos, columns = 1;
   bool first = true;
@@ -106,7 +113,11 @@ std::vector<parameter> parse_at_file(const std::string& path, const std::string&
         for (std::size_t c = 0; c < cells.size(); ++c) {
           const auto b = cells[c].find_first_not_of(" \t"), e = cells[c].find_last_not_of(" \t");
           const std::string cell = b == std::string::npos ? "" : cells[c].substr(b, e - b + 1);
-          if (cell == name) u_column = c;
+          if (cell != name) continue;
+          if (u_column != std::string::npos)
+            throw invalid_input(row + ": the header names the " + name + " column twice (columns " +
+                                std::to_string(u_column + 1) + " and " + std::to_string(c + 1) + ")");
+          u_column = c;
         }
         if (u_column == std::string::npos)
           throw invalid_input(row + ": " + quote_cell(line) + " is neither a finite number nor a CSV header naming a " +
@@ -334,10 +345,12 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
                                    "names a u column (t for a channel spec; other columns and # lines ignored)")
                       ->check(CLI::ExistingFile);
   auto* range = samp->add_option("--range", a.range,
-                                 "evaluate at A, A+STEP, ... up to B (inclusive when B lies on the grid): A:B:STEP");
+                                 "evaluate at A, A+STEP, ... up to B (inclusive when B lies on the grid): A:B:STEP")
+                    ->check(non_empty());
   auto* frames = samp->add_option("--frames", a.frames,
                                   "times A, A+STEP, ... up to B for channel specs (whose --at, --frames and --range "
-                                  "values are times): A:B[:STEP], STEP 1 by default");
+                                  "values are times): A:B[:STEP], STEP 1 by default")
+                     ->check(non_empty());
   for (CLI::Option* o : {at, at_file, range, frames}) {
     o->excludes(count);
     for (CLI::Option* other : {at, at_file, range, frames})

@@ -49,6 +49,27 @@ class ToolCli(unittest.TestCase):
         for w in words:
             self.assertIn(w, p.stderr)
 
+    def test_output_the_system_does_not_take_is_an_error(self):
+        # stdout on /dev/full: every write fails; the tool says so and exits 1 instead of 0 with
+        # the output lost (a full disk gives a silently truncated file otherwise).
+        with open("/dev/full", "w") as full:
+            p = subprocess.run([TOOL, "list", "all"], stdout=full, stderr=subprocess.PIPE, text=True, timeout=60)
+        self.assertEqual(p.returncode, 1, p.stderr)
+        self.assertIn("curvebench: error: writing the standard output failed", p.stderr)
+
+    def test_at_file_takes_a_byte_order_mark_and_refuses_a_column_named_twice(self):
+        bom = os.path.join(self.dir, "bom.csv")
+        with open(bom, "wb") as f:
+            f.write(b"\xef\xbb\xbfu,x\n0.25,1\n")
+        self.assertEqual(self.sample("--at-file", bom), self.sample("--at", "0.25"))
+        twice = self.write("twice.csv", "u,x,u\n0.25,1,0.5\n")
+        self.assert_error(run("sample", ARCH, "--at-file", twice), "twice.csv: row 1",
+                          "the u column twice (columns 1 and 3)")
+
+    def test_empty_range_and_frames_are_refused(self):
+        for option in ("--range", "--frames", "--at"):
+            self.assert_error(run("sample", ARCH, option, ""), option, "an empty value")
+
     # ---- sample at chosen parameters ---------------------------------------------------------
 
     def test_sample_at_range_and_file_give_the_same_rows(self):
@@ -193,6 +214,10 @@ class ToolCli(unittest.TestCase):
         p = run("check", spec, "--inverse", worse, "--max-error", "1e-6")
         self.assertEqual(p.returncode, 1)
         self.assertIn("inv2.csv: row 3 (s = 8, u = 1.5001)", p.stdout)
+        # A length row running backwards is refused, not charged twice its length.
+        back = self.write("back.csv", "u0,u1,length\n1.5,0.5,5.5\n")
+        self.assert_error(run("check", spec, "--lengths", back), "back.csv", "row 2", "column u1",
+                          "u1 = 0.5 is below u0 = 1.5")
 
     def test_bad_input_names_file_row_column_and_value(self):
         cases = [
@@ -272,10 +297,23 @@ class ToolCli(unittest.TestCase):
             self.assertGreater(out["evaluations"], 0, method)
             if out["status"] == "converged":
                 self.assertLessEqual(abs(out["value"] - ref["value"]), out["estimate"] + ref["estimate"], method)
+        # An option of another method would be ignored: refused, naming the method's own.
+        self.assert_error(run("length", spec, "--method", "gauss", "--tol", "1e-3"),
+                          "--tol does not apply to --method gauss (its options: --n)")
         # A fixed rule's cost is refused before the work, naming the options.
         many = os.path.join(CASES, "lissajous_many_segments_1e5.json")
         self.assert_error(run("length", many, "--method", "gauss", "--n", "200"), "--n 200: ", " segments need ",
                           "more than the limit of 67108864")
+
+    def test_channel_sample_checks_the_solver_and_names_the_file(self):
+        # The truth replaces the spec's solver with the exact one; a misspelt solver is still an
+        # error, and the model's own refusals (keys out of order) name the file.
+        bad = self.write("solver.json", '{"type": "channel", "tool": "exact", "solver": "newton", '
+                         '"keys": [{"time": 0, "value": 0}, {"time": 1, "value": 1}]}')
+        self.assert_error(run("sample", bad, "--at", "0.5"), "solver.json.solver", "not a time solver")
+        order = self.write("order.json", '{"type": "channel", "tool": "exact", '
+                           '"keys": [{"time": 1, "value": 0}, {"time": 0, "value": 1}]}')
+        self.assert_error(run("sample", order, "--at", "0.5"), "order.json: ", "keys[1].time = 0")
 
     def test_channel_specs_sample_at_times(self):
         # Issue 12: --at, --frames and --range give times for channel specs: t, value, dvalue, d2value.
@@ -356,6 +394,9 @@ class ToolCli(unittest.TestCase):
         self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "parabolic:0.3,0.7,0.9"),
                           '--ease "parabolic:0.3,0.7,0.9"', "3 phases given", "expected parabolic:T1,T2")
         self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "parabolic:0.3"), "1 phase given")
+        # The ease's own refusal names the option and the phases as given.
+        self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "sine_plateau:0.8,0.2"),
+                          '--ease "sine_plateau:0.8,0.2": phases T1 "0.8", T2 "0.2": ')
         self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "parabolic"), "needs its phases")
         self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "parabolic:,0.7"), 'phase T1 ""')
         rows = self.sample("--by", "arclength", "--count", "5", "--ease", "parabolic: 0.3 , 0.7").splitlines()
