@@ -67,8 +67,11 @@ class ToolCli(unittest.TestCase):
                           "the u column twice (columns 1 and 3)")
 
     def test_empty_range_and_frames_are_refused(self):
+        # A usage error: CLI11's exit code for a failed validation (105), with the tool's prefix.
         for option in ("--range", "--frames", "--at"):
-            self.assert_error(run("sample", ARCH, option, ""), option, "an empty value")
+            p = run("sample", ARCH, option, "")
+            self.assertEqual(p.returncode, 105, p.stdout + p.stderr)
+            self.assertTrue(p.stderr.startswith("curvebench: error: " + option + ": an empty value"), p.stderr)
 
     # ---- sample at chosen parameters ---------------------------------------------------------
 
