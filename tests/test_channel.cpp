@@ -484,6 +484,25 @@ TEST(channel, vertical_tangents_and_zero_length_handles) {
               HasSubstr("extrapolation before = linear needs a finite slope at keys[0]"));
 }
 
+// A key's value is the key's, whatever its handles: out and in handles of dv 1.7e308 and -1.7e308
+// make the controls' second difference -3.4e308, past double's range, and the polynomial form met
+// 0 x inf at w = 0 and gave NaN at the key (issue 33's hostile sweep). Inside the segment double
+// still overflows in the intermediate terms (the 50-digit channel does not: sample prints its
+// truth; sample --as-tool says the tool's own evaluation overflows).
+TEST(channel, a_key_with_handles_near_the_range_keeps_its_value) {
+  using I = ch::interpolation;
+  const ch::channel<double> c(
+      keys_of<double>({{0, 0, 0, 0, 0.25, 1.7e308, I::bezier}, {1, 0, -0.25, -1.7e308, 0, 0, I::linear}}));
+  EXPECT_EQ(c.value(0.0), 0.0);
+  EXPECT_EQ(c.value(1.0), 0.0);
+  EXPECT_EQ(c.value(-1.0), 0.0);  // constant extrapolation: the key's value again
+  const ch::channel<real50> exact(
+      keys_of<real50>({{0, 0, 0, 0, 0.25, 1.7e308, I::bezier}, {1, 0, -0.25, -1.7e308, 0, 0, I::linear}}),
+      ch::extrapolation::constant, ch::extrapolation::constant, ch::time_solver::exact);
+  EXPECT_EQ(exact.value(real50(0)), real50(0));
+  EXPECT_TRUE(cb::is_finite(exact.value(real50("0.001"))));
+}
+
 // The regression-limit segment of the mixed keys (times 6.5, 9.5, 3.5, 15.5: x'(u) = 9 (1 - 3u)^2)
 // has its vertical tangent at t = 6.5 + 9 / 9 = 7.5 (u = 1/3, v'(1/3) = 3). At real50 the exact
 // solver lands within about eps50^(1/3) ~ 1e-17 of u = 1/3 (the triple root of x(u) - 7.5), where

@@ -12,6 +12,7 @@
 #include <cfloat>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace cb = curvebench;
@@ -122,6 +123,19 @@ TEST(core, binomial_is_exact) {
     for (int k = 1; k < n; ++k)  // Pascal's rule, exact in 50 digits
       ASSERT_EQ(cb::binomial<cb::real50>(n, k),
                 cb::binomial<cb::real50>(n - 1, k - 1) + cb::binomial<cb::real50>(n - 1, k));
+}
+
+// Messages show a 50-digit value that is a double exactly (a number the user wrote) as the
+// double's shortest text; any other 50-digit value keeps its own digits, and doubles theirs.
+TEST(core, to_text_of_a_double_held_in_50_digits_is_the_double) {
+  EXPECT_EQ(cb::to_text(cb::real50(1e300)), "1e+300");
+  EXPECT_EQ(cb::to_text(cb::real50(0.1)), "0.1");
+  EXPECT_EQ(cb::to_text(cb::real50(-2.5)), "-2.5");
+  EXPECT_EQ(cb::to_text(cb::real50(0)), "0");
+  const std::string third = cb::to_text(cb::real50(1) / 3);
+  EXPECT_GE(third.size(), 50u) << third;                    // not a double: all its digits
+  EXPECT_EQ(cb::real50(third.c_str()), cb::real50(1) / 3);  // and they read back to it
+  EXPECT_EQ(cb::to_text(0.1), "0.10000000000000001");       // a double keeps its 17 digits
 }
 
 TEST(core, circle_derivatives_are_exact) {

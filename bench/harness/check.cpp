@@ -591,6 +591,12 @@ std::vector<check_result> run_checks(const io::field& spec, const std::vector<ch
       out[i] = detail::check_times(spec, inputs[i].table, options);
       summarize(out[i], options.worst);
     } else {
+      // The tool's own evaluation is a channel's at times; a table by u is checked against the
+      // curve's 50-digit reference, which would ignore `against`.
+      if (options.against == check_against::tool)
+        throw invalid_input(inputs[i].table.file +
+                            ": checked by u against the curve's 50-digit reference; against = tool (check --against "
+                            "tool) applies to a channel spec's values at times (a t column, no u column)");
       by_u.push_back(&inputs[i]);
       at.push_back(i);
     }

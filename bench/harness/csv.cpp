@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -69,6 +70,13 @@ bool parse_finite(std::string_view text, double& out) {
   }
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, out);
+  if (ec == std::errc::result_out_of_range && ptr == end) {
+    // Below the least subnormal (1e-400) rounds to a signed zero, as a JSON spec's 1e-400 reads and
+    // as IEEE rounding gives; past the largest double (1e400) is not finite, refused below.
+    const std::string copy(text);
+    out = std::strtod(copy.c_str(), nullptr);
+    return std::isfinite(out);
+  }
   return ec == std::errc() && ptr == end && std::isfinite(out);
 }
 

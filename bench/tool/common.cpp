@@ -6,6 +6,7 @@
 
 #include "curvebench_version.hpp"  // generated at build time by cmake/version_header.cmake
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -85,7 +86,10 @@ std::string non_finite_cause(std::span<const double> breakpoints, double largest
   if (breakpoints.size() > 2)
     why += ", narrowest segment [" + to_text(breakpoints[narrow]) + ", " + to_text(breakpoints[narrow + 1]) +
            "] (breakpoints " + std::to_string(narrow) + " and " + std::to_string(narrow + 1) + ")";
-  why += ", largest |coordinate| at the breakpoints " + to_text(largest_coordinate);
+  if (std::isnan(largest_coordinate))
+    why += ", a point at a breakpoint is not a number (its evaluation overflows double)";
+  else
+    why += ", largest |coordinate| at the breakpoints " + to_text(largest_coordinate);
   why +=
       ": coordinates, their differences or the derivatives (which grow like 1/h^k on a span of width h) "
       "exceed double's range of about 1.8e308";

@@ -38,7 +38,8 @@ using ease_fn =
 
 /// "linear", "sine", "smoothstep", "smootherstep", "sine_plateau:T1,T2", "parabolic:T1,T2". The
 /// phases are exactly two finite numbers: trailing text or a third value is an error, not ignored.
-ease_fn parse_ease(const std::string& text) {
+ease_fn parse_ease(const std::string& given) {
+  const std::string text = given.empty() ? "linear" : given;  // the default
   const auto colon = text.find(':');
   const std::string name = text.substr(0, colon);
   if (name == "sine_plateau" || name == "parabolic") {
@@ -83,7 +84,8 @@ std::vector<std::pair<std::string, al::inversion_method>> sample_methods() {
   return out;
 }
 
-al::inversion_method parse_inversion(const std::string& m) {
+al::inversion_method parse_inversion(const std::string& given) {
+  const std::string m = given.empty() ? std::string(vocab::methods::hermite_table.id) : given;  // the default
   for (const auto& [id, method] : sample_methods())
     if (id == m) return method;
   throw invalid_input("--method " + m + ": not a u(s) method of sample");
@@ -296,8 +298,12 @@ void sample_times(const io::field& spec, const sample_args& a) {
     const double t = given[i].u;
     const std::optional<double> v = ch.at(t, 0);
     if (!v || !std::isfinite(*v))
-      throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) +
-                          "): the value is not representable in double");
+      throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): " +
+                          (a.as_tool ? "the tool's own evaluation in double is not finite (" +
+                                           (v ? to_text(*v) : std::string("none")) +
+                                           "): its intermediate results pass double's range (about 1.8e308); "
+                                           "without --as-tool, sample gives the channel's truth"
+                                     : std::string("the value is not representable in double")));
     std::cout << shortest(t) << "," << *v;
     for (int k = 1; k <= a.derivatives; ++k) {
       std::cout << ",";
@@ -321,7 +327,6 @@ void sample_times(const io::field& spec, const sample_args& a) {
 }  // namespace
 
 CLI::App* add_sample(CLI::App& app, sample_args& a) {
-  a.method = std::string(vocab::methods::hermite_table.id);
   auto* samp = app.add_subcommand(
       "sample", "sample a curve spec: CSV of u, s (arc length from the domain's start), the point and derivatives");
   samp->add_option("spec", a.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
@@ -333,11 +338,12 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
       ->check(CLI::IsMember({"u", "arclength"}));
   std::vector<std::string> sample_ids;
   for (const auto& m : sample_methods()) sample_ids.push_back(m.first);
-  samp->add_option("--method", a.method, "u(s) method for --by arclength")->check(CLI::IsMember(sample_ids));
+  samp->add_option("--method", a.method, "u(s) method for --by arclength (default hermite_table)")
+      ->check(CLI::IsMember(sample_ids));
   samp->add_flag("--polish", a.polish, "one Newton step after a table lookup");
   samp->add_option("--ease", a.ease,
                    "distance-time function for --by arclength: linear, sine, smoothstep, smootherstep, "
-                   "sine_plateau:T1,T2, parabolic:T1,T2");
+                   "sine_plateau:T1,T2, parabolic:T1,T2 (default linear)");
   auto* at = samp->add_option("--at", a.at, "evaluate at these parameters: V1,V2,... (at most " + max + ")")
                  ->check(non_empty());
   auto* at_file = samp->add_option("--at-file", a.at_file,
@@ -375,9 +381,29 @@ void run_sample(const sample_args& a) {
     throw invalid_input(
         "sample: --by arclength spaces the samples itself; it does not go with --at, --at-file or "
         "--range (which give the parameters)");
+  // An option that does not apply to this sampling is refused, not ignored.
+  if (a.by != "arclength")
+    for (const auto& [set, option] : {std::pair{!a.method.empty(), "--method"}, std::pair{!a.ease.empty(), "--ease"},
+                                      std::pair{a.polish, "--polish"}})
+      if (set)
+        throw invalid_input(std::string("sample: ") + option +
+                            " applies to --by arclength (samples spaced by arc length); these samples are " +
+                            (given ? "at the parameters given" : "spaced by u") + ", where it would be ignored");
   const nlohmann::json j = read_spec(a.spec);
   const io::field spec = io::root(j, a.spec);
-  if (spec.has("type") && spec.member("type").value == "channel" && given) {
+  const bool channel = spec.has("type") && spec.member("type").value == "channel";
+  if (!channel && a.as_tool)
+    throw invalid_input(
+        "sample --as-tool: " + a.spec +
+        " is a curve spec; --as-tool evaluates a channel spec (\"type\": \"channel\") as its tool does");
+  if (!channel && !a.frames.empty())
+    throw invalid_input("sample --frames gives the times of a channel spec; " + a.spec +
+                        " is a curve spec, whose parameter is u: --range A:B:STEP or --at give u");
+  if (channel && a.as_tool && !given)
+    throw invalid_input(
+        "sample --as-tool evaluates the channel at times: give them with --at, --at-file, --range or --frames "
+        "(without them, sample prints the channel's planar curve (t(u), v(u)) by u)");
+  if (channel && given) {
     sample_times(spec, a);
     return;
   }

@@ -102,9 +102,9 @@ struct sample_args {
   std::string spec;
   std::size_t count = 11;
   std::string by = "u";
-  std::string method;  ///< u(s) method for --by arclength (add_sample sets hermite_table)
+  std::string method;  ///< u(s) method for --by arclength; empty: not given (hermite_table)
   bool polish = false;
-  std::string ease = "linear";
+  std::string ease;      ///< distance-time function for --by arclength; empty: not given (linear)
   std::string at;        ///< --at V1,V2,...
   std::string at_file;   ///< --at-file FILE
   std::string range;     ///< --range A:B:STEP

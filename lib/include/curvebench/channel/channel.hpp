@@ -231,9 +231,15 @@ class channel {
   [[nodiscard]] Real value(const Real& t) const { return eval(t, 0); }
   /// d^order v / dt^order at time t, order 0, 1 or 2 (see the header for vertical tangents).
   [[nodiscard]] Real derivative(const Real& t, int order) const {
+    check_derivative(t, order);
+    return eval(t, order);
+  }
+  /// derivative()'s refusals: invalid_input for an order outside 0..2, std::domain_error for a
+  /// non-finite t (a model that evaluates without a channel, CSS steps(), refuses as a channel does).
+  static void check_derivative(const Real& t, int order) {
     validate::derivative_order(order);
     if (order > 2) validate::fail("order = " + std::to_string(order) + ": a channel's time derivatives go to order 2");
-    return eval(t, order);
+    if (!is_finite(t)) throw std::domain_error("t = " + to_text(t) + ": a channel is evaluated at finite times only");
   }
   /// out[i] = value(times[i]); no allocation. Spans of different sizes are an invalid_input.
   void evaluate(std::span<const Real> times, std::span<Real> out) const {
@@ -468,7 +474,9 @@ Real channel<Real>::inside(const Real& t, int order) const {
   const auto& d = *data_;
   const auto& s = d.segments[locate(t)];
   const Real w = t >= s.t[3] ? Real(1) : s.local(t, d.solver);
-  if (order == 0) return t >= s.t[3] ? s.v[3] : s.value_at(w, 0);
+  // At a key (w = 0 or 1) the value is the key's: value_at's polynomial form would meet 0 x inf
+  // there when the handles are near double's range (keys at 1e308).
+  if (order == 0) return t >= s.t[3] ? s.v[3] : w == Real(0) ? s.v[0] : s.value_at(w, 0);
   if (order == 1) return s.slope_at(w);
   return s.curvature_at(w, t);
 }

@@ -29,6 +29,7 @@
 #include <array>
 #include <concepts>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -121,6 +122,34 @@ class channel_tool_model {
 
  private:
   channel<Real> channel_;
+};
+
+/// The curve view of a model that may have none (USD's dual values, CSS steps() past
+/// css_max_step_keys): a model derives from it, builds the view or says why there is none, and
+/// inherits view() and view_refusal(), which io::channel_model_of_spec asks before view().
+template <class Real>
+class optional_view {
+ public:
+  /// The curve view; invalid_input saying why when there is none (view_refusal).
+  [[nodiscard]] const channel<Real>& view() const {
+    if (!view_) validate::fail(*refusal_);
+    return *view_;
+  }
+  /// Why the model has no curve view, or nothing. value() and derivative() do not need the view.
+  [[nodiscard]] const std::optional<std::string>& view_refusal() const { return refusal_; }
+
+ protected:
+  optional_view() = default;
+  /// The view of `keys` under `solver`, constant extrapolation on both sides.
+  void build_view(std::vector<key<Real>> keys, time_solver solver) {
+    view_.emplace(std::move(keys), extrapolation::constant, extrapolation::constant, solver);
+  }
+  void refuse_view(std::string why) { refusal_ = std::move(why); }
+  [[nodiscard]] bool has_view() const { return view_.has_value(); }
+
+ private:
+  std::optional<channel<Real>> view_;
+  std::optional<std::string> refusal_;
 };
 
 }  // namespace detail

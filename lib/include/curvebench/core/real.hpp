@@ -12,12 +12,14 @@
 
 #include <boost/math/special_functions/fpclassify.hpp>
 
+#include <charconv>
 #include <concepts>
 #include <cstddef>
 #include <iomanip>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 namespace curvebench {
 
@@ -66,9 +68,21 @@ template <class Real>
   return Real(c);
 }
 
-/// Text for a value, with enough significant digits to round-trip in its own type.
+/// Text for a value, with enough significant digits to round-trip in its own type. A
+/// multiprecision value that is a double exactly (a number the user wrote, read as double and
+/// widened) shows the double's shortest text, which reads back to it: "1e+300", not the 50 digits
+/// of its binary expansion.
 template <class T>
 [[nodiscard]] std::string to_text(const T& value) {
+  if constexpr (std::numeric_limits<T>::is_specialized && !std::numeric_limits<T>::is_integer &&
+                !std::is_floating_point_v<T>) {
+    const double d = static_cast<double>(value);
+    if ((boost::math::isfinite)(d) && T(d) == value) {
+      char buf[32];
+      const auto r = std::to_chars(buf, buf + sizeof buf, d);
+      return std::string(buf, r.ptr);
+    }
+  }
   std::ostringstream os;
   if constexpr (std::numeric_limits<T>::is_specialized && !std::numeric_limits<T>::is_integer) {
     os << std::setprecision(std::numeric_limits<T>::max_digits10 > 0 ? std::numeric_limits<T>::max_digits10

@@ -101,8 +101,10 @@ template <class Real>
     const auto pts = f.points();
     for (std::size_t i = 0; i < pts.size(); ++i) {
       if (i > 0 && !(pts[i].input > pts[i - 1].input))
-        validate::fail("stops " + std::to_string(i - 1) + " and " + std::to_string(i) + " share the input " +
-                       to_text(pts[i].input) + ": a jump, which a channel (one value per time) does not hold");
+        validate::fail("linear() has two points at the input " + to_text(pts[i].input) + " (its points " +
+                       std::to_string(i) + " and " + std::to_string(i + 1) +
+                       ", counted from 1; a stop with two positions is two points): a jump, which a channel (one "
+                       "value per time) does not hold");
       keys.push_back({Real(pts[i].input), Real(pts[i].output), {}, {}, interpolation::linear});
     }
   }
@@ -129,7 +131,7 @@ struct css {
   /// The channel of the easing's keys, evaluated by it; steps() evaluated in closed form, its view
   /// built for n <= css_max_step_keys (see the header).
   template <class Real>
-  class model {
+  class model : public curvebench::channel::detail::optional_view<Real> {
    public:
     using real_type = Real;
     using tool_type = css;
@@ -140,44 +142,32 @@ struct css {
       if (f.type() == css_easing<double>::kind::steps) {
         steps_.emplace(f);
         if (f.step_count() > css_max_step_keys) {
-          refusal_ = "steps(" + std::to_string(f.step_count()) +
-                     ") has no curve view: it would hold n + 1 keys, n at most " + std::to_string(css_max_step_keys) +
-                     " (sample --at and check --values evaluate it)";
+          this->refuse_view("steps(" + std::to_string(f.step_count()) +
+                            ") has no curve view: it would hold n + 1 keys, n at most " +
+                            std::to_string(css_max_step_keys) + " (sample --at and check --values evaluate it)");
           return;
         }
       }
-      view_.emplace(css_keys<Real>(f), extrapolation::constant, extrapolation::constant, solver);
+      this->build_view(css_keys<Real>(f), solver);
     }
 
     [[nodiscard]] Real value(const Real& t) const { return derivative(t, 0); }
     [[nodiscard]] Real derivative(const Real& t, int order) const {
-      if (!steps_) return view_->derivative(t, order);
-      validate::derivative_order(order);
-      if (order > 2)
-        validate::fail("order = " + std::to_string(order) + ": a channel's time derivatives go to order 2");
-      if (!is_finite(t)) throw std::domain_error("t = " + to_text(t) + ": a channel is evaluated at finite times only");
+      if (!steps_) return this->view().derivative(t, order);
+      channel<Real>::check_derivative(t, order);
       return order == 0 ? steps_->value(t) : Real(0);  // constant segments and extrapolation
     }
-    /// The curve view; invalid_input saying why when there is none (view_refusal).
-    [[nodiscard]] const channel<Real>& view() const {
-      if (!view_) validate::fail(*refusal_);
-      return *view_;
-    }
-    /// Why the easing has no curve view (steps() above css_max_step_keys), or nothing.
-    [[nodiscard]] const std::optional<std::string>& view_refusal() const { return refusal_; }
     /// The key times; without a view (steps() above css_max_step_keys) the first and last only, 0
     /// and 1.
     [[nodiscard]] std::vector<Real> key_times() const {
-      if (!view_) return {Real(0), Real(1)};
+      if (!this->has_view()) return {Real(0), Real(1)};
       std::vector<Real> out;
-      for (const auto& k : view_->keys()) out.push_back(k.time);
+      for (const auto& k : this->view().keys()) out.push_back(k.time);
       return out;
     }
 
    private:
     std::optional<css_steps<Real>> steps_;
-    std::optional<channel<Real>> view_;
-    std::optional<std::string> refusal_;
   };
 
   /// The model of an easing, solved by `solver`.

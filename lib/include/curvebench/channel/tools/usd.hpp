@@ -69,30 +69,25 @@ struct usd {
   static constexpr time_solver default_solver = time_solver::closed_form;
 
   template <class Real>
-  class model {
+  class model : public curvebench::channel::detail::optional_view<Real> {
    public:
     using real_type = Real;
     using tool_type = usd;
     static constexpr std::string_view name = usd::name;
     static constexpr int storage_bits = storage_bits_of<usd::storage_type>;
 
-    explicit model(const usd_model<Real>& m) : model_(m), refusal_(usd_view_refusal(m.resolved())) {
-      if (!refusal_)
-        view_.emplace(usd_channel_keys(m.resolved()), extrapolation::constant, extrapolation::constant, m.solver());
+    /// The view is refused (view_refusal) for a dual-valued knot after a linear or curve segment.
+    explicit model(const usd_model<Real>& m) : model_(m) {
+      if (auto why = usd_view_refusal(m.resolved()))
+        this->refuse_view(std::move(*why));
+      else
+        this->build_view(usd_channel_keys(m.resolved()), m.solver());
     }
     explicit model(const usd_spline<Real>& s, time_solver solver = default_solver)
         : model(usd_model<Real>(s, solver)) {}
 
     [[nodiscard]] Real value(const Real& t) const { return model_.value(t); }
     [[nodiscard]] Real derivative(const Real& t, int order) const { return model_.derivative(t, order); }
-    /// The curve view; invalid_input saying why when the spline has none (view_refusal).
-    [[nodiscard]] const channel<Real>& view() const {
-      if (!view_) validate::fail(*refusal_);
-      return *view_;
-    }
-    /// Why the spline has no curve view (a dual-valued knot after a linear or curve segment), or
-    /// nothing. value() and derivative() do not need the view.
-    [[nodiscard]] const std::optional<std::string>& view_refusal() const { return refusal_; }
     /// The knot times of the resolved spline (the keys' times, with or without a view).
     [[nodiscard]] std::vector<Real> key_times() const {
       std::vector<Real> out;
@@ -103,8 +98,6 @@ struct usd {
 
    private:
     usd_model<Real> model_;
-    std::optional<std::string> refusal_;
-    std::optional<channel<Real>> view_;
   };
 
   /// The spline USD holds for the keys (see the header).

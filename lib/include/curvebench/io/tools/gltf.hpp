@@ -40,7 +40,8 @@ inline bool is_gltf_rotation(const field& spec) {
 /// What sampler errors call the spec's data: its "times" and its flat "values".
 inline constexpr channel::gltf::accessor_names spec_names{"times", "values", true};
 
-/// make(), its sampler's invalid_input (which names times[i] or values[i]) as the spec's error.
+/// make(), its sampler's invalid_input (which names times[i] or values[i]) as the spec's error:
+/// rotation_of_spec's (the scalar channel's go through channel_model_of_spec, which does the same).
 template <class F>
 auto sampler_of_spec(const field& spec, F&& make) {
   try {
@@ -111,12 +112,12 @@ struct tool_spec<channel::tools::gltf> {
     // floats widened, so that every precision refuses the same specs).
     const std::vector<double> td = spec.member("times").reals<double>(), vd = vf.reals<double>();
     const g::interpolation im = g::from_string<g::interpolation>(mode);
-    return detail::sampler_of_spec(spec, [&] {
-      (void)g::sampler<double, 1>(td, std::span<const double>(vd), im, detail::spec_names);
-      return channel::tools::gltf::model<Real>(
-          g::sampler<Real, 1>(std::move(t), std::span<const Real>(v), im, detail::spec_names),
-          detail::solver_of(spec, channel::tools::gltf::default_solver));
-    });
+    // The samplers' invalid_input (naming times[i] or values[i]) becomes the spec's error in
+    // channel_model_of_spec, which names the file.
+    (void)g::sampler<double, 1>(td, std::span<const double>(vd), im, detail::spec_names);
+    return channel::tools::gltf::model<Real>(
+        g::sampler<Real, 1>(std::move(t), std::span<const Real>(v), im, detail::spec_names),
+        detail::solver_of(spec, channel::tools::gltf::default_solver));
   }
 
   static int dimension(const field& spec) { return detail::is_gltf_rotation(spec) ? 4 : 2; }
