@@ -6,6 +6,9 @@
 #   scripts/bench.sh --quick   the quick suite and short benchmarks (a few minutes)
 #   scripts/bench.sh --publish full run, then docs/results.md, docs/results/ and the README's figures
 #                              (scripts/publish.py; commit them with the revision they name)
+#   scripts/bench.sh --baseline DIR   then `curvebench compare DIR reports` (DIR: a copy of an
+#                              earlier reports/); every benchmark repeated 5 times, so that a
+#                              slowdown can be told from noise; exits 1 on a confident regression
 # Every output is written under a temporary name and renamed, so an interrupted run never leaves a
 # half-written file. Progress is printed as cases and benchmarks finish.
 set -euo pipefail
@@ -13,18 +16,34 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 
 quick=0
 publish=0
-for arg in "$@"; do
-  case "$arg" in
+baseline=""
+while [[ $# -gt 0 ]]; do
+  case "$1" in
     --quick) quick=1 ;;
     --publish) publish=1 ;;
+    --baseline)
+      if [[ $# -lt 2 || -z "$2" ]]; then echo "bench.sh: --baseline needs a directory" >&2; exit 2; fi
+      baseline="$2"
+      shift ;;
     # The usage is the comment block under the shebang, printed without its "# ".
     -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
-    *) echo "bench.sh: unknown argument '$arg' (allowed: --quick, --publish)" >&2; exit 2 ;;
+    *) echo "bench.sh: unknown argument '$1' (allowed: --quick, --publish, --baseline DIR)" >&2; exit 2 ;;
   esac
+  shift
 done
 if [[ $quick -eq 1 && $publish -eq 1 ]]; then
   echo "bench.sh: --publish needs the full run; drop --quick" >&2
   exit 2
+fi
+
+if [[ -n "$baseline" ]]; then
+  # The run rewrites reports/: a baseline there would be compared with itself, after being replaced.
+  if [[ ! -d "$baseline" ]]; then echo "bench.sh: --baseline $baseline: not a directory" >&2; exit 2; fi
+  if [[ "$(cd "$baseline" && pwd -P)" == "$(mkdir -p "$root/reports" && cd "$root/reports" && pwd -P)" ]]; then
+    echo "bench.sh: --baseline $baseline is reports/ itself, which this run replaces: copy it first" \
+         "(cp -r reports /tmp/base; scripts/bench.sh --baseline /tmp/base)" >&2
+    exit 2
+  fi
 fi
 
 bash "$root/scripts/setup.sh"
@@ -82,9 +101,25 @@ if [[ $quick -eq 1 ]]; then
   bench_args=(--benchmark_min_time=0.05)
   # ~900 (case, method, setting) timings, each joined with its error: short runs, the quick suite.
   case_args=(--quick-suite --benchmark_min_time=0.01)
+  repetitions=1
 else
-  bench_args=(--benchmark_min_time=0.2 --benchmark_repetitions=3 --benchmark_report_aggregates_only=true)
+  bench_args=(--benchmark_min_time=0.2)
   case_args=(--benchmark_min_time=0.03)
+  repetitions=3
+fi
+# Against a baseline, 5 repetitions of every benchmark: the U test of `curvebench compare` needs 4 a
+# side to reach p < 0.05 (3 against 3 never goes below 0.1). Repetitions stay in the JSON (the
+# console shows their aggregates): the report takes their median, compare the repetitions.
+if [[ -n "$baseline" ]]; then
+  repetitions=5
+  case_args+=(--benchmark_repetitions=5 --benchmark_display_aggregates_only=true
+              --benchmark_enable_random_interleaving=true)
+fi
+# Interleaved at random, so that a burst of load on a shared machine spreads over every benchmark's
+# repetitions instead of shifting one benchmark's (tests/data/compare/README.md).
+if [[ $repetitions -gt 1 ]]; then
+  bench_args+=(--benchmark_repetitions=$repetitions --benchmark_display_aggregates_only=true
+               --benchmark_enable_random_interleaving=true)
 fi
 for exe in "$build"/bench/bench_*; do
   [[ -x "$exe" && -f "$exe" ]] || continue
@@ -127,7 +162,16 @@ if [[ $publish -eq 1 ]]; then
   /usr/bin/python3 "$root/scripts/publish.py" --reports "$reports" --docs "$root/docs" --readme "$root/README.md"
 fi
 echo "bench.sh: done in $((SECONDS - start)) s after the build; see reports/REPORT.md"
+regressed=0
+if [[ -n "$baseline" ]]; then
+  echo "bench.sh: compared with the baseline $baseline"
+  "$build/bench/curvebench" compare "$baseline" "$reports" || regressed=$?
+fi
 if [[ $honest -ne 0 ]]; then
   echo "bench.sh: an error estimate does not bound its error (gate on reports/thresholds_full.json above)" >&2
+  exit 1
+fi
+if [[ $regressed -ne 0 ]]; then
+  echo "bench.sh: a confident regression against $baseline (curvebench compare above)" >&2
   exit 1
 fi

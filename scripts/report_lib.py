@@ -138,8 +138,11 @@ def parse_benchmark_name(name, vocab):
 
 def benchmark_row(entry, vocab, program=""):
     """One Google Benchmark entry as a row, checked against the vocabulary (ReportError naming the
-    benchmark otherwise), or None for an aggregate other than the median."""
+    benchmark otherwise), or None for an aggregate other than the median and for one repetition of
+    a repeated benchmark (its median aggregate stands for them; `curvebench compare` reads them)."""
     if entry.get("run_type") == "aggregate" and entry.get("aggregate_name") != "median":
+        return None
+    if entry.get("run_type") == "iteration" and entry.get("repetitions", 1) > 1:
         return None
     name = entry.get("run_name", entry.get("name", "?"))
     if entry.get("error_occurred"):

@@ -9,6 +9,7 @@
 //   curvebench length SPEC.json [--method ...] [--tol T] [--n N] [--panels P] [--steps N]    JSON on stdout
 //   curvebench accuracy [--quick] [--cases DIR] [--out FILE] [--threads N]                 the accuracy runner
 //   curvebench gate [--results FILE] [--thresholds FILE]                                   the CI gate
+//   curvebench compare BASE NEW [--json] [--max-error-growth X] [--max-time-growth X]      two runs compared
 // Method ids are those of harness/vocabulary.hpp (`curvebench list vocabulary --json` prints it all).
 // The case directory defaults to the installed share/curvebench/cases beside the executable
 // (../share/curvebench/cases), else the source tree's bench/cases.
@@ -217,6 +218,8 @@ int run(int argc, char** argv) {
 
   tool::fidelity_args fa;
   auto* fid = tool::add_fidelity(app, fa);
+  tool::compare_args cma;
+  auto* cmp = tool::add_compare(app, cma);
 
   length_args la;
   auto* len = app.add_subcommand(
@@ -357,6 +360,7 @@ int run(int argc, char** argv) {
     }
     if (*chk) return tool::run_check(ca);
     if (*fid) return tool::run_fidelity(fa);
+    if (*cmp) return tool::run_compare(cma);
     if (*len) {
       const auto j = tool::read_spec(la.spec);
       const auto spec = cb::io::root(j, la.spec);

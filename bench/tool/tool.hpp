@@ -4,6 +4,8 @@
 
 #include "tool/parameters.hpp"
 
+#include "harness/compare.hpp"
+
 #include "curvebench/io/spec.hpp"
 
 #include <CLI/CLI.hpp>
@@ -145,5 +147,17 @@ struct fidelity_args {
 CLI::App* add_fidelity(CLI::App& app, fidelity_args& a);
 /// 0 unless --require-agreement is given and a channel disagrees or is newly refused.
 int run_fidelity(const fidelity_args& a);
+
+// ---- compare (compare.cpp) ----------------------------------------------------------------------
+
+struct compare_args {
+  std::string base, now;
+  bool json = false;
+  std::size_t show = 20;  ///< rows of each table shown (the JSON has them all)
+  harness::compare_options options;
+};
+CLI::App* add_compare(CLI::App& app, compare_args& a);
+/// 1 when a regression is confident (harness/compare.hpp), else 0.
+int run_compare(const compare_args& a);
 
 }  // namespace curvebench::tool

@@ -8,7 +8,8 @@
 #      (the subject API's gate, curvebench_add_check's CSV checks), and its benchmark runs under
 #      curvebench's benchmark names;
 #   4. the same example built with -DOWN_BUG=ON (a wrong end tangent) fails: its gate program and
-#      `curvebench check` on its CSV exit 1, and its ctest fails.
+#      `curvebench check` on its CSV exit 1, its ctest fails, and `curvebench compare` of its check
+#      with the stored baseline names the grown error.
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR}/run)
 set(prefix ${WORK_DIR}/prefix)
@@ -47,7 +48,7 @@ run(0 "configuring the example" ${CMAKE_COMMAND} -S ${example} -B ${WORK_DIR}/ex
     -DCMAKE_CXX_COMPILER=${CXX})
 run(0 "building the example" ${CMAKE_COMMAND} --build ${WORK_DIR}/example)
 run(0 "the example's ctest" ${CMAKE_CTEST_COMMAND} --test-dir ${WORK_DIR}/example --output-on-failure)
-foreach(test own_gate own_csv_values own_csv_lengths own_csv_easing)
+foreach(test own_gate own_csv_values own_csv_lengths own_csv_values_baseline own_csv_easing)
   if(NOT out MATCHES "${test} [.]+ +Passed")
     message(FATAL_ERROR "the example's ctest did not run ${test}:\n${out}")
   endif()
@@ -83,3 +84,9 @@ if(NOT out MATCHES "OVER easing.csv: row [0-9]+ [(]t = [0-9.e-]+[)]: error [0-9.
   message(FATAL_ERROR "the check of OWN_BUG's easing did not name a row over its limit:\n${out}")
 endif()
 run(8 "the example's ctest with OWN_BUG" ${CMAKE_CTEST_COMMAND} --test-dir ${WORK_DIR}/bug)
+# Its check against the stored baseline ran (no MAX_ERROR there) and compare named the grown errors.
+run(1 "installed curvebench compare of OWN_BUG's check with the baseline" ${tool} compare
+    ${example}/own_values.baseline.json ${WORK_DIR}/bug/baseline/own_csv_values_baseline.results.json)
+if(NOT out MATCHES "REGRESSION error grew: spec/eval/own_csv_values_baseline")
+  message(FATAL_ERROR "compare did not name OWN_BUG's grown error:\n${out}")
+endif()

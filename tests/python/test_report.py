@@ -77,6 +77,20 @@ class PerOperation(unittest.TestCase):
         r = by_name(rows)["piecewise_cubic/matrix/calls:batch/segments:64/knots:uniform"]
         self.assertAlmostEqual(r["ns_per_op"], 40.0, places=9)  # the median's 2.5e7 items/s
 
+    def test_repetitions_of_a_repeated_benchmark_skipped(self):
+        # bench.sh keeps every repetition in the JSON (--benchmark_display_aggregates_only) for
+        # `curvebench compare`; the report shows the median only.
+        data = copy.deepcopy(fixture("bench_batch.json"))
+        median = data["benchmarks"][2]
+        for i in range(3):
+            rep = copy.deepcopy(median)
+            rep.update(run_type="iteration", repetition_index=i, name=median["run_name"])
+            rep.pop("aggregate_name", None)
+            data["benchmarks"].append(rep)
+        rows = lib.benchmark_rows(data, vocabulary())
+        self.assertEqual(len(rows), 3)
+        self.assertEqual(sum(r["name"] == median["run_name"] for r in rows), 1)
+
     def test_display_names_settings_and_variants(self):
         v = vocabulary()
         r = by_name(rows_of("bench_batch.json"))["piecewise_cubic/power/calls:sorted/segments:64/knots:uniform"]

@@ -57,6 +57,32 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(p.returncode, 1, p.stderr)
         self.assertIn("curvebench: error: writing the standard output failed", p.stderr)
 
+    def test_compare_exits_1_only_on_a_confident_regression(self):
+        # tests/data/compare/README.md: runs of one build pass, the -O0 build and the subject
+        # rounded to 7 digits fail naming what regressed; --json carries every change.
+        data = os.path.join(ROOT, "tests", "data", "compare")
+        same = run("compare", os.path.join(data, "run1"), os.path.join(data, "run2"))
+        self.assertEqual(same.returncode, 0, same.stdout + same.stderr)
+        self.assertIn("records: 75 matched", same.stdout)
+        self.assertIn("compare: no confident regression", same.stdout)
+        slow = run("compare", os.path.join(data, "run1"), os.path.join(data, "slow"))
+        self.assertEqual(slow.returncode, 1, slow.stdout + slow.stderr)
+        self.assertIn("SLOWER bezier/horner/calls:single/degree:3:", slow.stdout)
+        self.assertIn("compare: 4 regressions", slow.stdout)
+        worse = run("compare", os.path.join(data, "check_17_digits.json"), os.path.join(data, "check_7_digits.json"),
+                    "--json")
+        self.assertEqual(worse.returncode, 1, worse.stdout + worse.stderr)
+        j = json.loads(worse.stdout)
+        self.assertEqual(j["regressions"], 2)
+        self.assertEqual({r["key"] for r in j["records"]},
+                         {"arch/eval/my_bezier [smooth] (subject)", "arch/s_of_u/my_bezier [smooth] (subject)"})
+        # Even a 300 % margin fails it: the 7-digit subject's errors grew 1e8 times.
+        loose = run("compare", os.path.join(data, "check_17_digits.json"), os.path.join(data, "check_7_digits.json"),
+                    "--max-error-growth", "3")
+        self.assertEqual(loose.returncode, 1, loose.stdout)
+        self.assert_error(run("compare", self.write("x.json", '{"y": 1}'), os.path.join(data, "run1")),
+                          "x.json: holds neither \"records\"")
+
     def test_at_file_takes_a_byte_order_mark_and_refuses_a_column_named_twice(self):
         bom = os.path.join(self.dir, "bom.csv")
         with open(bom, "wb") as f:

@@ -1,0 +1,241 @@
+// curvebench compare (harness/compare.hpp): the Mann-Whitney U test against a count of every
+// ordering and SciPy's documented values, and the comparison of recorded runs
+// (tests/data/compare/README.md: how each was recorded): repeated runs of one revision pass, a
+// slowed build and a degraded subject fail, naming what regressed.
+#include "harness/compare.hpp"
+
+#include "support/fixtures.hpp"
+
+#include <gmock/gmock.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace h = curvebench::harness;
+using ::testing::HasSubstr;
+
+namespace {
+
+const std::string data_dir = std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/compare/";
+
+/// The two-sided exact p of U for samples a, b (no ties) by listing every way to choose which of
+/// the n1 + n2 ranks belong to a: independent of the implementation's recurrence.
+double p_by_listing(const std::vector<double>& a, const std::vector<double>& b) {
+  const std::size_t n1 = a.size(), n = a.size() + b.size();
+  double u = 0;
+  for (double x : a)
+    for (double y : b) u += x > y ? 1 : 0;
+  std::size_t total = 0, below = 0, above = 0;
+  for (unsigned mask = 0; mask < (1u << n); ++mask) {
+    if (static_cast<std::size_t>(__builtin_popcount(mask)) != n1) continue;
+    // U of this choice: for each rank in a, the ranks below it not in a.
+    double v = 0;
+    for (std::size_t r = 0; r < n; ++r)
+      if (mask & (1u << r))
+        for (std::size_t s = 0; s < r; ++s) v += (mask & (1u << s)) ? 0 : 1;
+    ++total;
+    below += v <= u ? 1 : 0;
+    above += v >= u ? 1 : 0;
+  }
+  return std::min(1.0, 2.0 * static_cast<double>(std::min(below, above)) / static_cast<double>(total));
+}
+
+h::run_results run_of(const std::string& name) { return h::read_run(data_dir + name); }
+
+}  // namespace
+
+TEST(compare, exact_u_test_equals_the_listing_of_every_ordering) {
+  // Samples of 2 to 6 values a side, interleaved in several ways; the listing counts C(n1+n2, n1)
+  // orderings. Equal as doubles up to the division (both are k / C exactly rounded once).
+  const std::vector<std::vector<double>> pool = {
+      {1, 4, 9}, {2, 3, 10, 11}, {5, 6, 7, 8, 12}, {0.5, 13, 14, 15, 16, 17}};
+  for (const auto& a : pool)
+    for (const auto& b : pool) {
+      if (&a == &b) continue;
+      EXPECT_DOUBLE_EQ(h::mann_whitney_p(a, b), p_by_listing(a, b));
+    }
+  // Complete separation of 5 and 5: 2 of the 252 orderings are as extreme.
+  const std::vector<double> low = {1, 2, 3, 4, 5}, high = {6, 7, 8, 9, 10};
+  EXPECT_DOUBLE_EQ(h::mann_whitney_p(low, high), 2.0 / 252.0);
+  EXPECT_DOUBLE_EQ(h::mann_whitney_min_p(5, 5), 2.0 / 252.0);
+  EXPECT_DOUBLE_EQ(h::mann_whitney_min_p(3, 3), 0.1);  // 3 against 3 never reaches 0.05
+}
+
+TEST(compare, u_test_against_scipys_documented_example) {
+  // scipy.stats.mannwhitneyu's documentation (SciPy 1.11): males [19, 22, 16, 29, 24] against
+  // females [20, 11, 17, 12]: U1 = 17, exact two-sided p = 0.1111 (1/9: 14 of the 126 orderings).
+  const std::vector<double> males = {19, 22, 16, 29, 24}, females = {20, 11, 17, 12};
+  EXPECT_NEAR(h::mann_whitney_p(males, females), 0.1111, 5e-5);
+  EXPECT_DOUBLE_EQ(h::mann_whitney_p(males, females), 14.0 / 126.0);
+}
+
+TEST(compare, normal_approximation_with_ties_is_symmetric_and_near_the_exact_tail) {
+  // 20 against 20, no ties: the exact distribution and the normal approximation (continuity
+  // corrected) agree to about 1e-3 in the tail; the implementation uses the exact one here, so the
+  // approximation is checked through a tied copy (one tie moves U by 1/2 and p by less than 0.01).
+  std::vector<double> a(20), b(20);
+  std::iota(a.begin(), a.end(), 0.0);
+  std::iota(b.begin(), b.end(), 6.0);  // shifted by 6: ties from 6 to 19 (14 ties)
+  std::vector<double> b_untied = b;
+  for (double& x : b_untied) x += 0.5;  // the same order without ties (a value between)
+  const double tied = h::mann_whitney_p(a, b), untied = h::mann_whitney_p(a, b_untied);
+  EXPECT_GT(tied, 0.0);
+  EXPECT_LT(std::abs(tied - untied), 0.05) << tied << " " << untied;
+  EXPECT_DOUBLE_EQ(h::mann_whitney_p(a, b), h::mann_whitney_p(b, a));
+  const std::vector<double> same(7, 3.0);
+  EXPECT_EQ(h::mann_whitney_p(same, same), 1.0);  // every value equal: no evidence either way
+  EXPECT_EQ(h::mann_whitney_p({}, same), 1.0);
+}
+
+TEST(compare, repeated_runs_of_one_revision_pass) {
+  // Four runs of one build, one after the other (10 interleaved repetitions each): the accuracy
+  // records of two of them identical, the medians moving by up to 46 % between runs (this VM's
+  // drift, tests/data/compare/README.md), under the default 50 % margin. Every ordered pair.
+  for (int a = 1; a <= 4; ++a)
+    for (int b = 1; b <= 4; ++b) {
+      if (a == b) continue;
+      const h::comparison c = h::compare_runs(run_of("run" + std::to_string(a)), run_of("run" + std::to_string(b)));
+      EXPECT_EQ(c.regressions(), 0u) << a << " vs " << b << ": " << h::to_json(c).dump(1);
+      EXPECT_EQ(c.times.size(), 4u);
+      for (const auto& t : c.times) EXPECT_TRUE(t.testable) << t.name;
+      EXPECT_LT(std::abs(c.drift), 0.5) << a << " vs " << b;
+    }
+  const h::comparison c = h::compare_runs(run_of("run1"), run_of("run2"));
+  EXPECT_EQ(c.records_matched, 75u);  // 58 records and 17 of the peer libraries
+  EXPECT_TRUE(c.records.empty());     // no error moved at all
+  EXPECT_TRUE(c.records_removed.empty() && c.records_added.empty());
+}
+
+TEST(compare, a_slowed_build_fails_naming_the_benchmarks) {
+  // The same benchmarks built at -O0: every one 100 to 400 times slower, p ~ 1e-5 (Holm: x4).
+  const h::comparison c = h::compare_runs(run_of("run1"), run_of("slow"));
+  ASSERT_EQ(c.times.size(), 4u);
+  for (const auto& t : c.times) {
+    EXPECT_GT(t.change, 50.0) << t.name;
+    EXPECT_LT(t.p_holm, 0.001) << t.name;
+    EXPECT_TRUE(t.slower) << t.name;
+  }
+  EXPECT_EQ(c.regressions(), 4u);
+  EXPECT_EQ(c.records_removed.size(), 75u);  // slow/ holds no accuracy records: removed, not a regression
+  // The other way round it is faster, which is no regression.
+  const h::comparison back = h::compare_runs(run_of("slow"), run_of("run1"));
+  EXPECT_EQ(back.regressions(), 0u);
+  for (const auto& t : back.times) EXPECT_TRUE(t.faster && !t.slower) << t.name;
+}
+
+TEST(compare, holm_correction_over_many_benchmarks) {
+  // 20 benchmarks, each 10 against 10 repetitions: one doubled (complete separation, p = 2 /
+  // C(20, 10) = 1.1e-5, Holm x20 = 2.2e-4), one whose raw p (0.0288) passes alpha alone but not
+  // corrected (x19 = 0.55).
+  h::run_results base, now;
+  for (int i = 0; i < 20; ++i) {
+    std::vector<double> b(10), n(10);
+    for (int r = 0; r < 10; ++r) b[r] = 100 + r, n[r] = 100 + r + 0.5;  // interleaved: no change
+    if (i == 0)
+      for (int r = 0; r < 10; ++r) n[r] = 200 + r;  // doubled
+    if (i == 1)
+      for (int r = 0; r < 10; ++r) n[r] = 103.5 + r;  // U = 79 of 100: exact p = 0.0288
+    base.benchmarks.push_back({"BM_" + std::to_string(i), "b.json", b, false});
+    now.benchmarks.push_back({"BM_" + std::to_string(i), "n.json", n, false});
+  }
+  const h::comparison c = h::compare_runs(base, now);
+  EXPECT_TRUE(c.times[0].slower);
+  EXPECT_LT(c.times[0].p_holm, 1e-3);
+  EXPECT_NEAR(c.times[1].p, 0.0288, 1e-4);
+  EXPECT_GE(c.times[1].p_holm, 0.05);
+  EXPECT_FALSE(c.times[1].slower || c.times[1].significant);
+  EXPECT_EQ(c.regressions(), 1u);
+}
+
+TEST(compare, a_grown_error_fails_and_a_shrunk_one_improves) {
+  // check --json of one subject's values written with 17 digits, then with 7 (a float-like subject).
+  const h::comparison c = h::compare_runs(run_of("check_17_digits.json"), run_of("check_7_digits.json"));
+  ASSERT_GT(c.regressions(), 0u);
+  for (const auto& r : c.records) {
+    EXPECT_TRUE(r.error_grew) << r.key;
+    EXPECT_GT(r.new_error, 1e3 * r.base_error) << r.key;
+  }
+  const h::comparison back = h::compare_runs(run_of("check_7_digits.json"), run_of("check_17_digits.json"));
+  EXPECT_EQ(back.regressions(), 0u);
+  ASSERT_FALSE(back.records.empty());
+  for (const auto& r : back.records) EXPECT_TRUE(r.improved) << r.key;
+}
+
+TEST(compare, margins_decide_and_bounds_lost_always_regress) {
+  auto rec = [](double error, double estimate) {
+    return curvebench::harness::record::measured("c", "g", "length", "subdivision", "tol=1e-6", error, estimate, 10,
+                                                 "converged");
+  };
+  h::run_results base, now;
+  base.path = "base", now.path = "new";
+  const auto add = [](h::run_results& r, const curvebench::harness::record& x) {
+    r.records.push_back(x);
+    r.record_where.push_back("r[" + std::to_string(r.records.size() - 1) + "]");
+  };
+  add(base, rec(1e-9, 1e-8));
+  add(now, rec(1.05e-9, 1e-8));  // +5 %: within the default 10 %
+  EXPECT_EQ(h::compare_runs(base, now).regressions(), 0u);
+  h::compare_options strict;
+  strict.max_error_growth = 0.01;
+  EXPECT_EQ(h::compare_runs(base, now, strict).regressions(), 1u);
+  // Rounding-level errors: 2e-16 -> 8e-16 is under the relative floor of 1e-15.
+  h::run_results b2, n2;
+  add(b2, rec(2e-16, 1e-8));
+  add(n2, rec(8e-16, 1e-8));
+  EXPECT_EQ(h::compare_runs(b2, n2).regressions(), 0u);
+  // An estimate that stops bounding the error regresses whatever the growth.
+  h::run_results b3, n3;
+  add(b3, rec(1e-9, 2e-9));
+  add(n3, rec(1.01e-9, 1e-9));
+  const h::comparison c3 = h::compare_runs(b3, n3);
+  ASSERT_EQ(c3.regressions(), 1u);
+  EXPECT_TRUE(c3.records[0].bound_lost);
+  // A finite error that became null: no longer measured.
+  h::run_results b4, n4;
+  add(b4, rec(1e-9, 2e-9));
+  add(n4, rec(std::nan(""), 2e-9));
+  ASSERT_EQ(h::compare_runs(b4, n4).regressions(), 1u);
+  EXPECT_TRUE(h::compare_runs(b4, n4).records[0].unmeasured);
+}
+
+TEST(compare, too_few_repetitions_warn_and_never_fail) {
+  h::run_results base, now;
+  base.benchmarks.push_back({"BM_x", "b.json", {10, 11, 12}, false});
+  now.benchmarks.push_back({"BM_x", "n.json", {30, 31, 32}, false});  // 3x slower, but 3 against 3
+  const h::comparison c = h::compare_runs(base, now);
+  EXPECT_EQ(c.regressions(), 0u);
+  ASSERT_EQ(c.times.size(), 1u);
+  EXPECT_FALSE(c.times[0].testable);
+  EXPECT_NEAR(c.times[0].change, 31.0 / 11.0 - 1, 1e-12);  // the medians
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_THAT(c.warnings[0], HasSubstr("at least 4 a side"));
+}
+
+TEST(compare, bad_inputs_are_named) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "curvebench_test_compare";
+  fs::create_directories(dir);
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  const auto msg = [](const std::string& path) {
+    return curvebench::testing::message_of([&] { (void)h::read_run(path); });
+  };
+  EXPECT_THAT(msg(write("neither.json", "{\"x\": 1}")), HasSubstr("neither \"records\""));
+  EXPECT_THAT(msg(write("bad_time.json", R"({"benchmarks": [{"name": "BM_a", "cpu_time": "fast"}]})")),
+              HasSubstr("bad_time.json: benchmarks[0].cpu_time: expected a number"));
+  EXPECT_THAT(msg(write("bad_unit.json", R"({"benchmarks": [{"name": "BM_a", "cpu_time": 1, "time_unit": "h"}]})")),
+              HasSubstr("benchmarks[0].time_unit: \"h\" is not ns, us, ms or s"));
+  EXPECT_THAT(msg(write("bad_record.json", R"({"records": [{"case": 3}]})")), HasSubstr("records[0].case"));
+  const fs::path empty = dir / "empty_dir";
+  fs::create_directories(empty);
+  EXPECT_THAT(msg(empty.string()), HasSubstr("no accuracy.json and no bench_*.json"));
+  fs::remove_all(dir);
+}
