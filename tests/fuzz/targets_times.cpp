@@ -70,7 +70,12 @@ std::vector<double> parse_option(std::string_view line) {
 
 void evaluate(const io::field& spec, const std::vector<double>& times) {
   const std::size_t n = std::min(times.size(), max_evaluated);
-  if (io::is_gltf_rotation(spec)) {
+  // Reading "tool" and "path" may refuse the spec already (a tool that is not a string, a path
+  // that is neither weights nor rotation): a documented refusal, as the tool reports it.
+  bool rotation = false;
+  if (!run_step(name, "is_gltf_rotation", domain_errors::violation, [&] { rotation = io::is_gltf_rotation(spec); }))
+    return;
+  if (rotation) {
     std::optional<channel::gltf::rotation_sampler<double>> r;
     if (!run_step(name, "rotation_of_spec", domain_errors::violation,
                   [&] { r.emplace(io::rotation_of_spec<double>(spec)); }))
