@@ -234,6 +234,21 @@ TEST(compare, bad_inputs_are_named) {
   EXPECT_THAT(msg(write("bad_unit.json", R"({"benchmarks": [{"name": "BM_a", "cpu_time": 1, "time_unit": "h"}]})")),
               HasSubstr("benchmarks[0].time_unit: \"h\" is not ns, us, ms or s"));
   EXPECT_THAT(msg(write("bad_record.json", R"({"records": [{"case": 3}]})")), HasSubstr("records[0].case"));
+  EXPECT_THAT(msg(write("negative.json", R"({"records": [{"case": "c", "error": -1}]})")),
+              HasSubstr("negative.json: records[0].error: -1 is negative"));
+  // A record written twice: which one to match would depend on the file's order.
+  const std::string twice =
+      write("twice.json", R"({"records": [{"case": "c", "quantity": "length", "method": "gauss", "error": 1e-9},
+                                          {"case": "c", "quantity": "length", "method": "gauss", "error": 1.0}]})");
+  const std::string once = write("once.json", R"({"records": [{"case": "c", "quantity": "length", "method": "gauss",
+                                                               "error": 1e-9}]})");
+  const auto compared = [&](const std::string& b, const std::string& n) {
+    return curvebench::testing::message_of([&] { (void)h::compare_runs(h::read_run(b), h::read_run(n)); });
+  };
+  EXPECT_THAT(compared(once, twice), HasSubstr("twice.json: records[1]: the same record as"));
+  EXPECT_THAT(compared(twice, once), HasSubstr("twice.json: records[1]: the same record as"));
+  // Nothing in common: refused, not passed.
+  EXPECT_THAT(compared(once, data_dir + "slow"), HasSubstr("share no record and no benchmark: nothing was compared"));
   const fs::path empty = dir / "empty_dir";
   fs::create_directories(empty);
   EXPECT_THAT(msg(empty.string()), HasSubstr("no accuracy.json and no bench_*.json"));

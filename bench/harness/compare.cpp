@@ -9,9 +9,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <limits>
 #include <map>
 #include <set>
+#include <sstream>
 #include <utility>
 
 namespace curvebench::harness {
@@ -82,7 +84,12 @@ void read_records(const nlohmann::json& j, const std::string& file, const char* 
   if (!records.is_array()) throw invalid_input(file + ": \"" + key + "\" is not an array");
   for (std::size_t i = 0; i < records.size(); ++i) {
     const std::string where = file + ": " + key + "[" + std::to_string(i) + "]";
-    out.records.push_back(read_record(records[i], where));
+    record r = read_record(records[i], where);
+    // An error or estimate is a size: negative is no measurement (null is how a record says none).
+    for (const auto& [name, v] : {std::pair{"error", r.error}, std::pair{"estimate", r.estimate}})
+      if (std::isfinite(v) && v < 0)
+        throw invalid_input(where + "." + name + ": " + number(v) + " is negative (an error is >= 0, or null)");
+    out.records.push_back(std::move(r));
     out.record_where.push_back(where);
   }
 }
@@ -248,20 +255,28 @@ comparison compare_runs(const run_results& base, const run_results& now, const c
   c.base = base.path;
   c.now = now.path;
   c.options = o;
-  // Records: the k-th record of a key in one run against the k-th in the other.
-  std::map<std::string, std::vector<std::size_t>> base_keys;
-  for (std::size_t i = 0; i < base.records.size(); ++i) base_keys[key_of(base.records[i])].push_back(i);
-  std::map<std::string, std::size_t> used;
+  // Records by their key, which is unique in a run (a key written twice would leave the match to
+  // the order of the file: refused).
+  const auto keys_of = [](const run_results& r) {
+    std::map<std::string, std::size_t> keys;
+    for (std::size_t i = 0; i < r.records.size(); ++i) {
+      const auto [it, fresh] = keys.try_emplace(key_of(r.records[i]), i);
+      if (!fresh)
+        throw invalid_input(r.record_where[i] + ": the same record as " + r.record_where[it->second] + " (" +
+                            it->first + "): a run holds each record once, so compare cannot tell which to match");
+    }
+    return keys;
+  };
+  const std::map<std::string, std::size_t> base_keys = keys_of(base), now_keys = keys_of(now);
   for (std::size_t i = 0; i < now.records.size(); ++i) {
     const record& n = now.records[i];
     const std::string key = key_of(n);
-    auto it = base_keys.find(key);
-    std::size_t& k = used[key];
-    if (it == base_keys.end() || k >= it->second.size()) {
+    const auto it = base_keys.find(key);
+    if (it == base_keys.end()) {
       c.records_added.push_back(key);
       continue;
     }
-    const record& b = base.records[it->second[k++]];
+    const record& b = base.records[it->second];
     ++c.records_matched;
     record_change ch;
     ch.key = key;
@@ -279,8 +294,8 @@ comparison compare_runs(const run_results& base, const run_results& now, const c
     ch.bound_lost = b.bounded == true && n.bounded == false;
     if (ch.regression() || ch.improved) c.records.push_back(std::move(ch));
   }
-  for (const auto& [key, indices] : base_keys)
-    for (std::size_t k = used.count(key) ? used[key] : 0; k < indices.size(); ++k) c.records_removed.push_back(key);
+  for (const auto& [key, index] : base_keys)
+    if (!now_keys.count(key)) c.records_removed.push_back(key);
   // Benchmarks by run name.
   std::map<std::string, const bench_times*> base_bench;
   for (const bench_times& b : base.benchmarks) base_bench[b.name] = &b;
@@ -349,7 +364,9 @@ comparison compare_runs(const run_results& base, const run_results& now, const c
                          " a side: --benchmark_repetitions); their changes are shown, never counted as regressions");
   }
   if (c.records_matched == 0 && c.times.empty())
-    c.warnings.push_back("nothing matched: the two runs share no record and no benchmark");
+    throw invalid_input(base.path + " and " + now.path +
+                        " share no record and no benchmark: nothing was compared (two runs of the same kind of "
+                        "results are needed: accuracy or check results, or benchmark JSON)");
   return c;
 }
 

@@ -3,6 +3,7 @@
 #include "tool/tool.hpp"
 
 #include "harness/compare.hpp"
+#include "harness/csv.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,9 +22,13 @@ std::string g(double x, int digits = 3) {
   return os.str();
 }
 
+/// A change as a percentage, or as a factor once it passes 100x ("x2.1e+03", not 200000.0%).
 std::string percent(double change) {
   std::ostringstream os;
-  os << std::showpos << std::fixed << std::setprecision(1) << 100 * change << "%";
+  if (std::isfinite(change) && change >= 99)
+    os << "x" << std::setprecision(3) << change + 1;
+  else
+    os << std::showpos << std::fixed << std::setprecision(1) << 100 * change << "%";
   return os.str();
 }
 
@@ -34,12 +39,11 @@ std::string time_line(const harness::time_change& t) {
 }
 
 std::string record_line(const harness::record_change& r) {
-  std::string why;
+  std::string why;  // a regression's kind; an improvement's table label says it
   if (r.error_grew) why = "error grew";
   if (r.unmeasured) why = "no longer measured";
   if (r.bound_lost) why += std::string(why.empty() ? "" : ", ") + "estimate no longer bounds the error";
-  if (why.empty()) why = "improved";
-  std::string line = why + ": " + r.key + ": error " + g(r.base_error) + " -> " + g(r.new_error);
+  std::string line = (why.empty() ? "" : why + ": ") + r.key + ": error " + g(r.base_error) + " -> " + g(r.new_error);
   if (r.base_status != r.new_status) line += ", status " + r.base_status + " -> " + r.new_status;
   return line + " (" + r.where + ")";
 }
@@ -85,8 +89,15 @@ CLI::App* add_compare(CLI::App& app, compare_args& a) {
          "a benchmark regresses when its median time grew by more than X (default 0.5: a shared machine drifts "
          "tens of percent between runs) with p < --alpha after Holm's correction")
       ->check(non_negative_finite());
-  cmp->add_option("--alpha", a.options.alpha, "the U test's significance level (default 0.05)")
-      ->check(CLI::Range(1e-12, 1.0));
+  cmp->add_option("--alpha", a.options.alpha, "the U test's significance level, in [1e-12, 1] (default 0.05)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            double v = 0;
+            return harness::parse_finite(text, v) && v >= 1e-12 && v <= 1
+                       ? ""
+                       : "\"" + text + "\" is not a level in [1e-12, 1]";
+          },
+          "LEVEL"));
   cmp->add_option("--show", a.show, "rows shown per table (default 20; --json has them all)")
       ->check(CLI::Range(std::size_t(0), std::size_t(1000000)));
   cmp->footer(example("cp -r reports /tmp/base && scripts/bench.sh && curvebench compare /tmp/base reports") +

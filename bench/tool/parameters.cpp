@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <string_view>
 
 namespace curvebench::tool {
@@ -133,7 +134,11 @@ std::vector<parameter> parse_range(const std::string& text, const std::string& o
   std::vector<parameter> out;
   for (std::size_t i = 0; i <= n; ++i) {
     double u = grid_value(da, ds, a, step, i);
-    if (i == n && std::abs(u - b) <= 1e-9 * step) u = b;
+    // The last value is B when B lies on the grid up to the rounding of the grid's arithmetic (a
+    // few ulps of its magnitudes), not up to a fraction of the step: with a step past B - A (0:1:1e9)
+    // the grid is {A}, and B, one billionth of a step away, is not on it.
+    const double rounding = 16 * std::numeric_limits<double>::epsilon() * std::max({std::abs(a), std::abs(b), step});
+    if (i == n && std::abs(u - b) <= rounding) u = b;
     out.push_back({u, option + ": value " + std::to_string(i + 1)});
   }
   return out;
