@@ -322,6 +322,17 @@ TEST(check, lengths_against_the_polylines_exact_segments) {
               HasSubstr("no column length"));
 }
 
+// A claimed length of 1e300 is an error of 9.1e298 of L: its RMS is a number, not an overflowed
+// square (the sweep of stop 44 found `rms inf`, null in JSON, with exit 0).
+TEST(check, the_rms_of_huge_errors_does_not_overflow) {
+  const spec_doc s(bent);
+  const check_result r = run_check(s.f, check_kind::lengths, parse_csv("u0,u1,length\n0,2,1e300\n0,2,11\n", "l.csv"));
+  const double e = (1e300 - 11) / 11;
+  EXPECT_DOUBLE_EQ(r.summary.max, e);
+  EXPECT_NEAR(r.summary.rms, e / std::sqrt(2.0), 1e-12 * e);  // sqrt((e^2 + 0) / 2)
+  EXPECT_TRUE(to_json(r)["summary"]["rms"].is_number());
+}
+
 TEST(check, inverse_against_the_polylines_exact_u_of_s) {
   const spec_doc s(bent);
   const double du = 0.0009765625;  // 2^-10: on the second segment s changes by 6 du

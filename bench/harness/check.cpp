@@ -110,18 +110,21 @@ void warn_digits(check_result& res, const csv_table& t, const std::vector<std::s
 void summarize(check_result& res, std::size_t worst) {
   check_summary& s = res.summary;
   s.rows = res.rows.size();
-  double sq = 0, sq_rel = 0;
   for (const check_row& r : res.rows) {
     s.max = std::max(s.max, r.error);
     s.max_relative = std::max(s.max_relative, r.relative);
     if (!std::isnan(s.max_absolute) && !(r.absolute <= s.max_absolute)) s.max_absolute = r.absolute;  // NaN wins
-    sq += r.error * r.error;
-    sq_rel += r.relative * r.relative;
   }
-  if (s.rows > 0) {
-    s.rms = std::sqrt(sq / static_cast<double>(s.rows));
-    s.rms_relative = std::sqrt(sq_rel / static_cast<double>(s.rows));
-  }
+  // Root mean squares scaled by the largest value, so that errors past 1e154 (a claimed length of
+  // 1e300) do not overflow in their squares: max x sqrt(mean((x / max)^2)).
+  const auto rms = [&](double largest, auto value) {
+    if (s.rows == 0 || !(largest > 0) || !std::isfinite(largest)) return largest > 0 ? largest : 0.0;
+    double sq = 0;
+    for (const check_row& r : res.rows) sq += (value(r) / largest) * (value(r) / largest);
+    return largest * std::sqrt(sq / static_cast<double>(s.rows));
+  };
+  s.rms = rms(s.max, [](const check_row& r) { return r.error; });
+  s.rms_relative = rms(s.max_relative, [](const check_row& r) { return r.relative; });
   std::vector<std::size_t> order(res.rows.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),
