@@ -69,7 +69,8 @@ TEST(gate, a_rule_may_name_one_setting) {
   EXPECT_EQ(breaches[0].rule, "length/forward_difference/*/steps=64");
   EXPECT_EQ(breaches[0].message, "error 0.0002 > allowed 0.0001");
   r["records"][2]["setting"] = "steps=32";  // the named setting vanished
-  EXPECT_EQ(check_gate(r, thresholds()).back().message, "rule matched no result record (method or case group missing)");
+  EXPECT_EQ(check_gate(r, thresholds()).back().message,
+            "rule matched no result record: none has setting \"steps=64\"");  // the field that matches nothing
 }
 
 TEST(gate, missing_method_or_nan_error_is_a_breach) {

@@ -75,6 +75,29 @@ inline bool matches(const nlohmann::json& rule, const record& r) {
   }
   return true;
 }
+inline const std::string& field_of(const nlohmann::json& row, std::string_view key) {
+  static const std::string none;
+  const auto it = row.find(std::string(key));
+  return it != row.end() && it->is_string() ? it->template get_ref<const std::string&>() : none;
+}
+/// Why a rule matched none of `rows` (`what`: "result record", "observed order"): the first of its
+/// fields that no row has, else that no row has them all together.
+template <class Rows>
+std::string unmatched(const nlohmann::json& rule, const Rows& rows, const std::string& what) {
+  for (const char* key : {"quantity", "method", "group", "setting"}) {
+    const std::string want = rule.value(key, std::string("*"));
+    if (want == "*") continue;
+    bool any = false;
+    for (const auto& row : rows) any = any || field_of(row, key) == want;
+    if (!any)
+      return "rule matched no " + what + ": none has " + key + " \"" + want + "\"" +
+             (what == "observed order" && std::string_view(key) != "group"
+                  ? " (orders are fitted per case, quantity and method, for methods with a theory order; they have "
+                    "no setting)"
+                  : "");
+  }
+  return "rule matched no " + what + ": none has its quantity, method, group and setting together";
+}
 inline std::string rule_name(const nlohmann::json& rule) {
   std::string name = rule.value("quantity", std::string("*")) + "/" + rule.value("method", std::string("*")) + "/" +
                      rule.value("group", std::string("*"));
@@ -233,8 +256,7 @@ inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohm
                          "estimate " + detail::number(r.estimate) + " < true error " + detail::number(r.error) +
                              " (estimate not honest)"});
       }
-      if (matched_records == 0)
-        out.push_back({name, "-", "rule matched no result record (method or case group missing)"});
+      if (matched_records == 0) out.push_back({name, "-", detail::unmatched(rule, records, "result record")});
     }
     if (rule.contains("min_order")) {
       const double allowed = rule["min_order"].get<double>();
@@ -246,8 +268,7 @@ inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohm
           out.push_back({name, "case " + o.value("case", std::string("?")),
                          "observed order " + detail::number(observed) + " < allowed " + detail::number(allowed)});
       }
-      if (matched_orders == 0)
-        out.push_back({name, "-", "rule matched no observed order (method or case group missing)"});
+      if (matched_orders == 0) out.push_back({name, "-", detail::unmatched(rule, orders, "observed order")});
     }
   }
   return out;
