@@ -141,8 +141,8 @@ TEST(compare, holm_correction_over_many_benchmarks) {
       for (int r = 0; r < 10; ++r) n[r] = 200 + r;  // doubled
     if (i == 1)
       for (int r = 0; r < 10; ++r) n[r] = 103.5 + r;  // U = 79 of 100: exact p = 0.0288
-    base.benchmarks.push_back({"BM_" + std::to_string(i), "b.json", b, false});
-    now.benchmarks.push_back({"BM_" + std::to_string(i), "n.json", n, false});
+    base.benchmarks.push_back({"BM_" + std::to_string(i), "b.json", b});
+    now.benchmarks.push_back({"BM_" + std::to_string(i), "n.json", n});
   }
   const h::comparison c = h::compare_runs(base, now);
   EXPECT_TRUE(c.times[0].slower);
@@ -206,8 +206,8 @@ TEST(compare, margins_decide_and_bounds_lost_always_regress) {
 
 TEST(compare, too_few_repetitions_warn_and_never_fail) {
   h::run_results base, now;
-  base.benchmarks.push_back({"BM_x", "b.json", {10, 11, 12}, false});
-  now.benchmarks.push_back({"BM_x", "n.json", {30, 31, 32}, false});  // 3x slower, but 3 against 3
+  base.benchmarks.push_back({"BM_x", "b.json", {10, 11, 12}});
+  now.benchmarks.push_back({"BM_x", "n.json", {30, 31, 32}});  // 3x slower, but 3 against 3
   const h::comparison c = h::compare_runs(base, now);
   EXPECT_EQ(c.regressions(), 0u);
   ASSERT_EQ(c.times.size(), 1u);
@@ -249,6 +249,13 @@ TEST(compare, bad_inputs_are_named) {
   EXPECT_THAT(compared(twice, once), HasSubstr("twice.json: records[1]: the same record as"));
   // Nothing in common: refused, not passed.
   EXPECT_THAT(compared(once, data_dir + "slow"), HasSubstr("share no record and no benchmark: nothing was compared"));
+  // One benchmark in two files of a run: the message names both files.
+  const fs::path two = dir / "two_files";
+  fs::create_directories(two);
+  for (const char* f : {"bench_a.json", "bench_b.json"})
+    std::ofstream(two / f) << R"({"benchmarks": [{"name": "BM_a", "cpu_time": 1}]})";
+  EXPECT_THAT(msg(two.string()),
+              HasSubstr("bench_b.json: benchmark BM_a is in " + (two / "bench_a.json").string() + " of this run too"));
   const fs::path empty = dir / "empty_dir";
   fs::create_directories(empty);
   EXPECT_THAT(msg(empty.string()), HasSubstr("no accuracy.json and no bench_*.json"));

@@ -1,5 +1,6 @@
 #include "harness/compare.hpp"
 
+#include "harness/check_detail.hpp"
 #include "harness/files.hpp"
 #include "harness/vocabulary.hpp"
 
@@ -9,11 +10,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <limits>
 #include <map>
 #include <set>
-#include <sstream>
 #include <utility>
 
 namespace curvebench::harness {
@@ -52,13 +51,6 @@ std::vector<double> u_counts(std::size_t n1, std::size_t n2) {
 
 double normal_two_sided(double z) { return std::erfc(z / std::sqrt(2.0)); }
 
-std::string number(double x) {
-  if (!std::isfinite(x)) return "null";
-  std::ostringstream os;
-  os << std::setprecision(3) << x;
-  return os.str();
-}
-
 /// The rounding level of a quantity's error unit (see the header).
 double floor_of(const std::string& quantity, const compare_options& o) {
   namespace q = vocab::quantities;
@@ -88,7 +80,7 @@ void read_records(const nlohmann::json& j, const std::string& file, const char* 
     // An error or estimate is a size: negative is no measurement (null is how a record says none).
     for (const auto& [name, v] : {std::pair{"error", r.error}, std::pair{"estimate", r.estimate}})
       if (std::isfinite(v) && v < 0)
-        throw invalid_input(where + "." + name + ": " + number(v) + " is negative (an error is >= 0, or null)");
+        throw invalid_input(where + "." + name + ": " + detail::num(v, 3) + " is negative (an error is >= 0, or null)");
     out.records.push_back(std::move(r));
     out.record_where.push_back(where);
   }
@@ -127,24 +119,24 @@ void read_benchmarks(const nlohmann::json& j, const std::string& file, run_resul
     if (!std::isfinite(scale))
       throw invalid_input(where + ".time_unit: \"" + validate::visible(unit) + "\" is not ns, us, ms or s");
     const double ns = e["cpu_time"].get<double>() * scale;
-    if (!std::isfinite(ns) || ns < 0) throw invalid_input(where + ".cpu_time: " + number(ns) + " ns is not a time");
+    if (!std::isfinite(ns) || ns < 0)
+      throw invalid_input(where + ".cpu_time: " + detail::num(ns, 3) + " ns is not a time");
     auto& table = type == "aggregate" ? medians : iterations;
     auto [it, fresh] = table.try_emplace(name);
     if (fresh) {
       it->second.name = name;
       it->second.file = file;
-      it->second.aggregate = type == "aggregate";
       if (!iterations.count(name) || !medians.count(name)) order.push_back(name);
     } else if (type == "aggregate") {
       throw invalid_input(where + ": the median of " + name + " is given twice");
     }
     it->second.ns.push_back(ns);
   }
-  std::set<std::string> seen;
-  for (const auto& b : out.benchmarks) seen.insert(b.name);
+  std::map<std::string, std::string> seen;  // name -> the file that gave it
+  for (const auto& b : out.benchmarks) seen.emplace(b.name, b.file);
   for (const std::string& name : order) {
-    if (!seen.insert(name).second)
-      throw invalid_input(file + ": benchmark " + name + " is in another file of this run too");
+    if (const auto [it, fresh] = seen.emplace(name, file); !fresh)
+      throw invalid_input(file + ": benchmark " + name + " is in " + it->second + " of this run too");
     out.benchmarks.push_back(iterations.count(name) ? iterations[name] : medians[name]);
   }
 }
@@ -159,7 +151,6 @@ void read_file_into(const std::string& path, run_results& out) {
   // accuracy.json's records of the peer libraries (GSL, Boost, ...): their errors compared too.
   if (j.contains("peer_records")) read_records(j, path, "peer_records", out);
   if (j.contains("benchmarks")) read_benchmarks(j, path, out);
-  out.files.push_back(path);
 }
 
 }  // namespace
@@ -359,7 +350,7 @@ comparison compare_runs(const run_results& base, const run_results& now, const c
     std::size_t need = 2;
     while (need < 1000 && mann_whitney_min_p(need, need) >= o.alpha) ++need;
     c.warnings.push_back(std::to_string(untestable) + " of " + std::to_string(c.times.size()) +
-                         " benchmarks have too few repetitions for the U test to reach p < " + number(o.alpha) +
+                         " benchmarks have too few repetitions for the U test to reach p < " + detail::num(o.alpha, 3) +
                          " (at least " + std::to_string(need) +
                          " a side: --benchmark_repetitions); their changes are shown, never counted as regressions");
   }

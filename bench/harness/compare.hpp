@@ -54,14 +54,12 @@ struct compare_options {
 struct bench_times {
   std::string name;        ///< the run name (without the aggregate suffix)
   std::string file;        ///< the file it came from
-  std::vector<double> ns;  ///< cpu time per iteration of each repetition, ns
-  bool aggregate = false;  ///< the file held aggregates only: ns is the one median
+  std::vector<double> ns;  ///< cpu time per iteration of each repetition (aggregates only: the median), ns
 };
 
 /// A run: its records and its benchmarks, and the files they came from.
 struct run_results {
   std::string path;
-  std::vector<std::string> files;
   std::vector<record> records;
   std::vector<std::string> record_where;  ///< "accuracy.json: records[3]" per record
   std::vector<bench_times> benchmarks;

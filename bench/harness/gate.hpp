@@ -57,28 +57,25 @@ struct breach {
 };
 
 namespace detail {
-inline bool matches(const nlohmann::json& rule, const nlohmann::json& record) {
-  for (const char* key : {"quantity", "method", "group", "setting"}) {
-    const std::string want = rule.value(key, std::string("*"));
-    if (want != "*" && record.value(key, std::string()) != want) return false;
-  }
-  return true;
-}
-/// The record's field `key` (quantity, method, group, setting) as a rule matches it.
+/// A row's field `key` (quantity, method, group, setting) as a rule matches it: a record's, or an
+/// observed order's (a JSON row, its fields type-checked by read_results; missing is "").
 inline const std::string& field_of(const record& r, std::string_view key) {
   return key == "quantity" ? r.quantity : key == "method" ? r.method : key == "group" ? r.group : r.setting;
-}
-inline bool matches(const nlohmann::json& rule, const record& r) {
-  for (const char* key : {"quantity", "method", "group", "setting"}) {
-    const std::string want = rule.value(key, std::string("*"));
-    if (want != "*" && field_of(r, key) != want) return false;
-  }
-  return true;
 }
 inline const std::string& field_of(const nlohmann::json& row, std::string_view key) {
   static const std::string none;
   const auto it = row.find(std::string(key));
   return it != row.end() && it->is_string() ? it->template get_ref<const std::string&>() : none;
+}
+/// Whether a row (a record or an observed order) has every field the rule names ("*" or left out:
+/// any).
+template <class Row>
+bool matches(const nlohmann::json& rule, const Row& row) {
+  for (const char* key : {"quantity", "method", "group", "setting"}) {
+    const std::string want = rule.value(key, std::string("*"));
+    if (want != "*" && field_of(row, key) != want) return false;
+  }
+  return true;
 }
 /// Why a rule matched none of `rows` (`what`: "result record", "observed order"): the first of its
 /// fields that no row has, else that no row has them all together.

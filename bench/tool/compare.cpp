@@ -2,6 +2,7 @@
 // benchmark by benchmark (harness/compare.hpp); exit 1 only on a confident regression.
 #include "tool/tool.hpp"
 
+#include "harness/check_detail.hpp"
 #include "harness/compare.hpp"
 #include "harness/csv.hpp"
 
@@ -15,12 +16,8 @@ namespace curvebench::tool {
 
 namespace {
 
-std::string g(double x, int digits = 3) {
-  if (!std::isfinite(x)) return "null";
-  std::ostringstream os;
-  os << std::setprecision(digits) << x;
-  return os.str();
-}
+/// x to `digits` significant digits ("null" when not finite: an error not measured, as in JSON).
+std::string g(double x, int digits = 3) { return std::isfinite(x) ? harness::detail::num(x, digits) : "null"; }
 
 /// A change as a percentage, or as a factor once it passes 100x ("x2.1e+03", not 200000.0%).
 std::string percent(double change) {

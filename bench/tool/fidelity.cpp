@@ -2,6 +2,7 @@
 // recording format of harness/fidelity.hpp) each tool model reproduces, and to what error.
 #include "tool/tool.hpp"
 
+#include "harness/check_detail.hpp"
 #include "harness/fidelity.hpp"
 
 #include <iomanip>
@@ -12,11 +13,7 @@ namespace curvebench::tool {
 
 namespace {
 
-std::string g(double x, int digits = 3) {
-  std::ostringstream os;
-  os << std::setprecision(digits) << x;
-  return os.str();
-}
+using harness::detail::num;  // "%.*g"
 
 std::string source_line(const nlohmann::json& s) {
   std::string out;
@@ -33,7 +30,7 @@ void print(const harness::fidelity_result& r) {
   std::cout << r.tool << " against " << source_line(r.source) << " (" << r.file << "):\n  " << r.agree << " of "
             << evaluated << " evaluated channels agree to " << harness::agree_ulps << " eps("
             << (bits == 32 ? "float" : "double") << ") of their scale (the value range + |t V'(t)|); max error "
-            << g(r.max_error) << " of the scale";
+            << num(r.max_error, 3) << " of the scale";
   if (r.refused > 0) std::cout << "; " << r.refused << " refused (not modelled)";
   if (r.unverified > 0) std::cout << "; " << r.unverified << " without the tool's values (unverified)";
   std::cout << "\n  " << std::left << std::setw(28) << "feature" << std::setw(10) << "channels" << std::setw(8)
@@ -41,13 +38,13 @@ void print(const harness::fidelity_result& r) {
             << "max error\n";
   for (const harness::fidelity_feature& f : r.features)
     std::cout << "  " << std::setw(28) << f.feature << std::setw(10) << f.channels << std::setw(8) << f.agree
-              << std::setw(9) << f.refused << g(f.max_error) << "\n";
+              << std::setw(9) << f.refused << num(f.max_error, 3) << "\n";
   for (const harness::fidelity_channel& c : r.channels) {
     if (c.refused || c.unverified)
       std::cout << (c.refused ? "  refused: " : "  unverified: ") << c.name << ": " << c.reason << "\n";
     else if (!c.agrees())
-      std::cout << "  disagrees: " << c.name << ": " << g(c.error) << " of the scale at t = " << g(c.worst_t, 17)
-                << " (model " << g(c.model, 17) << ", tool " << g(c.recorded, 17) << ")\n";
+      std::cout << "  disagrees: " << c.name << ": " << num(c.error, 3) << " of the scale at t = " << num(c.worst_t)
+                << " (model " << num(c.model) << ", tool " << num(c.recorded) << ")\n";
   }
   std::cout << std::right;
 }

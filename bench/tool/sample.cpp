@@ -4,6 +4,7 @@
 #include "tool/tool.hpp"
 
 #include "harness/check.hpp"
+#include "harness/check_detail.hpp"
 
 #include "harness/csv.hpp"
 #include "harness/length_methods.hpp"
@@ -391,7 +392,7 @@ void run_sample(const sample_args& a) {
                             (given ? "at the parameters given" : "spaced by u") + ", where it would be ignored");
   const nlohmann::json j = read_spec(a.spec);
   const io::field spec = io::root(j, a.spec);
-  const bool channel = spec.has("type") && spec.member("type").value == "channel";
+  const bool channel = harness::detail::is_channel_spec(spec);
   if (!channel && a.as_tool)
     throw invalid_input(
         "sample --as-tool: " + a.spec +
