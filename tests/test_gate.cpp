@@ -71,6 +71,10 @@ TEST(gate, a_rule_may_name_one_setting) {
   r["records"][2]["setting"] = "steps=32";  // the named setting vanished
   EXPECT_EQ(check_gate(r, thresholds()).back().message,
             "rule matched no result record: none has setting \"steps=64\"");  // the field that matches nothing
+  json long_setting = thresholds();
+  long_setting["rules"][0]["setting"] = std::string(9000, 's');
+  const auto cut = check_gate(r, long_setting);
+  EXPECT_LT(cut.back().rule.size() + cut.back().message.size(), 400u);  // both shown cut, as every message
 }
 
 TEST(gate, missing_method_or_nan_error_is_a_breach) {
@@ -110,6 +114,14 @@ TEST(gate, rejects_a_rule_naming_an_id_outside_the_vocabulary) {
             "accepted");
   EXPECT_THAT(message(R"({"rules": [{"quantity": "eval", "method": "de_casteljeau", "max_error": 8}]})"),
               HasSubstr("thresholds rule 0: method \"de_casteljeau\" is not an evaluation algorithm of any family"));
+  // A name of 9 kB is shown cut, not whole (the gate fuzz target's bounded-message property: a rule
+  // quoting a 9 kB quantity made an 8.8 kB message in CI's smoke run).
+  for (const char* key : {"quantity", "method"}) {
+    const json rule = {{"rules", json::array({{{key, std::string(9000, '[')}, {"max_error", 1}}})}};
+    const std::string m = message(rule.dump().c_str());
+    EXPECT_LT(m.size(), 400u) << key;
+    EXPECT_THAT(m, HasSubstr(std::string("thresholds rule 0: ") + key + " \"[[[")) << key;
+  }
 }
 
 TEST(gate, the_checked_in_thresholds_name_vocabulary_ids_only) {

@@ -87,7 +87,7 @@ std::string unmatched(const nlohmann::json& rule, const Rows& rows, const std::s
     bool any = false;
     for (const auto& row : rows) any = any || field_of(row, key) == want;
     if (!any)
-      return "rule matched no " + what + ": none has " + key + " \"" + want + "\"" +
+      return "rule matched no " + what + ": none has " + key + " " + io::field::shown_string(want) +
              (what == "observed order" && std::string_view(key) != "group"
                   ? " (orders are fitted per case, quantity and method, for methods with a theory order; they have "
                     "no setting)"
@@ -96,9 +96,10 @@ std::string unmatched(const nlohmann::json& rule, const Rows& rows, const std::s
   return "rule matched no " + what + ": none has its quantity, method, group and setting together";
 }
 inline std::string rule_name(const nlohmann::json& rule) {
-  std::string name = rule.value("quantity", std::string("*")) + "/" + rule.value("method", std::string("*")) + "/" +
-                     rule.value("group", std::string("*"));
-  if (rule.contains("setting")) name += "/" + rule["setting"].get<std::string>();
+  // Each field as the user wrote it, cut to 80 characters with control characters escaped.
+  const auto field = [&](const char* key) { return validate::visible(rule.value(key, std::string("*"))); };
+  std::string name = field("quantity") + "/" + field("method") + "/" + field("group");
+  if (rule.contains("setting")) name += "/" + field("setting");
   return name;
 }
 /// The methods of the subject records ("subject": true) among `records`.
@@ -183,7 +184,8 @@ inline void check_rule_ids(const nlohmann::json& rule, std::size_t index, const 
   const std::string quantity = rule.value("quantity", std::string("*"));
   const std::string method = rule.value("method", std::string("*"));
   if (quantity != "*" && !vocab::find_quantity(quantity))
-    throw invalid_input(where + "quantity \"" + quantity + "\" is not a quantity of the vocabulary");
+    throw invalid_input(where + "quantity " + io::field::shown_string(quantity) +
+                        " is not a quantity of the vocabulary");
   if (method == "*" || subjects.count(method)) return;
   if (quantity == vocab::quantities::eval.id) {
     if (method == vocab::methods::eval_default.id) return;
@@ -193,15 +195,15 @@ inline void check_rule_ids(const nlohmann::json& rule, std::size_t index, const 
       known += std::string(a->id) + ",";
     }
     known.pop_back();
-    throw invalid_input(where + "method \"" + method + "\" is not an evaluation algorithm of any family (default, " +
-                        known + ")");
+    throw invalid_input(where + "method " + io::field::shown_string(method) +
+                        " is not an evaluation algorithm of any family (default, " + known + ")");
   }
   const vocab::method* m = vocab::find_method(method);
   if (!m)
-    throw invalid_input(where + "method \"" + method +
-                        "\" is not a method of the vocabulary (curvebench list methods)");
+    throw invalid_input(where + "method " + io::field::shown_string(method) +
+                        " is not a method of the vocabulary (curvebench list methods)");
   if (quantity != "*" && !vocab::lists(m->quantities, quantity))
-    throw invalid_input(where + "method \"" + method + "\" has no " + quantity +
+    throw invalid_input(where + "method " + io::field::shown_string(method) + " has no " + quantity +
                         " records (its quantities: " + std::string(m->quantities) + ")");
 }
 /// The number `key` of a record, NaN when it is null or missing (the structure is checked first).

@@ -69,7 +69,8 @@ inline std::vector<std::pair<std::string, std::string>> parse_setting(std::strin
     const std::string_view item = s.substr(0, comma);
     const auto eq = item.find('=');
     if (eq == std::string_view::npos || eq == 0)
-      throw invalid_input("setting item " + std::to_string(index) + " \"" + std::string(item) + "\": not key=value");
+      throw invalid_input("setting item " + std::to_string(index) + " \"" + validate::visible(item) +
+                          "\": not key=value");
     out.emplace_back(std::string(item.substr(0, eq)), std::string(item.substr(eq + 1)));
     if (comma == std::string_view::npos) break;
     s.remove_prefix(comma + 1);

@@ -65,7 +65,8 @@ void check_name(const std::string& name) {
     return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == '-';
   });
   if (!name_ok)
-    throw invalid_input("subject name \"" + name + "\": must be letters, digits, '_' and '-' (the records' method)");
+    throw invalid_input("subject name \"" + validate::visible(name) +
+                        "\": must be letters, digits, '_' and '-' (the records' method)");
 }
 
 template <int Dim>
