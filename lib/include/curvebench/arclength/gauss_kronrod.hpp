@@ -3,9 +3,9 @@
 // zeros by safeguarded Newton between the Gauss nodes, weights from the Legendre moment system; see
 // make_gauss_kronrod); a single-panel rule with error estimate |G - K| (the Gauss rule's error, a
 // conservative bound for smooth f) or QUADPACK's heuristic, both plus a rounding floor
-// (detail/roundoff.hpp); a globally adaptive integrator (bisect the panel of largest error) with an
-// interval cap, an evaluation budget and a status; and an allocation-free recursive variant for hot
-// paths (depth cap and evaluation budget). Cap or budget reached: cap_hit.
+// (detail/roundoff.hpp) and the floor of the panel's own node positions (resolution_floor); a globally adaptive
+// integrator (bisect the panel of largest error) with an interval cap, an evaluation budget and a status; and an
+// allocation-free recursive variant for hot paths (depth cap and evaluation budget). Cap or budget reached: cap_hit.
 // Sources: Kronrod (1965); Monegato (1982); Piessens et al. (1983, QUADPACK) for the adaptive
 // strategy and the heuristic resasc * min(1, (200 |K - G| / resasc)^1.5) (which allocates).
 // Cost: rule O(n^3) once (cached); a panel 2n + 1 evaluations; an adaptive call at most its
@@ -41,13 +41,16 @@ template <class Real>
 struct kronrod_panel {
   Real kronrod{0};         ///< the (2n+1)-point value, the one reported
   Real gauss{0};           ///< the embedded n-point value
-  Real error_estimate{0};  ///< per the error model, including the rounding floor
+  Real error_estimate{0};  ///< per the error model, plus rounding_floor and resolution_floor
   Real magnitude{0};       ///< integral of |f| by the Kronrod rule
   Real rounding_floor{0};  ///< 50 eps * magnitude
   /// What the panel's own node positions resolve: 2 eps (|mid| + |half width|) (max f - min f).
-  /// Each node mid + half x_i is placed within eps (|mid| + |half|); far from 0 (a domain [1e8,
-  /// 1e8 + 1]) that moves the integral by about this much, |G - K| becomes that noise, and the
-  /// adaptive integrators stop refining a panel whose estimate is below twice both floors.
+  /// Each node mid + half x_i is placed within d = eps (|mid| + |half|) of where the rule puts it,
+  /// which moves the panel's value by at most d times the variation of f over the panel, below
+  /// this floor where f is monotone or has one extremum there. Far from 0 (a domain [1e15,
+  /// 1e15 + 1e5]: d is 1e-6 of the width) that is the panel's largest error, and the Gauss and
+  /// Kronrod values share it (the same nodes), so |G - K| alone does not show it: it is part of
+  /// error_estimate, and the adaptive integrators stop refining a panel whose |G - K| is below both floors.
   Real resolution_floor{0};
   std::size_t evaluations{0};
 };
@@ -94,7 +97,7 @@ struct gauss_kronrod_rule {
     p.rounding_floor = detail::rounding_floor(p.magnitude);
     p.resolution_floor = Real(2) * epsilon<Real>() * (abs(mid) + abs(half)) * (fmax - fmin);
     p.evaluations = nodes.size();
-    p.error_estimate = abs(p.kronrod - p.gauss) + p.rounding_floor;
+    p.error_estimate = abs(p.kronrod - p.gauss) + p.rounding_floor + p.resolution_floor;
     return p;
   }
 
@@ -130,7 +133,7 @@ struct gauss_kronrod_rule {
     Real diff = abs(p.kronrod - p.gauss);
     if (asc > Real(0) && diff > Real(0))
       diff = asc * min(Real(1), Real(pow(Real(200) * diff / asc, Real(3) / Real(2))));
-    p.error_estimate = diff + p.rounding_floor;
+    p.error_estimate = diff + p.rounding_floor + p.resolution_floor;
     return p;
   }
 };
