@@ -248,12 +248,26 @@ struct usd_widths {
   Real end{0};
 };
 
+namespace detail {
+/// sqrt(a c) for widths a, c >= 0: as USD computes it, and without the overflow of a c past 1e308
+/// (widths of 1e155 and more) by sqrt(a) sqrt(c) there.
+template <class Real>
+[[nodiscard]] Real usd_sqrt_product(const Real& a, const Real& c) {
+  using std::sqrt;
+  const Real p = a * c;
+  return is_finite(p) ? Real(sqrt(p)) : Real(sqrt(a) * sqrt(c));
+}
+}  // namespace detail
+
 /// True when widths (a, c) (fractions of the interval, >= 0) make time run backwards somewhere
 /// inside the segment: a + c > 1 and (a + c - 1)^2 > a c. The ellipse edge itself is not regressive.
+/// Past the squares' overflow (widths of 1e155 and more), a + c - 1 > sqrt(a c), the same test.
 template <class Real>
 [[nodiscard]] bool usd_is_regressive(const Real& a, const Real& c) {
   const Real excess = a + c - Real(1);
-  return excess > Real(0) && excess * excess > a * c;
+  const Real square = excess * excess, product = a * c;
+  if (is_finite(square) && is_finite(product)) return excess > Real(0) && square > product;
+  return excess > Real(0) && excess > detail::usd_sqrt_product(a, c);
 }
 
 namespace detail {
@@ -268,7 +282,7 @@ template <class Real>
     case usd_anti_regression::contain: return {{std::min(a, Real(1)), std::min(c, Real(1))}, 0};
     case usd_anti_regression::keep_ratio: {
       if (!usd_is_regressive(a, c)) return {{a, c}, 0};
-      const Real k = Real(1) / (a + c - sqrt(a * c));
+      const Real k = Real(1) / (a + c - detail::usd_sqrt_product(a, c));
       return {{Real(a * k), Real(c * k)}, 1};
     }
     case usd_anti_regression::keep_start: {
@@ -388,8 +402,7 @@ template <class Real>
     if (!usd_is_regressive(a, c)) continue;
     const auto [w, how] = detail::usd_rule(mode, a, c);
     if (how == 1 && mode == usd_anti_regression::keep_ratio) {  // scaled in absolute widths
-      using std::sqrt;
-      const Real k = Real(1) / (a + c - sqrt(a * c));
+      const Real k = Real(1) / (a + c - detail::usd_sqrt_product(a, c));
       k0.post_width *= k;
       k1.pre_width *= k;
     } else {

@@ -148,13 +148,17 @@ template <class Real>
 }
 
 /// hi - lo >= 2^min_span_bits ulps of max(|lo|, |hi|) (lo < hi finite assumed): "knots[1] - knots[0]
-/// = 2.2e-16 is too narrow to be resolved around 1: at least 2.9e-11 (2^17 ulps) is needed".
+/// = 2.2e-16 is too narrow to be resolved around 1: at least 2.9e-11 (2^17 ulps) is needed"; and
+/// hi - lo finite (a width that overflows is refused too).
 /// `bits` may be smaller where fewer interior values serve (channel_min_span_bits).
 template <class Real>
 void resolvable(const std::string& span, const Real& lo, const Real& hi, int bits = min_span_bits<Real>()) {
   using std::abs;
   const Real big = abs(lo) > abs(hi) ? abs(lo) : abs(hi);
   const Real need = resolvable_width(lo, hi, bits);
+  if (!is_finite(Real(hi - lo)))  // [-1.7e308, 1.7e308]: no Real holds the width, t = (u - lo) / width is NaN
+    fail(span + " = " + to_text(hi) + " - (" + to_text(lo) + ") overflows: it must be at most " +
+         to_text(std::numeric_limits<Real>::max()));
   if (hi - lo >= need) return;
   fail(span + " = " + to_text(Real(hi - lo)) + " is too narrow to be resolved around " + to_text(big) + ": at least " +
        to_text(need) + " (2^" + std::to_string(bits) +

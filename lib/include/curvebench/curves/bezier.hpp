@@ -245,10 +245,10 @@ class bezier {
     for (int k = 0; k <= n; ++k)
       for (int i = 0; i <= n - k; ++i) binomials_.push_back(binomial<Real>(n - k, i));
     power_ = detail::bezier_kernels::to_power_basis<point_type, Real>(cps);
-    using std::sqrt;
     for (int k = 0; k <= 1; ++k) {
       Real biggest(0);
-      for (const point_type& d : level(std::min(k, n))) biggest = std::max(biggest, Real(sqrt(d.squaredNorm())));
+      // safe_norm: the square of a norm past 1e154 would overflow (no bound at all for such a curve)
+      for (const point_type& d : level(std::min(k, n))) biggest = std::max(biggest, safe_norm(d));
       // c of the header: u - 0 and a division by a power of two are exact.
       using std::frexp;
       int exponent = 0;

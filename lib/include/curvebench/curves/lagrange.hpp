@@ -224,8 +224,8 @@ class lagrange {
                : k == samples ? params_.back()
                               : Real(mid - half * cos(pi * from_int<Real>(k) / from_int<Real>(samples)));
       x = std::clamp(x, params_.front(), params_.back());
-      max_p = std::max(max_p, Real(sqrt(barycentric_value(x).squaredNorm())));
-      max_dp = std::max(max_dp, Real(sqrt(derivative(x, 1).squaredNorm())));
+      max_p = std::max(max_p, safe_norm(point_type(barycentric_value(x))));
+      max_dp = std::max(max_dp, safe_norm(point_type(derivative(x, 1))));
       const auto at = std::find(params_.begin(), params_.end(), x);
       if (at != params_.end()) {
         const auto i = static_cast<std::size_t>(at - params_.begin());
@@ -255,7 +255,7 @@ class lagrange {
     const Real sec = Real(1) / cos(pi / Real(8));
     Real k0(0), k1(0), lambda0(0), lambda1(0);
     for (std::size_t j = 0; j < m1; ++j) {
-      const Real pj = sqrt(points_[j].squaredNorm());
+      const Real pj = safe_norm(points_[j]);  // no overflow of the square past 1e154
       k0 += pj * max_l[j];
       k1 += pj * max_dl[j];
       lambda0 += max_l[j];

@@ -68,6 +68,10 @@ channel::gltf::rotation_sampler<Real> rotation_of_spec(const field& spec) {
   const g::rotation_blend blend =
       spec.has("blend") ? g::from_string<g::rotation_blend>(spec.member("blend").one_of({"slerp", "nlerp"}))
                         : g::rotation_blend::slerp;
+  if (spec.has("blend") && mode != g::interpolation::linear)
+    spec.member("blend").fail("blend chooses how linear interpolation turns between two rotations; interpolation \"" +
+                              spec.member("interpolation").value.template get<std::string>() +
+                              "\" would ignore it (step holds each key, cubicspline interpolates the components)");
   std::vector<Real> t = spec.member("times", "tool \"gltf\" takes times").reals<Real>();
   const field vf = spec.member("values", "tool \"gltf\" takes values");
   const std::vector<Real> v = vf.reals<Real>();
