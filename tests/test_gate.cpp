@@ -101,6 +101,9 @@ TEST(gate, rejects_a_rule_naming_an_id_outside_the_vocabulary) {
       message(R"({"rules": [{"quantity": "*", "honest": true},
                                    {"quantity": "length", "method": "composite_gauss3", "min_order": 3}]})"),
       "thresholds rule 1: method \"composite_gauss3\" is not a method of the vocabulary (curvebench list methods)");
+  EXPECT_EQ(message(R"({"version": 2, "rules": [{"quantity": "*", "honest": true}]})"),
+            "thresholds: \"version\" 2: this curvebench reads thresholds of version 1");
+  EXPECT_EQ(message(R"({"version": 1, "rules": [{"quantity": "*", "honest": true}]})"), "accepted");
   EXPECT_EQ(message(R"({"rules": [{"quantity": "lenght", "method": "*", "max_error": 1}]})"),
             "thresholds rule 0: quantity \"lenght\" is not a quantity of the vocabulary");
   EXPECT_THAT(message(R"({"rules": [{"quantity": "length", "method": "newton", "max_error": 1}]})"),

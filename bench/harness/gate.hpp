@@ -126,6 +126,10 @@ inline const nlohmann::json& array_member(const nlohmann::json& j, const char* k
 /// objects with known keys of the right types, each with at least one check.
 inline void check_thresholds_structure(const nlohmann::json& thresholds, const std::string& file) {
   const nlohmann::json& rules = array_member(thresholds, "rules", file);
+  // The format's version (optional): a file of another version may mean its rules differently.
+  if (thresholds.contains("version") && thresholds["version"] != 1)
+    throw invalid_input(file + ": \"version\" " + io::field::shown_value(thresholds["version"]) +
+                        ": this curvebench reads thresholds of version 1");
   if (rules.empty()) throw invalid_input(file + ": \"rules\" is empty: a gate without rules checks nothing");
   for (std::size_t i = 0; i < rules.size(); ++i) {
     const std::string where = file + " rule " + std::to_string(i) + ": ";

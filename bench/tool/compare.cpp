@@ -19,6 +19,12 @@ namespace {
 /// x to `digits` significant digits ("null" when not finite: an error not measured, as in JSON).
 std::string g(double x, int digits = 3) { return std::isfinite(x) ? harness::detail::num(x, digits) : "null"; }
 
+/// The verdict's line on stderr (docs/tool.md, exit codes).
+std::string regression_line(std::size_t regressions) {
+  return "curvebench: compare: " + std::to_string(regressions) +
+         (regressions == 1 ? " confident regression" : " confident regressions") + " (exit 1)\n";
+}
+
 /// A change as a percentage, or as a factor once it passes 100x ("x2.1e+03", not 200000.0%).
 std::string percent(double change) {
   std::ostringstream os;
@@ -110,6 +116,7 @@ int run_compare(const compare_args& a) {
   if (a.json) {
     std::cout << std::setw(1) << harness::to_json(c) << "\n";
     for (const std::string& w : c.warnings) std::cerr << "curvebench: compare: warning: " << w << "\n";
+    if (regressions > 0) std::cerr << regression_line(regressions);
     return regressions > 0 ? 1 : 0;
   }
   const auto count = [](const auto& rows, auto keep) {
@@ -118,8 +125,8 @@ int run_compare(const compare_args& a) {
   const auto& o = c.options;
   std::cout << "compare " << c.base << " -> " << c.now << "\n";
   std::cout << "records: " << c.records_matched << " matched; "
-            << count(c.records, [](const auto& r) { return r.error_grew; }) << " errors grew beyond x(1 + "
-            << g(o.max_error_growth) << ") + the rounding floor, "
+            << count(c.records, [](const auto& r) { return r.error_grew; }) << " errors grew by more than "
+            << g(100 * o.max_error_growth + 0.0) << "% plus the rounding floor, "
             << count(c.records, [](const auto& r) { return r.bound_lost; }) << " estimates stopped bounding, "
             << count(c.records, [](const auto& r) { return r.unmeasured; }) << " no longer measured, "
             << count(c.records, [](const auto& r) { return r.improved; }) << " improved; " << c.records_removed.size()
@@ -127,7 +134,7 @@ int run_compare(const compare_args& a) {
   std::cout << "benchmarks: " << c.times.size() << " matched; "
             << count(c.times, [](const auto& t) { return t.slower; }) << " slower and "
             << count(c.times, [](const auto& t) { return t.faster; }) << " faster by more than "
-            << g(100 * o.max_time_growth) << "% with p < " << g(o.alpha) << " (Holm); "
+            << g(100 * o.max_time_growth + 0.0) << "% with p < " << g(o.alpha) << " (Holm); "
             << count(c.times, [](const auto& t) { return !t.testable; }) << " with too few repetitions to test; "
             << c.benchmarks_removed.size() << " removed, " << c.benchmarks_added.size() << " added\n";
   if (!c.times.empty())
@@ -159,6 +166,7 @@ int run_compare(const compare_args& a) {
             << (regressions == 0 ? std::string("no confident regression")
                                  : std::to_string(regressions) + (regressions == 1 ? " regression" : " regressions"))
             << "\n";
+  if (regressions > 0) std::cerr << regression_line(regressions);
   return regressions > 0 ? 1 : 0;
 }
 

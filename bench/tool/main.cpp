@@ -164,10 +164,11 @@ void length(const cb::io::field& spec, const length_args& a) {
     tool::require_finite(r.value, spec.path + ": length (" + a.method + ")", c);
     // A length at most degenerate_length_eps eps of the curve's size (the largest |P| at its
     // breakpoints) is rounding noise: the true length may be 0, so the estimate covers that level.
+    // A result without a bound (not_guaranteed, null) keeps none: rounding_limited carries an estimate.
     double size = 0;
     for (const double b : c.breakpoints()) size = std::max(size, c(b).cwiseAbs().maxCoeff());
     const double noise = al::degenerate_length_eps * std::numeric_limits<double>::epsilon() * size;
-    if (std::isfinite(r.value) && std::abs(r.value) <= noise) {
+    if (std::isfinite(r.value) && std::abs(r.value) <= noise && r.status != al::result_status::not_guaranteed) {
       r.error_estimate = std::max(r.error_estimate, noise);
       r.status =
           r.value == 0 && r.status == al::result_status::converged ? r.status : al::result_status::rounding_limited;
@@ -377,6 +378,9 @@ int run(int argc, char** argv) {
       for (const auto& b : breaches)
         std::cout << "gate: BREACH " << b.rule << " " << b.where << ": " << b.message << "\n";
       std::cout << "gate: " << t.at("rules").size() << " rules, " << breaches.size() << " breaches\n";
+      if (!breaches.empty())  // the verdict on stderr too (docs/tool.md, exit codes)
+        std::cerr << "curvebench: gate: " << breaches.size() << (breaches.size() == 1 ? " breach" : " breaches")
+                  << " (exit 1)\n";
       return breaches.empty() ? 0 : 1;
     }
   } catch (const std::exception& e) {

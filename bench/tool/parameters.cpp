@@ -139,7 +139,7 @@ std::vector<parameter> parse_range(const std::string& text, const std::string& o
     // the grid is {A}, and B, one billionth of a step away, is not on it.
     const double rounding = 16 * std::numeric_limits<double>::epsilon() * std::max({std::abs(a), std::abs(b), step});
     if (i == n && std::abs(u - b) <= rounding) u = b;
-    out.push_back({u, option + ": value " + std::to_string(i + 1)});
+    out.push_back({u, option + ": grid point " + std::to_string(i + 1)});  // not "value": a channel has values
   }
   return out;
 }

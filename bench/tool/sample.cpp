@@ -22,6 +22,7 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <variant>
 
 namespace curvebench::tool {
@@ -376,7 +377,29 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
   return samp;
 }
 
-void run_sample(const sample_args& a) {
+namespace {
+/// std::cout held in memory until the whole sample is computed (at most max_sample_values rows,
+/// tens of MB): an error part-way (a value past double's range at the 7th frame) then prints its
+/// message alone, not a partial CSV before it.
+class held_stdout {
+ public:
+  held_stdout() : old_(std::cout.rdbuf(held_.rdbuf())) {}
+  held_stdout(const held_stdout&) = delete;
+  held_stdout& operator=(const held_stdout&) = delete;
+  ~held_stdout() { std::cout.rdbuf(old_); }  // on an error: the held text is dropped
+  void release() {
+    std::cout.rdbuf(old_);
+    std::cout << held_.str();
+    held_.str({});
+  }
+
+ private:
+  std::ostringstream held_;
+  std::streambuf* old_;
+};
+
+/// run_sample's work, writing to std::cout (held by run_sample).
+void sample_parsed(const sample_args& a) {
   const bool given = !a.at.empty() || !a.at_file.empty() || !a.range.empty() || !a.frames.empty();
   if (a.by == "arclength" && given)
     throw invalid_input(
@@ -409,6 +432,14 @@ void run_sample(const sample_args& a) {
     return;
   }
   with_dimension(spec, [&](auto dim) { sample<decltype(dim)::value>(spec, a); });
+}
+
+}  // namespace
+
+void run_sample(const sample_args& a) {
+  held_stdout out;
+  sample_parsed(a);
+  out.release();
 }
 
 }  // namespace curvebench::tool

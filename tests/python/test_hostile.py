@@ -12,6 +12,7 @@ A case file (unknown keys are an error, so that a typo cannot switch a check off
   "exit"            the exact exit code expected (required)
   "stderr_contains", "stdout_contains"   substrings that must appear
   "stdout_json"     stdout parsed as JSON must hold these key/values ("$finite": a finite number)
+  "stdout_empty"    true: nothing on stdout (an error part-way must not leave a partial table)
   "seconds"         the wall-time bound (required), on the -O2 test build of this machine
 Whatever the case expects, the tool may never die of a signal, print "terminate called", or
 exit non-zero without a "curvebench: error: " line on stderr.
@@ -31,7 +32,7 @@ import unittest
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 TOOL = os.environ.get("CURVEBENCH_TOOL", "")
 CASE_DIR = os.path.join(ROOT, "tests", "hostile")
-KEYS = {"why", "files", "args", "exit", "stderr_contains", "stdout_contains", "stdout_json", "seconds"}
+KEYS = {"why", "files", "args", "exit", "stderr_contains", "stdout_contains", "stdout_json", "stdout_empty", "seconds"}
 REQUIRED = {"why", "args", "exit", "seconds"}
 
 
@@ -145,6 +146,8 @@ class Hostile(unittest.TestCase):
                 self.assertIn(w, p.stderr, shown)
             for w in case.get("stdout_contains", []):
                 self.assertIn(w, p.stdout, shown)
+            if case.get("stdout_empty"):
+                self.assertEqual(p.stdout, "", shown)
             if "stdout_json" in case:
                 try:
                     got = json.loads(p.stdout)

@@ -69,6 +69,7 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(slow.returncode, 1, slow.stdout + slow.stderr)
         self.assertIn("SLOWER bezier/horner/calls:single/degree:3:", slow.stdout)
         self.assertIn("compare: 4 regressions", slow.stdout)
+        self.assertIn("curvebench: compare: 4 confident regressions (exit 1)", slow.stderr)  # CI logs see it
         worse = run("compare", os.path.join(data, "check_17_digits.json"), os.path.join(data, "check_7_digits.json"),
                     "--json")
         self.assertEqual(worse.returncode, 1, worse.stdout + worse.stderr)
@@ -140,6 +141,7 @@ class ToolCli(unittest.TestCase):
             self.assertEqual(against_truth.returncode, 1, against_truth.stdout)
             self.assertIn("row 3 (t = 1.0000000000000001e-05)", against_truth.stdout)
             self.assertIn("absolute: max 0.000172", against_truth.stdout)
+            self.assertIn("curvebench: check: 1 failure (exit 1)", against_truth.stderr)
             against_tool = run("check", snappy, "--values", mine, "--max-error", "0", "--against", "tool")
             self.assertEqual(against_tool.returncode, 0, against_tool.stdout + against_tool.stderr)
         # B is kept when it lies on the grid up to rounding (0.1 steps do not add up to 1 exactly).
@@ -449,6 +451,12 @@ class ToolCli(unittest.TestCase):
         p = run("gate", "--results", results, "--thresholds", good)
         self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
         self.assertIn("gate: 1 rules, 0 breaches", p.stdout)
+        self.assertEqual(p.stderr, "")
+        strict = self.write("strict.json", json.dumps({"rules": [{"quantity": "length", "max_error": 1e-17}]}))
+        p = run("gate", "--results", results, "--thresholds", strict)
+        self.assertEqual(p.returncode, 1, p.stdout + p.stderr)
+        self.assertIn("gate: BREACH length/*/* case c setting tol=1e-12: error 1e-16 > allowed 1e-17", p.stdout)
+        self.assertIn("curvebench: gate: 1 breach (exit 1)", p.stderr)  # the verdict where a CI log shows it
         # Each of these passed with exit 0.
         typo = self.write("typo.json", json.dumps({"rules": [{"quantity": "length", "max_eror": 1e-15}]}))
         self.assert_error(run("gate", "--results", results, "--thresholds", typo),
