@@ -20,6 +20,7 @@ file reading; no plotting, so tests/python runs them with Debian's python3 alone
 """
 import glob
 import json
+import math
 import os
 import re
 from collections import defaultdict
@@ -173,22 +174,29 @@ def _tol(r):
         return None
 
 
-def findings(peer_records, own_records=()):
-    """Where a peer disagrees with its documentation, one sentence each with the case and figure:
-    a length reported as successful (status converged) whose true error exceeds the relative
-    tolerance it was asked for (QUADPACK's documented target |result - L| <= epsrel L with
-    epsabs 0); an error estimate that does not bound the true error; an evaluation (value or
-    derivative) at least EVAL_FINDING_ULPS eps(double) x size from the exact curve, with
-    curvebench's default evaluation of the same case beside it when own_records has it. Sorted
-    by case."""
+def finding_items(peer_records, own_records=()):
+    """Where a peer disagrees with its documentation, one item per record and defect: a length (or
+    u(s)) reported as successful (status converged) whose true error exceeds the relative tolerance it
+    was asked for (QUADPACK's documented target |result - L| <= epsrel L with epsabs 0; kind
+    "beyond_tolerance"); an error estimate that does not bound the true error ("estimate_under"); an
+    evaluation (value or derivative) at least EVAL_FINDING_ULPS eps(double) x size from the exact
+    curve ("eval_error"), with curvebench's default evaluation of the same case beside it when
+    own_records has it; a value beyond the precision the peer documents ("beyond_documented").
+    Each item: {"peer", "case", "quantity", "setting", "kind", "text" (the sentence after
+    "<peer> on <case> (<setting>): "), "excess" (how many times the defect exceeds what the peer
+    promised: the tolerance, its own estimate, EVAL_FINDING_ULPS, its documented precision; the
+    measure of "worst")}. Sorted by case, quantity, peer and setting."""
     out = []
+
+    def add(r, kind, text, excess):
+        out.append({"peer": r["method"], "case": r["case"], "quantity": r["quantity"],
+                    "setting": r.get("setting") or "", "kind": kind, "text": text, "excess": excess})
     for r in sorted(peer_records, key=_key):
-        where = f"{r['method']} on {r['case']}" + (f" ({r['setting']})" if r.get("setting") else "")
         err, est, tol = r.get("error"), r.get("estimate"), _tol(r)
         if r["quantity"] in ("length", "u_of_s") and tol is not None and isinstance(err, (int, float)):
             if r.get("status") == "converged" and err > tol:
-                out.append(f"{where}: reported success, but its true relative error {lib.fmt(err)} is "
-                           f"{lib.fmt(err / tol)} times the requested tolerance {lib.fmt(tol)}.")
+                add(r, "beyond_tolerance", f"reported success, but its true relative error {lib.fmt(err)} is "
+                    f"{lib.fmt(err / tol)} times the requested tolerance {lib.fmt(tol)}.", err / tol)
         doc_tol, abs_err = r.get("documented_tolerance"), r.get("abs_error")
         # a peer evaluating in float ("unit_eps": 2^-23) is held to as many of its own ulps
         own_ulps = err * 2.0 ** -52 / r["unit_eps"] if isinstance(err, (int, float)) and r.get("unit_eps") else err
@@ -203,15 +211,70 @@ def findings(peer_records, own_records=()):
                        and o["quantity"] == "eval" and o["method"] == "default"]
                 beside = f" (curvebench's default evaluation: {lib.fmt(own[0]['error'])})" if own else ""
             absolute = f", {lib.fmt(abs_err)} absolute" if isinstance(abs_err, (int, float)) else ""
-            out.append(f"{where}: error {lib.fmt(err)} eps(double) x size{absolute} in its {what} against "
-                       f"{against}{beside}.")
+            add(r, "eval_error", f"error {lib.fmt(err)} eps(double) x size{absolute} in its {what} against "
+                f"{against}{beside}.", own_ulps / EVAL_FINDING_ULPS)
         if isinstance(doc_tol, (int, float)) and isinstance(abs_err, (int, float)) and abs_err > doc_tol:
-            out.append(f"{where}: absolute error {lib.fmt(abs_err)} in its value ({lib.fmt(err)} eps(double) x size), "
-                       f"beyond the {lib.fmt(doc_tol)} it documents as its solver's precision.")
+            add(r, "beyond_documented", f"absolute error {lib.fmt(abs_err)} in its value ({lib.fmt(err)} eps(double) "
+                f"x size), beyond the {lib.fmt(doc_tol)} it documents as its solver's precision.",
+                abs_err / doc_tol if doc_tol > 0 else math.inf)
         if r.get("bounded") is False and isinstance(err, (int, float)) and isinstance(est, (int, float)):
-            out.append(f"{where}: its error estimate {lib.fmt(est)} does not bound its true error {lib.fmt(err)} "
-                       f"(under by {lib.fmt(err / est) if est > 0 else 'inf'}x; status "
-                       f"\"{r.get('peer_status') or r.get('status')}\").")
+            under = f"under by {lib.fmt(err / est)}x; " if est > 0 else ""  # not "under by infx" for an estimate 0
+            add(r, "estimate_under", f"its error estimate {lib.fmt(est)} does not bound its true error {lib.fmt(err)} "
+                f"({under}status \"{r.get('peer_status') or r.get('status')}\").",
+                err / est if est > 0 else math.inf)
+    return out
+
+
+def _where(item, settings=None):
+    return f"{item['peer']} on {item['case']}" + (f" ({settings})" if settings else "")
+
+
+def findings(peer_records, own_records=()):
+    """finding_items as sentences, one per record and defect: "<peer> on <case> (<setting>): <text>"."""
+    return [f"{_where(i, i['setting'])}: {i['text']}" for i in finding_items(peer_records, own_records)]
+
+
+def settings_text(settings):
+    """The settings a grouped finding holds for, in the order given (the sweep's): the one setting;
+    "tol=1e-06, 1e-10" or "tol=1e-06 .. 1e-14, 5 settings" when every setting is key=value with the
+    same key (a range from three on); otherwise the settings themselves ("no setting" for ""), the
+    first and last of them from three on."""
+    if len(settings) == 1:
+        return settings[0]
+    parts = [s.split("=", 1) if "=" in s and "," not in s else None for s in settings]
+    same_key = all(p is not None and p[0] == parts[0][0] for p in parts)
+    shown = [p[1] for p in parts] if same_key else [s or "no setting" for s in settings]
+    prefix = f"{parts[0][0]}=" if same_key else ""
+    sep = ", " if same_key else "; "
+    if len(settings) == 2:
+        return prefix + sep.join(shown)
+    return f"{prefix}{shown[0]} .. {shown[-1]}, {len(settings)} settings"
+
+
+def grouped_findings(peer_records, own_records=()):
+    """finding_items grouped: one per (peer, quantity, defect kind, case), whatever the settings it
+    holds for. Each: {"peer", "case", "quantity", "kind", "settings" (in the order of the peer's
+    records: the sweep's), "worst" (the item of the largest excess; the first of equals), "line"}.
+    A line reads as the one finding's when it holds for one setting; otherwise it names the settings
+    and the worst one, with the worst one's figures. Sorted by case, quantity, peer, kind."""
+    order = {}
+    for i, r in enumerate(peer_records):
+        order.setdefault((r["method"], r.get("setting") or ""), i)
+    groups = {}
+    for item in finding_items(peer_records, own_records):
+        g = groups.setdefault((item["case"], item["quantity"], item["peer"], item["kind"]), [])
+        g.append(item)
+    out = []
+    for (case, quantity, peer, kind), items in sorted(groups.items()):
+        items.sort(key=lambda i: order.get((i["peer"], i["setting"]), len(order)))
+        settings = list(dict.fromkeys(i["setting"] for i in items))
+        worst = max(items, key=lambda i: i["excess"])  # max returns the first of equals
+        if len(settings) == 1:
+            where = settings[0]
+        else:
+            where = f"{settings_text(settings)}; worst at {worst['setting'] or 'no setting'}"
+        out.append({"peer": peer, "case": case, "quantity": quantity, "kind": kind, "settings": settings,
+                    "worst": worst, "where": where, "line": f"{_where(worst, where)}: {worst['text']}"})
     return out
 
 
@@ -395,8 +458,13 @@ def peers_section(acc, report_dir, bench_rows, vocab):
     md += three_lines(peer_files)
 
     md += ["", "### Findings: where a peer does less than its documentation says or the same data allow", ""]
-    fs = findings(peer_records, records)
-    md += [f"- {f}" for f in fs] if fs else ["None in this run."]
+    fs = grouped_findings(peer_records, records)
+    if fs:
+        md += ["One line per peer, defect and case, whatever the settings it holds for: their range, and the "
+               "figures of the worst of them (the one furthest past what the peer promised).", ""]
+        md += [f"- {g['line']}" for g in fs]
+    else:
+        md.append("None in this run.")
     rf = refusals(peer_records)
     if rf:
         md += ["", "Settings the peers refused (as documented; no value to measure):", ""]

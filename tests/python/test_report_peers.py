@@ -76,6 +76,75 @@ class Findings(unittest.TestCase):
         self.assertFalse(any("natural_cubic_2d" in x for x in f), f)
 
 
+class GroupedFindings(unittest.TestCase):
+    """One line per (peer, defect kind, case): the settings it holds for and the worst figures."""
+
+    def under(self, case, method, setting, error, estimate):
+        # an estimate below the error, the peer saying it did not converge: one finding, estimate_under
+        return peer(case, method, setting, error, estimate, status="rounding_limited", peer_status="roundoff error")
+
+    def test_settings_of_one_defect_merge_into_one_line_with_the_range_and_the_worst(self):
+        # under by 2, 3, 100, 4 and 5 times: the worst is tol=1e-10, the range in the sweep's order.
+        records = [self.under("c", "peer_x", f"tol={t}", e, 1e-9)
+                   for t, e in (("1e-6", 2e-9), ("1e-8", 3e-9), ("1e-10", 1e-7), ("1e-12", 4e-9), ("1e-14", 5e-9))]
+        self.assertEqual(len(rp.findings(records)), 5)
+        groups = rp.grouped_findings(records)
+        self.assertEqual(len(groups), 1)
+        g = groups[0]
+        self.assertEqual((g["peer"], g["case"], g["kind"]), ("peer_x", "c", "estimate_under"))
+        self.assertEqual(g["settings"], ["tol=1e-6", "tol=1e-8", "tol=1e-10", "tol=1e-12", "tol=1e-14"])
+        self.assertEqual(g["worst"]["setting"], "tol=1e-10")
+        self.assertEqual(g["line"], "peer_x on c (tol=1e-6 .. 1e-14, 5 settings; worst at tol=1e-10): its error "
+                                    "estimate 1.00e-09 does not bound its true error 1.00e-07 (under by 100x; status "
+                                    "\"roundoff error\").")
+
+    def test_settings_in_the_order_of_the_records(self):
+        records = [self.under("c", "peer_x", "tol=1e-6", 2e-9, 1e-9),
+                   self.under("c", "peer_x", "tol=1e-10", 2e-9, 1e-9)]
+        g = rp.grouped_findings(list(reversed(records)))
+        self.assertEqual(g[0]["settings"], ["tol=1e-10", "tol=1e-6"])  # as given: the sweep's order
+        g = rp.grouped_findings(records)
+        self.assertEqual(g[0]["settings"], ["tol=1e-6", "tol=1e-10"])
+        # equal figures: the first setting is the worst
+        self.assertIn("(tol=1e-6, 1e-10; worst at tol=1e-6)", g[0]["line"])
+
+    def test_one_setting_reads_as_the_finding_itself(self):
+        records = [peer("c", "peer_gsl_qag", "tol=1e-10", 5e-9, 1e-8)]
+        self.assertEqual([g["line"] for g in rp.grouped_findings(records)], rp.findings(records))
+
+    def test_distinct_cases_peers_and_kinds_stay_apart(self):
+        records = [self.under("c", "peer_x", "tol=1e-6", 2e-9, 1e-9), self.under("c", "peer_x", "tol=1e-8", 2e-9, 1e-9),
+                   self.under("d", "peer_x", "tol=1e-6", 2e-9, 1e-9), self.under("c", "peer_y", "tol=1e-6", 2e-9, 1e-9),
+                   # converged with 5e-9 at tol 1e-10: beyond its tolerance, and an estimate under its error
+                   peer("c", "peer_z", "tol=1e-10", 5e-9, 1e-9), peer("c", "peer_z", "tol=1e-12", 5e-9, 1e-9)]
+        groups = rp.grouped_findings(records)
+        self.assertEqual([(g["case"], g["peer"], g["kind"], len(g["settings"])) for g in groups],
+                         [("c", "peer_x", "estimate_under", 2), ("c", "peer_y", "estimate_under", 1),
+                          ("c", "peer_z", "beyond_tolerance", 2), ("c", "peer_z", "estimate_under", 2),
+                          ("d", "peer_x", "estimate_under", 1)])
+        beyond = groups[2]
+        # 5e-9 is 5e3 times 1e-12 and 50 times 1e-10: the worst is the tighter tolerance
+        self.assertEqual(beyond["worst"]["setting"], "tol=1e-12")
+        self.assertAlmostEqual(beyond["worst"]["excess"], 5e3)
+        self.assertIn("is 5e+03 times the requested tolerance 1.00e-12", beyond["line"])
+
+    def test_settings_text(self):
+        self.assertEqual(rp.settings_text(["tol=1e-6"]), "tol=1e-6")
+        self.assertEqual(rp.settings_text(["n=2", "n=8"]), "n=2, 8")
+        self.assertEqual(rp.settings_text(["n=2", "n=4", "n=8"]), "n=2 .. 8, 3 settings")
+        self.assertEqual(rp.settings_text(["", "derivative=1"]), "no setting; derivative=1")
+        self.assertEqual(rp.settings_text(["a=1,b=2", "a=1,b=3", "a=2,b=3"]), "a=1,b=2 .. a=2,b=3, 3 settings")
+
+    def test_recorded_run_groups_the_two_u_of_s_findings_apart(self):
+        # The recorded Brent-over-qag findings at tol=1e-12 on the knot-ratio case are two defects:
+        # two lines, each for its one setting.
+        acc = load("accuracy_gsl.json")
+        hit = [g for g in rp.grouped_findings(acc["peer_records"])
+               if g["peer"] == "peer_gsl_qag_brent" and g["case"] == "natural_cubic_knot_ratio_1e4"]
+        self.assertEqual(sorted(g["kind"] for g in hit), ["beyond_tolerance", "estimate_under"])
+        self.assertLessEqual(len(rp.grouped_findings(acc["peer_records"])), len(rp.findings(acc["peer_records"])))
+
+
 class Joins(unittest.TestCase):
     def test_eval_rows_join_curvebench_default_of_the_same_case(self):
         acc = load("accuracy_gsl.json")
