@@ -32,6 +32,7 @@ import report_lib as lib
 # algorithm, not to rounding: curvebench's default evaluation and GSL's cspline stay below 1 on
 # every case of the suite (quick run of issue 15), and SciPy's CubicSpline below 6.
 EVAL_FINDING_ULPS = 100.0
+EPS_DOUBLE = 2.0 ** -52
 
 # The optional peers scripts/peers.sh runs, by the driver name their peers_<driver>.json carries.
 OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
@@ -185,7 +186,9 @@ def finding_items(peer_records, own_records=()):
     Each item: {"peer", "case", "quantity", "setting", "kind", "text" (the sentence after
     "<peer> on <case> (<setting>): "), "excess" (how many times the defect exceeds what the peer
     promised: the tolerance, its own estimate, EVAL_FINDING_ULPS, its documented precision; the
-    measure of "worst")}. Sorted by case, quantity, peer and setting."""
+    measure of "worst"; an estimate below eps(double) counts as eps(double), as a relative error
+    below the result's rounding says nothing of the method)}. Sorted by case, quantity, peer and
+    setting."""
     out = []
 
     def add(r, kind, text, excess):
@@ -220,8 +223,7 @@ def finding_items(peer_records, own_records=()):
         if r.get("bounded") is False and isinstance(err, (int, float)) and isinstance(est, (int, float)):
             under = f"under by {lib.fmt(err / est)}x; " if est > 0 else ""  # not "under by infx" for an estimate 0
             add(r, "estimate_under", f"its error estimate {lib.fmt(est)} does not bound its true error {lib.fmt(err)} "
-                f"({under}status \"{r.get('peer_status') or r.get('status')}\").",
-                err / est if est > 0 else math.inf)
+                f"({under}status \"{r.get('peer_status') or r.get('status')}\").", err / max(est, EPS_DOUBLE))
     return out
 
 
