@@ -1,0 +1,315 @@
+"""The summary at the top of REPORT.md and its table of contents (issue 34, "the answers first").
+
+Built from the run's figures alone, with no name or number written in here:
+  - per quantity and kind of curve (the records' "group"), curvebench's cheapest method and setting
+    whose error is at most 1e-6, 1e-10 and 1e-14 on every case of the group, and the best peer
+    reaching the same on every case it ran on (recommendation_rows);
+  - per peer, its worst finding (report_peers.grouped_findings; peer_lines);
+  - per tool model, how it agrees with the recordings of the real tool (fidelity.json; fidelity_lines);
+  - the table of contents: a link to every "## " section (toc).
+Pure functions: tests/python/test_report_summary.py runs them with Debian's python3 alone.
+"""
+import math
+from collections import defaultdict
+
+import report_channel
+import report_lib as lib
+import report_peers
+
+EPS64 = 2.0 ** -52
+
+# The quantities summarized, in this order, each with what its error is relative to. The targets
+# are relative errors: eval records are in eps(double) x the curve's size, channel_value records in
+# eps of their precision (setting bits=64 or bits=32) x the value range, so both are scaled first.
+QUANTITIES = {
+    "length": "the length L",
+    "s_of_u": "L",
+    "u_of_s": "L",
+    "eval": "the curve's size",
+    "channel_value": "the value range",
+}
+# Quantities whose records' evaluations are the cost of one result (amortized over the queries for
+# s(u) and u(s)); eval's and channel_value's count the sample points, the same for every method.
+EVALUATIONS_ARE_COSTS = ("length", "s_of_u", "u_of_s")
+
+
+def _number(x):
+    return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+
+
+def relative_error(r):
+    """The record's error relative to what QUANTITIES says, or None (no numeric error, or a
+    quantity the summary does not hold)."""
+    q, e = r.get("quantity"), r.get("error")
+    if q not in QUANTITIES or not _number(e):
+        return None
+    if q == "eval":
+        return e * EPS64
+    if q == "channel_value":
+        bits = report_channel.bits_of(r.get("setting") or "")
+        return report_channel.relative_to_range(e, bits) if bits in report_channel.EPS else None
+    return e
+
+
+def _derivative(r):
+    """A peer's eval record of a derivative (setting derivative=k, k > 0): curvebench's eval records
+    are of values, so these are left out of the comparison."""
+    for item in (r.get("setting") or "").split(","):
+        k, _, v = item.partition("=")
+        if k == "derivative" and v not in ("", "0"):
+            return True
+    return False
+
+
+def own_cost_tiers(quantity, records, times, channel_times):
+    """[(unit, cost of a record)] in order of preference for curvebench's records of `quantity`:
+    the measured time where the benchmarks join the record (length: bench_arclength_cases by case,
+    method and setting; channel_value: bench_channel's 64 keys, single calls, by solver and bits),
+    then evaluations (channel_value: the time solver's, from the channel_time record of the same
+    case, solver and bits). eval has none: its records count sample points, not a cost."""
+    def evals(r):
+        return r.get("evaluations")
+    if quantity == "length":
+        return [("ns", lambda r: times.get((r["case"], r["method"], r.get("setting") or ""))), ("evals", evals)]
+    if quantity in EVALUATIONS_ARE_COSTS:
+        return [("evals", evals)]
+    if quantity == "channel_value":
+        solver = {(r["case"], r["method"], r.get("setting") or ""): r.get("evaluations")
+                  for r in records if r.get("quantity") == "channel_time"}
+        return [("ns", lambda r: channel_times.get((r["method"], "64", report_channel.bits_of(r.get("setting") or ""),
+                                                    "single"))),
+                ("evals", lambda r: solver.get((r["case"], r["method"], r.get("setting") or "")))]
+    return []
+
+
+def peer_cost_tiers(quantity):
+    """A peer's own time per operation (the accuracy runner's or its driver's), then evaluations."""
+    tiers = [("ns", lambda r: r.get("ns_per_op"))]
+    if quantity in EVALUATIONS_ARE_COSTS:
+        tiers.append(("evals", lambda r: r.get("evaluations")))
+    return tiers
+
+
+def pick(candidates, cases, target, tiers, whole_group=True):
+    """The candidate reaching `target` on its cases, cheapest by the first tier of `tiers` that
+    gives every such candidate a cost on every case, else the most accurate.
+
+    candidates: {(method, setting): {case: record}}; cases: the group's cases. A candidate reaches
+    the target when its relative error is at most the target on every case of the group it has a
+    record of, and has one for every case (whole_group; a peer, whole_group=False, needs at least
+    one: more cases covered rank first). Its cost is the mean over those cases. Returns None or
+    {"method", "setting", "covered", "of", "max_error", "cost", "unit"} (cost and unit None when no
+    tier applied); ties go to the smaller error, then the name."""
+    ok = []
+    for (method, setting), by_case in candidates.items():
+        covered = [c for c in cases if c in by_case]
+        if not covered or (whole_group and len(covered) < len(cases)):
+            continue
+        errors = [relative_error(by_case[c]) for c in covered]
+        if any(e is None or not e <= target for e in errors):
+            continue
+        ok.append({"method": method, "setting": setting, "covered": len(covered), "of": len(cases),
+                   "max_error": max(errors), "cost": None, "unit": None, "_records": [by_case[c] for c in covered]})
+    if not ok:
+        return None
+    for unit, cost in tiers:
+        costs = [[cost(r) for r in c["_records"]] for c in ok]
+        if all(_number(x) for cs in costs for x in cs):
+            for c, cs in zip(ok, costs):
+                c["cost"], c["unit"] = sum(cs) / len(cs), unit
+            break
+    best = min(ok, key=lambda c: (-c["covered"], c["cost"] if c["cost"] is not None else 0.0, c["max_error"],
+                                  c["method"], c["setting"]))
+    del best["_records"]
+    return best
+
+
+def _by_group(records, quantity, case_groups):
+    """{group: {(method, setting): {case: record}}} of the records of `quantity`."""
+    out = defaultdict(lambda: defaultdict(dict))
+    for r in records:
+        if r.get("quantity") != quantity:
+            continue
+        group = r.get("group") or case_groups.get(r["case"])
+        if group:
+            out[group][(r["method"], r.get("setting") or "")][r["case"]] = r
+    return out
+
+
+def recommendation_rows(records, peer_records, times=None, channel_times=None, case_groups=None,
+                        targets=lib.TARGETS):
+    """One row per quantity (QUANTITIES, those the records carry) and group: {"quantity", "group",
+    "cases", "cells": [{"target", "ours", "peer", "peers_ran"}]}, ours and peer as `pick` returns
+    them (None: none reaches it), peers_ran whether any peer has a record of that quantity and group.
+    records: curvebench's own (subjects split off); peer_records: the accuracy runner's and the
+    drivers'; times: report_lib.case_times; channel_times: report_channel.bench_times; case_groups:
+    {case: group} for records without one."""
+    times, channel_times, case_groups = times or {}, channel_times or {}, case_groups or {}
+    present = {r.get("quantity") for r in records}
+    comparable_peers = [r for r in peer_records if not (r.get("quantity") == "eval" and _derivative(r))]
+    rows = []
+    for quantity in (q for q in QUANTITIES if q in present):
+        ours = _by_group(records, quantity, case_groups)
+        theirs = _by_group(comparable_peers, quantity, case_groups)
+        tiers = own_cost_tiers(quantity, records, times, channel_times)
+        # the groups with the most cases first: the kinds of curve the suite holds most of
+        for group in sorted(ours, key=lambda g: (-len({c for by_case in ours[g].values() for c in by_case}), g)):
+            cases = sorted({c for by_case in ours[group].values() for c in by_case})
+            peer_cases = sorted(set(cases) | {c for by_case in theirs.get(group, {}).values() for c in by_case})
+            cells = []
+            for t in targets:
+                peer = pick(theirs[group], peer_cases, t, peer_cost_tiers(quantity), whole_group=False) \
+                    if group in theirs else None
+                cells.append({"target": t, "ours": pick(ours[group], cases, t, tiers), "peer": peer,
+                              "peers_ran": group in theirs})
+            rows.append({"quantity": quantity, "group": group, "cases": len(cases), "cells": cells})
+    return rows
+
+
+def target_text(t):
+    """1e-06 as 1e-6: the targets as the issue and the docs write them."""
+    mantissa, _, exponent = f"{t:.0e}".partition("e")
+    return f"{mantissa}e{int(exponent)}"
+
+
+def choice_text(p):
+    """'gauss n=8 (312 ns)', 'default (max 1.1e-16)', 'peer_x tol=1e-06 (4.1e3 ns, 3 of 19 cases)'."""
+    label = f"{p['method']} {p['setting']}".strip()
+    extra = [f"{lib.fmt(p['cost'])} {p['unit']}" if p["cost"] is not None else f"max {lib.fmt(p['max_error'])}"]
+    if p["covered"] < p["of"]:
+        extra.append(f"{p['covered']} of {p['of']} cases")
+    return f"{label} ({', '.join(extra)})"
+
+
+def cell_text(cell):
+    text = choice_text(cell["ours"]) if cell["ours"] else "none reaches it"
+    if cell["peers_ran"]:
+        text += "; peer: " + (choice_text(cell["peer"]) if cell["peer"] else "none reaches it")
+    return text
+
+
+def recommendation_table(rows, targets=lib.TARGETS):
+    return lib.table(["quantity", "kind of curve (group)", "cases"] + [f"error <= {target_text(t)}" for t in targets],
+                     [[f"`{r['quantity']}`", r["group"], r["cases"]] + [cell_text(c) for c in r["cells"]]
+                      for r in rows])
+
+
+def peer_lines(peer_records, own_records=()):
+    """One line per peer that has records: its library, how many grouped findings on how many
+    cases, and the worst of them (the largest excess: furthest past what the peer promised), or
+    that it has none."""
+    groups = report_peers.grouped_findings(peer_records, own_records)
+    library = {}
+    for r in peer_records:
+        library.setdefault(r["method"], r.get("library") or "")
+    lines = []
+    for peer in sorted(library, key=lambda p: (library[p], p)):
+        mine = [g for g in groups if g["peer"] == peer]
+        head = f"- {peer}" + (f" ({library[peer]})" if library[peer] else "")
+        if not mine:
+            lines.append(f"{head}: no finding in this run.")
+            continue
+        worst = max(mine, key=lambda g: g["worst"]["excess"])["worst"]
+        cases = len({g["case"] for g in mine})
+        where = f"{worst['case']}" + (f" ({worst['setting']})" if worst["setting"] else "")
+        lines.append(f"{head}: {len(mine)} finding{'s' if len(mine) > 1 else ''} on {cases} "
+                     f"case{'s' if cases > 1 else ''}; the worst on {where}: {worst['text']}")
+    return lines
+
+
+def fidelity_lines(fidelity, tools=()):
+    """One line per tool recorded in fidelity.json (`curvebench fidelity --json`): channels that
+    agree of those evaluated, refused and unverified ones, the largest error and the recordings;
+    then the tools of `tools` (vocabulary ids, the reference "exact" left out) with no recording."""
+    recordings = (fidelity or {}).get("recordings") or []
+    if not recordings:
+        return ["No recordings of the real tools were measured in this run (no fidelity.json)."]
+    by_tool = defaultdict(list)
+    for r in recordings:
+        by_tool[r["tool"]].append(r)
+    order = [t for t in tools if t in by_tool] + sorted(t for t in by_tool if t not in tools)
+    lines = []
+    for tool in order:
+        rs = by_tool[tool]
+        channels = sum(r["channels"] for r in rs)
+        refused = sum(r["refused"] for r in rs)
+        unverified = sum(r.get("unverified", 0) for r in rs)
+        agree = sum(r["agree"] for r in rs)
+        worst = max(r["max_error"] for r in rs)
+        notes = [f"{n} {what}" for n, what in ((refused, "refused"), (unverified, "unverified")) if n]
+        files = ", ".join(r["file"].replace("\\", "/").rsplit("/", 1)[-1] for r in rs)
+        lines.append(f"- {tool}: {agree} of {channels - refused - unverified} channels agree"
+                     + (f" ({', '.join(notes)})" if notes else "")
+                     + f", largest error {lib.fmt(worst)} x scale ({files})")
+    missing = [t for t in tools if t not in by_tool and t != report_channel.REFERENCE_TOOL]
+    if missing:
+        lines.append(f"- no recording of the real tool in this run: {', '.join(missing)}")
+    return lines
+
+
+def summary_section(records, peer_records, times, channel_times, case_groups, fidelity, tools):
+    """The markdown lines of the "Summary" section."""
+    md = ["## Summary", "",
+          "The answers of this run, from its own figures; the sections below hold every figure behind them.", "",
+          "### The method to use for an error target", "",
+          "Per quantity and kind of curve (the cases' group), curvebench's cheapest method and setting whose error "
+          "is at most the target on every case of the group; after \"peer:\", the best peer reaching it on every "
+          "case it ran on.", "",
+          "- Errors are relative: " + "; ".join(f"`{q}` to {what}" for q, what in QUANTITIES.items())
+          + " (`eval` records are in eps(double) x size, `channel_value` records in eps x range of their precision, "
+          "`bits=64` double or `bits=32` float: both are multiplied by that eps).",
+          "- Cheapest is the lowest mean cost over the group's cases, and the unit says which cost: ns, measured, "
+          "when every method reaching the target has a time on every case (`length`: bench_arclength_cases, "
+          "joined by case, method and setting; `channel_value`: bench_channel's 64 keys, single calls, one time "
+          "for every case); otherwise evals, curve evaluations per length or per query (tables amortized), for "
+          "`channel_value` the time solver's per value. `eval` records have no cost per method (their "
+          "evaluations count the sample points): the most accurate is named, with its max error.",
+          "- A peer that ran on fewer cases than the group has says on how many; more cases rank first, then its "
+          "own time per operation (the accuracy runner's or its driver's clock, not the benchmarks': compare "
+          "peers with each other), else evaluations. Its derivative records are left out (curvebench's `eval` "
+          "records are of values).", ""]
+    rows = recommendation_rows(records, peer_records, times, channel_times, case_groups)
+    md.append(recommendation_table(rows) if rows else "No accuracy records.")
+    left = sorted({r.get("quantity") for r in records} - set(QUANTITIES) - {None})
+    if left:
+        md += ["", "Not in this table (no relative error to hold to a target): "
+               + ", ".join(f"`{q}`" for q in left) + "; see their sections."]
+    md += ["", "### Peers: the worst finding of each", ""]
+    if peer_records:
+        md += ["Findings counted as the Peers section groups them (one per peer, defect and case, whatever the "
+               "settings); the worst is the one furthest past what the peer promised: the tolerance asked for, its own "
+               "error estimate (at least eps(double)), the precision it documents, or "
+               f"{lib.fmt(report_peers.EVAL_FINDING_ULPS)} eps(double) x size for an evaluation.", ""]
+        md += peer_lines(peer_records, records)
+    else:
+        md.append("No peer records in this run.")
+    md += ["", "### Tool models against the real tools", ""]
+    md += fidelity_lines(fidelity, tools)
+    return md + [""]
+
+
+def anchor(heading):
+    """GitHub's anchor of a heading: lowercase, punctuation but '-' and '_' dropped, each space a '-'."""
+    return "".join(c if c.isalnum() or c in "-_" else "-" if c == " " else "" for c in heading.strip().lower())
+
+
+def toc(before, after, title="Contents"):
+    """The "## Contents" section that goes between the lines `before` and `after`: a link to every
+    "## " heading of both (outside code fences) but its own, with GitHub's suffixes -1, -2 for
+    anchors repeated in the page (its own heading counted where it stands)."""
+    seen = defaultdict(int)
+    links, fenced = [], False
+    for line in before + [None] + after:
+        if line is None:  # the Contents heading itself
+            seen[anchor(title)] += 1
+            continue
+        if line.startswith("```"):
+            fenced = not fenced
+        if fenced or not line.startswith("## "):
+            continue
+        text = line[3:].strip()
+        a = anchor(text)
+        n = seen[a]
+        seen[a] += 1
+        links.append(f"- [{text}](#{a}{f'-{n}' if n else ''})")
+    return [f"## {title}", ""] + links + [""]
