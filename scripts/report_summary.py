@@ -108,8 +108,12 @@ def pick(candidates, cases, target, tiers, whole_group=True):
         errors = [relative_error(by_case[c]) for c in covered]
         if any(e is None or not e <= target for e in errors):
             continue
+        recs = [by_case[c] for c in covered]
         ok.append({"method": method, "setting": setting, "covered": len(covered), "of": len(cases),
-                   "max_error": max(errors), "cost": None, "unit": None, "_records": [by_case[c] for c in covered]})
+                   "max_error": max(errors), "cost": None, "unit": None, "_records": recs,
+                   # no estimate on some case: the target is met by the suite's measured error, not by
+                   # a bound the method would report on the user's own curve
+                   "unbounded": any(r.get("status") == "not_guaranteed" for r in recs)})
     if not ok:
         return None
     for unit, cost in tiers:
@@ -160,8 +164,11 @@ def recommendation_rows(records, peer_records, times=None, channel_times=None, c
             for t in targets:
                 peer = pick(theirs[group], peer_cases, t, peer_cost_tiers(quantity), whole_group=False) \
                     if group in theirs else None
-                cells.append({"target": t, "ours": pick(ours[group], cases, t, tiers), "peer": peer,
-                              "peers_ran": group in theirs})
+                mine = pick(ours[group], cases, t, tiers)
+                for p in (mine, peer):  # eval and channel records carry no estimate by nature: not said
+                    if p and quantity not in EVALUATIONS_ARE_COSTS:
+                        p["unbounded"] = False
+                cells.append({"target": t, "ours": mine, "peer": peer, "peers_ran": group in theirs})
             rows.append({"quantity": quantity, "group": group, "cases": len(cases), "cells": cells})
     return rows
 
@@ -178,6 +185,8 @@ def choice_text(p):
     extra = [f"{lib.fmt(p['cost'])} {p['unit']}" if p["cost"] is not None else f"max {lib.fmt(p['max_error'])}"]
     if p["covered"] < p["of"]:
         extra.append(f"{p['covered']} of {p['of']} cases")
+    if p.get("unbounded"):
+        extra.append("no error bound")
     return f"{label} ({', '.join(extra)})"
 
 

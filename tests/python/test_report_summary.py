@@ -22,8 +22,11 @@ import report_summary as rs  # noqa: E402
 
 
 def rec(case, method, setting, error, evaluations=10.0, quantity="length", group="g", **extra):
+    """A record whose estimate bounds its error (converged); pass status="not_guaranteed",
+    estimate=None, bounded=None for one without a bound."""
     r = {"case": case, "group": group, "quantity": quantity, "method": method, "setting": setting, "error": error,
-         "estimate": None, "bounded": None, "evaluations": evaluations, "status": "not_guaranteed"}
+         "estimate": None if error is None else 2 * error, "bounded": True, "evaluations": evaluations,
+         "status": "converged"}
     r.update(extra)
     return r
 
@@ -94,6 +97,16 @@ class Recommendation(unittest.TestCase):
         cs = cells(rs.recommendation_rows(length_records(), [], times))
         self.assertEqual([chosen(c) for c in cs], [("gauss", "n=2", "evals", 10.0), ("gauss", "n=8", "evals", 40.0),
                                                    ("adaptive_gk", "tol=1e-14", "evals", 100.0)])
+
+    def test_a_choice_without_an_error_bound_says_so(self):
+        # gauss n=2 reaches 1e-6 by the suite's measured error, with no estimate on c2: the user's own
+        # curve would get no bound from it. eval records carry no estimate by nature: not said there.
+        records = length_records()
+        records[1].update(status="not_guaranteed", estimate=None, bounded=None)
+        self.assertEqual(rs.cell_text(cells(rs.recommendation_rows(records, []))[0]),
+                         "gauss n=2 (10 evals, no error bound)")
+        evals = [rec(c, "default", "", 1.0, quantity="eval", status="not_guaranteed") for c in ("c1", "c2")]
+        self.assertEqual(rs.cell_text(cells(rs.recommendation_rows(evals, []), "eval")[0]), "default (max 2.22e-16)")
 
     def test_none_reaches_it(self):
         records = [rec(c, "gauss", "n=2", 1e-7) for c in ("c1", "c2")] + [rec("c1", "gauss", "n=8", 1e-12, 40.0),
