@@ -141,7 +141,7 @@ class ToolCli(unittest.TestCase):
             self.assertEqual(against_truth.returncode, 1, against_truth.stdout)
             self.assertIn("row 3 (t = 1.0000000000000001e-05)", against_truth.stdout)
             self.assertIn("absolute: max 0.000172", against_truth.stdout)
-            self.assertIn("curvebench: check: 1 failure (exit 1)", against_truth.stderr)
+            self.assertIn("curvebench: check: 2 failures (exit 1)", against_truth.stderr)
             against_tool = run("check", snappy, "--values", mine, "--max-error", "0", "--against", "tool")
             self.assertEqual(against_tool.returncode, 0, against_tool.stdout + against_tool.stderr)
         # B is kept when it lies on the grid up to rounding (0.1 steps do not add up to 1 exactly).
