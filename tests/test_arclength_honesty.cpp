@@ -14,6 +14,7 @@
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/curves/bezier.hpp"
 #include "curvebench/curves/cardinal_spline.hpp"
+#include "curvebench/curves/kochanek_bartels.hpp"
 #include "curvebench/curves/lagrange.hpp"
 #include "curvebench/reference/arc_length.hpp"
 #include "curvebench/reference/convert.hpp"
@@ -161,6 +162,65 @@ TEST(arclength_honesty, adaptive_gauss_kronrod_on_the_near_cusp_case) {
   // The segment lengths of the parameterization use the same splitting.
   const al::segment_lengths<double> seg(c);
   EXPECT_TRUE(honest(seg.total(), length));
+}
+
+// A speed zero between two samples of the minimum search: a degree-7 Bezier in 1D whose x' changes
+// sign at 0.971, between the samples at 15/16 and 1 (speeds 1.25 and 1.42, above the search's
+// depth threshold), is an exact cusp of |x'| that nothing split at. Stop 45's hostile sweep:
+// adaptive Gauss-Kronrod at tol 1e-6 reported converged with 4.2e-7 for an error of 9.7e-7. The
+// velocity turning back between the samples (P'.P' < 0) now finds it.
+TEST(arclength_honesty, a_speed_zero_between_the_minimum_search_samples) {
+  const std::vector<double> x{0.41902356987730793, 0.7913930386938044,  -0.05346344458637753, 0.17435298099852137,
+                              -0.9996426243612486, -0.2169578085804209, 0.8536545474553212,   0.651178412554583};
+  std::vector<cb::point<double, 1>> p;
+  std::vector<cb::point<R, 1>> p50;
+  for (double v : x) {
+    p.emplace_back(v);
+    p50.emplace_back(R(v));
+  }
+  const cb::bezier<double, 1> c{std::span<const cb::point<double, 1>>(p)};
+  const ref::reference_arc_length<cb::bezier<R, 1>> r50(cb::bezier<R, 1>{std::span<const cb::point<R, 1>>(p50)});
+  const R length = r50.length();
+  for (double tol : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12}) {
+    for (auto model : {al::error_model::gauss_difference, al::error_model::quadpack}) {
+      SCOPED_TRACE("tol = " + std::to_string(tol) + (model == al::error_model::quadpack ? " quadpack" : ""));
+      al::adaptive_options<double> o;
+      o.relative_tolerance = tol;
+      o.model = model;
+      const al::quadrature_result<double> r = al::adaptive_length(c, o);
+      EXPECT_TRUE(honest(r, length));
+      EXPECT_EQ(r.status, al::result_status::converged);
+    }
+  }
+  for (int n : {4, 8, 16}) EXPECT_TRUE(honest(al::gauss_length(c, n, al::fixed_estimate::nested), length)) << n;
+  EXPECT_TRUE(honest(al::segment_lengths<double>(c).total(), length));
+}
+
+// A segment ending at a speed zero just before its right end (a 1D Kochanek-Bartels spline: x'
+// changes sign at 2.997 in [2, 3]). The minimum search sampled P' at the end from the next segment
+// (an interior breakpoint belongs to the segment on its right), so it neither saw the zero nor the
+// speed falling towards the end: adaptive Gauss-Kronrod at its default tolerance reported 5.0e-12
+// for an error of 2.5e-10 (stop 45's sweep, the data scaled from 1e199 to 1).
+TEST(arclength_honesty, a_speed_zero_at_the_end_of_an_inner_segment) {
+  const std::vector<double> x{-6.700757927128534, -3.158883876802842, 8.66540424361275,   -1.5660329104651136,
+                              9.240381668242193,  -8.447590356384088, 1.1615150530674943, 5.781883429807097};
+  const auto build = [&](auto zero) {
+    using Real = decltype(zero);
+    cb::point_list<Real, 1> p;
+    for (double v : x) p.emplace_back(Real(v));
+    const cb::tcb<Real> k{Real(0.6367066847346352), Real(-0.29964322456166337), Real(-0.31975527561760897)};
+    return cb::kochanek_bartels<Real, 1>(p, std::vector<cb::tcb<Real>>(x.size(), k), {});
+  };
+  const auto c = build(0.0);
+  const ref::reference_arc_length<cb::kochanek_bartels<R, 1>> r50(build(R(0)));
+  const R length = r50.length();
+  for (double tol : {1e-6, 1e-10, 1e-12, 1e-14}) {
+    al::adaptive_options<double> o;
+    o.relative_tolerance = tol;
+    EXPECT_TRUE(honest(al::adaptive_length(c, o), length)) << tol;
+  }
+  for (int n : {4, 8, 16}) EXPECT_TRUE(honest(al::gauss_length(c, n, al::fixed_estimate::nested), length)) << n;
+  EXPECT_TRUE(honest(al::segment_lengths<double>(c).total(), length));
 }
 
 // The grading is a rule: dips from mild to very deep, coarse to fine tolerances. Every one of the

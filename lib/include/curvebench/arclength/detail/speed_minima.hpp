@@ -7,8 +7,9 @@
 // minimum below (1/4 max speed)^2 is refined by Newton on h = P'.P'' (the derivative of |P'|^2 / 2)
 // with h' = |P''|^2 + P'.P''', kept inside its sampling bracket (a failed step keeps the best point
 // so far); an end sample below that level with the speed falling towards it is examined too (see
-// speed_features). Cost: samples + 1 + 3 per Newton step derivative evaluations (counted).
-// The branch-point distance delta is explained above speed_model.
+// speed_features), and so is every sampling interval across which P' turns back by more than 90
+// degrees (P'(u_k).P'(u_k+1) < 0: a minimum of the speed lies between, whatever the samples' speeds). Cost: samples + 1
+// + 3 per Newton step derivative evaluations (counted). The branch-point distance delta is explained above speed_model.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -82,9 +83,15 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(
   // |P'|^2 and its derivatives are compared only with each other, so every derivative is scaled by
   // one power of two near 1 / max|P'|: exact, and the squares neither overflow (|P'| > 1e154 in
   // double) nor underflow (|P'| < 1e-154).
+  // The last sample is taken a few ulps inside b: at an interior breakpoint c.derivative(b) is the
+  // next segment's (breakpoints belong to the segment on their right), whose velocity made a
+  // Kochanek-Bartels segment ending at a near-cusp look like one that turns back at its end, and hid
+  // the near-cusp just past its end (an error 47x the estimate in stop 45's sweep).
+  const Real resolution = Real(4) * epsilon<Real>() * (abs(a) + abs(b) + (b - a));
   Real dmax(0);
   for (std::size_t k = 0; k <= samples; ++k) {
-    us[k] = k == samples ? b : a + (b - a) * Real(static_cast<long long>(k)) / Real(static_cast<long long>(samples));
+    us[k] = k == samples ? Real(b - resolution)
+                         : a + (b - a) * Real(static_cast<long long>(k)) / Real(static_cast<long long>(samples));
     d1s[k] = c.derivative(us[k], 1);
     dmax = max(dmax, Real(d1s[k].cwiseAbs().maxCoeff()));
   }
@@ -106,7 +113,6 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(
     return out;
   }
   const Real threshold = gmax / Real(16);
-  const Real resolution = Real(4) * epsilon<Real>() * (abs(a) + abs(b) + (b - a));
   // Newton on h from x inside (lo, hi); returns the model at the last point evaluated, with x the
   // final iterate (within `resolution` of it when converged; a step leaving the bracket keeps the
   // best point so far).
@@ -144,8 +150,20 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(
     const Real e = abs(m.h / m.dh), dm = m.delta();
     delta = sqrt(e * e + dm * dm);
   };
+  // A velocity that turns back by more than 90 degrees between two samples passes a minimum of the
+  // speed in between, however high the speed at both samples: a 1D curve's x' changing sign at
+  // 0.98 between samples at 0.9375 and 1 (speeds 1.25 and 1.42) is an exact cusp of |x'| that the
+  // sample test above cannot see, and adaptive Gauss-Kronrod then reported 4.2e-7 for an error of
+  // 9.7e-7 (stop 45's sweep). Refined by Newton from the slower sample, else from the middle.
+  auto reversal = [&](std::size_t k) {
+    if (!(scaled(d1s[k]).dot(scaled(d1s[k + 1])) < Real(0)) || out.back().u >= us[k]) return;
+    speed_model<Real> m = refine(g[k] <= g[k + 1] ? us[k] : us[k + 1], us[k], us[k + 1]);
+    if (!(m.x > us[k] && m.x < us[k + 1])) m = refine((us[k] + us[k + 1]) / Real(2), us[k], us[k + 1]);
+    add_interior(m);
+  };
   end_feature(0, 1, out.front().delta);
   for (std::size_t k = 1; k < samples; ++k) {
+    reversal(k - 1);
     if (shallow && g[k] <= g[k - 1] && g[k] <= g[k + 1] && g[k] > threshold) {
       const typename C::point_type d1 = c.derivative(us[k], 1), d2 = c.derivative(us[k], 2),
                                    d3 = c.derivative(us[k], 3);
@@ -157,6 +175,7 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(
     if (g[k] == Real(0) && g[k - 1] == Real(0)) continue;  // inside a zero-speed stretch
     add_interior(refine(us[k], us[k - 1], us[k + 1]));
   }
+  reversal(samples - 1);
   end_feature(samples, samples - 1, end_b.delta);
   out.push_back(end_b);
   return out;
