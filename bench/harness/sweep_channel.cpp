@@ -199,14 +199,15 @@ json sweep_rotation(record_sink& k, const case_info& info, const sweep& w) {
   const auto times = plain.input();
   const std::vector<double> ts = sample_times(times.front(), times.back(), w.channel_times);
   // Linear rotations are measured both ways the players blend them; the spec's blend is the default.
+  // Step and cubicspline take none (a spec's blend there is refused: it would be ignored).
   std::vector<std::pair<const vocab::method*, std::string>> runs;
   switch (plain.mode()) {
-    case g::interpolation::step: runs.push_back({&vocab::methods::rotation_step, "slerp"}); break;
+    case g::interpolation::step: runs.push_back({&vocab::methods::rotation_step, ""}); break;
     case g::interpolation::linear:
       runs.push_back({&vocab::methods::rotation_slerp, "slerp"});
       runs.push_back({&vocab::methods::rotation_nlerp, "nlerp"});
       break;
-    case g::interpolation::cubicspline: runs.push_back({&vocab::methods::rotation_cubicspline, "slerp"}); break;
+    case g::interpolation::cubicspline: runs.push_back({&vocab::methods::rotation_cubicspline, ""}); break;
   }
   json refused = json::object();
   double largest = 0;
@@ -216,7 +217,7 @@ json sweep_rotation(record_sink& k, const case_info& info, const sweep& w) {
     const auto* method = run.first;
     const auto& blend = run.second;
     json spec = info.spec;
-    spec["blend"] = blend;
+    if (!blend.empty()) spec["blend"] = blend;
     const io::field r = io::root(spec, info.name);
     const g::rotation_sampler<real50> truth = io::rotation_of_spec<real50>(r);
     const double samples = static_cast<double>(ts.size());
