@@ -501,3 +501,30 @@ TEST(rounding_bound, far_domain_length_estimates_hold) {
     expect_bound(rec, "recursive Gauss-Kronrod");
   }
 }
+
+// Speeds in the subnormal range: coordinates of 1e-21 over a domain of width 1e294 give |P'| ~
+// 1e-315, rounded to an absolute denorm_min / 2 per operation, which the curves' relative bounds
+// do not hold. Stop 45's sweep: adaptive_gk at tol 1e-6 said converged with 5.6e-28 for an error
+// of 1.3e-27. underflow_floor (core/curve.hpp) makes every bounded estimate cover it.
+TEST(rounding_bound, subnormal_speeds_are_bounded) {
+  const std::vector<double> x{2.813333840141927e-21, 8.195890247332922e-21, -8.219377760162278e-21,
+                              2.4438919018548067e-21};
+  std::vector<cb::point<double, 1>> p;
+  std::vector<cb::point<R, 1>> p50;
+  for (double v : x) {
+    p.emplace_back(v);
+    p50.emplace_back(R(v));
+  }
+  const cb::bezier<double, 1> c{std::span<const cb::point<double, 1>>(p), {1e300, 1.000001e300}};
+  const cb::bezier<R, 1> c50{std::span<const cb::point<R, 1>>(p50)};
+  const double exact = static_cast<double>(al::adaptive_length(c50).value);
+  for (double tol : {1e-4, 1e-6, 1e-10}) {
+    al::adaptive_options<double> o;
+    o.relative_tolerance = tol;
+    const al::quadrature_result<double> r = al::adaptive_length(c, o);
+    EXPECT_NE(r.status, al::result_status::not_guaranteed);
+    EXPECT_LE(std::abs(r.value - exact), r.error_estimate) << tol;
+  }
+  EXPECT_EQ(cb::declared_rounding_bound(c, 1), c.rounding_bound(1));
+  EXPECT_GT(cb::rounding_bound(c, 1), c.rounding_bound(1));  // the floor added on top
+}

@@ -99,7 +99,7 @@ struct counted {
     return c.derivative(u, order);
   }
   [[nodiscard]] std::span<const real_type> breakpoints() const { return c.breakpoints(); }
-  [[nodiscard]] real_type rounding_bound(int order) const { return cb::rounding_bound(c, order); }
+  [[nodiscard]] real_type rounding_bound(int order) const { return cb::declared_rounding_bound(c, order); }
 };
 
 const std::vector<double>& slopes() {

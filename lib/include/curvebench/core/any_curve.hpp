@@ -33,7 +33,7 @@ class any_curve {
   [[nodiscard]] point_type operator()(const Real& u) const { return self_->value(u); }
   [[nodiscard]] point_type derivative(const Real& u, int order) const { return self_->derivative(u, order); }
   [[nodiscard]] std::span<const Real> breakpoints() const { return self_->breakpoints(); }
-  /// The wrapped curve's curvebench::rounding_bound(c, order) (core/curve.hpp).
+  /// The wrapped curve's curvebench::declared_rounding_bound(c, order) (core/curve.hpp).
   [[nodiscard]] Real rounding_bound(int order) const { return self_->rounding_bound(order); }
   /// The family name given at construction (may be empty).
   [[nodiscard]] const std::string& family() const { return family_; }
@@ -68,7 +68,9 @@ class any_curve {
     [[nodiscard]] point_type value(const Real& u) const override { return c(u); }
     [[nodiscard]] point_type derivative(const Real& u, int order) const override { return c.derivative(u, order); }
     [[nodiscard]] std::span<const Real> breakpoints() const override { return c.breakpoints(); }
-    [[nodiscard]] Real rounding_bound(int order) const override { return curvebench::rounding_bound(c, order); }
+    [[nodiscard]] Real rounding_bound(int order) const override {
+      return curvebench::declared_rounding_bound(c, order);
+    }
     C c;
   };
 
