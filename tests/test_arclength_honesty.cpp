@@ -71,6 +71,14 @@ R reference_length(const cb::bezier<R, 2>& c) {
   return ::testing::AssertionSuccess();
 }
 
+/// Adaptive Gauss-Kronrod's options at a relative tolerance and error model.
+al::adaptive_options<double> adaptive_at(double tol, al::error_model model) {
+  al::adaptive_options<double> o;
+  o.relative_tolerance = tol;
+  o.model = model;
+  return o;
+}
+
 }  // namespace
 
 // Defect 1: the nested estimate |Q2 - Q4| of the fixed rule on a segment with a near-cusp. Before
@@ -142,9 +150,7 @@ TEST(arclength_honesty, adaptive_gauss_kronrod_on_the_near_cusp_case) {
   for (double tol : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14}) {
     for (auto model : {al::error_model::gauss_difference, al::error_model::quadpack}) {
       SCOPED_TRACE("tol = " + std::to_string(tol) + (model == al::error_model::quadpack ? " quadpack" : ""));
-      al::adaptive_options<double> o;
-      o.relative_tolerance = tol;
-      o.model = model;
+      const al::adaptive_options<double> o = adaptive_at(tol, model);
       const al::quadrature_result<double> r = al::adaptive_length(c, o);
       EXPECT_TRUE(honest(r, length));
       if (tol >= 1e-12) {
@@ -184,10 +190,7 @@ TEST(arclength_honesty, a_speed_zero_between_the_minimum_search_samples) {
   for (double tol : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12}) {
     for (auto model : {al::error_model::gauss_difference, al::error_model::quadpack}) {
       SCOPED_TRACE("tol = " + std::to_string(tol) + (model == al::error_model::quadpack ? " quadpack" : ""));
-      al::adaptive_options<double> o;
-      o.relative_tolerance = tol;
-      o.model = model;
-      const al::quadrature_result<double> r = al::adaptive_length(c, o);
+      const al::quadrature_result<double> r = al::adaptive_length(c, adaptive_at(tol, model));
       EXPECT_TRUE(honest(r, length));
       EXPECT_EQ(r.status, al::result_status::converged);
     }

@@ -11,7 +11,6 @@ import importlib.util
 import json
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 import unittest
@@ -22,6 +21,7 @@ DATA = os.path.join(HERE, "..", "data", "peers")
 FIXTURES = os.path.join(HERE, "fixtures")
 sys.path.insert(0, SCRIPTS)
 import report_peers as rp  # noqa: E402
+import report_fixture  # noqa: E402
 
 
 def load(name):
@@ -521,20 +521,7 @@ class ScipyDriver(unittest.TestCase):
 @unittest.skipUnless(importlib.util.find_spec("matplotlib"), "report.py plots with matplotlib")
 class ReportWithAndWithoutPeers(unittest.TestCase):
     def run_report(self, acc, peer_files=()):
-        d = tempfile.mkdtemp()
-        self.addCleanup(shutil.rmtree, d)
-        for name, doc in peer_files:
-            with open(os.path.join(d, name), "w", encoding="utf-8") as f:
-                json.dump(doc, f)
-        shutil.copy(os.path.join(FIXTURES, "vocabulary.json"), d)
-        shutil.copy(os.path.join(FIXTURES, "bench_batch.json"), os.path.join(d, "bench_x.json"))
-        with open(os.path.join(d, "accuracy.json"), "w", encoding="utf-8") as f:
-            json.dump(acc, f)
-        p = subprocess.run([sys.executable, os.path.join(SCRIPTS, "report.py"), "--reports", d],
-                           capture_output=True, text=True)
-        self.assertEqual(p.returncode, 0, p.stderr)
-        with open(os.path.join(d, "REPORT.md"), encoding="utf-8") as f:
-            return f.read()
+        return report_fixture.run_report(self, acc, peer_files)
 
     def test_with_peer_records(self):
         report = self.run_report(load("accuracy_gsl.json"))
