@@ -14,8 +14,8 @@
 // Real, a constant computed once at construction (+infinity: no bound known), relative to the
 // curve's data. `declared_rounding_bound(c, order)` returns it, or 0 for a curve that declares none:
 // its evaluation is then taken to be as well conditioned as the rounding floors of the arc-length
-// methods assume (a few eps of |P'|); `rounding_bound(c, order)`, what the methods use, adds the
-// absolute rounding of underflow (underflow_floor: results in the subnormal range).
+// methods assume (a few eps of |P'|); `rounding_bound(c, order)`, what the methods use, adds to a
+// declared bound the absolute rounding of underflow (underflow_floor: results in the subnormal range).
 // Optionally, `c.second_derivative_bound(a, b)` (a <= b in the domain) -> Real: an upper bound on
 // |P''(u)| over [a, b] such that the speed |P'| is Lipschitz with it there (+infinity: none, e.g.
 // across a knot where P' may jump); `second_derivative_bound(c, a, b)` returns it, or +infinity for
@@ -85,11 +85,16 @@ template <curve C>
     return typename C::real_type(0);
 }
 
-/// The bound the methods use: declared_rounding_bound plus underflow_floor.
+/// The bound the methods use: a declared bound plus underflow_floor, or 0 for a curve that
+/// declares none (taken to be well conditioned, as the header says: a zero-length piece of such a
+/// curve stays exactly 0, converged).
 template <curve C>
 [[nodiscard]] typename C::real_type rounding_bound(const C& c, int order) {
   using Real = typename C::real_type;
-  return Real(declared_rounding_bound(c, order)) + underflow_floor<Real>();
+  if constexpr (declares_rounding_bound<C>)
+    return Real(c.rounding_bound(order)) + underflow_floor<Real>();
+  else
+    return Real(0);
 }
 
 /// A curve that bounds its second derivative over an interval (see the header).
