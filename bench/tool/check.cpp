@@ -247,10 +247,7 @@ int run_check(const check_args& a) {
         !a.thresholds.empty())
       std::cout << "check: " << (failures.empty() ? "passed" : std::to_string(failures.size()) + " failures") << "\n";
   }
-  // A negative verdict also says so on stderr (docs/tool.md, exit codes), where a CI log shows it.
-  if (!failures.empty())
-    std::cerr << "curvebench: check: " << failures.size() << (failures.size() == 1 ? " failure" : " failures")
-              << " (exit 1)\n";
+  if (!failures.empty()) say_verdict("check", failures.size(), "failure", "failures");
   return failures.empty() ? 0 : 1;
 }
 

@@ -98,6 +98,10 @@ std::string non_finite_cause(std::span<const double> breakpoints, double largest
 
 std::string example(const std::string& command) { return "\nExample:\n  " + command + "\n"; }
 
+void say_verdict(const std::string& command, std::size_t count, const std::string& one, const std::string& many) {
+  std::cerr << "curvebench: " << command << ": " << count << " " << (count == 1 ? one : many) << " (exit 1)\n";
+}
+
 progress::progress(std::string what, std::size_t total, bool quiet, bool planned)
     : what_(std::move(what)),
       total_(total),

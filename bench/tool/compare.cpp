@@ -19,12 +19,6 @@ namespace {
 /// x to `digits` significant digits ("null" when not finite: an error not measured, as in JSON).
 std::string g(double x, int digits = 3) { return std::isfinite(x) ? harness::detail::num(x, digits) : "null"; }
 
-/// The verdict's line on stderr (docs/tool.md, exit codes).
-std::string regression_line(std::size_t regressions) {
-  return "curvebench: compare: " + std::to_string(regressions) +
-         (regressions == 1 ? " confident regression" : " confident regressions") + " (exit 1)\n";
-}
-
 /// A change as a percentage, or as a factor once it passes 100x ("x2.1e+03", not 200000.0%).
 std::string percent(double change) {
   std::ostringstream os;
@@ -116,7 +110,7 @@ int run_compare(const compare_args& a) {
   if (a.json) {
     std::cout << std::setw(1) << harness::to_json(c) << "\n";
     for (const std::string& w : c.warnings) std::cerr << "curvebench: compare: warning: " << w << "\n";
-    if (regressions > 0) std::cerr << regression_line(regressions);
+    if (regressions > 0) say_verdict("compare", regressions, "confident regression", "confident regressions");
     return regressions > 0 ? 1 : 0;
   }
   const auto count = [](const auto& rows, auto keep) {
@@ -166,7 +160,7 @@ int run_compare(const compare_args& a) {
             << (regressions == 0 ? std::string("no confident regression")
                                  : std::to_string(regressions) + (regressions == 1 ? " regression" : " regressions"))
             << "\n";
-  if (regressions > 0) std::cerr << regression_line(regressions);
+  if (regressions > 0) say_verdict("compare", regressions, "confident regression", "confident regressions");
   return regressions > 0 ? 1 : 0;
 }
 

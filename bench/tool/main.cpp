@@ -378,9 +378,7 @@ int run(int argc, char** argv) {
       for (const auto& b : breaches)
         std::cout << "gate: BREACH " << b.rule << " " << b.where << ": " << b.message << "\n";
       std::cout << "gate: " << t.at("rules").size() << " rules, " << breaches.size() << " breaches\n";
-      if (!breaches.empty())  // the verdict on stderr too (docs/tool.md, exit codes)
-        std::cerr << "curvebench: gate: " << breaches.size() << (breaches.size() == 1 ? " breach" : " breaches")
-                  << " (exit 1)\n";
+      if (!breaches.empty()) tool::say_verdict("gate", breaches.size(), "breach", "breaches");
       return breaches.empty() ? 0 : 1;
     }
   } catch (const std::exception& e) {

@@ -77,6 +77,10 @@ class progress {
 /// The footer of a subcommand's --help: one example.
 std::string example(const std::string& command);
 
+/// A negative verdict's line on stderr (docs/tool.md, exit codes), where a CI log shows it:
+/// "curvebench: gate: 2 breaches (exit 1)"; `one` and `many` are the counted word's two forms.
+void say_verdict(const std::string& command, std::size_t count, const std::string& one, const std::string& many);
+
 /// Why a result of `curve` in double is not finite, in the user's terms: the curve's domain, its
 /// narrowest breakpoint span and its largest |coordinate| on the breakpoints, which say whether the
 /// data exceed double's range (coordinates or derivatives past ~1e308; knot spans so narrow that
