@@ -7,6 +7,7 @@
 #include "support/fixtures.hpp"
 
 #include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/hermite_spline.hpp"
 #include "curvebench/curves/lagrange.hpp"
 #include "curvebench/curves/nurbs.hpp"
 #include "curvebench/curves/rational_bezier.hpp"
@@ -374,4 +375,78 @@ TEST(reference, a_burst_of_speed_narrower_than_the_nodes_is_found_by_the_chord) 
         << ", relative " << static_cast<double>(abs(r.length() - truth) / truth);
     EXPECT_GE(r.length(), fine * (1 - R("1e-40"))) << "w = " << w << ": below the inscribed polygon";
   }
+}
+
+// A 1D curve's length is its total variation: the sum of |x(r_j+1) - x(r_j)| between the zeros r_j
+// of x' (closed form: x' is a quadratic per segment). This 1D Hermite spline (the sweep of issue 33)
+// has end slopes 1e-6 of its chords, so x' vanishes about 1e-7 of a segment from each knot: inside
+// the first and last sampling intervals, where no sampled minimum brackets it, and at the middle
+// knot the next segment's P' was sampled. The reference missed those cusps: 27.010441700892218
+// (4e-14 relative short) claiming 2.9e-49; mpmath's total variation at 30 digits is
+// 27.01044170089323038. Both tolerances are the file's 1e-40 (the cusps are located to ~1e-48).
+TEST(reference, cusps_within_the_end_sampling_intervals_of_a_segment) {
+  using p1 = cb::point<R, 1>;
+  const std::vector<double> x{-4.3956121485829, 8.347203569851503, -5.920422412606312};
+  const std::vector<double> m{-8.616913516939592e-06, -1.7714687517724158e-06, -5.018719425729576e-06};
+  cb::point_list<R, 1> values, slopes;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    values.push_back(p1(R(x[i])));
+    slopes.push_back(p1(R(m[i])));
+  }
+  const cb::hermite_spline<R, 1> c({R(0), R(1), R(2)}, values, slopes);
+  // The closed form, segment by segment: x(t) = a t^3 + b t^2 + c t + d on t in [0, 1].
+  R exact(0);
+  for (std::size_t i = 0; i + 1 < x.size(); ++i) {
+    const R p0(x[i]), p1v(x[i + 1]), m0(m[i]), m1(m[i + 1]);
+    const R a = R(2) * (p0 - p1v) + m0 + m1, b = R(3) * (p1v - p0) - R(2) * m0 - m1, cc = m0;
+    const auto at = [&](const R& t) { return ((a * t + b) * t + cc) * t + p0; };
+    // x' = 3a t^2 + 2b t + c: the stable quadratic formula (no cancellation between b and the root).
+    const R A = R(3) * a, B = R(2) * b, disc = B * B - R(4) * A * cc;
+    std::vector<R> ts{R(0)};
+    if (disc > 0) {
+      const R q = -(B + (B < 0 ? -sqrt(disc) : sqrt(disc))) / 2;
+      std::vector<R> roots{q / A, cc / q};
+      std::sort(roots.begin(), roots.end());
+      for (const R& r : roots)
+        if (r > 0 && r < 1) ts.push_back(r);
+    }
+    ts.push_back(R(1));
+    for (std::size_t j = 0; j + 1 < ts.size(); ++j) exact += abs(at(ts[j + 1]) - at(ts[j]));
+  }
+  EXPECT_TRUE(cbt::within_relative(exact, R("27.01044170089323038"), 1e-18)) << "the closed form against mpmath";
+  const ref::reference_arc_length<cb::hermite_spline<R, 1>> r(c);
+  expect_length(r, exact, "1D Hermite with end cusps");
+  // x' changes sign near both ends of the first segment; the second, falling with falling end
+  // slopes, has none.
+  EXPECT_EQ(r.speed_minima().size(), 2u);
+}
+
+// A circle of radius 1e-150 centred at (1e10, 1e10): at 50 digits its control points all round to
+// the centre, so its speed is the rounding of the quotient rule (~1e-40), noise with sampled minima
+// everywhere. Each minimum was graded and each piece halved through the extra levels meant for
+// truncation-sized estimates: 46 million evaluations (6 minutes) with a per-piece cap of 64 panels,
+// and `check --lengths` on it never finished. Such a segment (whole sampled length below 2^10 eps
+// of its points' size) is one rule now, and its error must cover the distance to the true length,
+// 2 pi 1e-150 (~0 next to the noise).
+TEST(reference, a_speed_of_pure_rounding_noise_is_one_rule_with_an_honest_error) {
+  using circle = counted_curve<cb::nurbs<R, 2>>;
+  const circle c{cb::nurbs_circle_9<R>(p2(R("1e10"), R("1e10")), R("1e-150"))};
+  const ref::reference_arc_length<circle> r(c);
+  // 4 quarter arcs: 65 samples, 3 points and one rule of 61 each; 2000 leaves room for a few
+  // minimum searches, 4 orders of magnitude below the runaway.
+  EXPECT_LE(*c.calls, 2000u) << "evaluations";
+  EXPECT_TRUE(r.speed_minima().empty());
+  const R truth = R(2) * boost::math::constants::pi<R>() * R("1e-150");
+  EXPECT_GE(r.length_error(), abs(r.length() - truth))
+      << "length " << static_cast<double>(r.length()) << ", estimate " << static_cast<double>(r.length_error());
+  EXPECT_GE(r.s_result(R("0.3")).error_estimate, abs(r.s(R("0.3"))));
+  // Control: radius 1e-30 is resolved, with no noise bound in its estimate. Its control points
+  // 1e10 +- 1e-30 carry 50-digit rounding of ~1e-40, 1e-10 of the radius, so the curve is a circle
+  // to 1e-10 only (measured 2.2e-12 from 2 pi 1e-30; 1e-9 allows 450x).
+  const circle real{cb::nurbs_circle_9<R>(p2(R("1e10"), R("1e10")), R("1e-30"))};
+  const ref::reference_arc_length<circle> rr(real);
+  EXPECT_TRUE(cbt::within_relative(rr.length(), R(2) * boost::math::constants::pi<R>() * R("1e-30"), 1e-9));
+  // Its estimate is the quadrature's at the speed's rounding floor (measured 1.2e-12 of L), not the
+  // noise bound, which is at least the length itself.
+  EXPECT_LT(rr.length_error(), R("1e-9") * rr.length());
 }

@@ -443,6 +443,18 @@ std::vector<check_result> run_dim(const io::field& spec, const std::vector<const
     if (in->kind == check_kind::inverse) inverse_layout(in->table).check_rows(in->table, d, o);
   }
   case_reference<Dim> ref(spec);
+  // A check by arc length grades answers by a reference that must be far better than double: 1e-20
+  // of L still resolves a double answer's error (>= ~1e-16 of L) to 4 digits. A curve whose speed
+  // is rounding at 50 digits (a circle of radius 1e-150 centred at 1e10) has no such reference; its
+  // rows would be graded against noise.
+  const bool by_length = std::any_of(inputs.begin(), inputs.end(), [](const check_input* in) {
+    return in->kind == check_kind::lengths || in->kind == check_kind::inverse;
+  });
+  if (by_length && ref.length() > 0 && !(ref.length_error() <= 1e-20))
+    throw invalid_input("the 50-digit reference length L = " + num(ref.length()) + " of this curve is good to " +
+                        num(ref.length_error(), 3) +
+                        " of L only (its speed is rounding at 50 digits: the curve is too small for its coordinates); "
+                        "--lengths and --inverse need 1e-20");
   std::vector<check_result> out;
   for (const check_input* in : inputs) {
     check_result r = in->kind == check_kind::values    ? check_values(ref, in->table, o)

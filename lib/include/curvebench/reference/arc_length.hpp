@@ -10,9 +10,12 @@
 // more levels) while its estimate is still truncation (above sqrt(eps) of its value, far from any
 // rounding) or its value falls short of its chord |P(b) - P(a)|: a burst of speed narrower than
 // the rule's node spacing (a conic of weight 1e6 covers its length within 1e-6 of its ends)
-// escapes both rules of the pair alike, and only the chord shows it; or tanh-sinh, ungraded. s(u) from
+// escapes both rules of the pair alike, and only the chord shows it; at most max_panels panels per
+// piece (the estimate of a piece stopped there stays in length_error); or tanh-sinh, ungraded. s(u) from
 // the split point at or left of u; u(s) by Boost's bracketed newton_raphson_iterate.
-// The estimates measure truncation, not the rounding of the speed itself.
+// The estimates measure truncation, not the rounding of the speed itself, except on a segment whose
+// whole sampled length is below 2^10 eps of its points' size (its speed is rounding at this
+// precision): it is one rule, no split, and its error |value| + that bound.
 // Sources: Piessens et al. (1983, QUADPACK); Takahasi & Mori (1974, tanh-sinh); Brent (1973).
 // Cost: a few hundred evaluations per polynomial piece at 50 digits, ~50 panels more per speed
 // minimum; u(s) one integral per Newton step. Accuracy: ~1e-45 relative in real50 against every
@@ -51,6 +54,10 @@ struct reference_options {
   /// Bisection levels beyond max_depth for a panel whose estimate is still truncation or whose value
   /// falls short of its chord (only such halves go on): a burst 2^-64 of a panel wide is found.
   unsigned max_extra_depth{64};
+  /// Panels (61 evaluations each) one piece's bisection may add: with the extra levels a piece whose
+  /// speed is rounding noise at this precision (a circle of radius 1e-150 centred at 1e10) would
+  /// halve for ever (`check` gave no answer in 5 minutes); a real feature needs a few hundred.
+  std::size_t max_panels{4096};
   std::size_t samples_per_segment{64};
   /// A speed minimum below split_ratio * (max sampled speed of its segment) becomes a split point.
   Real split_ratio{Real(1) / Real(4)};
@@ -70,7 +77,10 @@ class reference_arc_length {
       splits_.push_back(bp[i]);
       grade_levels_.push_back(0);
       if (!(bp[i + 1] > bp[i])) continue;
-      for (const auto& [z, levels] : interior_minima(bp[i], bp[i + 1])) {
+      Real noise(0);
+      const auto minima = interior_minima(bp[i], bp[i + 1], noise);
+      if (noise > Real(0)) noise_.push_back({bp[i], bp[i + 1], noise});
+      for (const auto& [z, levels] : minima) {
         splits_.push_back(z);
         grade_levels_.push_back(levels);
         minima_.push_back(z);
@@ -239,6 +249,11 @@ class reference_arc_length {
   [[nodiscard]] Real integrate_panel(const Real& a, const Real& b, const Real& tolerance, Real& err) const {
     using std::abs;
     using std::max;
+    if (const Real* bound = noise_bound(a, b)) {  // one rule: its value is rounding, and its error says so
+      const Real v = rule(a, b).value;
+      err = abs(v) + *bound;
+      return v;
+    }
     const Real resolution = Real(64) * epsilon<Real>() * (abs(a) + abs(b)) / abs(b - a);
     const Real tol = max(tolerance, resolution);
     auto f = [this](const Real& x) {
@@ -254,7 +269,8 @@ class reference_arc_length {
     const panel_estimate whole = rule(a, b);
     const Real abs_tol = tol * abs(whole.value);
     err = Real(0);
-    return bisect(a, b, whole, depth, opt_.max_extra_depth, tol, abs_tol, false, err);
+    std::size_t panels = opt_.max_panels;
+    return bisect(a, b, whole, depth, opt_.max_extra_depth, tol, abs_tol, false, err, panels);
   }
 
   struct panel_estimate {
@@ -268,7 +284,7 @@ class reference_arc_length {
   [[nodiscard]] Real integrate_short(const Real& a, const Real& b, const Real& tolerance, Real& err) const {
     using std::abs;
     using std::max;
-    if (opt_.integrator != reference_integrator::tanh_sinh) {
+    if (opt_.integrator != reference_integrator::tanh_sinh && noise_bound(a, b) == nullptr) {
       const Real resolution = Real(64) * epsilon<Real>() * (abs(a) + abs(b)) / abs(b - a);
       const Real half = (b - a) / Real(2), mid = a + half;
       auto g = [&](const Real& x) {
@@ -283,6 +299,15 @@ class reference_arc_length {
       }
     }
     return integrate_panel(a, b, tolerance, err);
+  }
+
+  // The noise bound of the segment [a, b] lies in (see interior_minima), or nullptr: on such a
+  // segment the true length is taken to be below the bound (its sampled length is), so a computed
+  // value v is within |v| + bound of it, which is the error reported.
+  [[nodiscard]] const Real* noise_bound(const Real& a, const Real& b) const {
+    for (const noise_segment& n : noise_)
+      if (a >= n.lo && b <= n.hi) return &n.bound;
+    return nullptr;
   }
 
   [[nodiscard]] panel_estimate rule(const Real& a, const Real& b) const {
@@ -313,17 +338,20 @@ class reference_arc_length {
   // sqrt(eps) of its value) or whose value falls short of its chord (below_chord, which bisects it
   // whatever its estimate).
   [[nodiscard]] Real bisect(const Real& a, const Real& b, const panel_estimate& p, unsigned depth, unsigned extra,
-                            const Real& tol, const Real& abs_tol, bool suspect, Real& err) const {
+                            const Real& tol, const Real& abs_tol, bool suspect, Real& err, std::size_t& panels) const {
     using std::abs;
     using std::max;
     using std::sqrt;
     const bool short_of_chord = extra > 0 && below_chord(a, b, p, tol);
     const bool met = p.error <= max(abs_tol, tol * abs(p.value));
     const bool truncation = p.error > sqrt(epsilon<Real>()) * abs(p.value);
-    if (!short_of_chord && (met || (depth == 0 && (extra == 0 || !truncation)))) {
+    // panels < 2: the piece's budget (max_panels) is spent; the panel is kept with its estimate, so
+    // the reference's own error (length_error) says how far it is from converged.
+    if (panels < 2 || (!short_of_chord && (met || (depth == 0 && (extra == 0 || !truncation))))) {
       err += p.error;
       return p.value;
     }
+    panels -= 2;
     const Real m = a + (b - a) / Real(2);
     const panel_estimate left = rule(a, m), right = rule(m, b);
     const bool stagnated =
@@ -334,48 +362,75 @@ class reference_arc_length {
     }
     const unsigned next = depth > 0 ? depth - 1 : 0u;
     const unsigned next_extra = (depth == 0 || short_of_chord) && extra > 0 ? extra - 1 : extra;
-    return bisect(a, m, left, next, next_extra, tol, abs_tol / Real(2), stagnated, err) +
-           bisect(m, b, right, next, next_extra, tol, abs_tol / Real(2), stagnated, err);
+    return bisect(a, m, left, next, next_extra, tol, abs_tol / Real(2), stagnated, err, panels) +
+           bisect(m, b, right, next, next_extra, tol, abs_tol / Real(2), stagnated, err, panels);
   }
 
   // Interior local minima of the speed on (a, b) below split_ratio * max speed, refined.
-  // (location, grading levels), see the header.
-  [[nodiscard]] std::vector<std::pair<Real, int>> interior_minima(const Real& a, const Real& b) const {
+  // (location, grading levels), see the header. Beside the sampled minima (a sample below both
+  // neighbours), a minimum inside an end interval (the end sample lowest, the speed falling
+  // towards the end) and any interval across which P' turns back by more than 90 degrees (its dot
+  // product negative) are searched too, and kept only where Newton converges strictly inside: a 1D
+  // Hermite spline with end slopes of 1e-6 of its chords has exact cusps 1e-7 from its knots, in
+  // no sample's bracket, and the reference missed their 1e-12 of length while claiming 1e-49.
+  // The last sample is taken just inside b: at an interior breakpoint P'(b) is the next segment's.
+  // noise (out): > 0 when the segment's whole sampled length, sqrt(max |P'|^2) (b - a), is below
+  // 2^10 eps of its points' size: its speed is then the rounding of the evaluation at this
+  // precision (a circle of radius 1e-150 centred at 1e10 has all its control points rounded to the
+  // centre), with sampled minima everywhere; no minimum is split at (each would be graded, and the
+  // pieces multiplied the work without bound), and the value is that bound (see noise_bound).
+  [[nodiscard]] std::vector<std::pair<Real, int>> interior_minima(const Real& a, const Real& b, Real& noise) const {
     using std::abs;
     using std::sqrt;
     const std::size_t m = opt_.samples_per_segment;
+    const Real tiny = Real(64) * epsilon<Real>() * (abs(a) + abs(b) + (b - a));
     std::vector<Real> us(m + 1), g(m + 1);
+    std::vector<typename C::point_type> d1s(m + 1);
     Real gmax(0);
     for (std::size_t k = 0; k <= m; ++k) {
-      us[k] = k == m ? b : a + (b - a) * Real(static_cast<long long>(k)) / Real(static_cast<long long>(m));
-      g[k] = speed2(us[k]);
+      us[k] = k == m ? Real(b - tiny) : a + (b - a) * Real(static_cast<long long>(k)) / Real(static_cast<long long>(m));
+      d1s[k] = curve_.derivative(us[k], 1);
+      g[k] = d1s[k].squaredNorm();
       gmax = std::max(gmax, g[k]);
     }
     std::vector<std::pair<Real, int>> out;
     if (!(gmax > Real(0))) return out;  // speed zero on the whole segment: nothing to split
+    using std::max;
+    const Real size = max(Real(curve_(a).norm()), max(Real(curve_((a + b) / Real(2)).norm()), Real(curve_(b).norm())));
+    if (sqrt(gmax) * (b - a) <= Real(1024) * epsilon<Real>() * size) {
+      noise = Real(1024) * epsilon<Real>() * size;
+      return out;
+    }
     const Real threshold = opt_.split_ratio * opt_.split_ratio * gmax;
-    for (std::size_t k = 1; k < m; ++k) {
-      if (!(g[k] <= g[k - 1] && g[k] <= g[k + 1]) || g[k] > threshold) continue;
-      if (g[k] == g[k - 1] && g[k] == Real(0)) continue;  // inside a zero-speed stretch: one split is enough
+    // Brent's minimum of |P'|^2 on [lo, hi], then Newton on h = P'.P'' (zero at a minimum of |P'|^2)
+    // kept inside the bracket; `strict`: kept only when Newton converged strictly inside it.
+    const auto search = [&](const Real& lo, const Real& hi, bool strict) {
       auto obj = [this](const Real& x) { return speed2(x); };
-      const auto res =
-          boost::math::tools::brent_find_minima(obj, us[k - 1], us[k + 1], std::numeric_limits<Real>::digits / 2);
+      const auto res = boost::math::tools::brent_find_minima(obj, lo, hi, std::numeric_limits<Real>::digits / 2);
       Real x = res.first;
-      // Newton on h = P'.P'' (zero at a minimum of |P'|^2), kept inside the bracket.
+      bool converged = false;
       for (int it = 0; it < 40; ++it) {
         const typename C::point_type d1 = curve_.derivative(x, 1);
         const typename C::point_type d2 = curve_.derivative(x, 2);
         const typename C::point_type d3 = curve_.derivative(x, 3);
         const Real h = d1.dot(d2);
         const Real dh = d2.squaredNorm() + d1.dot(d3);
+        if (h == Real(0)) {
+          converged = true;
+          break;
+        }
         if (!(dh > Real(0))) break;
         const Real next = x - h / dh;
-        if (!(next > us[k - 1] && next < us[k + 1])) break;
+        if (!(next > lo && next < hi)) break;
         const bool done = abs(next - x) <= epsilon<Real>() * (abs(x) + abs(b - a));
         x = next;
-        if (done) break;
+        if (done) {
+          converged = true;
+          break;
+        }
       }
-      if (x > a && x < b && (out.empty() || x > out.back().first)) {
+      if (strict && !(converged && x > lo + tiny && x < hi - tiny)) return;
+      if (x > a && x < b && (out.empty() || x > out.back().first + tiny)) {
         const Real g0 = speed2(x);
         int levels = 48;  // an exact cusp (g0 = 0, or no curvature term to measure delta by)
         const typename C::point_type d1 = curve_.derivative(x, 1), d2 = curve_.derivative(x, 2),
@@ -389,12 +444,27 @@ class reference_arc_length {
         }
         out.emplace_back(x, levels);
       }
+    };
+    const auto turns_back = [&](std::size_t k) { return d1s[k].dot(d1s[k + 1]) < Real(0); };
+    if (g[0] <= g[1] && g[0] <= threshold) search(a, us[1], true);
+    for (std::size_t k = 1; k < m; ++k) {
+      if (turns_back(k - 1)) search(us[k - 1], us[k], true);
+      if (!(g[k] <= g[k - 1] && g[k] <= g[k + 1]) || g[k] > threshold) continue;
+      if (g[k] == g[k - 1] && g[k] == Real(0)) continue;  // inside a zero-speed stretch: one split is enough
+      search(us[k - 1], us[k + 1], false);
     }
+    if (turns_back(m - 1)) search(us[m - 1], b, true);
+    if (g[m] <= g[m - 1] && g[m] <= threshold) search(us[m - 1], b, true);
     return out;
   }
 
+  struct noise_segment {
+    Real lo, hi, bound;
+  };
+
   C curve_;
   reference_options<Real> opt_;
+  std::vector<noise_segment> noise_;  // segments whose speed is rounding (interior_minima)
   std::vector<Real> splits_, minima_, cumulative_, cumulative_error_;
   std::vector<int> grade_levels_;
 };
