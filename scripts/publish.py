@@ -9,6 +9,8 @@ Nothing here is typed by hand: every figure comes from the run's files (accuracy
 bench_*.json, vocabulary.json, run.json) through headline(), which is pure; docs/results/
 headline.json keeps that data, and the README block is rendered from it alone (render_readme), so
 tests/python can check that the README says what headline.json says.
+Each publish also appends the run's headline figures to docs/results/history.jsonl
+(report_history.py; one line per revision), which the report plots over revisions.
 Budget: the plots copied under docs/results/ stay under MAX_PLOT_BYTES together (the history stays
 small); publishing fails otherwise.
 """
@@ -24,6 +26,7 @@ from collections import defaultdict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_channel as rc  # noqa: E402
+import report_history  # noqa: E402
 import report_lib as lib  # noqa: E402
 import safe_output  # noqa: E402
 
@@ -406,6 +409,8 @@ def publish(report_dir, docs_dir, readme, allow_quick=False):
     for n in plots:
         shutil.copyfile(os.path.join(report_dir, "plots", n), os.path.join(out, n))
     atomic_write(os.path.join(out, "headline.json"), json.dumps(h, indent=1, sort_keys=True) + "\n")
+    history = os.path.join(out, "history.jsonl")
+    report_history.write(history, report_history.appended(report_history.load(history), report_history.entry(h)))
     results = render_results(h, plots) + "\n"
     results = replace_fidelity(results, render_fidelity(load_fidelity(report_dir), list(vocab.tools.values())))
     atomic_write(os.path.join(docs_dir, "results.md"), results)
@@ -427,7 +432,22 @@ def main():
                     help="refresh only the tool-model fidelity block of RESULTS from REPORTS/fidelity.json and "
                          "REPORTS/vocabulary.json (what `curvebench fidelity --json` and `list vocabulary --json` "
                          "write); the rest of the published run stays")
+    ap.add_argument("--history-only", action="store_true",
+                    help="append the published run (DOCS/results/headline.json) to DOCS/results/history.jsonl, "
+                         "for a run published before the history existed; the rest stays")
     args = ap.parse_args()
+    if args.history_only:
+        try:
+            out = os.path.join(os.path.abspath(args.docs), "results")
+            with open(os.path.join(out, "headline.json"), encoding="utf-8") as f:
+                e = report_history.entry(json.load(f))
+            path = os.path.join(out, "history.jsonl")
+            report_history.write(path, report_history.appended(report_history.load(path), e))
+        except (OSError, ValueError, KeyError, lib.ReportError) as err:
+            print(f"publish.py: {err}", file=sys.stderr)
+            return 1
+        print(f"publish.py: {path}: revision {e['revision']} recorded")
+        return 0
     if args.fidelity_only:
         try:
             report_dir = os.path.abspath(args.reports)

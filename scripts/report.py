@@ -34,6 +34,8 @@ import safe_output  # noqa: E402
 import report_peers  # noqa: E402
 import report_channel  # noqa: E402
 import report_summary  # noqa: E402
+import report_history  # noqa: E402
+import publish  # noqa: E402
 from report_lib import TARGETS, pareto_front  # noqa: E402
 
 import matplotlib  # noqa: E402
@@ -320,6 +322,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--reports", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "reports"))
     ap.add_argument("--vocabulary", help="the vocabulary JSON (default: REPORTS/vocabulary.json)")
+    ap.add_argument("--history", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                                                      report_history.HISTORY),
+                    help="the published runs' history (default: the checkout's docs/results/history.jsonl)")
     args = ap.parse_args()
     report_dir = os.path.abspath(args.reports)
     plot_dir = os.path.join(report_dir, "plots")
@@ -331,6 +336,7 @@ def main():
         bench_context, bench_rows = lib.load_benchmark_files(
             sorted(glob.glob(os.path.join(report_dir, "bench_*.json"))), vocab)
         times = lib.case_times(bench_rows)
+        history = report_history.load(args.history)
     except (OSError, lib.ReportError) as e:
         print(f"report.py: {e}", file=sys.stderr)
         return 1
@@ -353,6 +359,8 @@ def main():
         peer_records = report_peers.all_peer_records(acc, report_peers.load_peer_files(report_dir))
     except (OSError, lib.ReportError):  # the Peers section says why
         peer_records = list(acc.get("peer_records", []))
+    # This run's history line, from the same headline data --publish would append (all benchmark rows).
+    current = report_history.entry(publish.headline(acc, bench_context, bench_rows, vocab, {})) if acc else None
     md = ["## Machine and build", ""]
     md.append(table(["item", "value"], [
         ["revision", ctx.get("revision", bench_context.get("git_revision", "-"))],
@@ -480,6 +488,7 @@ def main():
 
     md += ["", "## Error-estimate honesty", ""]
     md.append(honesty_section(records) if records else "No results.")
+    md += report_history.section(history, current, plot_dir, plt, atomic_savefig)
     md.append("")
     summary = report_summary.summary_section(records, peer_records, times, channel_times,
                                              {c["name"]: c.get("group") for c in acc.get("cases", [])}, fidelity,
