@@ -70,7 +70,7 @@ channel::gltf::rotation_sampler<Real> rotation_of_spec(const field& spec) {
                         : g::rotation_blend::slerp;
   if (spec.has("blend") && mode != g::interpolation::linear)
     spec.member("blend").fail("blend chooses how linear interpolation turns between two rotations; interpolation \"" +
-                              spec.member("interpolation").value.template get<std::string>() +
+                              std::string(g::to_string(mode)) +
                               "\" would ignore it (step holds each key, cubicspline interpolates the components)");
   std::vector<Real> t = spec.member("times", "tool \"gltf\" takes times").reals<Real>();
   const field vf = spec.member("values", "tool \"gltf\" takes values");
