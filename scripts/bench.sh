@@ -5,7 +5,9 @@
 #   scripts/bench.sh           full run (all cases and settings, 3 benchmark repetitions; < 20 min on 2 cores)
 #   scripts/bench.sh --quick   the quick suite and short benchmarks (a few minutes)
 #   scripts/bench.sh --publish full run, then docs/results.md, docs/results/ and the README's figures
-#                              (scripts/publish.py; commit them with the revision they name)
+#                              (scripts/publish.py; commit them with the revision they name); refused
+#                              when an optional peer did not run (install them: scripts/peers.sh)
+#                              unless --allow-missing-peers is also given
 #   scripts/bench.sh --baseline DIR   then `curvebench compare DIR reports` (DIR: a copy of an
 #                              earlier reports/); every benchmark repeated 5 times, so that a
 #                              slowdown can be told from noise; exits 1 on a confident regression
@@ -16,21 +18,27 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 
 quick=0
 publish=0
+allow_missing_peers=0
 baseline=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --quick) quick=1 ;;
     --publish) publish=1 ;;
+    --allow-missing-peers) allow_missing_peers=1 ;;
     --baseline)
       if [[ $# -lt 2 || -z "$2" ]]; then echo "bench.sh: --baseline needs a directory" >&2; exit 2; fi
       baseline="$2"
       shift ;;
     # The usage is the comment block under the shebang, printed without its "# ".
     -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
-    *) echo "bench.sh: unknown argument '$1' (allowed: --quick, --publish, --baseline DIR)" >&2; exit 2 ;;
+    *) echo "bench.sh: unknown argument '$1' (allowed: --quick, --publish, --allow-missing-peers, --baseline DIR)" >&2; exit 2 ;;
   esac
   shift
 done
+if [[ $allow_missing_peers -eq 1 && $publish -eq 0 ]]; then
+  echo "bench.sh: --allow-missing-peers goes with --publish" >&2
+  exit 2
+fi
 if [[ $quick -eq 1 && $publish -eq 1 ]]; then
   echo "bench.sh: --publish needs the full run; drop --quick" >&2
   exit 2
@@ -159,7 +167,10 @@ honest=0
 printf '{"quick": %s, "seconds_after_build": %d}\n' "$([[ $quick -eq 1 ]] && echo true || echo false)" \
        "$((SECONDS - start))" >"$reports/run.json"
 if [[ $publish -eq 1 ]]; then
-  /usr/bin/python3 "$root/scripts/publish.py" --reports "$reports" --docs "$root/docs" --readme "$root/README.md"
+  publish_args=()
+  [[ $allow_missing_peers -eq 1 ]] && publish_args+=(--allow-missing-peers)
+  /usr/bin/python3 "$root/scripts/publish.py" --reports "$reports" --docs "$root/docs" --readme "$root/README.md" \
+                   "${publish_args[@]}"
 fi
 echo "bench.sh: done in $((SECONDS - start)) s after the build; see reports/REPORT.md"
 regressed=0

@@ -3,7 +3,10 @@
 most a dozen plots) and the README's generated figures, between its `results:begin`/`results:end`
 markers. Run by `scripts/bench.sh --publish` after a full run; by hand:
   /usr/bin/python3 scripts/publish.py --reports reports --docs docs --readme README.md
-Refuses a quick run (its figures are not the ones to publish) unless --allow-quick.
+Refuses a quick run (its figures are not the ones to publish) unless --allow-quick, and a run in
+which an optional peer of scripts/peers.sh did not run unless --allow-missing-peers (the page then
+names the missing ones). docs/results.md carries REPORT.md's Summary and Peers sections of the
+run (peers' accuracy, grouped findings, versions), rendered by the same code.
 
 Nothing here is typed by hand: every figure comes from the run's files (accuracy.json,
 bench_*.json, vocabulary.json, run.json) through headline(), which is pure; docs/results/
@@ -28,6 +31,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_channel as rc  # noqa: E402
 import report_history  # noqa: E402
 import report_lib as lib  # noqa: E402
+import report_peers  # noqa: E402
+import report_summary  # noqa: E402
 import safe_output  # noqa: E402
 
 MAX_PLOTS = 12
@@ -302,12 +307,19 @@ def render_results(h, plots):
                   + (" (quick)" if r["quick"] else "")],
         ["seconds after the build", r["seconds_after_build"]], ["accuracy sweep seconds", r["accuracy_seconds"]]]))
     md += ["", "Absolute times on a shared machine are noisy; the ratios are measured in the same run.", ""]
+    if h.get("peers_missing"):
+        md += ["Optional peers missing from this run (published with --allow-missing-peers): "
+               + ", ".join(h["peers_missing"]) + ".", ""]
+    if h.get("summary"):  # REPORT.md's summary of the same run (report_summary.py)
+        md += h["summary"] + [""]
 
     md += ["## Against peers", "", "Our fastest row with the peer's settings on the same data, time per operation "
            "(ratio < 1: ours faster).", ""]
     md.append(table(["family", "data", "ours", "ns", "peer", "ns", "ours / peer"],
                     [[p["family"], p["data"] or "-", p["ours"], p["ours_ns"], p["peer"], p["peer_ns"], p["ratio"]]
                      for p in h["peers"]]) if h["peers"] else "No peer benchmarks in this run.")
+    if h.get("peers_section"):  # REPORT.md's Peers section: accuracy, findings, versions (report_peers.py)
+        md += h["peers_section"]
     md += ["", "## Fastest reaching an error target (benchmarks)", ""]
     md.append(table(["family", "error counter", "target", "fastest", "ns per op", "fastest peer", "ns per op"],
                     [[t["family"], t["counter"], f"{t['target']:g}", t["best"] or "none reached", t["best_ns"],
@@ -392,11 +404,28 @@ def load_run(report_dir):
     return acc, bench_context, bench_rows, vocab, run
 
 
-def publish(report_dir, docs_dir, readme, allow_quick=False):
+def run_sections(report_dir, acc, bench_rows, vocab, allow_missing_peers):
+    """REPORT.md's Summary and Peers sections of the run (the same code renders both pages) and
+    the optional peers that did not run, which refuse the publish unless allow_missing_peers."""
+    try:
+        missing = report_peers.missing_drivers(report_peers.load_peer_files(report_dir))
+    except (OSError, lib.ReportError) as e:
+        raise PublishError(f"the optional peers' results could not be read: {e}") from e
+    if missing and not allow_missing_peers:
+        raise PublishError("optional peers did not run (no reports/peers_<driver>.json): " + ", ".join(missing)
+                           + "; install them with scripts/peers.sh and run again, or publish without them "
+                             "(scripts/bench.sh --publish --allow-missing-peers; docs/results.md then names them)")
+    rows = [r for r in bench_rows if r["family"] != lib.CASE_FAMILY]
+    return {"summary": report_summary.summary_of_run(acc, report_dir, bench_rows, vocab, load_fidelity(report_dir)),
+            "peers_section": report_peers.peers_section(acc, report_dir, rows, vocab), "peers_missing": missing}
+
+
+def publish(report_dir, docs_dir, readme, allow_quick=False, allow_missing_peers=False):
     acc, bench_context, bench_rows, vocab, run = load_run(report_dir)
     h = headline(acc, bench_context, bench_rows, vocab, run)
     if h["run"]["quick"] and not allow_quick:
         raise PublishError(f"{report_dir}/accuracy.json is a quick run: publish a full `scripts/bench.sh` run")
+    h.update(run_sections(report_dir, acc, bench_rows, vocab, allow_missing_peers))
     out = os.path.join(docs_dir, "results")
     os.makedirs(out, exist_ok=True)
     plots = choose_plots(os.path.join(report_dir, "plots"))
@@ -428,6 +457,8 @@ def main():
     ap.add_argument("--docs", default=os.path.join(root, "docs"))
     ap.add_argument("--readme", default=os.path.join(root, "README.md"), help="README to update ('' for none)")
     ap.add_argument("--allow-quick", action="store_true", help="publish a quick run (for trying the script)")
+    ap.add_argument("--allow-missing-peers", action="store_true",
+                    help="publish although an optional peer (scripts/peers.sh) did not run; the page names it")
     ap.add_argument("--fidelity-only", action="store_true",
                     help="refresh only the tool-model fidelity block of RESULTS from REPORTS/fidelity.json and "
                          "REPORTS/vocabulary.json (what `curvebench fidelity --json` and `list vocabulary --json` "
@@ -465,7 +496,8 @@ def main():
         print(f"publish.py: refreshed the fidelity block of {path}")
         return 0
     try:
-        h = publish(os.path.abspath(args.reports), os.path.abspath(args.docs), args.readme, args.allow_quick)
+        h = publish(os.path.abspath(args.reports), os.path.abspath(args.docs), args.readme, args.allow_quick,
+                    args.allow_missing_peers)
     except (OSError, ValueError, lib.ReportError, PublishError) as e:
         print(f"publish.py: {e}", file=sys.stderr)
         return 1

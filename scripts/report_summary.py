@@ -256,6 +256,20 @@ def fidelity_lines(fidelity, tools=()):
     return lines
 
 
+def summary_of_run(acc, report_dir, bench_rows, vocab, fidelity):
+    """The Summary section of a run's files (REPORT.md and docs/results.md alike): acc the accuracy
+    document, bench_rows every benchmark row (the per-case timings included), fidelity
+    reports/fidelity.json's document or None."""
+    records, _ = lib.split_subjects(acc.get("records", []))
+    try:
+        peer_records = report_peers.all_peer_records(acc, report_peers.load_peer_files(report_dir))
+    except (OSError, lib.ReportError):  # the Peers section says why
+        peer_records = list(acc.get("peer_records", []))
+    return summary_section(records, peer_records, lib.case_times(bench_rows), report_channel.bench_times(bench_rows),
+                           {c["name"]: c.get("group") for c in acc.get("cases", [])}, fidelity,
+                           report_channel.tool_names(vocab))
+
+
 def summary_section(records, peer_records, times, channel_times, case_groups, fidelity, tools):
     """The markdown lines of the "Summary" section."""
     md = ["## Summary", "",

@@ -14,6 +14,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import publish  # noqa: E402
+import report_peers  # noqa: E402
 
 FIXTURES = os.path.join(HERE, "fixtures")
 
@@ -148,7 +149,7 @@ class Publish(unittest.TestCase):
 
     def test_full_run_writes_pages_and_replaces_only_the_block(self):
         make_run(self.reports)
-        h = publish.publish(self.reports, self.docs, self.readme)
+        h = publish.publish(self.reports, self.docs, self.readme, allow_missing_peers=True)
         with open(self.readme, encoding="utf-8") as f:
             text = f.read()
         self.assertTrue(text.startswith("intro\n") and text.endswith("\noutro\n"))
@@ -163,7 +164,7 @@ class Publish(unittest.TestCase):
 
     def test_fidelity_block_is_written_and_refreshed_alone(self):
         make_run(self.reports)
-        publish.publish(self.reports, self.docs, self.readme)
+        publish.publish(self.reports, self.docs, self.readme, allow_missing_peers=True)
         page = os.path.join(self.docs, "results.md")
         with open(page, encoding="utf-8") as f:
             before = f.read()
@@ -199,7 +200,40 @@ class Publish(unittest.TestCase):
         with open(self.readme, "w", encoding="utf-8") as f:
             f.write("no block\n")
         with self.assertRaisesRegex(publish.PublishError, "results:begin"):
+            publish.publish(self.reports, self.docs, self.readme, allow_missing_peers=True)
+
+    def peers(self, drivers):
+        for name in drivers:
+            with open(os.path.join(self.reports, f"peers_{name}.json"), "w", encoding="utf-8") as f:
+                json.dump({"driver": name, "versions": {name: "1.0"}, "peer_records": []}, f)
+
+    def test_a_missing_optional_peer_refuses_the_publish_unless_allowed(self):
+        make_run(self.reports)
+        self.peers(d for d in report_peers.OPTIONAL_DRIVERS if d != "blender")
+        with self.assertRaises(publish.PublishError) as cm:
             publish.publish(self.reports, self.docs, self.readme)
+        self.assertIn("real Blender F-curves", str(cm.exception))
+        self.assertIn("--allow-missing-peers", str(cm.exception))
+        self.assertFalse(os.path.exists(os.path.join(self.docs, "results.md")))  # nothing published
+        publish.publish(self.reports, self.docs, self.readme, allow_missing_peers=True)
+        with open(os.path.join(self.docs, "results.md"), encoding="utf-8") as f:
+            page = f.read()
+        self.assertIn("Optional peers missing from this run (published with --allow-missing-peers): real Blender", page)
+
+    def test_every_peer_run_publishes_with_the_summary_and_the_peers_section(self):
+        make_run(self.reports)
+        self.peers(report_peers.OPTIONAL_DRIVERS)
+        h = publish.publish(self.reports, self.docs, self.readme)
+        self.assertEqual(h["peers_missing"], [])
+        with open(os.path.join(self.docs, "results.md"), encoding="utf-8") as f:
+            page = f.read()
+        self.assertNotIn("Optional peers missing", page)
+        # REPORT.md's sections of the same run, by the same code, in the published page.
+        for section in (h["summary"], h["peers_section"]):
+            self.assertIn("\n".join(section), page)
+        self.assertIn("## Summary", page)
+        self.assertIn("## Peers: the libraries users would pick instead", page)
+        self.assertIn("peers_three.json (scripts/peers.sh)", page)  # the versions table names each driver
 
 
 class CheckedIn(unittest.TestCase):
