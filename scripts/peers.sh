@@ -16,8 +16,8 @@
 # cubic-bezier() and steps() through the Web Animations API), measured the same way;
 # scripts/peers/penner_driver.mjs (Node: d3-ease 3.0.2, pinned in the same package.json), measured
 # by scripts/peers/penner_results.py against the Penner definitions d3 documents, at 50 digits,
-# beside curvebench's Blender model of the same equations; real Blender when `blender` is on PATH
-# (never installed here: Debian's blender is about 770 MB): scripts/peers/blender_channels.py turns
+# beside curvebench's Blender model of the same equations; real Blender (Debian's blender, major 3,
+# about 770 MB, installed here like the others; run when `blender` is on PATH): scripts/peers/blender_channels.py turns
 # the channel cases an F-curve can hold into a request for scripts/peers/blender_fcurves.py, run
 # by `blender -b`, and compares Blender's values with curvebench's Blender model and the exact keys;
 # scripts/peers/gltf_driver.mjs (Node: three 0.187.0, pinned in the same package.json) loads each
@@ -48,7 +48,7 @@ done
 # way), so an exact pin breaks the next fresh install. Comparability comes from the record instead:
 # every driver writes the version it ran (Chromium's, SciPy's, Blender's, Node's) into its result,
 # and the report shows it. Where a driver depends on a major version it is checked below.
-apt_packages=(python3-scipy python3-numpy python3-mpmath chromium chromium-common)
+apt_packages=(python3-scipy python3-numpy python3-mpmath chromium chromium-common blender)
 
 installed() {  # package -> 0 when installed (any version)
   [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
@@ -85,6 +85,8 @@ if [[ $install -eq 1 ]]; then
   # uses SciPy 1.x's integrate and interpolate interfaces.
   require_major chromium 112 "the driver runs --headless=new"
   require_major python3-scipy 1 "scipy_driver.py uses SciPy 1's interfaces"
+  # blender_fcurves.py was written and its recordings made against Debian's Blender 3.4.
+  require_major blender 3 "blender_fcurves.py uses Blender 3's F-curve API"
   for p in "${apt_packages[@]}"; do
     echo "peers.sh: $p $(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || echo 'not installed')"
   done
