@@ -199,6 +199,43 @@ TEST(arclength_honesty, a_speed_zero_between_the_minimum_search_samples) {
   EXPECT_TRUE(honest(al::segment_lengths<double>(c).total(), length));
 }
 
+// A sampled minimum hiding a speed zero just after it: a degree-6 Lagrange curve in 1D through 7
+// values near 1e10 (equispaced parameters). The minimum search's sample at 11/16 is a local minimum
+// of |x'| whose Newton leaves its bracket, so it is kept as a split at the sample itself; x' then
+// changes sign at 0.7178, between that sample and the next, and the turn-back search skipped the
+// interval because a feature "was already found" at its left end. Adaptive Gauss-Kronrod at tol
+// 1e-6 reported converged with 0.127 for an error of 0.604 (stop 46's sweep). The length is the
+// total variation of x: mpmath, at 60 digits, from the roots of x' with the parameters j / 6
+// rounded to double as here (804179.455840778844456694718; with exact sixths it differs at 1e-16).
+TEST(arclength_honesty, a_speed_zero_next_to_a_sampled_minimum) {
+  const std::vector<double> x{9999932069.852879, 10000078565.011377, 9999983345.737734, 10000008676.055332,
+                              9999932988.49744,  10000004816.063505, 10000084461.139624};
+  cb::point_list<double, 1> p;
+  cb::point_list<R, 1> p50;
+  std::vector<double> u;
+  std::vector<R> u50;
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    p.emplace_back(x[j]);
+    p50.emplace_back(R(x[j]));
+    u.push_back(static_cast<double>(j) / 6.0);
+    u50.push_back(R(u.back()));  // the double parameters, exactly: the same polynomial
+  }
+  const cb::lagrange<double, 1> c(p, u);
+  const ref::reference_arc_length<cb::lagrange<R, 1>> r50(cb::lagrange<R, 1>(p50, u50));
+  const R length = r50.length();
+  // The reference against mpmath's total variation: 1e-20 is far below anything measured here
+  // (the double methods' errors are 1e-12 and up) and above mpmath's 60-digit root finding.
+  EXPECT_TRUE(curvebench::testing::within_relative(length, R("804179.455840778844456694718"), 1e-20));
+  for (double tol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+    for (auto model : {al::error_model::gauss_difference, al::error_model::quadpack}) {
+      SCOPED_TRACE("tol = " + std::to_string(tol) + (model == al::error_model::quadpack ? " quadpack" : ""));
+      EXPECT_TRUE(honest(al::adaptive_length(c, adaptive_at(tol, model)), length));
+    }
+  }
+  for (int n : {4, 8, 16}) EXPECT_TRUE(honest(al::gauss_length(c, n, al::fixed_estimate::nested), length)) << n;
+  EXPECT_TRUE(honest(al::segment_lengths<double>(c).total(), length));
+}
+
 // A segment ending at a speed zero just before its right end (a 1D Kochanek-Bartels spline: x'
 // changes sign at 2.997 in [2, 3]). The minimum search sampled P' at the end from the next segment
 // (an interior breakpoint belongs to the segment on its right), so it neither saw the zero nor the
