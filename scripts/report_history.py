@@ -112,12 +112,14 @@ def section(history, current, plot_dir, plt, savefig):
                      f"`{HISTORY}`)."]
     md += [f"The headline figures of each published run (`{HISTORY}`, one line per revision, appended by "
            "`scripts/bench.sh --publish`) and of this run. Times are from different runs, possibly on "
-           "different machines (the host is shown): compare within a machine.", ""]
+           "different machines (the host is shown), and a quick run (marked) measures less: compare full "
+           "runs within a machine.", ""]
     names = sorted(series(runs))
     shown = runs[-TABLE_RUNS:]  # the plot has them all
     if len(runs) > len(shown):
         md += [f"The table shows the last {len(shown)} of {len(runs)} runs; the plot shows all.", ""]
-    md.append(lib.table(["figure"] + [f"{r['revision']} ({r['date'][:10]}, {r.get('host') or '-'})" for r in shown],
+    md.append(lib.table(["figure"] + [f"{r['revision']} ({r['date'][:10]}, {r.get('host') or '-'}"
+                                      + (", quick run" if r.get("quick") else "") + ")" for r in shown],
                         [[n] + [r["figures"].get(n, "-") for r in shown] for n in names]))
     if plt is None or len(runs) < 2 or not names:
         return md

@@ -125,6 +125,7 @@ class Report(unittest.TestCase):
         for e in rh.load(os.path.join(ROOT, rh.HISTORY)):
             self.assertIn(e["revision"], text)
         self.assertIn("xyz9876 (this run)", text)
+        self.assertIn("quick run)", text)  # a quick run is said to be one beside the published full runs
 
 
 class CheckedIn(unittest.TestCase):
