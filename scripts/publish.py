@@ -438,8 +438,7 @@ def publish(report_dir, docs_dir, readme, allow_quick=False, allow_missing_peers
     for n in plots:
         shutil.copyfile(os.path.join(report_dir, "plots", n), os.path.join(out, n))
     atomic_write(os.path.join(out, "headline.json"), json.dumps(h, indent=1, sort_keys=True) + "\n")
-    history = os.path.join(out, "history.jsonl")
-    report_history.write(history, report_history.appended(report_history.load(history), report_history.entry(h)))
+    report_history.record(os.path.join(out, "history.jsonl"), h)
     results = render_results(h, plots) + "\n"
     results = replace_fidelity(results, render_fidelity(load_fidelity(report_dir), list(vocab.tools.values())))
     atomic_write(os.path.join(docs_dir, "results.md"), results)
@@ -470,10 +469,9 @@ def main():
     if args.history_only:
         try:
             out = os.path.join(os.path.abspath(args.docs), "results")
-            with open(os.path.join(out, "headline.json"), encoding="utf-8") as f:
-                e = report_history.entry(json.load(f))
             path = os.path.join(out, "history.jsonl")
-            report_history.write(path, report_history.appended(report_history.load(path), e))
+            with open(os.path.join(out, "headline.json"), encoding="utf-8") as f:
+                e = report_history.record(path, json.load(f))
         except (OSError, ValueError, KeyError, lib.ReportError) as err:
             print(f"publish.py: {err}", file=sys.stderr)
             return 1

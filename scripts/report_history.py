@@ -93,6 +93,14 @@ def write(path, history):
     safe_output.write_text(path, "".join(json.dumps(x, sort_keys=True) + "\n" for x in history))
 
 
+def record(path, h):
+    """Appends the run of headline data h (publish.headline) to the history file at path, replacing
+    an earlier line of the same revision; returns the line."""
+    e = entry(h)
+    write(path, appended(load(path), e))
+    return e
+
+
 def series(history):
     """{figure: [(index, value)]} over the entries, in order; a figure an entry lacks is skipped."""
     out = {}
@@ -114,7 +122,8 @@ def section(history, current, plot_dir, plt, savefig):
            "`scripts/bench.sh --publish`) and of this run. Times are from different runs, possibly on "
            "different machines (the host is shown), and a quick run (marked) measures less: compare full "
            "runs within a machine.", ""]
-    names = sorted(series(runs))
+    data = series(runs)
+    names = sorted(data)
     shown = runs[-TABLE_RUNS:]  # the plot has them all
     if len(runs) > len(shown):
         md += [f"The table shows the last {len(shown)} of {len(runs)} runs; the plot shows all.", ""]
@@ -127,7 +136,6 @@ def section(history, current, plot_dir, plt, savefig):
     rows = (len(names) + cols - 1) // cols
     fig, axes = plt.subplots(rows, cols, figsize=(11, 2.6 * rows), squeeze=False)
     labels = [r["revision"].replace(" (this run)", "*") for r in runs]
-    data = series(runs)
     for k, name in enumerate(names):
         ax = axes[k // cols][k % cols]
         xs, ys = zip(*data[name])
