@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job: build optimized, run the accuracy sweep against 50-digit references and every
-# benchmark, and write reports/ (REPORT.md, accuracy.json/.csv, bench_*.json, vocabulary.json,
-# fidelity.json, plots/*.png).
+# benchmark, and write reports/ (REPORT.md, REPORT.html, accuracy.json/.csv, bench_*.json,
+# vocabulary.json, fidelity.json, plots/*.png).
 #   scripts/bench.sh           full run (all cases and settings, 3 benchmark repetitions; < 20 min on 2 cores)
 #   scripts/bench.sh --quick   the quick suite and short benchmarks (a few minutes)
 #   scripts/bench.sh --publish full run, then docs/results.md, docs/results/ and the README's figures
@@ -172,7 +172,7 @@ if [[ $publish -eq 1 ]]; then
   /usr/bin/python3 "$root/scripts/publish.py" --reports "$reports" --docs "$root/docs" --readme "$root/README.md" \
                    "${publish_args[@]}"
 fi
-echo "bench.sh: done in $((SECONDS - start)) s after the build; see reports/REPORT.md"
+echo "bench.sh: done in $((SECONDS - start)) s after the build; see reports/REPORT.md (or REPORT.html in a browser)"
 regressed=0
 if [[ -n "$baseline" ]]; then
   echo "bench.sh: compared with the baseline $baseline"

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Generates reports/REPORT.md and reports/plots/*.png from the results of scripts/bench.sh.
+"""Generates reports/REPORT.md, reports/REPORT.html and reports/plots/*.png from the results of
+scripts/bench.sh.
 
 Inputs (all in the reports directory, all produced by scripts):
   vocabulary.json  `curvebench list vocabulary --json`: methods, peers, algorithms, operations and
@@ -15,7 +16,8 @@ Inputs (all in the reports directory, all produced by scripts):
                    against the real tools
 REPORT.md opens with a summary built from these figures (per quantity and kind of curve the cheapest
 method reaching each error target, each peer's worst finding, each tool model's fidelity) and a table
-of contents (report_summary.py), then the sections.
+of contents (report_summary.py), then the sections. REPORT.html is the same Markdown rendered as one
+self-contained page (report_html.py): sortable, filterable tables and every plot inline as SVG.
 Exits 1, naming the benchmark, on a benchmark the vocabulary does not describe. Every file is
 written under a temporary name and renamed, so an interrupted run never leaves a half-written
 report. Uses Debian's python3-matplotlib (run with /usr/bin/python3); the pure helpers are in
@@ -23,6 +25,7 @@ report_lib.py (tested by tests/python).
 """
 import argparse
 import glob
+import io
 import json
 import os
 import sys
@@ -35,12 +38,16 @@ import report_peers  # noqa: E402
 import report_channel  # noqa: E402
 import report_summary  # noqa: E402
 import report_history  # noqa: E402
+import report_html  # noqa: E402
 import publish  # noqa: E402
 from report_lib import TARGETS, pareto_front  # noqa: E402
 
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
+# SVG text as text (a tenth of the size of glyphs as paths) and ids that do not change between runs.
+matplotlib.rcParams["svg.fonttype"] = "none"
+matplotlib.rcParams["svg.hashsalt"] = "curvebench"
 import matplotlib.pyplot as plt  # noqa: E402
 
 # Seed 001's property table as printed (EECS 487 lecture notes); data to show beside the measured one.
@@ -57,8 +64,16 @@ def atomic_write(path, text):
     safe_output.write_text(path, text)
 
 
+# Every figure of the run as SVG text, by its link in the Markdown ('plots/NAME.png'): REPORT.html
+# embeds them (report_html.py), so the page needs no file beside it.
+SVGS = {}
+
+
 def atomic_savefig(fig, path):
     safe_output.write_with(path, lambda tmp: fig.savefig(tmp, format="png", dpi=110, bbox_inches="tight"))
+    svg = io.StringIO()
+    fig.savefig(svg, format="svg", bbox_inches="tight")
+    SVGS[f"plots/{os.path.basename(path)}"] = svg.getvalue()
     plt.close(fig)
 
 
@@ -487,9 +502,10 @@ def main():
     md += report_history.section(history, current, plot_dir, plt, atomic_savefig)
     md.append("")
     summary = report_summary.summary_of_run(acc, report_dir, all_rows, vocab, fidelity)
-    md = head + summary + report_summary.toc(summary, md) + md
+    md = report_summary.link_details(head + summary + report_summary.toc(summary, md) + md)
     atomic_write(os.path.join(report_dir, "REPORT.md"), "\n".join(md) + "\n")
-    print(f"report.py: wrote {os.path.join(report_dir, 'REPORT.md')}")
+    atomic_write(os.path.join(report_dir, "REPORT.html"), report_html.render(md, SVGS))
+    print(f"report.py: wrote {os.path.join(report_dir, 'REPORT.md')} and REPORT.html")
     return 0
 
 

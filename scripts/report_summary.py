@@ -10,6 +10,7 @@ Built from the run's figures alone, with no name or number written in here:
 Pure functions: tests/python/test_report_summary.py runs them with Debian's python3 alone.
 """
 import math
+import re
 from collections import defaultdict
 
 import report_channel
@@ -316,23 +317,88 @@ def anchor(heading):
     return "".join(c if c.isalnum() or c in "-_" else "-" if c == " " else "" for c in heading.strip().lower())
 
 
-def toc(before, after, title="Contents"):
-    """The "## Contents" section that goes between the lines `before` and `after`: a link to every
-    "## " heading of both (outside code fences) but its own, with GitHub's suffixes -1, -2 for
-    anchors repeated in the page (its own heading counted where it stands)."""
+def flat(lines):
+    """The report's lines one per line (an entry of the report's lists may hold a whole table)."""
+    return "\n".join(lines).split("\n") if lines else []
+
+
+def headings(lines):
+    """(level, text, anchor) of every heading of lines (any level, outside ``` fences), in order, with
+    GitHub's anchors: a repeated one gets -1, -2, ... in the order of the page, whatever the levels
+    (so a "### X" in the summary and a later "## X" section get x and x-1)."""
     seen = defaultdict(int)
-    links, fenced = [], False
-    for line in before + [None] + after:
-        if line is None:  # the Contents heading itself
-            seen[anchor(title)] += 1
-            continue
+    out, fenced = [], False
+    for line in flat(lines):
         if line.startswith("```"):
             fenced = not fenced
-        if fenced or not line.startswith("## "):
             continue
-        text = line[3:].strip()
+        m = None if fenced else re.match(r"^(#{1,6}) (.*)$", line)
+        if not m:
+            continue
+        text = m.group(2).strip()
         a = anchor(text)
         n = seen[a]
         seen[a] += 1
-        links.append(f"- [{text}](#{a}{f'-{n}' if n else ''})")
+        out.append((len(m.group(1)), text, f"{a}-{n}" if n else a))
+    return out
+
+
+def heading_anchors(lines):
+    """The anchors of headings(lines), in order (report_html.py gives them to the page's headings)."""
+    return [a for _, _, a in headings(lines)]
+
+
+def toc(before, after, title="Contents"):
+    """The "## Contents" section that goes between the lines `before` and `after`: a link to every
+    "## " heading of both but its own, with the anchors GitHub gives them in the whole page."""
+    found = headings(before + [f"## {title}"] + after)
+    own = len(headings(before))  # the index of its own heading
+    links = [f"- [{text}](#{a})" for i, (level, text, a) in enumerate(found) if level == 2 and i != own]
     return [f"## {title}", ""] + links + [""]
+
+
+# Where the figures behind each subsection of the summary are: "### " subsection -> the "## "
+# sections that hold them, linked when the page has them (REPORT.md has all, docs/results.md some).
+DETAILS = {
+    "The method to use for an error target": (
+        "Arc length: error vs cost", "s(u): error vs cost", "Inversion u(s): error vs cost",
+        "Evaluation-algorithm accuracy", "Keyframe channels: time solvers and tool models", "Speed per operation",
+        "Arc length per case: fastest method reaching each relative error", "Evaluation algorithms"),
+    "Peers: the worst finding of each": ("Peers: the libraries users would pick instead",),
+    "Tool models against the real tools": ("Tool models against the real tools",),
+}
+
+
+def link_details(page):
+    """The page's lines with a "Details:" line closing each subsection of its "## Summary": links to
+    the sections (DETAILS) of the same page that hold the subsection's figures. Inserting lines that
+    are not headings leaves every anchor as it was."""
+    page = flat(page)
+    found = headings(page)
+    sections = {text: a for level, text, a in found if level == 2}
+    out, in_summary, pending = [], False, None
+
+    def close():
+        links = [f"[{t}](#{sections[t]})" for t in DETAILS.get(pending, ()) if t in sections]
+        if links:
+            if out and out[-1] != "":
+                out.append("")
+            out.extend(["Details: " + ", ".join(links) + ".", ""])
+    fenced = False
+    for line in page:
+        if line.startswith("```"):
+            fenced = not fenced
+        m = None if fenced else re.match(r"^(#{2,3}) (.*)$", line)
+        if m and in_summary:
+            close()
+            pending = None
+            if m.group(1) == "##":
+                in_summary = False
+            else:
+                pending = m.group(2).strip()
+        if m and m.group(1) == "##" and m.group(2).strip() == "Summary":
+            in_summary = True
+        out.append(line)
+    if in_summary:
+        close()
+    return out

@@ -23,7 +23,11 @@ if [[ $light -eq 1 && $sanitize -eq 0 ]]; then
   exit 2
 fi
 
-bash "$root/scripts/setup.sh"
+# Debian's Chromium (by name: a security update replaces its revision) for the test of REPORT.html in
+# a headless browser (tests/python/check_report_html.py); the sanitizer build does not run it.
+extra=()
+[[ $sanitize -eq 1 ]] || extra=(chromium fonts-dejavu-core)
+bash "$root/scripts/setup.sh" "${extra[@]}"
 # ccache keys on absolute paths unless told the checkout's root: with it, a fresh clone anywhere
 # (CI's) reuses the objects of an earlier build of the same sources.
 export CCACHE_BASEDIR="$root"

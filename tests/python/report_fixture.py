@@ -13,9 +13,12 @@ SCRIPTS = os.path.join(HERE, "..", "..", "scripts")
 FIXTURES = os.path.join(HERE, "fixtures")
 
 
-def run_report(test, acc, peer_files=()):
-    d = tempfile.mkdtemp()
-    test.addCleanup(shutil.rmtree, d)
+def run_report(test, acc, peer_files=(), directory=None):
+    """directory: where to run (the caller reads REPORT.html there too); default a temporary one."""
+    d = directory
+    if d is None:
+        d = tempfile.mkdtemp()
+        test.addCleanup(shutil.rmtree, d)
     for name, doc in peer_files:
         with open(os.path.join(d, name), "w", encoding="utf-8") as f:
             json.dump(doc, f)
