@@ -366,7 +366,8 @@ def render_results(h, plots):
         md.append("")
     if plots:
         md += ["## Plots", ""] + [f"![{name}](results/{name})" for name in plots] + [""]
-    return "\n".join(md)
+    # The summary's "Details:" links to this page's sections that hold its figures.
+    return "\n".join(report_summary.link_details(md))
 
 
 def choose_plots(plot_dir):

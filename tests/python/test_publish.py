@@ -15,6 +15,7 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import publish  # noqa: E402
 import report_peers  # noqa: E402
+import report_summary  # noqa: E402
 
 FIXTURES = os.path.join(HERE, "fixtures")
 
@@ -228,9 +229,14 @@ class Publish(unittest.TestCase):
         with open(os.path.join(self.docs, "results.md"), encoding="utf-8") as f:
             page = f.read()
         self.assertNotIn("Optional peers missing", page)
-        # REPORT.md's sections of the same run, by the same code, in the published page.
+        # REPORT.md's sections of the same run, by the same code, in the published page; the summary
+        # with its "Details:" links to the sections of this page (report_summary.link_details).
+        without_links = "\n".join(line for line in page.split("\n") if not line.startswith("Details: "))
         for section in (h["summary"], h["peers_section"]):
-            self.assertIn("\n".join(section), page)
+            self.assertIn("\n".join(report_summary.flat(section)).replace("\n\n\n", "\n\n"),
+                          without_links.replace("\n\n\n", "\n\n"))
+        self.assertIn("Details: [Peers: the libraries users would pick instead]"
+                      "(#peers-the-libraries-users-would-pick-instead).", page)
         self.assertIn("## Summary", page)
         self.assertIn("## Peers: the libraries users would pick instead", page)
         self.assertIn("peers_three.json (scripts/peers.sh)", page)  # the versions table names each driver
