@@ -54,6 +54,14 @@ if [[ -n "$baseline" ]]; then
   fi
 fi
 
+# A run to publish needs every optional peer (publish.py refuses it otherwise): said now, not after
+# the long run.
+if [[ $publish -eq 1 && $allow_missing_peers -eq 0 ]] && ! bash "$root/scripts/peers.sh" --check; then
+  echo "bench.sh: --publish: the optional peers above are not installed; install them (scripts/peers.sh)" \
+       "or publish without them (--allow-missing-peers)" >&2
+  exit 2
+fi
+
 bash "$root/scripts/setup.sh"
 # ccache keys on absolute paths unless told the checkout's root: with it, a fresh clone anywhere
 # (CI's) reuses the objects of an earlier build of the same sources.

@@ -8,6 +8,8 @@
 #   scripts/peers.sh --quick       the quick sweep's parameters and tolerances
 #   scripts/peers.sh --no-install  run only the drivers whose packages are already installed
 #                                  (scripts/bench.sh calls it so)
+#   scripts/peers.sh --check       install and run nothing: name each driver that would be skipped
+#                                  and exit 1 if any would (scripts/bench.sh --publish asks first)
 # Drivers: scripts/peers/scipy_driver.py (SciPy: CubicSpline, make_interp_spline, BSpline, quad);
 # scripts/peers/easing_driver.mjs (Node: bezier-easing 3.2.0 and 2.1.0, @mapbox/unitbezier 1.0.0,
 # pinned in scripts/peers/node/package.json and installed into build-peers/node), measured by
@@ -34,12 +36,14 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 
 quick=0
 install=1
+check=0
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=1 ;;
     --no-install) install=0 ;;
+    --check) check=1; install=0 ;;
     -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
-    *) echo "peers.sh: unknown argument '$arg' (allowed: --quick, --no-install)" >&2; exit 2 ;;
+    *) echo "peers.sh: unknown argument '$arg' (allowed: --quick, --no-install, --check)" >&2; exit 2 ;;
   esac
 done
 
@@ -97,7 +101,7 @@ if [[ $install -eq 1 ]]; then
 fi
 
 tool=${CURVEBENCH_TOOL:-$root/build-bench/bench/curvebench}
-if [[ ! -x "$tool" ]]; then
+if [[ $check -eq 0 && ! -x "$tool" ]]; then
   bash "$root/scripts/setup.sh"
   export CCACHE_BASEDIR="$root"
   build="$root/build-bench"
@@ -110,7 +114,7 @@ if [[ ! -x "$tool" ]]; then
 fi
 
 reports="$root/reports"
-mkdir -p "$reports"
+[[ $check -eq 1 ]] || mkdir -p "$reports"
 quick_args=()
 [[ $quick -eq 1 ]] && quick_args=(--quick)
 
@@ -203,12 +207,18 @@ on_path() { command -v "$1" >/dev/null && python_has mpmath; }
 node_version=$(node --version 2>/dev/null || echo "not installed")
 
 ran=0
+absent=0
 # optional NAME LABEL MISSING CHECK...: removes an earlier reports/peers_NAME.json (no stale results
 # from another run, whatever happens next); then, when the command CHECK... succeeds, runs run_NAME
-# with $work a fresh reports/peers/NAME and prints LABEL, otherwise prints MISSING.
+# with $work a fresh reports/peers/NAME and prints LABEL, otherwise prints MISSING. With --check it
+# only prints MISSING (and counts it) where CHECK... fails.
 optional() {
   local name=$1 label=$2 missing=$3
   shift 3
+  if [[ $check -eq 1 ]]; then
+    "$@" || { echo "peers.sh: $name: $missing" >&2; absent=$((absent + 1)); }
+    return 0
+  fi
   rm -f "$reports/peers_$name.json"
   if "$@"; then
     echo "peers.sh: $label"
@@ -232,4 +242,9 @@ optional blender "real Blender ($(blender --version 2>/dev/null | head -n 1))" \
   "blender is not on PATH (or python3-mpmath is missing); the real-Blender comparison is not run" on_path blender
 optional chromium "$(chromium --version 2>/dev/null | head -n 1)" \
   "Chromium is not installed (chromium, python3-mpmath); skipped" on_path chromium
+if [[ $check -eq 1 ]]; then
+  [[ $absent -eq 0 ]] && echo "peers.sh: every optional peer is installed"
+  [[ $absent -eq 0 ]]
+  exit
+fi
 echo "peers.sh: $ran optional peer driver(s) ran; results in $reports/peers_*.json"

@@ -1,7 +1,9 @@
 """The scripts' command lines: `bench.sh --help` prints its usage comment and nothing else (it
 printed `set -euo pipefail`, a fixed line range having drifted from the comment)."""
 import os
+import shutil
 import subprocess
+import tempfile
 import unittest
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
@@ -48,6 +50,42 @@ class FuzzHelp(unittest.TestCase):
             p = subprocess.run(["bash", path, arg], capture_output=True, text=True, timeout=60)
             self.assertEqual(p.returncode, 2, arg)
             self.assertIn("'" + arg + "'", p.stderr)
+
+
+class PublishNeedsEveryPeer(unittest.TestCase):
+    """`peers.sh --check` names every driver that would be skipped and exits 1; `bench.sh --publish`
+    asks it first and refuses (exit 2) before installing or building anything, where it used to find
+    out after the whole run. Run from a copy of the scripts in an empty checkout (no build-peers/node:
+    the Node peers are missing) with a PATH holding no blender."""
+
+    def setUp(self):
+        self.root = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, self.root)
+        os.makedirs(os.path.join(self.root, "scripts"))
+        for name in ("peers.sh", "bench.sh"):
+            shutil.copy(os.path.join(ROOT, "scripts", name), os.path.join(self.root, "scripts", name))
+        self.bin = os.path.join(self.root, "bin")
+        os.makedirs(self.bin)
+        for tool in ("bash", "dirname", "head", "rm", "mkdir", "cat", "awk"):
+            os.symlink(shutil.which(tool), os.path.join(self.bin, tool))
+        self.env = dict(os.environ, PATH=self.bin)
+
+    def test_check_names_the_missing_peers_and_fails(self):
+        p = subprocess.run(["bash", os.path.join(self.root, "scripts", "peers.sh"), "--check"],
+                           capture_output=True, text=True, timeout=60, env=self.env)
+        self.assertEqual(p.returncode, 1, p.stderr)
+        for name in ("easing", "penner", "three", "blender"):
+            self.assertIn(f"peers.sh: {name}: ", p.stderr)
+        self.assertNotIn("every optional peer is installed", p.stdout)
+        self.assertFalse(os.path.exists(os.path.join(self.root, "reports")))  # nothing run, nothing removed
+
+    def test_publish_is_refused_before_the_build(self):
+        p = subprocess.run(["bash", os.path.join(self.root, "scripts", "bench.sh"), "--publish"],
+                           capture_output=True, text=True, timeout=60, env=self.env)
+        self.assertEqual(p.returncode, 2, p.stderr)
+        self.assertIn("--publish: the optional peers above are not installed", p.stderr)
+        self.assertIn("--allow-missing-peers", p.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.root, "build-bench")))
 
 
 if __name__ == "__main__":
