@@ -176,7 +176,8 @@ run_blender() {
     { echo "peers.sh: Blender failed; see $work/blender.log" >&2; return 1; }
   local spec
   for spec in "$work"/model/*.json; do
-    "$tool" sample "$spec" --at-file "${spec%.json}.times" --derivatives 0 --quiet >"${spec%.json}.csv"
+    # The Blender model as Blender evaluates it (float; without --as-tool: the truth of its keys).
+    "$tool" sample "$spec" --at-file "${spec%.json}.times" --derivatives 0 --quiet --as-tool >"${spec%.json}.csv"
   done
   /usr/bin/python3 "$root/scripts/peers/blender_channels.py" results --cases "$root/bench/cases" \
                    --blender "$work/blender.json" --model-dir "$work/model" --out "$reports/peers_blender.json"

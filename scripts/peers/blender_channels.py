@@ -30,7 +30,6 @@ tells the report's findings that Blender evaluates in float (a finding needs as 
 a double peer needs double ulps).
 """
 import argparse
-import csv
 import json
 import os
 import sys
@@ -166,11 +165,8 @@ def truth(keys, t):
 
 
 def read_model(path, times):
-    with open(path, encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r]
-    if not rows or rows[0][:2] != ["t", "value"] or len(rows) - 1 != len(times):
-        raise BlenderChannelError(f"{path}: expected the header t,value and {len(times)} rows")
-    return [float(r[1]) for r in rows[1:]]
+    """The Blender model's values (`curvebench sample --as-tool`, float: its t printed to 9 digits)."""
+    return peer_io.read_sample(path, times, error=BlenderChannelError, exact_times=False)
 
 
 def assemble(blender, model_values, notes=()):

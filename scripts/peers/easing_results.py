@@ -26,7 +26,6 @@ that documents its solver's precision (@mapbox/unitbezier: epsilon 1e-6) carries
 "documented_tolerance".
 """
 import argparse
-import csv
 import fractions
 import math
 import json
@@ -96,17 +95,7 @@ def measure(values, truths):
 
 def read_curvebench(path, times):
     """curvebench sample's values at `times` (its CSV: t,value), checked to be those times."""
-    with open(path, encoding="utf-8") as f:
-        rows = list(csv.reader(f))
-    if not rows or rows[0] != ["t", "value"]:
-        raise EasingResultError(f"{path}: expected the header t,value")
-    body = [r for r in rows[1:] if r]
-    if len(body) != len(times):
-        raise EasingResultError(f"{path}: {len(body)} rows for {len(times)} times")
-    for i, (r, t) in enumerate(zip(body, times)):
-        if float(r[0]) != t:
-            raise EasingResultError(f"{path}: row {i + 2} is at t = {r[0]}, the driver's time is {t!r}")
-    return [float(r[1]) for r in body]
+    return peer_io.read_sample(path, times, error=EasingResultError)
 
 
 def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, times: None):

@@ -39,7 +39,6 @@ record, with "unit_eps" 2^-23: three evaluates float32 data, so the report's fin
 own ulps.
 """
 import argparse
-import csv
 import json
 import os
 import struct
@@ -173,17 +172,7 @@ def rotation_angle(q, p):
 
 def read_sample(path, times, rotation):
     """`curvebench sample` CSV at exactly `times`: values (scalar) or (x, y, z, w) tuples."""
-    with open(path, encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r]
-    header = ["t", "x", "y", "z", "w"] if rotation else ["t", "value"]
-    if not rows or rows[0] != header or len(rows) - 1 != len(times):
-        raise GltfResultError(f"{path}: expected the header {','.join(header)} and {len(times)} rows")
-    for i, (r, t) in enumerate(zip(rows[1:], times)):
-        if float(r[0]) != t:
-            raise GltfResultError(f"{path}: row {i + 2} is at t = {r[0]}, the driver's time is {t!r}")
-    if rotation:
-        return [tuple(float(x) for x in r[1:5]) for r in rows[1:]]
-    return [float(r[1]) for r in rows[1:]]
+    return peer_io.read_sample(path, times, ("x", "y", "z", "w") if rotation else ("value",), GltfResultError)
 
 
 def measure(run, spec, model=None):
@@ -288,9 +277,9 @@ def main():
             with open(stem + ".times", "w", encoding="utf-8") as f:
                 f.write("".join(repr(t) + "\n" for t in run["times"]))
             with open(stem + ".csv", "w", encoding="utf-8") as f:
-                p = subprocess.run([a.tool, "sample", os.path.join(a.cases, run["case"] + ".json"), "--at-file",
-                                    stem + ".times", "--derivatives", "0", "--quiet"], stdout=f, stderr=subprocess.PIPE,
-                                   text=True)
+                p = subprocess.run(peer_io.sample_command(a.tool, os.path.join(a.cases, run["case"] + ".json"),
+                                                          stem + ".times", as_tool=spec.get("path") != "rotation"),
+                                   stdout=f, stderr=subprocess.PIPE, text=True)
             if p.returncode != 0:  # a tool older than the case (e.g. before rotation channels): said, not fatal
                 refused.append(f"{run['case']}: curvebench's model not compared (`curvebench sample` refused the "
                                f"case: {p.stderr.strip()})")

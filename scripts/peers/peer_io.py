@@ -1,6 +1,7 @@
 """What the optional peers' Python scripts share (scripts/peers/*.py, run from this directory or
-imported with it on sys.path): the accuracy runner's sample fractions and the all-or-nothing
-write of a result file."""
+imported with it on sys.path): the accuracy runner's sample fractions, the all-or-nothing write of
+a result file, and `curvebench sample`'s command and CSV for the tool models beside the peers."""
+import csv
 import json
 import os
 import sys
@@ -20,3 +21,35 @@ def write_json(path, doc):
     """doc as indented JSON at path through scripts/safe_output.py: only a regular file or a new
     path is replaced, and an interrupted run never leaves a half-written file."""
     safe_output.write_text(path, json.dumps(doc, indent=1))
+
+
+def sample_command(tool, spec_path, times_path, as_tool=True):
+    """`curvebench sample` of a channel spec at the times listed in times_path, values only. as_tool:
+    the tool model's own evaluation (`--as-tool`: Blender's in float as Blender stores it, the CSS
+    model with its solver), what the peers are compared beside; without it `sample` prints the
+    channel's 50-digit truth rounded to double (a glTF rotation has only its sampler's evaluation
+    and refuses --as-tool)."""
+    return ([tool, "sample", spec_path, "--at-file", times_path, "--derivatives", "0", "--quiet"]
+            + (["--as-tool"] if as_tool else []))
+
+
+def read_sample(path, times, columns=("value",), error=ValueError, exact_times=True):
+    """The values of a `curvebench sample` CSV at `times`: its first lines starting with '#' (what
+    was sampled) skipped, then the header t and `columns`, then one row per time. exact_times: each
+    row's t must be the time asked for (a float32 model prints t to 9 digits: not exact). Returns a
+    float per row for one column, else a tuple per row; raises `error` naming the file otherwise."""
+    with open(path, encoding="utf-8") as f:
+        rows = [r for r in csv.reader(line for line in f if not line.startswith("#")) if r]
+    header = ["t", *columns]
+    if not rows or rows[0] != header:
+        raise error(f"{path}: expected the header {','.join(header)}"
+                    + (f", not {','.join(rows[0])}" if rows else ", the file has no rows"))
+    body = rows[1:]
+    if len(body) != len(times):
+        raise error(f"{path}: {len(body)} rows for {len(times)} times")
+    for i, (r, t) in enumerate(zip(body, times)):
+        if exact_times and float(r[0]) != t:
+            raise error(f"{path}: row {i + 2} is at t = {r[0]}, the driver's time is {t!r}")
+    if len(columns) == 1:
+        return [float(r[1]) for r in body]
+    return [tuple(float(x) for x in r[1:1 + len(columns)]) for r in body]

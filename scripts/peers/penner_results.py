@@ -30,7 +30,6 @@ against the same truth; when it is given, the largest difference between d3 and 
 recorded as "vs_blender_model".
 """
 import argparse
-import csv
 import json
 import os
 import subprocess
@@ -140,14 +139,7 @@ def blender_spec(run):
 
 def read_sample(path, times):
     """`curvebench sample` CSV (t,value) at exactly `times`."""
-    with open(path, encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if r]
-    if not rows or rows[0] != ["t", "value"] or len(rows) - 1 != len(times):
-        raise PennerResultError(f"{path}: expected the header t,value and {len(times)} rows")
-    for i, (r, t) in enumerate(zip(rows[1:], times)):
-        if float(r[0]) != t:
-            raise PennerResultError(f"{path}: row {i + 2} is at t = {r[0]}, the driver's time is {t!r}")
-    return [float(r[1]) for r in rows[1:]]
+    return peer_io.read_sample(path, times, error=PennerResultError, exact_times=False)
 
 
 def assemble(driver, blender_values=lambda run: None):
@@ -208,8 +200,7 @@ def main():
             with open(stem + ".times", "w", encoding="utf-8") as f:
                 f.write("".join(repr(t) + "\n" for t in run["times"]))
             with open(stem + ".csv", "w", encoding="utf-8") as f:
-                subprocess.run([a.tool, "sample", stem + ".json", "--at-file", stem + ".times", "--derivatives", "0",
-                                "--quiet"], stdout=f, check=True)
+                subprocess.run(peer_io.sample_command(a.tool, stem + ".json", stem + ".times"), stdout=f, check=True)
             return read_sample(stem + ".csv", run["times"])
         doc = assemble(driver, model)
     except (OSError, json.JSONDecodeError, subprocess.SubprocessError, PennerResultError) as e:

@@ -15,6 +15,8 @@ import os
 import subprocess
 import sys
 
+import peer_io
+
 
 def spec_of(run, cases):
     """The CSS channel spec of a driver run."""
@@ -53,8 +55,7 @@ def main():
                 json.dump(s, f)
         for spec_path, csv in ((exact, run["case"] + ".csv"), (written, run["case"] + ".table_newton.csv")):
             with open(os.path.join(a.out, csv), "w", encoding="utf-8") as f:
-                subprocess.run([a.tool, "sample", spec_path, "--at-file", times, "--derivatives", "0", "--quiet"],
-                               stdout=f, check=True)
+                subprocess.run(peer_io.sample_command(a.tool, spec_path, times), stdout=f, check=True)
     return 0
 
 
