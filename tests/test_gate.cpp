@@ -48,7 +48,8 @@ TEST(gate, passes_clean_results) { EXPECT_TRUE(check_gate(clean_results(), thres
 
 TEST(gate, names_each_breach_with_measured_and_allowed) {
   json r = clean_results();
-  r["records"][1]["error"] = 3e-10;    // injected accuracy regression
+  r["records"][1]["error"] = 3e-10;    // injected accuracy regression...
+  r["records"][1]["estimate"] = 1e-9;  // ...whose estimate still bounds it (else a second breach)
   r["records"][0]["bounded"] = false;  // a dishonest estimate
   r["orders"][0]["observed"] = 1.0;    // a deliberately coarse table: order dropped
   const auto breaches = check_gate(r, thresholds());
@@ -82,9 +83,11 @@ TEST(gate, missing_method_or_nan_error_is_a_breach) {
   r["orders"] = json::array();
   r["records"][0]["error"] = nullptr;  // e.g. NaN written as null
   const auto breaches = check_gate(r, thresholds());
-  ASSERT_EQ(breaches.size(), 2u);
-  EXPECT_THAT(breaches[0].message, HasSubstr("no error measured"));
-  EXPECT_THAT(breaches[1].message, HasSubstr("matched no observed order"));
+  ASSERT_EQ(breaches.size(), 3u);
+  EXPECT_THAT(breaches[0].message, HasSubstr("no error measured (allowed"));
+  // Its estimate 1e-15 has no error beside it: honesty cannot be shown, whatever "bounded" says.
+  EXPECT_THAT(breaches[1].message, HasSubstr("estimate 1e-15 with no error measured: its honesty cannot be checked"));
+  EXPECT_THAT(breaches[2].message, HasSubstr("matched no observed order"));
 }
 
 TEST(gate, rejects_a_rule_naming_an_id_outside_the_vocabulary) {
@@ -150,12 +153,20 @@ TEST(gate, the_full_sweep_gate_is_honesty_on_every_record) {
   EXPECT_TRUE(check_gate(clean_results(), t, "results", "reports/thresholds_full.json").empty());
   for (std::size_t i : {0u, 1u}) {
     json r = clean_results();
-    r["records"][i]["error"] = 1e-3;  // errors alone are not this gate's business
+    r["records"][i]["error"] = 1e-3;  // errors alone are not this gate's business, when bounded
+    r["records"][i]["estimate"] = 2e-3;
     EXPECT_TRUE(check_gate(r, t, "results", "reports/thresholds_full.json").empty());
-    r["records"][i]["bounded"] = false;
-    const auto breaches = check_gate(r, t, "results", "reports/thresholds_full.json");
+    r["records"][i]["bounded"] = false;  // a file's false is kept
+    auto breaches = check_gate(r, t, "results", "reports/thresholds_full.json");
     ASSERT_EQ(breaches.size(), 1u);
     EXPECT_THAT(breaches[0].message, HasSubstr("not honest"));
+    // An estimate below its error breaches whatever the file's "bounded" says (stop 47's sweep: a
+    // record claiming true beside an estimate 1e-30 and an error 1 passed).
+    r["records"][i]["bounded"] = true;
+    r["records"][i]["estimate"] = 1e-4;
+    breaches = check_gate(r, t, "results", "reports/thresholds_full.json");
+    ASSERT_EQ(breaches.size(), 1u);
+    EXPECT_THAT(breaches[0].message, HasSubstr("estimate 0.0001 < true error 0.001 (estimate not honest)"));
   }
 }
 
@@ -322,9 +333,13 @@ TEST(record, the_reader_reads_what_the_writer_writes) {
   EXPECT_FALSE(pj.contains("counterpart_error"));
   EXPECT_EQ(h::to_json(h::read_record(pj, "p")), pj);
 
-  // A results file's bounded is read as written, not recomputed.
+  // A results file's false is kept; its true is measured from the estimate and the error.
   json dishonest = mj;
   dishonest["bounded"] = false;
   EXPECT_EQ(h::read_record(dishonest, "d").bounded, std::optional<bool>(false));
+  json lying = mj;
+  lying["estimate"] = 0.5 * lying["error"].get<double>();
+  lying["bounded"] = true;
+  EXPECT_EQ(h::read_record(lying, "l").bounded, std::optional<bool>(false));
   EXPECT_THROW((void)h::read_record(json{{"case", 3}}, "r"), curvebench::invalid_input);
 }

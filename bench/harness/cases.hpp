@@ -41,6 +41,11 @@ inline std::vector<case_info> load_cases(const std::string& dir) {
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (entry.path().extension() != ".json") continue;
     const std::string file = entry.path().string();
+    // A case is a file: a FIFO named *.json blocked the whole run at its open (no writer), and a
+    // directory or device is no case either. A symbolic link to a regular file is one.
+    std::error_code ec;
+    if (!fs::is_regular_file(entry.path(), ec))
+      throw invalid_input("cases: " + file + " is not a regular file (a case is a *.json file)");
     case_info c;
     c.spec = io::parse(read_input_file(file), file);
     const io::field root = io::root(c.spec, entry.path().filename().string());

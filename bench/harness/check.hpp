@@ -163,7 +163,7 @@ struct channel_values {
   std::function<std::optional<double>(double, int)> at;
   std::string what;          ///< in words, for the output's header
   int bits = 64;             ///< 32: the values are floats (a float tool's own evaluation)
-  std::vector<double> keys;  ///< the channel's key times, in order (0 and 1 only for CSS steps() past 2^20)
+  std::vector<double> keys;  ///< the channel's key times, in order (0 and 1 only for CSS steps() past 2^16)
 };
 /// Throws spec_error for a glTF rotation channel (quaternion values) and for bad specs.
 [[nodiscard]] channel_values channel_values_of(const io::field& spec, check_against against);

@@ -76,12 +76,7 @@ void read_records(const nlohmann::json& j, const std::string& file, const char* 
   if (!records.is_array()) throw invalid_input(file + ": \"" + key + "\" is not an array");
   for (std::size_t i = 0; i < records.size(); ++i) {
     const std::string where = file + ": " + key + "[" + std::to_string(i) + "]";
-    record r = read_record(records[i], where);
-    // An error or estimate is a size: negative is no measurement (null is how a record says none).
-    for (const auto& [name, v] : {std::pair{"error", r.error}, std::pair{"estimate", r.estimate}})
-      if (std::isfinite(v) && v < 0)
-        throw invalid_input(where + "." + name + ": " + detail::num(v, 3) + " is negative (an error is >= 0, or null)");
-    out.records.push_back(std::move(r));
+    out.records.push_back(read_record(records[i], where));  // negative errors refused there
     out.record_where.push_back(where);
   }
 }

@@ -254,7 +254,14 @@ inline std::vector<breach> check_gate(const nlohmann::json& results, const nlohm
                            has_error ? "error " + detail::number(r.error) + " > allowed " + detail::number(allowed)
                                      : "no error measured (allowed " + detail::number(allowed) + ")"});
         }
-        if (rule.value("honest", false) && r.bounded && !*r.bounded)
+        // An estimate with no error measured beside it cannot be shown honest: a breach, whatever
+        // the file's "bounded" says (read_record measures bounded where both numbers are there).
+        if (rule.value("honest", false) && std::isfinite(r.estimate) && std::isnan(r.error))
+          out.push_back({name, where,
+                         "estimate " + detail::number(r.estimate) +
+                             " with no error measured: its honesty cannot "
+                             "be checked"});
+        else if (rule.value("honest", false) && r.bounded && !*r.bounded)
           out.push_back({name, where,
                          "estimate " + detail::number(r.estimate) + " < true error " + detail::number(r.error) +
                              " (estimate not honest)"});

@@ -147,7 +147,18 @@ inline record read_record(const nlohmann::json& j, const std::string& where) {
   r.setting = text("setting");
   r.error = number("error");
   r.estimate = number("estimate");
-  if (j.contains("bounded") && j["bounded"].is_boolean()) r.bounded = j["bounded"].get<bool>();
+  // An error or estimate is a size: negative is no measurement (null is how a record says none).
+  for (const auto& [name, v] : {std::pair{"error", r.error}, std::pair{"estimate", r.estimate}})
+    if (std::isfinite(v) && v < 0)
+      throw invalid_input(where + "." + name + ": " + io::field::shown_value(j[name]) +
+                          " is negative (an error is >= 0, or null)");
+  // Whether the estimate bounds the error is measured from the two numbers when the record has both
+  // (a file's "bounded": true beside an estimate below its error passed the gate's honest rule);
+  // a file's false is kept (it can only make the gate stricter), and where the numbers cannot say
+  // (no error measured) the field is read as written.
+  r.bounded = bounded_of(r.estimate, r.error);
+  if (j.contains("bounded") && j["bounded"].is_boolean() && (!r.bounded || !j["bounded"].get<bool>()))
+    r.bounded = j["bounded"].get<bool>();
   r.evaluations = j.contains("evaluations") && j["evaluations"].is_number() ? j["evaluations"].get<double>() : 0;
   r.status = text("status");
   r.subject = j.contains("subject") && j["subject"].get<bool>();

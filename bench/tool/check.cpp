@@ -53,10 +53,21 @@ void print_table(const check_result& r, const std::string& spec) {
   if (r.kind != check_kind::inverse && r.kind != check_kind::times)
     std::cout << "; relative" << (values ? " to size" : " to the segment") << ": max " << g(r.summary.max_relative)
               << ", rms " << g(r.summary.rms_relative);
-  if (times) {
+  if (times) {  // a row where the value is flat has no time error (its column shows "-"): not a max of inf
     double late = 0;
-    for (const auto& row : r.rows) late = std::max(late, row.time_error);
-    std::cout << "; time error: max " << g(late);
+    std::size_t flat = 0;
+    for (const auto& row : r.rows)
+      if (std::isfinite(row.time_error))
+        late = std::max(late, row.time_error);
+      else
+        ++flat;
+    if (flat == r.rows.size())
+      std::cout << "; time error: none (every row is where the value is flat)";
+    else
+      std::cout << "; time error: max " << g(late)
+                << (flat > 0 ? " (" + std::to_string(flat) + (flat == 1 ? " row" : " rows") +
+                                   " where the value is flat: none)"
+                             : "");
   }
   std::cout << "\n";
   if (!r.digits_warning.empty()) std::cout << "  warning: " << r.digits_warning << "\n";

@@ -386,9 +386,14 @@ class held_stdout {
   held_stdout() : old_(std::cout.rdbuf(held_.rdbuf())) {}
   held_stdout(const held_stdout&) = delete;
   held_stdout& operator=(const held_stdout&) = delete;
-  ~held_stdout() { std::cout.rdbuf(old_); }  // on an error: the held text is dropped
+  // On an error the held text is dropped. After release() the buffer is not set again: rdbuf()
+  // clears the stream's state, which lost a failed write of the text (sample > /dev/full, exit 0).
+  ~held_stdout() {
+    if (!released_) std::cout.rdbuf(old_);
+  }
   void release() {
     std::cout.rdbuf(old_);
+    released_ = true;
     std::cout << held_.str();
     held_.str({});
   }
@@ -396,6 +401,7 @@ class held_stdout {
  private:
   std::ostringstream held_;
   std::streambuf* old_;
+  bool released_ = false;
 };
 
 /// run_sample's work, writing to std::cout (held by run_sample).

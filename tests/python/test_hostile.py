@@ -14,6 +14,8 @@ A case file (unknown keys are an error, so that a typo cannot switch a check off
   "stdout_json"     stdout parsed as JSON must hold these key/values ("$finite": a finite number)
   "stdout_empty"    true: nothing on stdout (an error part-way must not leave a partial table)
   "seconds"         the wall-time bound (required), on the -O2 test build of this machine
+  "memory_mb"       an address-space limit (RLIMIT_AS) for the run: an input whose work must stay
+                    bounded fails with bad_alloc, or dies, past it
 Whatever the case expects, the tool may never die of a signal, print "terminate called", or
 exit non-zero without a "curvebench: error: " line on stderr.
 
@@ -23,6 +25,7 @@ import glob
 import json
 import math
 import os
+import resource
 import shutil
 import subprocess
 import tempfile
@@ -32,7 +35,8 @@ import unittest
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 TOOL = os.environ.get("CURVEBENCH_TOOL", "")
 CASE_DIR = os.path.join(ROOT, "tests", "hostile")
-KEYS = {"why", "files", "args", "exit", "stderr_contains", "stdout_contains", "stdout_json", "stdout_empty", "seconds"}
+KEYS = {"why", "files", "args", "exit", "stderr_contains", "stdout_contains", "stdout_json", "stdout_empty", "seconds",
+        "memory_mb"}
 REQUIRED = {"why", "args", "exit", "seconds"}
 
 
@@ -130,8 +134,12 @@ class Hostile(unittest.TestCase):
                 args.append(a)
             start = time.monotonic()
             try:
+                limit = case.get("memory_mb")
+
+                def cap():  # in the child, before exec
+                    resource.setrlimit(resource.RLIMIT_AS, (limit << 20, limit << 20))
                 p = subprocess.run([TOOL, *args], capture_output=True, text=True, errors="replace",
-                                   timeout=case["seconds"], cwd=work)
+                                   timeout=case["seconds"], cwd=work, preexec_fn=cap if limit else None)
             except subprocess.TimeoutExpired:
                 self.fail(f"no answer within {case['seconds']} s: {case['why']}")
             took = time.monotonic() - start

@@ -57,6 +57,39 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(p.returncode, 1, p.stderr)
         self.assertIn("curvebench: error: writing the standard output failed", p.stderr)
 
+    def test_a_sample_table_the_system_does_not_take_is_an_error(self):
+        # sample holds its table and writes it at the end; restoring std::cout's buffer after the
+        # write cleared the failure, so a table past the pipe's first 4 kB was lost with exit 0
+        # (stop 47's sweep). A curve and a channel, 10,001 rows each.
+        spec = self.write("line.json", '{"type": "channel", "tool": "exact", "keys": [{"time": 0, "value": 0, '
+                                       '"interpolation": "linear"}, {"time": 10, "value": 5}]}')
+        for args in (["sample", spec, "--frames", "0:10:0.001"], ["sample", ARCH, "--count", "10001"]):
+            with open("/dev/full", "w") as full:
+                p = subprocess.run([TOOL, *args], stdout=full, stderr=subprocess.PIPE, text=True, timeout=60)
+            self.assertEqual(p.returncode, 1, args)
+            self.assertIn("curvebench: error: writing the standard output failed", p.stderr)
+
+    def test_a_case_directory_entry_that_is_no_file_is_refused_not_waited_on(self):
+        # A FIFO named *.json in a case directory blocked `list cases` and `accuracy` at its open.
+        cases = os.path.join(self.dir, "cases")
+        os.makedirs(cases)
+        shutil.copy(ARCH, cases)
+        os.mkfifo(os.path.join(cases, "stray.json"))
+        for args in (["list", "cases", "--cases", cases], ["accuracy", "--quick", "--cases", cases, "--quiet",
+                                                           "--out", os.path.join(self.dir, "a.json")]):
+            p = run(*args)
+            self.assert_error(p, "stray.json is not a regular file (a case is a *.json file)")
+
+    def test_a_syntax_error_names_no_library_tag_and_shows_a_bad_byte_replaced(self):
+        path = os.path.join(self.dir, "bad.json")
+        with open(path, "wb") as f:
+            f.write(b'{"type": "channel", "tool": "css", "easing": "ease\xff"}')
+        p = run("sample", path, "--at", "0.5")
+        self.assert_error(p, "bad.json: not valid JSON: parse error at line 1", "ill-formed UTF-8 byte",
+                          '"ease\ufffd')
+        self.assertNotIn("json.exception", p.stderr)
+        self.assertNotIn("\\xff", p.stderr)
+
     def test_compare_exits_1_only_on_a_confident_regression(self):
         # tests/data/compare/README.md: runs of one build pass, the -O0 build and the subject
         # rounded to 7 digits fail naming what regressed; --json carries every change.

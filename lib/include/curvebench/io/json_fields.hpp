@@ -272,8 +272,19 @@ class strict_builder {
     if (e.id == 406)
       throw spec_error(value_path() + ": the number " + cut(last_token, 40) +
                        " is beyond double's range (magnitudes up to about 1.8e308)");
-    // e.what() holds the line, column and the last token read, which can be a whole 10 MB string.
-    throw spec_error(std::string(source_) + ": not valid JSON: " + cut(e.what(), 300));
+    // e.what() holds the line, column and the last token read, which can be a whole 10 MB string,
+    // after the library's tag ("[json.exception.parse_error.101] "), which is dropped; an invalid
+    // byte of the text (0xff) is shown as U+FFFD and a control character escaped, as in every value
+    // a message quotes.
+    std::string what = e.what();
+    if (const std::size_t close = what.find("] "); what.starts_with("[json.exception.") && close != std::string::npos)
+      what.erase(0, close + 2);
+    std::string shown = json(what).dump(-1, ' ', false, json::error_handler_t::replace);
+    shown = shown.substr(1, shown.size() - 2);
+    for (const auto& [escaped, plain] : {std::pair{"\\\"", "\""}, std::pair{"\\\\", "\\"}})  // \" and \\ as read
+      for (std::size_t at = shown.find(escaped); at != std::string::npos; at = shown.find(escaped, at + 1))
+        shown.replace(at, 2, plain);
+    throw spec_error(std::string(source_) + ": not valid JSON: " + cut(std::move(shown), 300));
   }
 
  private:

@@ -7,7 +7,7 @@
 // linear segment between consecutive stops (two stops at one input, a jump, is an invalid_input: a
 // channel has one value per time).
 // The model of steps(n) evaluates in closed form (css_steps: the key below t found from floor(n t),
-// O(1) for any n up to 2^53); its curve view holds the n + 1 keys and is built for n <= 2^20 only
+// O(1) for any n up to 2^53); its curve view holds the n + 1 keys and is built for n <= 2^16 only
 // (css_max_step_keys): above, view() refuses with the reason, as a USD jump's does, and values
 // and derivatives still evaluate.
 // from_keys: a single bezier segment from (0, 0) to (1, 1) (handle times in [0, 1], as
@@ -30,9 +30,9 @@
 
 namespace curvebench::channel {
 
-/// steps(n)'s curve view holds n + 1 keys: built for n at most this (2^20); above it the model
+/// steps(n)'s curve view holds n + 1 keys: built for n at most this (2^16); above it the model
 /// evaluates without a view.
-inline constexpr long long css_max_step_keys = 1LL << 20;
+inline constexpr long long css_max_step_keys = 1LL << 16;
 
 /// steps(n, position) as the constant segments of css_keys, in closed form: the value at time t is
 /// key k's for the last key time k / n <= t (rounded as css_keys rounds it), key 0's before time

@@ -33,7 +33,7 @@ namespace curvebench::io {
 /// A channel spec under its tool's rules: the value and time derivatives (orders 0 to 2) at a time
 /// as the tool evaluates them (the tool model's derivative), the keys' times, and the channel whose
 /// curve() is the spec's curve (the tool model's view). A model may have no view (a USD
-/// dual-valued knot after a linear or curve segment: a jump; CSS steps(n) above 2^20, whose key
+/// dual-valued knot after a linear or curve segment: a jump; CSS steps(n) above 2^16, whose key
 /// times are then given as 0 and 1 only); source() then fails with the reason, naming the spec,
 /// and `at` still evaluates.
 template <class Real>
@@ -54,7 +54,9 @@ namespace detail {
 /// Fails on a member of a channel spec that belongs to another tool than the spec's (T), naming the
 /// tools it belongs to: the family accepts every tool's fields, so `"easing"` on an exact channel,
 /// `"keys"` on a CSS one or Maya's `"post"` on an exact one were silently dropped. The metadata,
-/// "tool" and "solver" are every tool's; names no tool has are the family's only_members to report.
+/// "tool" and "solver" are every tool's; a name no tool has is refused as unknown, listing T's
+/// fields (the family's only_members reports it on the curve path, but `sample --at` and `check
+/// --values` build the model alone: a misspelt "extrapolation" was read past there).
 template <class T, class... Tools>
 void check_tool_fields(const field& spec, channel::tool_list<Tools...>) {
   if (!spec.value.is_object()) return;
@@ -72,7 +74,12 @@ void check_tool_fields(const field& spec, channel::tool_list<Tools...>) {
       if (has(fields)) owners += (owners.empty() ? "\"" : ", \"") + std::string(tool) + "\"";
     };
     (add(Tools::name, tool_spec<Tools>::fields), ...);
-    if (owners.empty()) continue;
+    if (owners.empty()) {  // no tool's: a misspelling, refused on every path (sample --at read past it)
+      std::vector<std::string_view> allowed(std::begin(metadata), std::end(metadata));
+      allowed.insert(allowed.end(), {"tool", "solver"});
+      for (const field_doc& f : tool_spec<T>::fields) allowed.push_back(f.name);
+      spec.only_members(allowed, " for a channel of tool \"" + std::string(T::name) + "\"");
+    }
     spec.member(key).fail("a field of tool " + owners + ", not of tool \"" + std::string(T::name) +
                           "\" (this spec's \"tool\"), which would ignore it");
   }
@@ -111,6 +118,14 @@ channel_model<Real> channel_model_of_spec(const field& spec) {
     }
     cm.view = m.view();
     for (const auto& k : cm.view->keys()) cm.key_times.push_back(k.time);
+    // One key: a constant value, and a curve view with no segment (its one breakpoint made `sample
+    // --count` fail with "breakpoints: 1 given", `length --method richardson` divide by zero, and
+    // `check --lengths` divide by L = 0). Refused as the other models without a view are.
+    if (cm.key_times.size() < 2) {
+      cm.no_view = spec.path + ": one key: the channel is the constant " + to_text(cm.at(cm.key_times.front(), 0)) +
+                   " and has no curve view (no segment between keys; sample --at and check --values evaluate it)";
+      cm.view.reset();
+    }
     out = std::move(cm);
   });
   if (!known) {

@@ -120,7 +120,8 @@ channel::blender_fcurve<Real> blender_fcurve_of(const field& spec) {
     auto count = [&](std::string_view side) {
       if (!cy.has(side)) return 0;
       const long long n = cy.member(side).integer();
-      if (n < 0 || n > 1000000) cy.member(side).fail("a cycle count in [0, 1000000] (0: infinite)");
+      if (n < 0 || n > 1000000)
+        cy.member(side).fail(std::to_string(n) + " is not a cycle count in [0, 1000000] (0: infinite)");
       return static_cast<int>(n);
     };
     c.cycles = {true, mode("before"), mode("after"), count("count_before"), count("count_after")};

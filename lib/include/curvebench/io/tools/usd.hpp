@@ -74,7 +74,7 @@ channel::usd_spline<Real> usd_spline_of(const field& spec) {
     auto count = [&](std::string_view f) {
       if (!l.has(f)) return 0;
       const long long n = l.member(f).integer();
-      if (n < 0 || n > 100000) l.member(f).fail("a loop count in [0, 100000]");
+      if (n < 0 || n > 100000) l.member(f).fail(std::to_string(n) + " is not a loop count in [0, 100000]");
       return static_cast<int>(n);
     };
     s.inner_loops.num_pre_loops = count("pre_loops");
