@@ -252,6 +252,12 @@ class CheckedIn(unittest.TestCase):
     def test_headline_is_a_full_run(self):
         self.assertFalse(self.h["run"]["quick"])
 
+    def test_the_page_opens_with_the_summary_then_the_contents(self):
+        # Issue 34: the published page, like REPORT.md, answers first (its summary), then lists its sections.
+        with open(os.path.join(ROOT, "docs", "results.md"), encoding="utf-8") as f:
+            sections = [line for line in f.read().splitlines() if line.startswith("## ")]
+        self.assertEqual(sections[:3], ["## Summary", "## Contents", "## Machine and run"])
+
     def test_readme_figures_are_generated(self):
         with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as f:
             readme = f.read()
