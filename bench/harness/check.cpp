@@ -274,7 +274,7 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
     point<double, Dim> p;
     for (int i = 0; i < Dim; ++i) p[i] = row[cp[static_cast<std::size_t>(i)]];
     cr.absolute = ref.difference(cr.u, 0, p);
-    cr.point_ulps = cr.absolute / (eps * res.size);
+    cr.point_ulps = cr.absolute / res.size / eps;  // scale first: eps x 1e-308 underflows
     cr.error = in_unit(cr.absolute, res.size, res.unit);
     cr.relative = cr.absolute / res.size;
     worst_point = std::max(worst_point, cr.point_ulps);
@@ -284,7 +284,7 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
       for (int i = 0; i < Dim; ++i) p[i] = row[cd[oi][static_cast<std::size_t>(i)]];
       const auto ki = static_cast<std::size_t>(k - 1);
       const double a = ref.difference(cr.u, k, p);
-      const double e = a / (eps * res.derivative_sizes[ki]);
+      const double e = a / res.derivative_sizes[ki] / eps;
       cr.derivative_ulps[ki] = e;
       worst_derivative[ki] = std::max(worst_derivative[ki], e);
       cr.error = std::max(cr.error, in_unit(a, res.derivative_sizes[ki], res.unit));
@@ -546,9 +546,11 @@ value_unit value_unit_of(std::string_view name, const std::string& argument) {
 }
 
 double in_unit(double absolute, double scale, value_unit u) {
+  // Divided by the scale first: eps x a scale near the smallest doubles (a channel of values 1e-308)
+  // underflows to 0 or a subnormal, which made every error 0 / 0 = nan and failed right values.
   switch (u) {
-    case value_unit::ulp_double: return absolute / (std::numeric_limits<double>::epsilon() * scale);
-    case value_unit::ulp_float: return absolute / (static_cast<double>(std::numeric_limits<float>::epsilon()) * scale);
+    case value_unit::ulp_double: return absolute / scale / std::numeric_limits<double>::epsilon();
+    case value_unit::ulp_float: return absolute / scale / static_cast<double>(std::numeric_limits<float>::epsilon());
     case value_unit::rel: return absolute / scale;
     case value_unit::abs: return absolute;
   }

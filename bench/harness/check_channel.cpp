@@ -164,7 +164,7 @@ check_result check_times(const io::field& spec, const csv_table& t, const check_
     cr.absolute = static_cast<double>(abs(real50(row[cv]) - *v));
     cr.error = in_unit(cr.absolute, res.size, res.unit);
     cr.relative = cr.absolute / res.size;
-    worst_value = std::max(worst_value, cr.absolute / (eps * res.size));
+    worst_value = std::max(worst_value, cr.absolute / res.size / eps);  // scale first (in_unit)
     const std::optional<real50> slope = ref(cr.t, 1);
     cr.time_error = cr.absolute == 0                           ? 0.0
                     : slope && isfinite(*slope) && *slope != 0 ? cr.absolute / std::abs(static_cast<double>(*slope))
@@ -181,7 +181,7 @@ check_result check_times(const io::field& spec, const csv_table& t, const check_
       cr.derivative_errors[k] = in_unit(a, res.derivative_sizes[k], res.unit);
       cr.error = std::max(cr.error, cr.derivative_errors[k]);
       cr.relative = std::max(cr.relative, a / res.derivative_sizes[k]);
-      worst_derivative[k] = std::max(worst_derivative[k], a / (eps * res.derivative_sizes[k]));
+      worst_derivative[k] = std::max(worst_derivative[k], a / res.derivative_sizes[k] / eps);
     }
     res.rows.push_back(std::move(cr));
     if (o.on_row) o.on_row(res.rows.size(), t.rows.size(), t.file);
