@@ -300,14 +300,14 @@ void sample_times(const io::field& spec, const sample_args& a) {
     const double t = given[i].u;
     const std::optional<double> v = ch.at(t, 0);
     if (!v || !std::isfinite(*v))
-      throw invalid_input(spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): " +
-                          (a.as_tool ? std::string("the tool's own evaluation in ") +
-                                           (ch.bits == 32 ? "float " : "double ") +
-                                           (v ? "is " + to_text(*v) : std::string("gives no value")) +
-                                           ": its intermediate results pass " +
-                                           (ch.bits == 32 ? "float's range (about 3.4e38)" : "double's range (about 1.8e308)") +
-                                           "; without --as-tool, sample gives the channel's truth"
-                                     : std::string("the value is not representable in double")));
+      throw invalid_input(
+          spec.path + ": " + given[i].where + " (t = " + to_text(t) + "): " +
+          (a.as_tool
+               ? std::string("the tool's own evaluation in ") + (ch.bits == 32 ? "float " : "double ") +
+                     (v ? "is " + to_text(*v) : std::string("is not finite")) + ": its intermediate results pass " +
+                     (ch.bits == 32 ? "float's range (about 3.4e38)" : "double's range (about 1.8e308)") +
+                     "; without --as-tool, sample gives the channel's truth"
+               : std::string("the value is not representable in double")));
     std::cout << shortest(t) << "," << *v;
     for (int k = 1; k <= a.derivatives; ++k) {
       std::cout << ",";
