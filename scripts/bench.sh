@@ -6,8 +6,9 @@
 #   scripts/bench.sh --quick   the quick suite and short benchmarks (a few minutes)
 #   scripts/bench.sh --publish full run, then docs/results.md, docs/results/ and the README's figures
 #                              (scripts/publish.py; commit them with the revision they name); refused
-#                              when an optional peer did not run (install them: scripts/peers.sh)
-#                              unless --allow-missing-peers is also given
+#                              before the build when an optional peer is not installed (peers.sh
+#                              --check; install them: scripts/peers.sh), and after the run when one
+#                              did not run, unless --allow-missing-peers is also given
 #   scripts/bench.sh --baseline DIR   then `curvebench compare DIR reports` (DIR: a copy of an
 #                              earlier reports/); every benchmark repeated 5 times, so that a
 #                              slowdown can be told from noise; exits 1 on a confident regression
