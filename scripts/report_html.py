@@ -132,7 +132,7 @@ def body_html(lines, svgs):
     """The HTML of the Markdown lines (headings with their anchors, tables, lists, paragraphs)."""
     page = _Page(svgs)
     lines = report_summary.flat(lines)
-    anchors = iter(report_summary.heading_anchors(lines))
+    found = {index: (level, text, anchor) for index, level, text, anchor in report_summary.headings(lines)}
     out, para, i = page.out, [], 0
 
     def flush():
@@ -149,11 +149,9 @@ def body_html(lines, svgs):
             out.append(f"<pre><code>{html.escape(chr(10).join(lines[i + 1:j]))}</code></pre>")
             i = j + 1
             continue
-        heading = re.match(r"^(#{1,6}) (.*)$", line)
-        if heading:
+        if i in found:  # headings as report_summary reads them (their anchors are the links')
             flush()
-            level, text = len(heading.group(1)), heading.group(2).strip()
-            anchor = next(anchors)
+            level, text, anchor = found[i]
             out.append(f'<h{level} id="{html.escape(anchor, quote=True)}">{page.inline(text)}'
                        f'<a class="self" href="#{html.escape(anchor, quote=True)}">#</a></h{level}>')
             i += 1

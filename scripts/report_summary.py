@@ -323,12 +323,14 @@ def flat(lines):
 
 
 def headings(lines):
-    """(level, text, anchor) of every heading of lines (any level, outside ``` fences), in order, with
-    GitHub's anchors: a repeated one gets -1, -2, ... in the order of the page, whatever the levels
-    (so a "### X" in the summary and a later "## X" section get x and x-1)."""
+    """(index, level, text, anchor) of every heading of lines (any level, outside ``` fences), in
+    order; index counts the lines of flat(lines). GitHub's anchors: a repeated one gets -1, -2, ...
+    in the order of the page, whatever the levels (so a "### X" in the summary and a later "## X"
+    section get x and x-1). The one reading of headings: the contents, the summary's links and
+    report_html.py's page all take them from here."""
     seen = defaultdict(int)
     out, fenced = [], False
-    for line in flat(lines):
+    for index, line in enumerate(flat(lines)):
         if line.startswith("```"):
             fenced = not fenced
             continue
@@ -339,13 +341,13 @@ def headings(lines):
         a = anchor(text)
         n = seen[a]
         seen[a] += 1
-        out.append((len(m.group(1)), text, f"{a}-{n}" if n else a))
+        out.append((index, len(m.group(1)), text, f"{a}-{n}" if n else a))
     return out
 
 
 def heading_anchors(lines):
     """The anchors of headings(lines), in order (report_html.py gives them to the page's headings)."""
-    return [a for _, _, a in headings(lines)]
+    return [a for _, _, _, a in headings(lines)]
 
 
 def toc(before, after, title="Contents"):
@@ -353,7 +355,7 @@ def toc(before, after, title="Contents"):
     "## " heading of both but its own, with the anchors GitHub gives them in the whole page."""
     found = headings(before + [f"## {title}"] + after)
     own = len(headings(before))  # the index of its own heading
-    links = [f"- [{text}](#{a})" for i, (level, text, a) in enumerate(found) if level == 2 and i != own]
+    links = [f"- [{text}](#{a})" for i, (_, level, text, a) in enumerate(found) if level == 2 and i != own]
     return [f"## {title}", ""] + links + [""]
 
 
@@ -375,7 +377,8 @@ def link_details(page):
     are not headings leaves every anchor as it was."""
     page = flat(page)
     found = headings(page)
-    sections = {text: a for level, text, a in found if level == 2}
+    sections = {text: a for _, level, text, a in found if level == 2}
+    at = {index: (level, text) for index, level, text, _ in found if level in (2, 3)}
     out, in_summary, pending = [], False, None
 
     def close():
@@ -384,19 +387,16 @@ def link_details(page):
             if out and out[-1] != "":
                 out.append("")
             out.extend(["Details: " + ", ".join(links) + ".", ""])
-    fenced = False
-    for line in page:
-        if line.startswith("```"):
-            fenced = not fenced
-        m = None if fenced else re.match(r"^(#{2,3}) (.*)$", line)
-        if m and in_summary:
+    for index, line in enumerate(page):
+        level, text = at.get(index, (None, None))
+        if level and in_summary:
             close()
             pending = None
-            if m.group(1) == "##":
+            if level == 2:
                 in_summary = False
             else:
-                pending = m.group(2).strip()
-        if m and m.group(1) == "##" and m.group(2).strip() == "Summary":
+                pending = text
+        if level == 2 and text == "Summary":
             in_summary = True
         out.append(line)
     if in_summary:
