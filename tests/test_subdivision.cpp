@@ -12,6 +12,8 @@
 #include "curvebench/arclength/adaptive_subdivision.hpp"
 #include "curvebench/arclength/forward_difference.hpp"
 #include "curvebench/arclength/length.hpp"
+#include "curvebench/core/any_curve.hpp"
+#include "curvebench/curves/composite_bezier.hpp"
 #include "curvebench/curves/natural_cubic_spline.hpp"
 #include "curvebench/reference/arc_length.hpp"
 #include "curvebench/reference/multiprecision.hpp"
@@ -97,6 +99,10 @@ struct counted {
   [[nodiscard]] point_type derivative(const real_type& u, int order) const {
     ++*n;
     return c.derivative(u, order);
+  }
+  [[nodiscard]] point_type value_from_left(const real_type& u) const {
+    ++*n;
+    return cb::value_from_left(c, u);
   }
   [[nodiscard]] std::span<const real_type> breakpoints() const { return c.breakpoints(); }
   [[nodiscard]] real_type rounding_bound(int order) const { return cb::declared_rounding_bound(c, order); }
@@ -275,4 +281,87 @@ TEST(subdivision, the_midpoint_value_is_far_inside_its_bound_on_smooth_curves) {
       EXPECT_LE(err, 0.01 * tol) << "slope " << k << " tol " << tol << " estimate " << r.error_estimate;
     }
   }
+}
+
+namespace {
+
+// Composite Bezier curves whose segments do not meet (allowed: "stepped keys"). L is the integral
+// of |P'| over the segments, as every quadrature takes it; the jump between them is not length.
+template <class Real>
+cb::composite_bezier<Real, 2> with_gaps(bool cubic) {
+  using p2 = cb::point<Real, 2>;
+  std::vector<cb::point_list<Real, 2>> segs;
+  if (cubic) {
+    segs = {{p2(0, 0), p2(1, 3), p2(4, 3), p2(6, 1)},
+            {p2(65, 5), p2(60, -2), p2(20, 9), p2(7, 3)},
+            {p2(-4, 0), p2(-3, 1), p2(-1, 1), p2(0, 0)}};
+  } else {
+    segs = {{p2(0, 0), p2(6, 1)}, {p2(65, 5), p2(7, 3)}, {p2(-4, 0), p2(0, 0)}};
+  }
+  const std::vector<Real> knots{Real(0), Real(1), Real(5) / Real(2), Real(3)};
+  return cb::composite_bezier<Real, 2>(std::span<const cb::point_list<Real, 2>>(segs), std::span<const Real>(knots));
+}
+
+template <class C>
+void expect_every_method_bounds(const C& c, const truth& t, const std::string& what) {
+  al::subdivision_options<double> so;
+  for (const double tol : {1e-4, 1e-8, 1e-12}) {
+    so.relative_tolerance = tol;
+    const auto r = al::subdivision_length(c, so);
+    EXPECT_TRUE(r.converged() || tol < 1e-10) << what << " subdivision tol " << tol;
+    EXPECT_TRUE(bounds(r, t)) << what << " subdivision tol " << tol;
+  }
+  al::adaptive_options<double> ao;
+  EXPECT_TRUE(bounds(al::adaptive_length(c, ao), t)) << what << " adaptive_gk";
+  EXPECT_TRUE(bounds(al::gauss_length(c, 5, al::fixed_estimate::nested), t)) << what << " gauss";
+  EXPECT_TRUE(bounds(al::composite_gauss_length(c, 4, al::gauss_legendre<double>(8)), t)) << what << " composite";
+  for (const std::size_t steps : {16u, 64u, 256u}) {
+    const al::forward_difference_table<double> fd(c, steps);
+    const auto f = fd.length();
+    EXPECT_TRUE(bounds(f, t)) << what << " forward_difference steps " << steps;
+    EXPECT_TRUE(bounds(fd.richardson_length(), t)) << what << " richardson steps " << steps;
+    // The table's s at the last node is its length, continuous across the gaps.
+    EXPECT_EQ(fd.arc_lengths().back(), f.value) << what;
+  }
+}
+
+}  // namespace
+
+// scripts/fuzz.sh (stop 47) found subdivision saying 123.2527 converged with an estimate of 1.2e-10
+// on two linear segments (0,0)-(6,1) and (65,5)-(7,3), whose length is sqrt(37) + sqrt(3368) =
+// 64.1172: its first bracket ran to the next segment's start. Forward differences counted the same
+// jump (value 123.2526, not_guaranteed by chance of its turn check).
+TEST(subdivision, segments_that_do_not_meet_are_measured_without_the_jump) {
+  const auto lines = with_gaps<double>(false);
+  EXPECT_EQ(lines.value_from_left(1.0), (cb::point<double, 2>(6, 1)));
+  EXPECT_EQ(lines(1.0), (cb::point<double, 2>(65, 5)));
+  EXPECT_EQ(lines.value_from_left(0.0), (cb::point<double, 2>(0, 0)));
+  EXPECT_EQ(lines.value_from_left(3.0), (cb::point<double, 2>(0, 0)));
+  EXPECT_THROW((void)lines.value_from_left(3.5), std::domain_error);
+  const cb::any_curve<double, 2> wrapped(lines, "composite_bezier");
+  EXPECT_EQ(wrapped.value_from_left(2.5), (cb::point<double, 2>(7, 3)));
+  // A continuous curve's limit from the left is its value.
+  const auto spline = steep_end<double>(2);
+  EXPECT_EQ(cb::value_from_left(spline, 1.0), spline(1.0));
+  const cb::any_curve<double, 3> any_spline(spline);
+  EXPECT_EQ(any_spline.value_from_left(1.0), spline(1.0));
+
+  // Closed form: sqrt(37) + sqrt(58^2 + 2^2) + 4, with a 1-ulp-of-L margin for its own rounding.
+  const R exact = sqrt(R(37)) + sqrt(R(3368)) + R(4);
+  const truth lt{exact, R(0)};
+  expect_every_method_bounds(lines, lt, "lines");
+  expect_every_method_bounds(wrapped, lt, "lines (any_curve)");
+  const auto r = al::subdivision_length(lines);
+  EXPECT_NEAR(r.value, static_cast<double>(exact), 1e-12 * static_cast<double>(exact));
+
+  // Cubic segments with gaps, against the 50-digit reference of the same data.
+  const cb::reference::reference_arc_length<cb::composite_bezier<R, 2>> ref(with_gaps<R>(true));
+  ASSERT_LT(ref.length_error(), R("1e-20") * ref.length());
+  const truth ct{ref.length(), ref.length_error()};
+  expect_every_method_bounds(with_gaps<double>(true), ct, "cubics");
+  expect_every_method_bounds(cb::any_curve<double, 2>(with_gaps<double>(true)), ct, "cubics (any_curve)");
+  // The jumps (58.9, 71.1) are far above every bound: a method that counted one would fail above.
+  const counted<cb::composite_bezier<double, 2>> tally{with_gaps<double>(true)};
+  const auto cr = al::subdivision_length(tally);
+  EXPECT_EQ(cr.evaluations, *tally.n);
 }

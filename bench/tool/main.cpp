@@ -119,6 +119,10 @@ struct counted_curve {
     tick();
     return inner.derivative(u, order);
   }
+  [[nodiscard]] point_type value_from_left(double u) const {
+    tick();
+    return inner.value_from_left(u);
+  }
   [[nodiscard]] std::span<const double> breakpoints() const { return inner.breakpoints(); }
   [[nodiscard]] double rounding_bound(int order) const { return inner.rounding_bound(order); }
 };

@@ -18,7 +18,8 @@
 //   estimate is a number         no error estimate is NaN or negative
 //   converged means bounded      a converged result has a finite error estimate
 //   length at least the chord    a length plus its (finite) estimate is at least the polygon
-//                                through P at the 9 parameters (64 ulps of rounding allowed)
+//                                through P at the 9 parameters and the interior breakpoints,
+//                                broken where segments do not meet (64 ulps of rounding allowed)
 //   converged estimates agree    two converged lengths differ by at most the sum of their
 //                                estimates plus 64 ulps of the length (else one estimate lies)
 //   s(u) finite and in [0, L]    at 9 parameters (outside by at most the larger of 1e-9 L and the
@@ -43,12 +44,14 @@
 #include "curvebench/core/any_curve.hpp"
 #include "curvebench/io/spec.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -113,6 +116,10 @@ struct metered_curve {
     m->tick();
     return c.derivative(u, order);
   }
+  [[nodiscard]] point_type value_from_left(const double& u) const {
+    m->tick();
+    return c.value_from_left(u);
+  }
   [[nodiscard]] std::span<const double> breakpoints() const { return c.breakpoints(); }
 };
 
@@ -151,13 +158,11 @@ void check_curve(const any_curve<double, Dim>& built) {
   const bool measure = segments <= max_segments;
 
   m->begin("evaluation");
-  std::vector<point<double, Dim>> ps;  // P at us, for the chord property
-  bool out_of_range = false;           // a value or derivative beyond double's range somewhere
+  bool out_of_range = false;  // a value or derivative beyond double's range somewhere
   run_step(name, "evaluation", domain_errors::violation, [&] {
     for (double u : us)
       for (int order = 0; order <= 2; ++order) {
         const point<double, Dim> p = order == 0 ? c(u) : c.derivative(u, order);
-        if (order == 0) ps.push_back(p);
         for (int i = 0; i < Dim; ++i)
           if (!std::isfinite(p[i])) out_of_range = true;
       }
@@ -190,11 +195,20 @@ void check_curve(const any_curve<double, Dim>& built) {
       lengths.emplace_back(method, r);
     });
   });
-  // The polygon through P(us) is never longer than the curve: a length (with its estimate) below
-  // it is wrong, whatever its status says. stableNorm: the chords of 1e-170 coordinates must not
-  // underflow to 0 as the lengths do.
+  // The polygon through P(us) and the interior breakpoints, broken at each breakpoint (from P(b-)
+  // to P(b): segments need not meet, and L is the integral of |P'| over them, without the jumps),
+  // is never longer than the curve: a length (with its estimate) below it is wrong, whatever its
+  // status says. stableNorm: the chords of 1e-170 coordinates must not underflow to 0 as the
+  // lengths do. Evaluated on the built curve: the meter counts the methods' work only.
+  std::vector<double> qs(us);
+  const std::span<const double> bp = built.breakpoints();
+  for (std::size_t i = 1; i + 1 < bp.size(); ++i)
+    if (bp[i] > d.lo && bp[i] < d.hi) qs.push_back(bp[i]);
+  std::sort(qs.begin(), qs.end());
+  qs.erase(std::unique(qs.begin(), qs.end()), qs.end());  // a breakpoint among us: one leg ends there
   double chord = 0;
-  for (std::size_t k = 0; k + 1 < ps.size(); ++k) chord += (ps[k + 1] - ps[k]).stableNorm();
+  for (std::size_t k = 0; k + 1 < qs.size(); ++k)
+    chord += (built.value_from_left(qs[k + 1]) - built(qs[k])).stableNorm();
   if (std::isfinite(chord))
     for (const auto& [method, r] : lengths)
       if (std::isfinite(r.error_estimate) &&

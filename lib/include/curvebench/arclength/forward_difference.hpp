@@ -1,6 +1,8 @@
 // Forward-differencing arc-length table: the curve sampled at N equal steps per segment
-// (breakpoints are nodes), chord lengths accumulated; s(u) by linear interpolation, u(s) by binary
-// search and linear interpolation; Richardson extrapolation of two tables.
+// (breakpoints are nodes; a segment ends at its limit from the left, so that a jump between
+// segments that do not meet is not length, core/curve.hpp), chord lengths accumulated; s(u) by
+// linear interpolation, u(s) by binary search and linear interpolation; Richardson extrapolation
+// of two tables.
 // Error: a chord falls short of its arc by kappa^2 |P'|^3 h^3 / 24, so the length has error
 // c h^2 + O(h^4). Estimate: with the coarser sums L_2h, L_4h over the same samples, d2 = L_h - L_2h
 // bounds L - L_h when the ratio r = (L_2h - L_4h) / d2 lies in [3, 6] (observed order about 2),
@@ -10,8 +12,9 @@
 // check. Both estimates add the curve's own rounding, 3 rounding_bound(c, 0) per chord
 // (core/curve.hpp; no bound, not_guaranteed, for a curve without one).
 // Sources: seed 002 ("Forward Differencing", table lookup); Parent, Computer Animation (2012), 3.2.
-// Cost: N + 1 position evaluations per segment to build, at most 2^24 in all unless the caller
-// allows more (checked before the work); s(u), u(s) O(log N), no evaluation.
+// Cost: N position evaluations per segment and one more (and one per interior breakpoint for a
+// curve that may jump there) to build, at most 2^24 in all unless the caller allows more (checked
+// before the work); s(u), u(s) O(log N), no evaluation.
 // Accuracy: O(h^2) (the table and its interpolation), Richardson O(h^4) on smooth segments.
 #pragma once
 
@@ -36,7 +39,8 @@ template <class Real>
 class forward_difference_table {
  public:
   /// N = steps_per_segment >= 1 equal parameter steps in every segment. The cost, N x segments + 1
-  /// position evaluations and as many nodes, is checked before the work: above max_evaluations it
+  /// nodes and as many position evaluations (segments - 1 more for a curve that declares
+  /// value_from_left), is checked before the work: above max_evaluations it
   /// throws invalid_input naming steps_per_segment, the segments and the limit.
   template <curve C>
   requires std::same_as<typename C::real_type, Real> forward_difference_table(
@@ -47,7 +51,10 @@ class forward_difference_table {
     const std::span<const Real> bp = c.breakpoints();
     validate::count_at_least("breakpoints", bp.size(), 2, "a curve has at least one segment");
     const std::size_t segments = bp.size() - 1;
-    if (steps_per_segment > (max_evaluations - 1) / segments)
+    // A curve that may jump at its breakpoints (value_from_left, core/curve.hpp) costs one more
+    // evaluation per interior breakpoint: its segment's end from the left, the next one's start.
+    const std::size_t joins = declares_value_from_left<C> ? segments - 1 : 0;
+    if (joins >= max_evaluations || steps_per_segment > (max_evaluations - 1 - joins) / segments)
       validate::fail("steps_per_segment = " + std::to_string(steps_per_segment) + ": " + std::to_string(segments) +
                      (segments == 1 ? " segment" : " segments") + " x " + std::to_string(steps_per_segment) +
                      " steps is more than the limit of " + std::to_string(max_evaluations) +
@@ -62,13 +69,20 @@ class forward_difference_table {
     position_bound_ = rounding_bound(c, 0);
     for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
       if (!(bp[i + 1] > bp[i])) continue;
+      if constexpr (declares_value_from_left<C>) {
+        if (i > 0) {  // the segment starts at P(b_i), its own start; the last one ended at P(b_i-)
+          prev = c(bp[i]);
+          ++evaluations_;
+        }
+      }
       const Real h = (bp[i + 1] - bp[i]) / Real(static_cast<long long>(steps_));
       typename C::point_type even = prev;                      // the node two steps back, for L_2h
       typename C::point_type fourth = prev;                    // the node four steps back, for L_4h
       typename C::point_type last_4h = C::point_type::Zero();  // the previous 4h chord's direction
       for (std::size_t k = 1; k <= steps_; ++k) {
         const Real u = k == steps_ ? bp[i + 1] : bp[i] + h * Real(static_cast<long long>(k));
-        const typename C::point_type p = c(u);
+        // A segment's last node: its end, from the left at an interior breakpoint.
+        const typename C::point_type p = k == steps_ && i + 2 < bp.size() ? value_from_left(c, u) : c(u);
         ++evaluations_;
         const typename C::point_type d = p - prev;
         u_.push_back(u);

@@ -33,6 +33,9 @@ class any_curve {
   [[nodiscard]] point_type operator()(const Real& u) const { return self_->value(u); }
   [[nodiscard]] point_type derivative(const Real& u, int order) const { return self_->derivative(u, order); }
   [[nodiscard]] std::span<const Real> breakpoints() const { return self_->breakpoints(); }
+  /// The wrapped curve's curvebench::value_from_left(c, u) (core/curve.hpp): P(u-), c(u) for a
+  /// continuous one.
+  [[nodiscard]] point_type value_from_left(const Real& u) const { return self_->value_from_left(u); }
   /// The wrapped curve's curvebench::declared_rounding_bound(c, order) (core/curve.hpp).
   [[nodiscard]] Real rounding_bound(int order) const { return self_->rounding_bound(order); }
   /// The family name given at construction (may be empty).
@@ -59,6 +62,7 @@ class any_curve {
     [[nodiscard]] virtual point_type value(const Real& u) const = 0;
     [[nodiscard]] virtual point_type derivative(const Real& u, int order) const = 0;
     [[nodiscard]] virtual std::span<const Real> breakpoints() const = 0;
+    [[nodiscard]] virtual point_type value_from_left(const Real& u) const = 0;
     [[nodiscard]] virtual Real rounding_bound(int order) const = 0;
   };
   template <class C>
@@ -68,6 +72,7 @@ class any_curve {
     [[nodiscard]] point_type value(const Real& u) const override { return c(u); }
     [[nodiscard]] point_type derivative(const Real& u, int order) const override { return c.derivative(u, order); }
     [[nodiscard]] std::span<const Real> breakpoints() const override { return c.breakpoints(); }
+    [[nodiscard]] point_type value_from_left(const Real& u) const override { return curvebench::value_from_left(c, u); }
     [[nodiscard]] Real rounding_bound(int order) const override {
       return curvebench::declared_rounding_bound(c, order);
     }

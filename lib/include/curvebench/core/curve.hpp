@@ -20,6 +20,12 @@
 // |P''(u)| over [a, b] such that the speed |P'| is Lipschitz with it there (+infinity: none, e.g.
 // across a knot where P' may jump); `second_derivative_bound(c, a, b)` returns it, or +infinity for
 // a curve that declares none. Newton inversion uses it to bound a step without integrating it.
+// Optionally, `c.value_from_left(u)` -> point: the limit of P from the left at an interior
+// breakpoint u (the segment that ends there). A curve whose position may jump at a breakpoint
+// (composite_bezier: segments need not meet) must declare it; `value_from_left(c, u)` returns it,
+// or c(u) for a curve that declares none, which is then continuous. Methods that measure chords
+// across a segment (subdivision, forward differences) end each segment there, so that a jump is
+// not counted as length: L is the integral of |P'| over the segments, as the quadratures take it.
 // Arc length, inversion and motion (arclength/, motion/) are written against this concept only.
 #pragma once
 
@@ -95,6 +101,21 @@ template <curve C>
     return Real(c.rounding_bound(order)) + underflow_floor<Real>();
   else
     return Real(0);
+}
+
+/// A curve that gives the limit of P from the left at its breakpoints (see the header).
+template <class C>
+concept declares_value_from_left = curve<C> && requires(const C& c, const typename C::real_type& u) {
+  { c.value_from_left(u) } -> std::convertible_to<typename C::point_type>;
+};
+
+/// P(u-): c.value_from_left(u) when c declares it, else c(u) (a continuous curve; see the header).
+template <curve C>
+[[nodiscard]] typename C::point_type value_from_left(const C& c, const typename C::real_type& u) {
+  if constexpr (declares_value_from_left<C>)
+    return c.value_from_left(u);
+  else
+    return c(u);
 }
 
 /// A curve that bounds its second derivative over an interval (see the header).

@@ -3,7 +3,8 @@
 // Evaluation: binary search for the segment, then its de Casteljau; the batch evaluate keeps the
 // previous segment while u stays in it (O(1) lookups for sorted parameters). Derivatives of any
 // order by the chain rule (h_i^-k). An interior knot belongs to the segment on its right (right
-// limits and right derivatives there), u_n to the last. Segments need not meet (stepped keys);
+// limits and right derivatives there), u_n to the last; value_from_left(u) is the left segment's
+// end (core/curve.hpp). Segments need not meet (stepped keys);
 // continuity_at_joins(tol) reports C0, C1 and G1 per interior knot. Bad data (no segment, bad
 // point counts, non-finite values, bad knots) throw invalid_input; u outside std::domain_error.
 // Sources: seeds 000, 002 (piecewise curves, continuity at joins); Farin (2002), ch. 7.
@@ -91,6 +92,13 @@ class composite_bezier {
   [[nodiscard]] std::size_t segment_index(const Real& u) const { return detail::checked_segment_of<Real>(knots_, u); }
 
   [[nodiscard]] point_type operator()(const Real& u) const { return segments_[segment_index(u)](u); }
+
+  /// P(u-), the limit from the left: at an interior knot u_i the end of segment i - 1 (where the
+  /// segments do not meet, not P(u_i)); elsewhere P(u) (u_0 belongs to the first segment).
+  [[nodiscard]] point_type value_from_left(const Real& u) const {
+    check_parameter(u, domain());
+    return segments_[detail::segment_of_from_left<Real>(knots_, u)](u);
+  }
 
   /// Upper bound on the rounding of P (order 0) or P' (order 1) over the domain: the largest of the
   /// segments' de Casteljau bounds (bezier.hpp), taken at construction; +inf for other orders.
