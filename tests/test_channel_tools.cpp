@@ -203,6 +203,25 @@ TEST(ChannelTools, KeysAToolCannotHoldAreRefusedWithTheReason) {
   EXPECT_THAT(cbt::message_of([&] { (void)ch::tools::gltf::from_keys<double>(mixed); }), HasSubstr("mix"));
 }
 
+// Blender holds F-curves in float32: a finite double past float's range is refused naming the key's
+// field (before stop 48 it became inf, reported as "keys[0].value = inf: must be finite"); in double
+// the same keys are held.
+TEST(ChannelTools, BlenderRefusesKeysPastFloatRangeNamingTheField) {
+  auto big = keys_at(0.4);
+  big[1].value = 1e300;
+  EXPECT_THAT(cbt::message_of([&] { (void)ch::tools::blender::from_keys<float>(big); }),
+              HasSubstr("keys[1].value = " + cb::to_text(1e300) +
+                        " is past float's range (3.4e38): Blender stores F-curves in float32"));
+  EXPECT_NO_THROW((void)ch::tools::blender::from_keys<double>(big));
+  auto handle = keys_at(0.4);
+  handle[0].out.dv = 1e39;
+  EXPECT_THAT(cbt::message_of([&] { (void)ch::tools::blender::from_keys<float>(handle); }),
+              HasSubstr("keys[0].value + out.dv = " + cb::to_text(1e39) + " is past float's range"));
+  auto fits = keys_at(0.4);
+  fits[2].value = 3e38;  // within float's range: held
+  EXPECT_NO_THROW((void)ch::tools::blender::from_keys<float>(fits));
+}
+
 TEST(ChannelTools, TheFamilyFieldsAreAssembledFromTheTools) {
   const auto& fields = cb::io::channel_family::fields;
   const auto doc = [&](std::string_view name) {

@@ -12,7 +12,10 @@
 #include "curvebench/channel/channel.hpp"
 #include "curvebench/channel/tool_model.hpp"
 
+#include <cmath>
+#include <cstddef>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace curvebench::channel::tools {
@@ -59,12 +62,22 @@ struct blender {
     curvebench::channel::detail::require_constant_linear_bezier(keys);
     blender_fcurve<Real> f;
     f.smoothing = auto_smoothing::none;
-    for (const auto& k : keys) {
+    // A finite double beyond Real's range (1e300 in float32) is refused naming the key's field and
+    // the storage, not passed on as an infinity that the evaluator would call "not finite".
+    const auto stored = [](std::size_t i, const char* field, double x) {
+      const Real r = static_cast<Real>(x);
+      if (std::isfinite(x) && !is_finite(r))
+        validate::fail(validate::indexed("keys", i) + "." + field + " = " + to_text(x) +
+                       " is past float's range (3.4e38): Blender stores F-curves in float32");
+      return r;
+    };
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      const auto& k = keys[i];
       blender_key<Real> b;
-      b.time = static_cast<Real>(k.time);
-      b.value = static_cast<Real>(k.value);
-      b.handle_left = {static_cast<Real>(k.time + k.in.dt), static_cast<Real>(k.value + k.in.dv)};
-      b.handle_right = {static_cast<Real>(k.time + k.out.dt), static_cast<Real>(k.value + k.out.dv)};
+      b.time = stored(i, "time", k.time);
+      b.value = stored(i, "value", k.value);
+      b.handle_left = {stored(i, "time + in.dt", k.time + k.in.dt), stored(i, "value + in.dv", k.value + k.in.dv)};
+      b.handle_right = {stored(i, "time + out.dt", k.time + k.out.dt), stored(i, "value + out.dv", k.value + k.out.dv)};
       b.handle_left_type = b.handle_right_type = handle_type::free;
       b.interpolation = k.interp == interpolation::bezier   ? blender_interpolation::bezier
                         : k.interp == interpolation::linear ? blender_interpolation::linear
