@@ -521,3 +521,22 @@ TEST(io_channel, blender_numbers_past_float_are_named) {
               ::testing::HasSubstr("spec.json.keys[1].time: 16777217 rounds to the float 16777216, not after "
                                    "keys[0].time 16777216: Blender stores frames in float32 (a spacing of 2 there)"));
 }
+
+// A channel held in float (the accuracy sweep's float runs) from data past float's range: the field
+// and the number as written are named (stop 48's sweep saw "keys[0].value = inf: must be finite" in
+// the records of an exact channel with values of 1e300), every tool alike; double holds it.
+TEST(io_channel, numbers_past_float_are_named_when_held_in_float) {
+  const auto message = [](const std::string& tool, const std::string& keys) {
+    const nlohmann::json j =
+        nlohmann::json::parse(R"({"type": "channel", "tool": ")" + tool + R"(", "keys": )" + keys + "}");
+    EXPECT_NO_THROW((void)cb::io::channel_model_of_spec<double>(spec_of(j))) << tool;
+    return cbt::message_of([&] { (void)cb::io::channel_model_of_spec<float>(spec_of(j)); });
+  };
+  const std::string keys = R"([{"time": 0, "value": 1e300}, {"time": 1, "value": -1e300}])";
+  for (const std::string tool : {"exact", "maya"})
+    EXPECT_EQ(message(tool, keys),
+              "spec.json.keys[0].value: 1e+300 is past float's range (3.4e38), in which this data is held")
+        << tool;
+  EXPECT_THAT(message("exact", R"([{"time": 0, "value": 0, "out": [0.3, 1e39]}, {"time": 1, "value": 0}])"),
+              ::testing::HasSubstr("spec.json.keys[0].out[1]: 1e+39 is past float's range"));
+}

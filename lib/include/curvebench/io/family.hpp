@@ -151,7 +151,7 @@ std::vector<Real> knots_or_uniform(const field& spec, std::size_t count) {
 
 template <class Real>
 Real real_or(const field& spec, std::string_view key, const Real& fallback) {
-  return spec.has(key) ? Real(spec.member(key).number()) : fallback;
+  return spec.has(key) ? spec.member(key).number_as<Real>() : fallback;
 }
 
 template <class Real, int Dim>
@@ -167,7 +167,7 @@ template <class Real>
 std::vector<Real> per_key(const field& spec, std::string_view key, std::size_t keys) {
   if (!spec.has(key)) return std::vector<Real>(keys, Real(0));
   const field f = spec.member(key);
-  if (f.value.is_number()) return std::vector<Real>(keys, Real(f.number()));
+  if (f.value.is_number()) return std::vector<Real>(keys, f.number_as<Real>());
   std::vector<Real> v = f.reals<Real>();
   if (v.size() != keys)
     f.fail("expected a number or " + std::to_string(keys) + " numbers (one per key), got " + std::to_string(v.size()));

@@ -26,6 +26,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace curvebench::io {
@@ -155,6 +156,19 @@ struct field {
     return x;
   }
 
+  /// number() held in Real: a finite double past Real's range (1e300 in float) is an error naming
+  /// the field and the value as written, never an infinity passed on.
+  template <class Real>
+  [[nodiscard]] Real number_as() const {
+    const double x = number();
+    const Real r = static_cast<Real>(x);
+    if (!is_finite(r))
+      fail(shown() + " is past " +
+           (std::is_same_v<Real, float> ? "float's range (3.4e38)" : "the working precision's range") +
+           ", in which this data is held");
+    return r;
+  }
+
   /// An integer in the range of long long. One written beyond it (nlohmann keeps 2^63 to 2^64-1 as
   /// unsigned) is an error quoting the digits written, never wrapped round to a negative value.
   [[nodiscard]] long long integer() const {
@@ -203,7 +217,7 @@ struct field {
   template <class Real>
   [[nodiscard]] std::vector<Real> reals() const {
     std::vector<Real> out(array_size());
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = Real(element(i).number());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = element(i).number_as<Real>();
     return out;
   }
 
@@ -215,7 +229,7 @@ struct field {
       const field p = element(i);
       if (!p.value.is_array() || p.value.size() != static_cast<std::size_t>(Dim))
         p.fail("expected an array of " + std::to_string(Dim) + " numbers, got " + p.shown());
-      for (int d = 0; d < Dim; ++d) out[i][d] = Real(p.element(static_cast<std::size_t>(d)).number());
+      for (int d = 0; d < Dim; ++d) out[i][d] = p.element(static_cast<std::size_t>(d)).number_as<Real>();
     }
     return out;
   }

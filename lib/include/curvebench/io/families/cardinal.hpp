@@ -15,8 +15,8 @@ any_curve<Real, Dim> build_cardinal(const field& spec) {
   const point_list<Real, Dim> p = spec_points<Real, Dim>(spec);
   cardinal_options<Real, Dim> opt;
   if (spec.has("s") && spec.has("tension")) spec.member("s").fail("give either s or tension (s = (1 - tension)/2)");
-  if (spec.has("s")) opt.s = Real(spec.member("s").number());
-  if (spec.has("tension")) opt.s = (Real(1) - Real(spec.member("tension").number())) / Real(2);
+  if (spec.has("s")) opt.s = spec.member("s").number_as<Real>();
+  if (spec.has("tension")) opt.s = (Real(1) - spec.member("tension").number_as<Real>()) / Real(2);
   opt.alpha = real_or<Real>(spec, "alpha", Real(0));
   if (spec.has("end")) {
     const std::string e = spec.member("end").one_of({"phantom", "one_sided", "tangents", "closed", "control_points"});

@@ -46,7 +46,7 @@ struct conic_family : family_defaults {
   static any_curve<Real, Dim> build(const field& spec) {
     const point_list<Real, Dim> p = detail::spec_points<Real, Dim>(spec);
     if (p.size() != 3) spec.member("points").fail("a conic has exactly 3 points, got " + std::to_string(p.size()));
-    return conic<Real, Dim>(p[0], p[1], p[2], Real(spec.member("w").number()));
+    return conic<Real, Dim>(p[0], p[1], p[2], spec.member("w").number_as<Real>());
   }
 };
 

@@ -80,8 +80,8 @@ std::vector<channel::key<Real>> channel_keys(const field& spec) {
     static constexpr std::string_view key_fields[] = {"time", "value", "interpolation", "in", "out"};
     k.only_members(key_fields, " in a channel key");
     channel::key<Real> key;
-    key.time = Real(k.member("time").number());
-    key.value = Real(k.member("value").number());
+    key.time = k.member("time").number_as<Real>();
+    key.value = k.member("value").number_as<Real>();
     key.in = handle_of<Real>(k, "in");
     key.out = handle_of<Real>(k, "out");
     key.interp = k.has("interpolation")

@@ -39,8 +39,8 @@ channel::maya_curve<Real> maya_curve_of(const field& spec) {
     static constexpr std::string_view key_fields[] = {"time", "value", "in_type", "out_type", "in", "out"};
     k.only_members(key_fields, " in a Maya key");
     channel::maya_key<Real> key;
-    key.time = Real(k.member("time").number());
-    key.value = Real(k.member("value").number());
+    key.time = k.member("time").number_as<Real>();
+    key.value = k.member("value").number_as<Real>();
     key.in_type = tangent(k, "in_type");
     key.out_type = tangent(k, "out_type");
     const channel::handle<Real> in = handle_of<Real>(k, "in"), out = handle_of<Real>(k, "out");

@@ -29,19 +29,19 @@ channel::usd_spline<Real> usd_spline_of(const field& spec) {
                                                        "pre_slope", "post_width", "post_slope",    "pre_value"};
     k.only_members(knot_fields, " in a USD knot");
     channel::usd_knot<Real> u;
-    u.time = Real(k.member("time").number());
-    u.value = Real(k.member("value").number());
+    u.time = k.member("time").number_as<Real>();
+    u.value = k.member("value").number_as<Real>();
     if (k.has("interpolation"))
       u.next_interp = channel::from_string<channel::usd_interpolation>(
           k.member("interpolation").one_of({"held", "linear", "curve"}));
     auto real = [&](std::string_view f, Real& out) {
-      if (k.has(f)) out = Real(k.member(f).number());
+      if (k.has(f)) out = k.member(f).number_as<Real>();
     };
     real("pre_width", u.pre_width);
     real("pre_slope", u.pre_slope);
     real("post_width", u.post_width);
     real("post_slope", u.post_slope);
-    if (k.has("pre_value")) u.dual_valued = true, u.pre_value = Real(k.member("pre_value").number());
+    if (k.has("pre_value")) u.dual_valued = true, u.pre_value = k.member("pre_value").number_as<Real>();
     s.knots.push_back(u);
   }
   if (spec.has("curve_type"))
@@ -58,7 +58,7 @@ channel::usd_spline<Real> usd_spline_of(const field& spec) {
     if (spec.has(slope)) {
       if (e.mode != channel::usd_extrapolation_mode::sloped)
         spec.member(slope).fail("a slope is only read by sloped extrapolation");
-      e.slope = Real(spec.member(slope).number());
+      e.slope = spec.member(slope).number_as<Real>();
     }
     return e;
   };
@@ -69,8 +69,8 @@ channel::usd_spline<Real> usd_spline_of(const field& spec) {
     static constexpr std::string_view loop_fields[] = {"proto_start", "proto_end", "pre_loops", "post_loops",
                                                        "value_offset"};
     l.only_members(loop_fields, " in inner_loops");
-    s.inner_loops.proto_start = Real(l.member("proto_start", "inner loops need proto_start").number());
-    s.inner_loops.proto_end = Real(l.member("proto_end", "inner loops need proto_end").number());
+    s.inner_loops.proto_start = l.member("proto_start", "inner loops need proto_start").number_as<Real>();
+    s.inner_loops.proto_end = l.member("proto_end", "inner loops need proto_end").number_as<Real>();
     auto count = [&](std::string_view f) {
       if (!l.has(f)) return 0;
       const long long n = l.member(f).integer();
@@ -79,7 +79,7 @@ channel::usd_spline<Real> usd_spline_of(const field& spec) {
     };
     s.inner_loops.num_pre_loops = count("pre_loops");
     s.inner_loops.num_post_loops = count("post_loops");
-    if (l.has("value_offset")) s.inner_loops.value_offset = Real(l.member("value_offset").number());
+    if (l.has("value_offset")) s.inner_loops.value_offset = l.member("value_offset").number_as<Real>();
   }
   return s;
 }
