@@ -36,6 +36,12 @@ struct blender {
   using storage_type = float;
   static constexpr time_solver default_solver = time_solver::exact;
 
+  /// The words for a number Blender cannot hold (its F-curves are float32), after the field's name:
+  /// "1e+300 is past float's range (3.4e38): ...". The spec parser and fcurve_of_keys say the same.
+  [[nodiscard]] static std::string past_float(double x) {
+    return to_text(x) + " is past float's range (3.4e38): Blender stores F-curves in float32";
+  }
+
   template <class Real>
   class model {
    public:
@@ -67,8 +73,7 @@ struct blender {
     const auto stored = [](std::size_t i, const char* field, double x) {
       const Real r = static_cast<Real>(x);
       if (std::isfinite(x) && !is_finite(r))
-        validate::fail(validate::indexed("keys", i) + "." + field + " = " + to_text(x) +
-                       " is past float's range (3.4e38): Blender stores F-curves in float32");
+        validate::fail(validate::indexed("keys", i) + "." + field + " = " + past_float(x));
       return r;
     };
     for (std::size_t i = 0; i < keys.size(); ++i) {

@@ -33,7 +33,7 @@ channel::blender_fcurve<Real> blender_fcurve_of(const field& spec) {
   // than as the inf it becomes.
   auto stored = [](const field& f, double x) {
     if (std::abs(x) > static_cast<double>(std::numeric_limits<float>::max()))
-      f.fail(to_text(x) + " is past float's range (3.4e38): Blender stores F-curves in float32");
+      f.fail(channel::tools::blender::past_float(x));
     return Real(x);
   };
   auto number = [&](const field& k, std::string_view name) {
