@@ -8,6 +8,7 @@
 #include "curvebench/arclength/newton_inversion.hpp"
 #include "curvebench/arclength/parameterization.hpp"
 #include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/cardinal_spline.hpp"
 #include "curvebench/curves/piecewise_cubic.hpp"
 #include "curvebench/curves/rational_bezier.hpp"
 #include "curvebench/reference/analytic_curves.hpp"
@@ -15,7 +16,10 @@
 
 #include <gmock/gmock.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -301,11 +305,70 @@ TEST(inversion, table_methods_need_a_table_and_report_status) {
   EXPECT_THROW((void)h.constant_speed_parameters(1), cb::invalid_input);
 }
 
+// A winding road through 1001 points (turning at random by up to 0.6 rad per key, steps of 0.5 to
+// 3): the centripetal Catmull-Rom of issue 32, in Real.
+template <class Real>
+cb::cardinal_spline<Real, 2> road(int keys) {
+  cb::point_list<Real, 2> pts;
+  double x = 0, y = 0, heading = 0;
+  std::uint64_t state = 32;
+  auto uniform = [&state](double lo, double hi) {  // a fixed LCG: the same road on every platform
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  for (int k = 0; k < keys; ++k) {
+    pts.push_back(pt2<Real>(x, y));
+    heading += uniform(-0.6, 0.6);
+    const double step = uniform(0.5, 3.0);
+    x += step * std::cos(heading);
+    y += step * std::sin(heading);
+  }
+  typename cb::cardinal_spline<Real, 2>::options o;
+  o.alpha = Real(0.5);
+  return cb::cardinal_spline<Real, 2>(pts, o);
+}
+
+// Issue 32: on 1000 segments a table whose size was global stalled (M = 16 to 256: 7e-7 L; the
+// automatic size stopped at its cap of 65536 cells, 2.2e-10 L). Sized per segment, best first, the
+// Hermite table reaches the issue's 1e-12 L, its measured error bounds the 50-digit error at 400
+// targets (a quarter of them next to knots), and the linear table reaches 1e-8 L the same way.
+// Tolerances: the table's own bound plus its nodes' Newton tolerance (newton_tolerance_eps eps L),
+// as the round-trip tests take it.
+TEST(inversion, many_segment_tables_are_sized_per_segment) {
+  const auto c = road<double>(1001);
+  const ref::reference_arc_length<cb::cardinal_spline<R, 2>> r(road<R>(1001));
+  const auto cum_segments = al::segment_lengths<double>(c);
+  for (const auto method : {al::inversion_method::hermite_table, al::inversion_method::linear_table}) {
+    const bool hermite = method == al::inversion_method::hermite_table;
+    SCOPED_TRACE(hermite ? "hermite_table" : "linear_table");
+    al::parameterization_options<double> o;
+    o.method = method;
+    o.table_tolerance = hermite ? 1e-12 : 1e-8;
+    const al::parameterization<cb::cardinal_spline<double, 2>> p(c, o);
+    EXPECT_EQ(p.table_status(), al::result_status::converged);
+    EXPECT_LE(p.table_error(), o.table_tolerance * p.length());
+    EXPECT_GE(p.table_intervals(), 1000u);  // at least one cell per segment
+    const auto cum = cum_segments.cumulative();
+    R worst(0);
+    for (int k = 0; k < 400; ++k) {
+      double s = p.length() * std::fmod(k * 0.6180339887498949, 1.0);
+      if (k % 4 == 0) s = std::min(p.length(), cum[static_cast<std::size_t>(k / 4 * 2 + 1)] + (k % 8 ? 1e-9 : -1e-9));
+      worst = std::max(worst, R(abs(r.s(R(p.u(s, method))) - R(s))));
+    }
+    const R bound = R(p.table_error()) + R(newton_tolerance_eps * std::numeric_limits<double>::epsilon()) * r.length();
+    EXPECT_LE(worst, bound) << "the table's bound does not cover its error";
+    EXPECT_LE(worst / r.length(), R(o.table_tolerance));
+    std::printf("[%s] 1000 segments: %zu cells, measured %.3g L, 50-digit %.3g L, %zu evaluations\n",
+                hermite ? "hermite" : "linear", p.table_intervals(), p.table_error() / p.length(),
+                static_cast<double>(worst / r.length()), p.construction_evaluations());
+  }
+}
+
 // Issue 16, bounded work: the table's construction budget. At 4000 evaluations the smooth cubic
 // (16 nodes ~ 700 evaluations, 32 nodes ~ 1300) affords one doubling but not the next: the table
 // stops measured, cap_hit, its error bound finite, and every u(s) is within that bound plus the
 // Newton tolerance of its nodes (the bound the round-trip suite uses), checked against 50 digits.
-// At 300 evaluations no finer table measures the first: not_guaranteed, no bound.
+// With a cap of one cell no finer table measures the first: not_guaranteed, no bound.
 TEST(inversion, table_construction_budget_ends_in_cap_hit_with_an_honest_bound) {
   const auto c = smooth_cubic<double>();
   const ref::reference_arc_length<poly2<R>> r(smooth_cubic<R>());
@@ -327,10 +390,33 @@ TEST(inversion, table_construction_budget_ends_in_cap_hit_with_an_honest_bound) 
   }
   EXPECT_LE(worst, bound) << "the table's bound does not cover its error";
   EXPECT_GT(worst, R(full.table_error()));  // the capped table is coarser than the full one
-  o.max_evaluations = 300;
-  const al::parameterization<poly2<double>> starved(c, o);
-  EXPECT_EQ(starved.table_status(), al::result_status::not_guaranteed);
-  EXPECT_FALSE(std::isfinite(starved.table_error()));
+  // Smaller budgets: each table is measured (a finite bound that covers its error) or says it has
+  // no bound. (The size is per segment since stop 49: even at 60 evaluations one cell, halved once
+  // with a node given min_node_evaluations, is measured.)
+  for (std::size_t budget : {60u, 100u, 150u, 200u, 300u}) {
+    o.max_evaluations = budget;
+    const al::parameterization<poly2<double>> starved(c, o);
+    SCOPED_TRACE(budget);
+    if (starved.table_status() == al::result_status::not_guaranteed) {
+      EXPECT_FALSE(std::isfinite(starved.table_error()));
+      continue;
+    }
+    ASSERT_TRUE(std::isfinite(starved.table_error()));
+    R err(0);
+    for (int k = 0; k <= 200; ++k) {
+      const double s = starved.length() * k / 200;
+      err = std::max(err, R(abs(r.s(R(starved.u(s))) - R(s))));
+    }
+    EXPECT_LE(err,
+              R(starved.table_error()) + R(newton_tolerance_eps * std::numeric_limits<double>::epsilon()) * r.length());
+  }
+  // A cap of one cell: the segment's one cell cannot be halved to measure it, no bound.
+  o.max_evaluations = al::parameterization_options<double>{}.max_evaluations;
+  o.max_table_intervals = 1;
+  const al::parameterization<poly2<double>> unmeasured(c, o);
+  EXPECT_EQ(unmeasured.table_intervals(), 1u);
+  EXPECT_EQ(unmeasured.table_status(), al::result_status::not_guaranteed);
+  EXPECT_FALSE(std::isfinite(unmeasured.table_error()));
 }
 
 // Newton's budget: 40 evaluations allow one long step (31 + 1 speed) and one panel more; the solve

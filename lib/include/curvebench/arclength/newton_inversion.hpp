@@ -176,6 +176,11 @@ class segment_lengths {
   [[nodiscard]] std::size_t segment_for_s(const Real& s) const {
     return curvebench::detail::segment_of<Real>(cumulative_, s);
   }
+  /// |P'| just inside segment i at its start and at its end (detail::knot_offset inside, so the
+  /// segment's own where the curve is only C0 at a breakpoint); 0 for a segment too narrow for it.
+  [[nodiscard]] Real start_speed(std::size_t i) const { return start_speed_[i]; }
+  [[nodiscard]] Real end_speed(std::size_t i) const { return end_speed_[i]; }
+
   /// A first guess of u(s) in segment i from the monotone cubic Hermite model of s(u) with the
   /// segment's end lengths and end speeds (no curve evaluation).
   [[nodiscard]] Real guess(std::size_t i, const Real& s) const {

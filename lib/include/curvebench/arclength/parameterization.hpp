@@ -1,21 +1,30 @@
 // The arc-length parameterization of a curve: s(u), u(s) and constant-speed sampling.
 //
 // Built once: the cumulative segment lengths (adaptive Gauss-Kronrod) and, unless the method is
-// Newton, a table of u_j = u(s_j) on a uniform grid s_j = j L / M with slopes du/ds = 1 / |P'(u_j)|,
-// the nodes solved in a chain, each relative to the previous one. s(u): from the nearest known
-// point at or left of u, one recursive Gauss-Kronrod integral. u(s): (a) linear_table, O(1),
-// error O(ds^2); (b) hermite_table, O(1), cubic Hermite of u(s) with Fritsch-Carlson limited
-// slopes, cells split at the arc-length positions of knots (where u'' or u' jumps), error O(ds^4);
-// (c) newton (newton_inversion.hpp). (a) and (b) may add one safeguarded Newton polish over one
-// panel of the short-step rule. M is given, or doubled from 16 per segment until the Hermite
-// table's measured midpoint error is below table_tolerance * L (or the resolution of u in Real, far
-// from 0: rounding_limited), or the construction's evaluation budget (2^25) would be passed (cap_hit).
+// Newton, a table of u_j = u(s_j) with slopes du/ds = 1 / |P'(u_j)|. The table's cells are placed
+// per segment: segment i has m_i cells of equal arc length, so no cell straddles a knot (where u''
+// or u' of u(s) jumps), and its nodes are solved in a chain, each relative to the previous one.
+// s(u): from the nearest known point at or left of u, one recursive Gauss-Kronrod integral. u(s):
+// (a) linear_table, O(1), error O(ds^2); (b) hermite_table, O(1), cubic Hermite of u(s) with
+// Fritsch-Carlson limited slopes, error O(ds^4); (c) newton (newton_inversion.hpp). (a) and (b)
+// may add one safeguarded Newton polish over one panel of the short-step rule. The cell of s is
+// found in O(1): a uniform index of 2M buckets over [0, L] names the first cell of each bucket.
+// The size M = sum m_i is given (shared by length, no cell wider than L / M), or found per
+// segment: each starts at 16 cells, is halved once to measure its table's midpoint error (of the
+// method the table is built for), and the segment with the largest measured error is halved next
+// (best first) until every segment's error is below table_tolerance * L (or at the resolution of u
+// in Real, far from 0: rounding_limited), or max_table_intervals or the construction's evaluation
+// budget (2^25) stops it (cap_hit). Until stop 49 M was global and uniform, doubled for the
+// hardest segment, and capped at 2^16: a 1000-segment centripetal Catmull-Rom stopped at 4e-9 L
+// (measured 2.2e-10 L); per segment it reaches 1e-12 L.
 // Degenerate curves (length 0 or rounding noise of their size) have s(u) but no u(s).
 // s(u)'s estimate, and with it invert()'s, includes the curve's own rounding (length.hpp,
-// evaluation_error); table_error() is the Hermite interpolation's measured error only.
+// evaluation_error); table_error() is the table interpolation's measured error only.
 // Sources: seed 002 (arc-length table, u = U(s) by lookup); Eberly (2008); Fritsch & Carlson (1980).
-// Cost: construction O(M) Newton solves, at most max_evaluations; u(s) O(1) (+15 or 31 with the polish);
-// s(u) O(log M) + one integral. Holds a copy of the curve; const members are thread-safe.
+// Cost: construction O(M) Newton solves (each node solved once: a halving adds the midpoints), at
+// most max_evaluations; u(s) O(1) (+15 or 31 with the polish); s(u) O(log M) + one integral.
+// Memory: about 100 bytes per cell in double. Holds a copy of the curve; const members are
+// thread-safe.
 #pragma once
 
 #include "curvebench/arclength/gauss_kronrod.hpp"
@@ -40,8 +49,8 @@ namespace curvebench::arclength {
 
 /// How u(s) is computed.
 enum class inversion_method {
-  linear_table,   ///< (a) uniform s-grid, linear interpolation, O(1)
-  hermite_table,  ///< (b) uniform s-grid, cubic Hermite with du/ds = 1/|P'|, O(1)
+  linear_table,   ///< (a) s-grid per segment, linear interpolation, O(1)
+  hermite_table,  ///< (b) s-grid per segment, cubic Hermite with du/ds = 1/|P'|, O(1)
   newton          ///< (c) Newton from the segment bracket, no table
 };
 
@@ -50,19 +59,23 @@ struct parameterization_options {
   inversion_method method{inversion_method::hermite_table};
   /// One Newton step after the table lookup (methods a and b).
   bool newton_polish{false};
-  /// Number of s-grid intervals; 0 = grow by doubling until the measured Hermite error is below
-  /// table_tolerance * L (or max_table_intervals is reached: table_status() says cap_hit).
+  /// Number of cells M, shared by the segments in proportion to their lengths (ceil(M len_i / L)
+  /// each, so the table has up to one more per segment); 0 = sized per segment until the measured
+  /// error of the table's method is below table_tolerance * L (see the header).
   std::size_t table_intervals{0};
-  std::size_t max_table_intervals{std::size_t(1) << 16};
-  /// Target of the Hermite table's |ds| error, relative to L: max(32 eps, 1e-15).
+  /// The most cells the automatic size may reach (table_status() cap_hit when it stops there):
+  /// about 100 MB in double.
+  std::size_t max_table_intervals{std::size_t(1) << 20};
+  /// Target of the table's |ds| error (of the method it is built for), relative to L: max(32 eps,
+  /// 1e-15).
   Real table_tolerance{std::max(Real(32) * epsilon<Real>(), Real(1) / Real(1000000000000000LL))};
   /// Newton inversion (method c, table nodes, polish) and segment lengths; see newton_options.
   newton_options<Real> newton{};
-  /// Total curve-derivative evaluations of the construction (segment lengths, knots, table). The
-  /// segment lengths get at most half; each table node gets its share of what is left (never below
-  /// min_node_evaluations); a doubling whose projected cost (twice the last table's) would pass the
-  /// budget is not started. The table stops there: table_status() cap_hit (not_guaranteed when no
-  /// finer table measured the first one).
+  /// Total curve-derivative evaluations of the construction (segment lengths, table). The segment
+  /// lengths get at most half; each table node gets its share of what is left (never below
+  /// min_node_evaluations); a segment's halving whose projected cost (twice its last step's) would
+  /// pass the budget is not started. The table stops there: table_status() cap_hit (not_guaranteed
+  /// when a segment could not be halved once to measure it).
   std::size_t max_evaluations{std::size_t(1) << 25};
 };
 
@@ -103,7 +116,6 @@ class parameterization {
     measure_degeneracy();
     if (opt_.method != inversion_method::newton) {
       require_length();
-      collect_knots();
       build_table();
     }
   }
@@ -199,10 +211,11 @@ class parameterization {
     return out;
   }
 
-  /// Number of s-grid intervals M (0 for the Newton method).
-  [[nodiscard]] std::size_t table_intervals() const { return nodes_u_.empty() ? 0 : nodes_u_.size() - 1; }
-  /// Measured bound of the Hermite table's |ds| error (the coarser table's midpoint error when the
-  /// size was found by doubling; +inf when the size was given and not measured).
+  /// Number of cells M (0 for the Newton method).
+  [[nodiscard]] std::size_t table_intervals() const { return cells_.size(); }
+  /// Measured bound of the table's |ds| error, of the method it was built for (the worst over the
+  /// segments of each one's coarser table's midpoint error when the size was found automatically;
+  /// +inf when the size was given and not measured).
   [[nodiscard]] Real table_error() const { return table_error_; }
   /// converged (table_error <= table_tolerance * L), rounding_limited (table_error is at the
   /// resolution of u in Real, 8 eps max|u| max|P'|, above that target: a domain far from 0),
@@ -210,7 +223,8 @@ class parameterization {
   /// out of its share; table_error then includes the worst node's bound), not_guaranteed (size
   /// given by the caller, or the budget allowed no finer table to measure it: no bound).
   [[nodiscard]] result_status table_status() const { return table_status_; }
-  /// The s-grid nodes u_j (size M + 1).
+  /// The table's nodes u_j, ascending (M + 1 of them, more when a segment too short for cells lies
+  /// between two that have them).
   [[nodiscard]] std::span<const Real> table_parameters() const { return nodes_u_; }
   /// Curve-derivative evaluations spent building segments and table.
   [[nodiscard]] std::size_t construction_evaluations() const {
@@ -223,36 +237,28 @@ class parameterization {
     [[nodiscard]] Real eval(const Real& t) const { return c0 + t * (c1 + t * (c2 + t * c3)); }
   };
 
-  // One Hermite piece of u(s) on [s0, s0 + 1/inv_w]: u = c(t), t = (s - s0) inv_w. `split` is the
-  // start of the next piece of the same cell (+inf for a cell's last piece), `next` its index in
-  // hermite_table::extra. 64 bytes in double: one cache line per query.
+  // One cell of the table, [s0, s_end) in arc length: the Hermite cubic of u(s) over it, u = c(t),
+  // t = (s - s0) inv_w (c.c0 is u at s0), and u1, u at its end (the linear table reads c0 and u1).
+  // Cells lie within one segment each, so none straddles a knot, where u(s) has a jump in u''
+  // (C1 curves) or in u' (C0 curves). The last cell's s_end is +inf. 64 bytes in double: one cache
+  // line per query.
   struct alignas(64) piece {
     Real s0, inv_w;
     cubic c;
-    Real split;
-    std::size_t next;
+    Real s_end, u1;
   };
-  // A knot (interior breakpoint) at arc length s, parameter u, with the speeds just left and right
-  // of it (they differ where the curve is only C0).
-  struct knot {
-    Real s, u, speed_left, speed_right;
-  };
-  // The Hermite table: cell j's first piece is cells[j], one per cell unless the arc-length
-  // position of a knot falls inside the cell; then the cell is split there, so that no piece
-  // straddles a knot, where u(s) has a jump in u'' (C1 curves) or in u' (C0 curves), and the
-  // further pieces are chained in `extra`. A query reads one record (O(1), no search) unless its
-  // cell is split.
-  struct hermite_table {
-    std::vector<piece> cells;
-    std::vector<piece> extra;
-    [[nodiscard]] Real eval(const Real& s, std::size_t j) const {
-      const piece* p = &cells[j];
-      while (!(s < p->split)) [[unlikely]] p = &extra[p->next];
-      Real t = (s - p->s0) * p->inv_w;
-      if (t < Real(0)) t = Real(0);  // floor(s / ds) rounded up across a node
-      if (t > Real(1)) t = Real(1);
-      return p->c.eval(t);
-    }
+
+  // The nodes of one segment while the table is built: u, s (the grid, s[0] and s[m] the segment's
+  // cumulative lengths), the error bound of s(u) at the node (es) and its residual s(u) - s as
+  // computed along the chain (r), and |P'| (one-sided at the segment's ends).
+  struct segment_nodes {
+    std::size_t index = 0;  // the segment
+    std::vector<Real> u, s, es, r, sp;
+    Real error = no_bound<Real>();  // the measured error of the table on this segment (+inf: not measured)
+    std::size_t last_cost = 0;      // evaluations of its last seeding or refinement
+    bool capped = false;            // a node's Newton solve ran out of its share
+    bool retired = false;           // at its rounding floor: not refined further
+    [[nodiscard]] std::size_t cells() const { return u.size() - 1; }
   };
 
   static std::size_t to_index(const Real& x) {
@@ -288,18 +294,27 @@ class parameterization {
   }
 
   void require_table() const {
-    if (nodes_u_.empty())
+    if (cells_.empty())
       throw std::logic_error("parameterization: a table method needs the object built with a table method");
   }
 
-  // j = floor(s / ds) clamped to [0, M - 1], t = s / ds - j in [0, 1].
-  void locate(const Real& s, std::size_t& j, Real& t) const {
-    const Real x = s * inv_ds_;
-    const std::size_t m = nodes_u_.size() - 1;
-    j = x > Real(0) ? std::min(to_index(x), m - 1) : 0;
-    t = x - Real(static_cast<long long>(j));
-    if (t > Real(1)) t = Real(1);
-    if (t < Real(0)) t = Real(0);
+  // The cell holding s (0 <= s <= L): the bucket of s, then forward over the cells that end at or
+  // before s (at most a few where cells are as wide as a bucket), by bisection where the bucket
+  // holds many (a short segment refined far more than its neighbours).
+  [[nodiscard]] std::size_t cell_at(const Real& s) const {
+    const Real x = s * inv_bucket_;
+    const std::size_t k = index_.size() - 1;
+    const std::size_t b = x > Real(0) ? std::min(to_index(x), k - 1) : 0;
+    std::size_t j = index_[b];
+    const std::size_t stop = index_[b + 1];
+    if (stop - j > 8) [[unlikely]] {
+      const auto first = cells_.begin() + static_cast<std::ptrdiff_t>(j);
+      const auto last = cells_.begin() + static_cast<std::ptrdiff_t>(stop);
+      j += static_cast<std::size_t>(std::partition_point(first, last, [&s](const piece& p) { return !(s < p.s_end); }) -
+                                    first);
+    }
+    while (!(s < cells_[j].s_end)) ++j;  // the last cell ends at +inf
+    return j;
   }
 
   // The known point at or left of u nearest to it: a table node or a segment start.
@@ -320,14 +335,15 @@ class parameterization {
     }
   }
 
-  // The table value of u(s) in cell j (O(1)), polished when the options say so; evaluations are
-  // added to `evaluations`.
+  // The table value of u(s) (O(1)), polished when the options say so; evaluations are added to
+  // `evaluations`.
   [[nodiscard]] Real table_u(const Real& s, inversion_method m, std::size_t& evaluations) const {
-    std::size_t j;
-    Real t;
-    locate(s, j, t);
-    const Real uu =
-        m == inversion_method::linear_table ? nodes_u_[j] + t * (nodes_u_[j + 1] - nodes_u_[j]) : hermite_.eval(s, j);
+    const std::size_t j = cell_at(s);
+    const piece& p = cells_[j];
+    Real t = (s - p.s0) * p.inv_w;
+    if (t < Real(0)) t = Real(0);  // s in a segment too short for cells, or rounded across a node
+    if (t > Real(1)) t = Real(1);
+    const Real uu = m == inversion_method::linear_table ? p.c.c0 + t * (p.u1 - p.c.c0) : p.c.eval(t);
     return opt_.newton_polish ? polish(s, uu, j, evaluations) : uu;
   }
 
@@ -339,14 +355,15 @@ class parameterization {
                                    std::size_t& evaluations) const {
     const gauss_kronrod_rule<Real>& rule = detail::short_step_rule<Real>();
     auto f = [this](const Real& v) { return speed(curve_, v); };
-    const bool from_left = x - nodes_u_[j] <= nodes_u_[j + 1] - x;
-    const kronrod_panel<Real> p = from_left ? rule.apply(f, nodes_u_[j], x) : rule.apply(f, x, nodes_u_[j + 1]);
+    const std::size_t k = cell_node_[j];
+    const bool from_left = x - nodes_u_[k] <= nodes_u_[k + 1] - x;
+    const kronrod_panel<Real> p = from_left ? rule.apply(f, nodes_u_[k], x) : rule.apply(f, x, nodes_u_[k + 1]);
     evaluations += p.evaluations;
     err = p.error_estimate;
-    return from_left ? (nodes_s_[j] - s) + p.kronrod : (nodes_s_[j + 1] - s) - p.kronrod;
+    return from_left ? (nodes_s_[k] - s) + p.kronrod : (nodes_s_[k + 1] - s) - p.kronrod;
   }
 
-  // The safeguarded Newton polish of the table value uu in cell j, whose bracket [u_j, u_{j+1}]
+  // The safeguarded Newton polish of the table value uu in cell j, whose bracket (its nodes' u)
   // contains u(s) (s(u) is monotone). The step is tried only when the residual r0 = s(uu) - s is
   // above its own error estimate e0 (otherwise it is quadrature noise and a step would follow the
   // panel's error, not the table's), must stay inside the bracket, and is kept only when its
@@ -363,70 +380,10 @@ class parameterization {
     ++evaluations;
     if (!(sp > Real(0))) return uu;
     const Real next = uu - r0 / sp;
-    if (!(next >= nodes_u_[j] && next <= nodes_u_[j + 1])) return uu;
+    const std::size_t k = cell_node_[j];
+    if (!(next >= nodes_u_[k] && next <= nodes_u_[k + 1])) return uu;
     const Real r1 = cell_residual(s, next, j, e1, evaluations);
     return abs(r1) + e1 < abs(r0) - e0 ? next : uu;
-  }
-
-  // Nodes u_j = u(j L / m), j = 0..m, each by Newton from the previous node (the nearest known
-  // point) when it is in the same segment. Chained, the arc lengths are taken relative to the
-  // previous node s_{j-1}: the bracket's lower end is the previous node's computed residual
-  // s(u_{j-1}) - s_{j-1}, the target ds. Every sum is then of the size ds and rounds by ~eps ds; in
-  // absolute s each node inherited the previous one's rounding of eps s, a random walk that grew
-  // like sqrt(M) eps L (1.2e-14 L at M = 32768 on a 4-segment Catmull-Rom) and kept the automatic
-  // sizing from ever meeting 32 eps L.
-  // Each node's Newton solve gets its share of the budget left (never below min_node_evaluations);
-  // the status returned is the worst of the nodes' (cap_hit when a share ran out).
-  result_status compute_nodes(std::size_t m, std::vector<Real>& us, std::vector<Real>& ss, std::vector<Real>& es,
-                              std::vector<Real>& sp) {
-    const Real len = length();
-    const Real tol = opt_.newton.relative_tolerance * len;
-    us.assign(m + 1, Real(0));
-    ss.assign(m + 1, Real(0));
-    es.assign(m + 1, Real(0));
-    sp.assign(m + 1, Real(0));
-    const auto p = segments_.parameters();
-    const auto cum = segments_.cumulative();
-    const auto err = segments_.cumulative_error();
-    us[0] = p.front();
-    us[m] = p.back();
-    ss[m] = len;
-    es[m] = err.back();
-    Real carried(0);  // s(u_{j-1}) - s_{j-1} as computed along the chain
-    result_status status = result_status::converged;
-    for (std::size_t j = 1; j < m; ++j) {
-      const Real sj = len * Real(static_cast<long long>(j)) / Real(static_cast<long long>(m));
-      ss[j] = sj;
-      const std::size_t i = segments_.segment_for_s(sj);
-      newton_bracket<Real> br{p[i], cum[i], err[i], p[i + 1], cum[i + 1], err[i + 1], segments_.guess(i, sj)};
-      Real target = sj, inherited(0);
-      if (us[j - 1] > br.u_lo && us[j - 1] < br.u_hi) {
-        const Real base = ss[j - 1];
-        br.u_lo = us[j - 1];
-        br.s_lo = carried;
-        // The previous node's error bound is added to this node's afterwards, not handed to Newton:
-        // summed along the chain it outgrows the tolerance near a segment's end, and Newton then
-        // bisected to rounding (rounding_limited, 160 instead of 35 evaluations per node at
-        // M = 65536 on the 4-segment Catmull-Rom).
-        br.s_lo_error = Real(0);
-        inherited = es[j - 1];
-        br.s_hi = cum[i + 1] - base;
-        target = sj - base;  // exact (Sterbenz) for j >= 2; j = 1 never chains (u_0 is a segment start)
-      }
-      newton_options<Real> node_opt = opt_.newton;
-      node_opt.final_step = true;  // nodes are interpolated by every query: polish them to rounding level
-      const std::size_t share = budget_left() > m + 1 ? (budget_left() - (m + 1)) / (m - j) : 0;
-      node_opt.max_evaluations = std::min(node_opt.max_evaluations, std::max(min_node_evaluations, share));
-      const inversion_result<Real> r = newton_invert(curve_, target, br, tol, node_opt);
-      build_evaluations_ += r.evaluations;
-      if (r.status == result_status::cap_hit) status = result_status::cap_hit;
-      us[j] = r.u;
-      es[j] = r.s_error_estimate + inherited;
-      carried = r.residual;
-    }
-    for (std::size_t j = 0; j <= m; ++j) sp[j] = speed(curve_, us[j]);
-    build_evaluations_ += m + 1;
-    return status;
   }
 
   [[nodiscard]] std::size_t budget_left() const {
@@ -434,23 +391,136 @@ class parameterization {
     return opt_.max_evaluations > spent ? opt_.max_evaluations - spent : 0;
   }
 
-  // What the table can resolve in arc length: 8 eps max|u| max|P'| (u is a Real: one ulp of u
+  // The Newton options of one table node, `remaining` nodes (this one included) still to solve in
+  // this step: its share of the budget left, never below min_node_evaluations.
+  [[nodiscard]] newton_options<Real> node_options(std::size_t remaining) const {
+    newton_options<Real> o = opt_.newton;
+    o.final_step = true;  // nodes are interpolated by every query: polish them to rounding level
+    const std::size_t left = budget_left();
+    const std::size_t share = left > remaining ? (left - remaining) / remaining : 0;
+    o.max_evaluations = std::min(o.max_evaluations, std::max(min_node_evaluations, share));
+    return o;
+  }
+
+  // Segment i's first m cells: nodes at s_k = cum_i + k len_i / m, each by Newton from the previous
+  // node (the nearest known point). Chained, the arc lengths are taken relative to the previous
+  // node s_{k-1}: the bracket's lower end is the previous node's computed residual s(u_{k-1}) -
+  // s_{k-1}, the target ds. Every sum is then of the size ds and rounds by ~eps ds; in absolute s
+  // each node inherited the previous one's rounding of eps s, a random walk that grew like
+  // sqrt(M) eps L (1.2e-14 L at M = 32768 on a 4-segment Catmull-Rom) and kept the automatic sizing
+  // from ever meeting 32 eps L.
+  segment_nodes seed_segment(std::size_t i, std::size_t m) {
+    const auto p = segments_.parameters();
+    const auto cum = segments_.cumulative();
+    const auto err = segments_.cumulative_error();
+    const Real tol = opt_.newton.relative_tolerance * length();
+    const Real len = cum[i + 1] - cum[i];
+    const std::size_t before = construction_evaluations();
+    segment_nodes g;
+    g.index = i;
+    g.u.assign(m + 1, Real(0));
+    g.s.assign(m + 1, Real(0));
+    g.es.assign(m + 1, Real(0));
+    g.r.assign(m + 1, Real(0));
+    g.sp.assign(m + 1, Real(0));
+    g.u[0] = p[i], g.s[0] = cum[i], g.es[0] = err[i];
+    g.u[m] = p[i + 1], g.s[m] = cum[i + 1], g.es[m] = err[i + 1];
+    g.sp[0] = segments_.start_speed(i);
+    g.sp[m] = segments_.end_speed(i);
+    for (std::size_t k = 1; k < m; ++k) {
+      g.s[k] = cum[i] + len * Real(static_cast<long long>(k)) / Real(static_cast<long long>(m));
+      // The ends' bounds (the cumulative lengths', which add up over the segments before) are added
+      // to the node's afterwards, not handed to Newton: above the tolerance (1e5 segments) they kept
+      // it from converging, 145 evaluations a node.
+      newton_bracket<Real> br{p[i], cum[i], Real(0), p[i + 1], cum[i + 1], Real(0), segments_.guess(i, g.s[k])};
+      Real target = g.s[k], inherited = std::max(err[i], err[i + 1]);
+      if (k > 1 && g.u[k - 1] > br.u_lo && g.u[k - 1] < br.u_hi) {
+        const Real base = g.s[k - 1];
+        br.u_lo = g.u[k - 1];
+        br.s_lo = g.r[k - 1];
+        // The previous node's error bound is added to this node's afterwards, not handed to Newton:
+        // summed along the chain it outgrows the tolerance near a segment's end, and Newton then
+        // bisected to rounding (rounding_limited, 160 instead of 35 evaluations per node at
+        // M = 65536 on the 4-segment Catmull-Rom).
+        br.s_lo_error = Real(0);
+        inherited = std::max(g.es[k - 1], err[i + 1]);  // Newton integrates from the nearer end
+        br.s_hi = cum[i + 1] - base;
+        target = g.s[k] - base;  // exact (Sterbenz) where s_k <= 2 s_{k-1}
+      }
+      const inversion_result<Real> r = newton_invert(curve_, target, br, tol, node_options(m - k));
+      build_evaluations_ += r.evaluations;
+      if (r.status == result_status::cap_hit) g.capped = true;
+      g.u[k] = r.u;
+      g.es[k] = r.s_error_estimate + inherited;
+      g.r[k] = r.residual;
+      g.sp[k] = speed(curve_, g.u[k]);
+      ++build_evaluations_;
+    }
+    g.last_cost = construction_evaluations() - before;
+    return g;
+  }
+
+  // The coarse table's value of u at s on the cell [k, k + 1] of g, by the method the table is
+  // built for (its Hermite cubic or its chord).
+  [[nodiscard]] Real coarse_u(const segment_nodes& g, std::size_t k, const Real& s, inversion_method m) const {
+    const Real w = g.s[k + 1] - g.s[k];
+    const Real t = (s - g.s[k]) / w;
+    if (m == inversion_method::linear_table) return g.u[k] + t * (g.u[k + 1] - g.u[k]);
+    return hermite_cubic(g.u[k], g.u[k + 1], g.sp[k], g.sp[k + 1], w).eval(t);
+  }
+
+  // Halves every cell of g: a node at each cell's midpoint in s, solved by Newton inside the cell
+  // (relative to its left node, as the chain is), and g.error set to the coarse table's worst error
+  // at those midpoints, |u_coarse - u| |P'|: the table's measured error on this segment.
+  void refine_segment(segment_nodes& g) {
+    using std::abs;
+    using std::max;
+    const std::size_t m = g.cells(), i = g.index;
+    const Real tol = opt_.newton.relative_tolerance * length();
+    const Real scale = segments_.parameters()[i + 1] - segments_.parameters()[i];
+    const std::size_t before = construction_evaluations();
+    segment_nodes f;
+    f.index = i;
+    f.u.resize(2 * m + 1), f.s.resize(2 * m + 1), f.es.resize(2 * m + 1), f.r.resize(2 * m + 1), f.sp.resize(2 * m + 1);
+    Real worst(0);
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::size_t a = 2 * k;
+      f.u[a] = g.u[k], f.s[a] = g.s[k], f.es[a] = g.es[k], f.r[a] = g.r[k], f.sp[a] = g.sp[k];
+      const Real len = g.s[k + 1] - g.s[k];
+      const Real sm = g.s[k] + len / Real(2);
+      const Real hermite = coarse_u(g, k, sm, inversion_method::hermite_table);
+      // The ends' error bounds are added to the node's afterwards, not handed to Newton (as in
+      // seed_segment): Newton integrates from the nearer end, whose bound the node inherits; handed
+      // over, a bound above the tolerance kept it from converging (180 evaluations a node, not 35).
+      newton_bracket<Real> br{g.u[k], g.r[k], Real(0), g.u[k + 1], len + g.r[k + 1], Real(0), hermite, scale};
+      const inversion_result<Real> r = newton_invert(curve_, sm - g.s[k], br, tol, node_options(m - k));
+      build_evaluations_ += r.evaluations;
+      if (r.status == result_status::cap_hit) f.capped = true;
+      f.u[a + 1] = r.u, f.s[a + 1] = sm, f.es[a + 1] = r.s_error_estimate + max(g.es[k], g.es[k + 1]);
+      f.r[a + 1] = r.residual;
+      f.sp[a + 1] = speed(curve_, r.u);
+      ++build_evaluations_;
+      const Real coarse =
+          opt_.method == inversion_method::linear_table ? coarse_u(g, k, sm, inversion_method::linear_table) : hermite;
+      worst = max(worst, Real(abs(coarse - r.u) * f.sp[a + 1]));
+    }
+    f.u[2 * m] = g.u[m], f.s[2 * m] = g.s[m], f.es[2 * m] = g.es[m], f.r[2 * m] = g.r[m], f.sp[2 * m] = g.sp[m];
+    f.error = worst;
+    f.capped = f.capped || g.capped;
+    f.last_cost = construction_evaluations() - before;
+    g = std::move(f);
+  }
+
+  // What the table can resolve in arc length on g: 8 eps max|u| max|P'| (u is a Real: one ulp of u
   // moves s by |P'| ulp(u); the Hermite evaluation adds a few ulps). Far from 0 (a domain [1e8,
   // 1e8 + 1]) this is far above table_tolerance * L.
-  [[nodiscard]] Real resolution(const std::vector<Real>& sp) const {
+  [[nodiscard]] Real resolution(const segment_nodes& g) const {
     using std::abs;
     using std::max;
     Real top(0);
-    for (const Real& v : sp) top = max(top, v);
+    for (const Real& v : g.sp) top = max(top, v);
     const Real umax = max(Real(abs(domain().lo)), Real(abs(domain().hi)));
     return Real(8) * epsilon<Real>() * umax * top;
-  }
-
-  // The worst node bound of a table, added to its measured error when a node's solve was capped.
-  [[nodiscard]] static Real worst_node_error(const std::vector<Real>& es) {
-    Real w(0);
-    for (const Real& e : es) w = e > w ? e : w;
-    return w;
   }
 
   // The Hermite cubic on a piece of arc-length width w from (u0, |P'| = sp0) to (u1, sp1): slopes
@@ -478,140 +548,182 @@ class parameterization {
     return cubic{u0, d0, Real(3) * du - Real(2) * d0 - d1, d0 + d1 - Real(2) * du};
   }
 
-  // The knots whose arc-length position is known from the segment lengths, with one-sided speeds
-  // (evaluated detail::knot_offset inside each neighbouring segment, as segment_lengths does). A
-  // knot closer than detail::knot_gap_eps L to the previous one in s (a zero-length segment) is dropped: u(s) is
-  // ambiguous there, and the table keeps the first.
-  void collect_knots() {
-    using std::abs;
-    const auto p = segments_.parameters();
+  // The segments that get cells: those longer than detail::knot_gap_eps eps L in arc length. A
+  // shorter one (a zero-length segment) has an ambiguous u(s): its arc-length position belongs to
+  // the cells around it.
+  [[nodiscard]] std::vector<std::size_t> tabled_segments() const {
     const auto cum = segments_.cumulative();
     const Real gap = Real(detail::knot_gap_eps) * epsilon<Real>() * length();
-    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-      if (!(cum[i] > gap && cum[i] < length() - gap)) continue;
-      if (!knots_.empty() && !(cum[i] - knots_.back().s > gap)) continue;
-      const Real d = detail::knot_offset(Real(abs(p[i - 1]) + abs(p[i + 1])));
-      const Real left = p[i] - p[i - 1] > Real(2) * d ? speed(curve_, Real(p[i] - d)) : speed(curve_, p[i]);
-      const Real right = p[i + 1] - p[i] > Real(2) * d ? speed(curve_, Real(p[i] + d)) : speed(curve_, p[i]);
-      build_evaluations_ += 2;
-      knots_.push_back({cum[i], p[i], left, right});
-    }
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i + 1 < cum.size(); ++i)
+      if (cum[i + 1] - cum[i] > gap) out.push_back(i);
+    return out;
   }
 
-  // The Hermite table on the node set (s_j = j ds, u_j, |P'(u_j)|), cells split at the knots
-  // strictly inside them (detail::knot_gap_eps L away from the cell's ends).
-  [[nodiscard]] hermite_table make_hermite(const std::vector<Real>& us, const std::vector<Real>& ss,
-                                           const std::vector<Real>& sp) const {
-    const std::size_t m = us.size() - 1;
+  // The most cells segment i can be given: none narrower than knot_gap_eps eps L (the s-grid must
+  // stay strictly increasing in Real), at least one.
+  [[nodiscard]] std::size_t cells_allowed(std::size_t i, std::size_t want) const {
+    const auto cum = segments_.cumulative();
     const Real gap = Real(detail::knot_gap_eps) * epsilon<Real>() * length();
-    const Real none = std::numeric_limits<Real>::infinity();
-    hermite_table h;
-    h.cells.reserve(m);
-    auto make = [&](const Real& s0, const Real& s1, const Real& u0, const Real& u1, const Real& sp0, const Real& sp1) {
-      const Real w = s1 - s0;
-      return piece{s0, Real(1) / w, hermite_cubic(u0, u1, sp0, sp1, w), none, 0};
-    };
-    std::size_t k = 0;  // next knot
-    for (std::size_t j = 0; j < m; ++j) {
-      while (k < knots_.size() && !(knots_[k].s > ss[j] + gap)) ++k;
-      Real s0 = ss[j], u0 = us[j], sp0 = sp[j];
-      bool started = false;   // the cell's first piece is in cells
-      bool in_extra = false;  // the cell's last piece so far is extra[last_extra], not cells[j]
-      std::size_t last_extra = 0;
-      auto append = [&](const piece& p) {
-        if (!started) {
-          h.cells.push_back(p);
-          started = true;
-          return;
-        }
-        // chain: the previous piece of the cell ends where this one starts
-        piece& prev = in_extra ? h.extra[last_extra] : h.cells.back();
-        prev.split = p.s0;
-        prev.next = h.extra.size();
-        h.extra.push_back(p);
-        last_extra = h.extra.size() - 1;
-        in_extra = true;
-      };
-      for (; k < knots_.size() && knots_[k].s < ss[j + 1] - gap; ++k) {
-        append(make(s0, knots_[k].s, u0, knots_[k].u, sp0, knots_[k].speed_left));
-        s0 = knots_[k].s;
-        u0 = knots_[k].u;
-        sp0 = knots_[k].speed_right;
-      }
-      append(make(s0, ss[j + 1], u0, us[j + 1], sp0, sp[j + 1]));
-    }
-    return h;
+    const Real most = (cum[i + 1] - cum[i]) / gap;
+    return most < Real(static_cast<long long>(want)) ? std::max<std::size_t>(1, to_index(most)) : want;
   }
 
   void build_table() {
-    using std::abs;
+    using std::ceil;
     using std::max;
     const Real len = length();
-    std::vector<Real> us, ss, es, sp;
+    std::vector<std::size_t> tabled = tabled_segments();
+    if (tabled.empty()) tabled.push_back(0);  // unreachable for a length above the noise level; kept safe
+    const auto cum = segments_.cumulative();
+    std::vector<segment_nodes> segs;
+    segs.reserve(tabled.size());
     if (opt_.table_intervals > 0) {
-      compute_nodes(opt_.table_intervals, us, ss, es, sp);
+      // The caller's size, shared in proportion to the segments' lengths, ceil(M len_i / L) cells
+      // each: no cell is wider than L / M. Not measured: no bound.
+      for (const std::size_t i : tabled) {
+        const Real want = ceil(Real(static_cast<long long>(opt_.table_intervals)) * (cum[i + 1] - cum[i]) / len);
+        segs.push_back(seed_segment(i, cells_allowed(i, std::max<std::size_t>(1, to_index(want)))));
+      }
       table_error_ = no_bound<Real>();
       table_status_ = result_status::not_guaranteed;
     } else {
-      // A power of two, so that doubling can reach a power-of-two cap (5 segments started at 80
-      // stopped at 40960 with 65536 allowed).
-      std::size_t m = std::bit_ceil(std::max<std::size_t>(16, 16 * segments_.segment_count()));
-      m = std::min(m, std::max<std::size_t>(1, opt_.max_table_intervals / 2));
-      std::size_t before = construction_evaluations();
-      result_status nodes = compute_nodes(m, us, ss, es, sp);
-      std::size_t last_cost = construction_evaluations() - before;
-      table_status_ = result_status::not_guaranteed;  // until a finer table measures this one
-      table_error_ = no_bound<Real>();
-      while (true) {
-        if (nodes == result_status::cap_hit || 2 * last_cost > budget_left()) {
-          if (is_finite(table_error_)) table_status_ = result_status::cap_hit;
-          break;
-        }
-        const hermite_table h = make_hermite(us, ss, sp);
-        std::vector<Real> us2, ss2, es2, sp2;
-        before = construction_evaluations();
-        nodes = compute_nodes(2 * m, us2, ss2, es2, sp2);
-        last_cost = construction_evaluations() - before;
-        Real worst_err(0);
-        for (std::size_t j = 0; j < m; ++j) {
-          const Real du = abs(h.eval(ss2[2 * j + 1], j) - us2[2 * j + 1]);
-          worst_err = max(worst_err, du * sp2[2 * j + 1]);
-        }
-        us.swap(us2), ss.swap(ss2), es.swap(es2), sp.swap(sp2);
-        m *= 2;
-        table_error_ = worst_err;
-        if (nodes == result_status::cap_hit) {  // the finer nodes are only as good as their bounds
-          table_error_ = worst_err + worst_node_error(es);
-          table_status_ = result_status::cap_hit;
-          break;
-        }
-        if (worst_err <= opt_.table_tolerance * len) {
-          table_status_ = result_status::converged;
-          break;
-        }
-        if (worst_err <= resolution(sp)) {
-          table_status_ = result_status::rounding_limited;
-          break;
-        }
-        table_status_ = result_status::cap_hit;
-        if (2 * m > opt_.max_table_intervals) break;
-      }
+      size_table(tabled, segs);
     }
-    const std::size_t m = us.size() - 1;
-    inv_ds_ = Real(static_cast<long long>(m)) / len;
-    hermite_ = make_hermite(us, ss, sp);
-    nodes_u_ = std::move(us);
-    nodes_s_ = std::move(ss);
-    nodes_err_ = std::move(es);
+    assemble(segs);
+  }
+
+  // The automatic size: every segment starts with m0 cells (16, fewer where the cap or the budget
+  // could not pay for two per segment at that size), is halved once to measure it, and then the
+  // segment whose measured error is largest is halved next (best first) until every segment's error
+  // is below table_tolerance L, at its rounding floor, or the cap (max_table_intervals cells) or
+  // the budget stops it. Each segment gets as many cells as its own error asks for: a many-segment
+  // curve is not sized by its hardest segment.
+  void size_table(const std::vector<std::size_t>& tabled, std::vector<segment_nodes>& segs) {
+    using std::max;
+    const Real target = opt_.table_tolerance * length();
+    const std::size_t n = std::max<std::size_t>(1, tabled.size());
+    std::size_t m0 = 16;
+    while (m0 > 1 && (2 * m0 * n > opt_.max_table_intervals || 2 * m0 * n * min_node_evaluations > budget_left()))
+      m0 /= 2;
+    std::size_t cells = 0;
+    for (const std::size_t i : tabled) {
+      segs.push_back(seed_segment(i, cells_allowed(i, m0)));
+      cells += segs.back().cells();
+    }
+    bool capped = false, unmeasured = false;
+    // A refinement is started only when the cap and the budget allow it (its projected cost: twice
+    // its last step's).
+    auto affordable = [&](const segment_nodes& g) {
+      return cells + g.cells() <= opt_.max_table_intervals && 2 * g.last_cost <= budget_left() && !g.capped;
+    };
+    auto can_halve = [&](const segment_nodes& g) { return 2 * g.cells() <= cells_allowed(g.index, 2 * g.cells()); };
+    for (segment_nodes& g : segs) {
+      if (!can_halve(g)) {
+        g.retired = true;  // too short to halve: its cells are at the grid's resolution
+        continue;
+      }
+      if (!affordable(g)) {
+        unmeasured = true;
+        capped = true;
+        continue;
+      }
+      cells += g.cells();
+      refine_segment(g);
+    }
+    const auto less = [&segs](std::size_t x, std::size_t y) { return segs[x].error < segs[y].error; };
+    std::vector<std::size_t> heap;
+    for (std::size_t k = 0; k < segs.size(); ++k)
+      if (!segs[k].retired && is_finite(segs[k].error)) heap.push_back(k);
+    std::make_heap(heap.begin(), heap.end(), less);
+    while (!heap.empty()) {
+      segment_nodes& g = segs[heap.front()];
+      if (g.error <= target) break;  // the worst meets the target: every segment does
+      std::pop_heap(heap.begin(), heap.end(), less);
+      const std::size_t k = heap.back();
+      heap.pop_back();
+      if (g.error <= resolution(g) || !can_halve(g)) {
+        g.retired = true;
+        continue;
+      }
+      if (!affordable(g)) {
+        capped = true;
+        break;
+      }
+      cells += g.cells();
+      refine_segment(g);
+      heap.push_back(k);
+      std::push_heap(heap.begin(), heap.end(), less);
+    }
+    Real worst(0), worst_node(0);
+    bool any_capped_nodes = false, at_floor = false;
+    for (const segment_nodes& g : segs) {
+      if (g.capped) {
+        any_capped_nodes = true;
+        for (const Real& e : g.es) worst_node = max(worst_node, e);
+      }
+      if (g.retired && g.error > target) at_floor = true;
+      if (is_finite(g.error)) worst = max(worst, g.error);
+    }
+    if (unmeasured || segs.empty()) {
+      // A segment the cap or budget allowed no finer table to measure: no bound.
+      table_error_ = no_bound<Real>();
+      table_status_ = result_status::not_guaranteed;
+      return;
+    }
+    table_error_ = any_capped_nodes ? worst + worst_node : worst;
+    if (any_capped_nodes || (capped && worst > target))
+      table_status_ = result_status::cap_hit;
+    else if (worst <= target)
+      table_status_ = result_status::converged;
+    else
+      table_status_ = at_floor ? result_status::rounding_limited : result_status::cap_hit;
+  }
+
+  // The table's cells and nodes from the segments' nodes (ascending), and the bucket index of the
+  // cells: bucket b of 2 x cells equal buckets over [0, L] holds the first cell that ends after
+  // half a bucket before it starts (the margin covers the rounding of s / bucket width).
+  void assemble(std::vector<segment_nodes>& segs) {
+    const Real none = std::numeric_limits<Real>::infinity();
+    for (segment_nodes& g : segs) {
+      // A segment's first node is the previous segment's last unless a segment without cells (too
+      // short) lies between them.
+      const bool shared = !nodes_u_.empty() && !(g.u[0] != nodes_u_.back());
+      std::size_t first_node = shared ? nodes_u_.size() - 1 : nodes_u_.size();
+      for (std::size_t k = shared ? 1 : 0; k < g.u.size(); ++k) {
+        nodes_u_.push_back(g.u[k]);
+        nodes_s_.push_back(g.s[k]);
+        nodes_err_.push_back(g.es[k]);
+      }
+      for (std::size_t k = 0; k < g.cells(); ++k) {
+        const Real w = g.s[k + 1] - g.s[k];
+        cells_.push_back(piece{g.s[k], Real(1) / w, hermite_cubic(g.u[k], g.u[k + 1], g.sp[k], g.sp[k + 1], w),
+                               g.s[k + 1], g.u[k + 1]});
+        cell_node_.push_back(first_node + k);
+      }
+      std::vector<Real>().swap(g.u), std::vector<Real>().swap(g.s), std::vector<Real>().swap(g.es);
+      std::vector<Real>().swap(g.r), std::vector<Real>().swap(g.sp);
+    }
+    cells_.back().s_end = none;
+    const std::size_t k = 2 * cells_.size();
+    inv_bucket_ = Real(static_cast<long long>(k)) / length();
+    index_.assign(k + 1, 0);
+    std::size_t j = 0;
+    for (std::size_t b = 0; b <= k; ++b) {
+      const Real start = (Real(static_cast<long long>(b)) - Real(0.5)) / inv_bucket_;
+      while (j + 1 < cells_.size() && !(cells_[j].s_end > start)) ++j;
+      index_[b] = j;
+    }
   }
 
   C curve_;
   parameterization_options<Real> opt_;
   segment_lengths<Real> segments_;
   std::vector<Real> nodes_u_, nodes_s_, nodes_err_;
-  std::vector<knot> knots_;
-  hermite_table hermite_;
-  Real inv_ds_{0};
+  std::vector<piece> cells_;
+  std::vector<std::size_t> cell_node_;  // the node at each cell's start (its end is the next node)
+  std::vector<std::size_t> index_;      // the bucket index of the cells (see assemble)
+  Real inv_bucket_{0};
   Real table_error_{0};
   Real size_{0}, noise_length_{0};
   result_status table_status_{result_status::not_guaranteed};
