@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -173,6 +174,7 @@ void sample(const io::field& spec, const sample_args& a) {
   const bool by_arclength = given.empty() && a.by == "arclength";
   opt.method = by_arclength ? parse_inversion(a.method) : al::inversion_method::newton;
   opt.newton_polish = a.polish;
+  if (a.table_tol > 0) opt.table_tolerance = a.table_tol;
   // A degenerate curve (length 0 or rounding noise) has no u(s), a non-finite length no s(u): the
   // library's error, naming the spec.
   auto build = [&] {
@@ -186,7 +188,20 @@ void sample(const io::field& spec, const sample_args& a) {
                           " (sample --by u gives the points of a curve of any length)");
     }
   };
+  const auto built_at = std::chrono::steady_clock::now();
   const al::parameterization<any_curve<double, Dim>> param = build();
+  if (param.table_intervals() > 0 && !a.quiet) {
+    // The table's size, measured error, status and cost: what the O(1) lookups cost to set up.
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - built_at).count();
+    std::cerr << "sample: u(s) table of " << param.table_intervals() << " cells over "
+              << param.segments().segment_count() << (param.segments().segment_count() == 1 ? " segment" : " segments")
+              << ", measured error "
+              << (std::isfinite(param.table_error()) ? harness::fmt(param.table_error() / param.length()) + " L"
+                                                     : std::string("none (not measured)"))
+              << " (" << al::to_string(param.table_status()) << ", target " << harness::fmt(opt.table_tolerance)
+              << " L), " << param.construction_evaluations() << " evaluations, built in " << harness::fmt(seconds)
+              << " s\n";
+  }
   const auto dom = c.domain();
   for (const parameter& p : given)
     if (!(dom.lo <= p.u && p.u <= dom.hi)) {
@@ -345,6 +360,10 @@ CLI::App* add_sample(CLI::App& app, sample_args& a) {
   samp->add_option("--method", a.method, "u(s) method for --by arclength (default hermite_table)")
       ->check(CLI::IsMember(sample_ids));
   samp->add_flag("--polish", a.polish, "one Newton step after a table lookup");
+  samp->add_option("--table-tol", a.table_tol,
+                   "the u(s) table's target, relative to the length: it is sized per segment until its measured "
+                   "error is below it (default 1e-15; its size, error and build time are printed on stderr)")
+      ->check(CLI::PositiveNumber);
   samp->add_option("--ease", a.ease,
                    "distance-time function for --by arclength: linear, sine, smoothstep, smootherstep, "
                    "sine_plateau:T1,T2, parabolic:T1,T2 (default linear)");
@@ -416,11 +435,13 @@ void sample_parsed(const sample_args& a) {
   // An option that does not apply to this sampling is refused, not ignored.
   if (a.by != "arclength")
     for (const auto& [set, option] : {std::pair{!a.method.empty(), "--method"}, std::pair{!a.ease.empty(), "--ease"},
-                                      std::pair{a.polish, "--polish"}})
+                                      std::pair{a.polish, "--polish"}, std::pair{a.table_tol > 0, "--table-tol"}})
       if (set)
         throw invalid_input(std::string("sample: ") + option +
                             " applies to --by arclength (samples spaced by arc length); these samples are " +
                             (given ? "at the parameters given" : "spaced by u") + ", where it would be ignored");
+  if (a.table_tol > 0 && a.method == vocab::methods::newton.id)
+    throw invalid_input("sample: --table-tol sizes a u(s) table; --method newton builds none");
   const nlohmann::json j = read_spec(a.spec);
   const io::field spec = io::root(j, a.spec);
   const bool channel = harness::detail::is_channel_spec(spec);

@@ -110,6 +110,7 @@ struct sample_args {
   std::string by = "u";
   std::string method;  ///< u(s) method for --by arclength; empty: not given (hermite_table)
   bool polish = false;
+  double table_tol = 0;  ///< the u(s) table's target relative to L; 0: not given (the library's)
   std::string ease;      ///< distance-time function for --by arclength; empty: not given (linear)
   std::string at;        ///< --at V1,V2,...
   std::string at_file;   ///< --at-file FILE

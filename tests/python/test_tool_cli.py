@@ -8,6 +8,7 @@ as under `report_py`'s unittest discover."""
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -465,6 +466,24 @@ class ToolCli(unittest.TestCase):
         self.assert_error(run("sample", ARCH, "--by", "arclength", "--ease", "parabolic:,0.7"), 'phase T1 ""')
         rows = self.sample("--by", "arclength", "--count", "5", "--ease", "parabolic: 0.3 , 0.7").splitlines()
         self.assertEqual(len(rows), 6)  # spaces around a number are fine, as in every numeric cell
+
+    def test_sample_by_arclength_reports_its_table_and_takes_a_target(self):
+        # Issue 32: the u(s) table is sized per segment to --table-tol; its size, measured error,
+        # status and build time go to stderr, the samples to stdout.
+        road = self.write("road.json", json.dumps({"type": "catmull_rom", "alpha": 0.5, "points": [
+            [k, (k * 7919 % 13) / 4.0] for k in range(201)]}))
+        p = run("sample", road, "--by", "arclength", "--count", "9", "--table-tol", "1e-9")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertEqual(len(p.stdout.splitlines()), 10)
+        m = re.search(r"u\(s\) table of (\d+) cells over 200 segments, measured error (\S+) L "
+                      r"\(converged, target 1e-09 L\), \d+ evaluations, built in \S+ s", p.stderr)
+        self.assertIsNotNone(m, p.stderr)
+        self.assertGreaterEqual(int(m.group(1)), 200)
+        self.assertLessEqual(float(m.group(2)), 1e-9)
+        self.assertEqual(run("sample", road, "--by", "arclength", "--quiet").stderr, "")
+        self.assert_error(run("sample", road, "--table-tol", "1e-9"), "--table-tol", "--by arclength")
+        self.assert_error(run("sample", road, "--by", "arclength", "--method", "newton", "--table-tol", "1e-9"),
+                          "--table-tol", "newton builds none")
 
     def test_specs_nested_too_deep_or_with_a_repeated_key_fail_naming_the_file(self):
         deep = self.write("deep.json", '{"type": "bezier", "reason": ' + "[" * 1000000 + "]" * 1000000 + "}")
