@@ -29,6 +29,7 @@
 #include "curvebench/core/error.hpp"
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -365,7 +366,8 @@ inline constexpr length_method subdivision{
     }};
 
 /// A u(s) table of M intervals (setting M): linear or Hermite, optionally polished by one Newton step.
-inline constexpr setting_def table_intervals{"M", "", 0, 1, 1 << 16, true, "table intervals in s"};
+inline constexpr setting_def table_intervals{
+    "M", "", 0, 1, 1 << 20, true, "table cells in s, shared by the segments in proportion to their lengths"};
 
 template <al::inversion_method Method, bool Polish>
 inline constexpr auto table_prepare = [](const auto& c, const setting_values& v) {
@@ -395,7 +397,21 @@ inline constexpr auto table_prepare = [](const auto& c, const setting_values& v)
   return r;
 };
 
-inline constexpr auto table_intervals_series = [](const sweep& w, double) { return series_of("M", w.table_intervals); };
+/// The M of a fixed table is its total, shared by the segments: on a curve of more than 16
+/// segments the sweep's series is scaled by bit_ceil(segments) / 4, so that its first table has
+/// about 4 cells per segment (unscaled, M = 16 to 1024 on 1000 segments all gave one cell per
+/// segment, and the fitted order, 0.86, measured nothing); a setting past the library's cap on
+/// cells (max_table_intervals) is left out.
+inline std::vector<setting_values> table_intervals_series(const sweep& w, double segments) {
+  const std::size_t n = static_cast<std::size_t>(segments);
+  const std::size_t scale = n > 16 ? std::bit_ceil(n) / 4 : 1;
+  std::vector<setting_values> out;
+  for (const std::size_t m : w.table_intervals) {
+    if (m * scale > al::parameterization_options<double>{}.max_table_intervals) break;
+    out.push_back({{"M", static_cast<double>(m * scale)}});
+  }
+  return out;
+}
 
 inline constexpr u_of_s_method linear_table{&vocab::methods::linear_table,
                                             std::array{table_intervals},
@@ -412,6 +428,45 @@ inline constexpr u_of_s_method hermite_table{&vocab::methods::hermite_table,
 inline constexpr u_of_s_method hermite_table_polished{&vocab::methods::hermite_table_polished,
                                                       std::array{table_intervals}, true, table_intervals_series,
                                                       table_prepare<al::inversion_method::hermite_table, true>};
+
+/// A u(s) table sized per segment to tol x L (setting tol), linear or Hermite: its size, status and
+/// measured error are the table's (parameterization.hpp); its evaluations include the build.
+template <al::inversion_method Method>
+inline constexpr auto sized_table_prepare = [](const auto& c, const setting_values& v) {
+  using curve = std::decay_t<decltype(c)>;
+  al::parameterization_options<double> o;
+  o.method = Method;
+  o.table_tolerance = value_of(v, "tol", "u(s) sized table");
+  const auto p = std::make_shared<const al::parameterization<curve>>(c, o);
+  u_of_s_run r;
+  r.length = p->length();
+  r.construction_evaluations = static_cast<double>(p->construction_evaluations());
+  r.table_estimate = p->table_error();
+  r.query = [p](double s) {
+    u_of_s_answer a;
+    a.u = p->u(s, Method);
+    a.status = p->table_status();  // the record's status is the table's
+    return a;
+  };
+  return r;
+};
+
+inline constexpr setting_def table_tol{"tol",
+                                       "",
+                                       1e-12,
+                                       0,
+                                       std::numeric_limits<double>::infinity(),
+                                       false,
+                                       "target of the table's measured |s(u) - s|, relative to L"};
+
+inline constexpr u_of_s_method linear_table_sized{
+    &vocab::methods::linear_table_sized, std::array{table_tol}, true,
+    [](const sweep& w, double) { return series_of("tol", w.linear_table_tol); },
+    sized_table_prepare<al::inversion_method::linear_table>};
+inline constexpr u_of_s_method hermite_table_sized{
+    &vocab::methods::hermite_table_sized, std::array{table_tol}, true,
+    [](const sweep& w, double) { return series_of("tol", w.hermite_table_tol); },
+    sized_table_prepare<al::inversion_method::hermite_table>};
 
 inline constexpr u_of_s_method newton{
     &vocab::methods::newton,
@@ -458,9 +513,13 @@ inline constexpr auto length_methods = std::tuple{method_rows::gauss,       meth
                                                   method_rows::richardson,  method_rows::subdivision};
 
 /// The u(s) methods, in the order of the records.
-inline constexpr auto u_of_s_methods =
-    std::tuple{method_rows::linear_table, method_rows::hermite_table, method_rows::hermite_table_polished,
-               method_rows::newton, method_rows::forward_difference_u_of_s};
+inline constexpr auto u_of_s_methods = std::tuple{method_rows::linear_table,
+                                                  method_rows::hermite_table,
+                                                  method_rows::hermite_table_polished,
+                                                  method_rows::linear_table_sized,
+                                                  method_rows::hermite_table_sized,
+                                                  method_rows::newton,
+                                                  method_rows::forward_difference_u_of_s};
 
 /// Calls f(row) for every row of a table (length_methods, u_of_s_methods), in order.
 template <class Table, class F>

@@ -24,6 +24,8 @@ struct sweep {
   std::vector<std::size_t> table_steps;      ///< forward_difference, richardson: steps per segment
   std::vector<double> subdivision_tol;       ///< subdivision: tolerance relative to the reference length
   std::vector<std::size_t> table_intervals;  ///< linear_table, hermite_table(_polished): M
+  std::vector<double> linear_table_tol;      ///< linear_table_sized: target relative to L
+  std::vector<double> hermite_table_tol;     ///< hermite_table_sized: target relative to L
   std::vector<double> newton_tol;            ///< newton (and its peers): relative tolerance
   std::size_t params = 0;                    ///< s(u), u(s) sample count
   std::size_t eval_params = 0;               ///< evaluation-accuracy sample count
@@ -43,6 +45,8 @@ inline sweep settings(bool quick) {
             .table_steps = {8, 16, 32, 64, 128, 256},
             .subdivision_tol = {1e-4, 1e-6, 1e-8},
             .table_intervals = {16, 64, 256, 1024},
+            .linear_table_tol = {1e-4, 1e-6},
+            .hermite_table_tol = {1e-6, 1e-9, 1e-12},
             .newton_tol = {1e-8, 1e-12},
             .params = 9,
             .eval_params = 65,
@@ -55,6 +59,8 @@ inline sweep settings(bool quick) {
           .table_steps = {4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
           .subdivision_tol = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9},
           .table_intervals = {16, 32, 64, 128, 256, 512, 1024, 2048, 4096},
+          .linear_table_tol = {1e-4, 1e-5, 1e-6, 1e-7, 1e-8},
+          .hermite_table_tol = {1e-6, 1e-8, 1e-9, 1e-10, 1e-12, 1e-14},
           .newton_tol = {1e-6, 1e-9, 1e-12, 1e-14},
           .params = 33,
           .eval_params = 257,

@@ -87,9 +87,17 @@ inline constexpr method subdivision{"subdivision", "length", "tol", 2,
 inline constexpr method segments_adaptive{"segments_adaptive", "s_of_u", "", 0,
                                           "s(u): adaptive segment lengths plus one adaptive partial integral"};
 inline constexpr method linear_table{"linear_table", "u_of_s", "M", 2,
-                                     "u(s): table of M intervals in s, linear interpolation"};
+                                     "u(s): table of M cells in s shared by the segments by length, linear "
+                                     "interpolation"};
 inline constexpr method hermite_table{"hermite_table", "u_of_s", "M", 4,
-                                      "u(s): table of M intervals in s, cubic Hermite interpolation (du/ds = 1/|P'|)"};
+                                      "u(s): table of M cells in s shared by the segments by length, cubic Hermite "
+                                      "interpolation (du/ds = 1/|P'|)"};
+inline constexpr method linear_table_sized{"linear_table_sized", "u_of_s", "tol", 0,
+                                           "u(s): linear table sized per segment until its measured error is below "
+                                           "tol x L, the worst segment halved first"};
+inline constexpr method hermite_table_sized{"hermite_table_sized", "u_of_s", "tol", 0,
+                                            "u(s): Hermite table sized per segment until its measured error is below "
+                                            "tol x L, the worst segment halved first"};
 inline constexpr method hermite_table_polished{"hermite_table_polished", "u_of_s", "M", 0,
                                                "u(s): the Hermite table followed by one safeguarded Newton step"};
 inline constexpr method newton{"newton", "u_of_s", "tol", 0,
@@ -152,6 +160,8 @@ inline constexpr const method* all_methods[] = {&methods::gauss,
                                                 &methods::linear_table,
                                                 &methods::hermite_table,
                                                 &methods::hermite_table_polished,
+                                                &methods::linear_table_sized,
+                                                &methods::hermite_table_sized,
                                                 &methods::newton,
                                                 &methods::eval_default,
                                                 &methods::solver_closed_form,
@@ -289,6 +299,8 @@ inline constexpr operation evaluation{"evaluation", "one point (or derivative) o
 inline constexpr operation basis{"basis", "all n + 1 basis functions at one parameter"};
 inline constexpr operation length{"length", "one arc length of the whole curve (set-up included)"};
 inline constexpr operation query{"query", "one u(s) or s(u) query (tables built beforehand)"};
+inline constexpr operation table_build{"table_build",
+                                       "one u(s) table built (segment lengths, nodes and cells), sized to its target"};
 inline constexpr operation frame{"frame", "one frame of a motion path: P(U(L S(t)))"};
 inline constexpr operation ease{"ease", "one ease value and its velocity"};
 inline constexpr operation channel_value{"channel_value",
@@ -297,8 +309,8 @@ inline constexpr operation channel_value{"channel_value",
 }  // namespace operations
 
 inline constexpr const operation* all_operations[] = {
-    &operations::evaluation, &operations::basis, &operations::length,       &operations::query,
-    &operations::frame,      &operations::ease,  &operations::channel_value};
+    &operations::evaluation,  &operations::basis, &operations::length, &operations::query,
+    &operations::table_build, &operations::frame, &operations::ease,   &operations::channel_value};
 
 /// An algorithm a benchmark times that is not a method above: the evaluation algorithms each
 /// family offers (and the ease functions), as the benchmark names spell them.
