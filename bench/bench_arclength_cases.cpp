@@ -12,6 +12,12 @@
 //   --quick-suite   only the cases of the quick suite (scripts/bench.sh --quick)
 // Operation: vocab::operations::length (one arc length of the whole curve, set-up included), one
 // per iteration. Counters: vocab::counters::evaluations (curve-derivative evaluations per length).
+// u(s) on many segments (issue 32), on the cases of at least many_segments segments and on the
+// one-segment baseline_case: the Hermite table sized per segment to 1e-12 L, its build
+// (u_of_s_build_case/hermite_table_sized/case:<case>/tol:1e-12, one table per iteration, operation
+// table_build; counters table_intervals and evaluations) and its queries (u_of_s_case/..., operation
+// query, one per iteration cycling through 1024 random targets in [0, L]), so that the per-query
+// time on 1000 segments is compared with one segment's in the same run.
 #include "harness/cases.hpp"
 #include "harness/length_methods.hpp"
 #include "harness/sweep.hpp"
@@ -25,6 +31,7 @@
 #include <cstring>
 #include <exception>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -34,6 +41,51 @@ namespace cb = curvebench;
 namespace al = curvebench::arclength;
 using cb::harness::case_info;
 namespace vocab = cb::harness::vocab;
+
+/// The sized Hermite table's target in the per-case u(s) benchmarks: issue 32's 1e-12 L.
+constexpr double table_target = 1e-12;
+/// The cases whose u(s) table is timed: at least this many segments, and the one-segment baseline.
+constexpr std::size_t many_segments = 100;
+constexpr const char* baseline_case = "arch_cubic_bezier";
+
+template <class Curve>
+void register_table(const case_info& info, const std::shared_ptr<const Curve>& c) {
+  al::parameterization_options<double> o;
+  o.table_tolerance = table_target;
+  const std::string name = std::string(vocab::methods::hermite_table_sized.id) + "/case:" + info.name +
+                           "/tol:" + cb::harness::fmt(table_target);
+  const auto build = [c, o](benchmark::State& st) {
+    std::size_t cells = 0, evaluations = 0;
+    for (auto _ : st) {
+      const al::parameterization<Curve> p(*c, o);
+      cells = p.table_intervals();
+      evaluations = p.construction_evaluations();
+      benchmark::DoNotOptimize(cells);
+    }
+    st.SetItemsProcessed(st.iterations());
+    st.SetLabel(std::string(vocab::operations::table_build.id));
+    st.counters[std::string(vocab::counters::table_intervals.name)] = static_cast<double>(cells);
+    st.counters[std::string(vocab::counters::evaluations.name)] = static_cast<double>(evaluations);
+  };
+  benchmark::RegisterBenchmark(("u_of_s_build_case/" + name).c_str(), build)->Unit(benchmark::kMillisecond);
+  const auto query = [c, o](benchmark::State& st) {
+    const al::parameterization<Curve> p(*c, o);  // built once, outside the timed loop
+    std::mt19937_64 rng(2024);
+    std::uniform_real_distribution<double> d(0.0, p.length());
+    std::vector<double> q(1024);
+    for (double& x : q) x = d(rng);
+    std::size_t i = 0;
+    for (auto _ : st) {
+      double u = p.u(q[i]);
+      benchmark::DoNotOptimize(u);
+      i = (i + 1) & 1023;
+    }
+    st.SetItemsProcessed(st.iterations());
+    st.SetLabel(std::string(vocab::operations::query.id));
+    st.counters[std::string(vocab::counters::table_intervals.name)] = static_cast<double>(p.table_intervals());
+  };
+  benchmark::RegisterBenchmark(("u_of_s_case/" + name).c_str(), query);
+}
 
 template <int Dim>
 void register_case(const case_info& info, const cb::harness::sweep& w) {
@@ -58,6 +110,7 @@ void register_case(const case_info& info, const cb::harness::sweep& w) {
           st.counters[std::string(vocab::counters::evaluations.name)] = static_cast<double>(evaluations);
         });
       });
+  if (c->breakpoints().size() - 1 >= many_segments || info.name == baseline_case) register_table(info, c);
 }
 
 }  // namespace
