@@ -1,6 +1,7 @@
 // Issue 32, item 2: every result of the arc-length length methods that is not converged names why
 // (arclength/result.hpp's status_reason: the failed bound or the cap, the segment and interval where
-// the method knows them, the quantity against its bound).
+// the method knows them, the quantity against its bound), and the nested Gauss rule keeps its bound
+// on many-segment splines by halving a piece that fails its order test (arclength/length.hpp).
 // Each status of each method is produced here on a curve built for it, and its reason checked: the
 // text, the segment (against the curve's breakpoints) and the numbers.
 #include "curvebench/arclength/adaptive_subdivision.hpp"
@@ -163,7 +164,8 @@ TEST(status_reasons, fixed_rules_without_an_estimate_say_so) {
 
 // The midpoint rule (n = 1) converges at order 2, so its nested differences never show the order 4
 // the test asks for (|Q1 - Q2| ~ 4 |Q2 - Q4|): on the bend only the middle segment's speed varies
-// (the lines' is constant: both differences are rounding), so the reason is segment 1's.
+// (the lines' is constant: both differences are rounding), so the reason is segment 1's, after
+// every halving was tried.
 TEST(status_reasons, gauss_nested_names_the_segment_failing_its_order_test) {
   const auto c = bend();
   const auto r = al::gauss_length(c, 1, al::fixed_estimate::nested);
@@ -174,8 +176,8 @@ TEST(status_reasons, gauss_nested_names_the_segment_failing_its_order_test) {
   // The order test's quantities: |Q1 - Q2| below 16 |Q2 - Q4|.
   EXPECT_GT(r.reason.measured, 0);
   EXPECT_LT(r.reason.measured, r.reason.limit);
-  EXPECT_EQ(r.reason.a, 1.0);
-  EXPECT_EQ(r.reason.b, 2.0);
+  // The part reported is the first failing one at the last level: 1/16 of the segment.
+  EXPECT_DOUBLE_EQ(r.reason.b - r.reason.a, 1.0 / 16);
   // The same on a part of the curve from inside segment 0 to inside segment 2.
   const auto part = al::gauss_length(c, 0.5, 2.5, al::gauss_legendre<double>(1), al::fixed_estimate::nested);
   EXPECT_EQ(part.reason.segment, 1u);
@@ -356,4 +358,71 @@ TEST(status_reasons, every_method_names_every_status) {
   walk(unbounded_lagrange(), "monomial Lagrange");
   walk(runge_lagrange(cb::lagrange_algorithm::barycentric), "barycentric Lagrange");
   EXPECT_GT(named, 100);  // the walk does reach the statuses it checks
+}
+
+// The nested rule on many segments (issue 32): on the road, pieces fail the order test by being
+// pre-asymptotic (observed ratios 8 to 13 where 16 is asked), and one such piece left the whole
+// length without a bound. Each is now halved and tried again, so the result is converged, and its
+// estimate must bound the error. The reference is adaptive Gauss-Kronrod (a different rule: G7-K15
+// panels refined globally) at 1e-14, its own estimate added (below 1e-12 L, while the nested
+// estimate is about 1e-8 L): the inequality allows both estimates, nothing else.
+TEST(status_reasons, nested_gauss_keeps_its_bound_on_many_segments) {
+  const auto c = road(300, 32);
+  const std::span<const double> bp = c.breakpoints();
+  // The road exercises the halving: some segments fail the order test as one piece.
+  const auto f = [&c](double u) { return al::speed(c, u); };
+  const auto& rule = al::gauss_legendre<double>(5);
+  int failing = 0;
+  for (std::size_t i = 0; i + 1 < bp.size(); ++i)
+    failing += al::detail::fixed_panel(f, bp[i], bp[i + 1], rule, al::fixed_estimate::nested).converged() ? 0 : 1;
+  EXPECT_GE(failing, 3);  // measured: 9 of 299
+  const auto r = al::gauss_length(c, 5, al::fixed_estimate::nested);
+  EXPECT_EQ(r.status, al::result_status::converged) << to_text(r.reason);
+  EXPECT_TRUE(r.reason.empty());
+  al::adaptive_options<double> o;
+  o.relative_tolerance = 1e-14;
+  const auto reference = al::adaptive_length(c, o);
+  // 1e-14 over 300 segments is at double's floor: rounding_limited, whose estimate includes it.
+  ASSERT_TRUE(reference.status == al::result_status::converged ||
+              reference.status == al::result_status::rounding_limited)
+      << to_text(reference.reason);
+  EXPECT_LT(reference.error_estimate, 1e-12 * reference.value);
+  EXPECT_LE(std::abs(r.value - reference.value), r.error_estimate + reference.error_estimate);
+  // The partial length over most of the road, across the same segments.
+  const auto part = al::gauss_length(c, bp[3] + 0.25, bp[290] - 0.25, rule, al::fixed_estimate::nested);
+  EXPECT_EQ(part.status, al::result_status::converged) << to_text(part.reason);
+  const auto part_ref = al::adaptive_length(c, bp[3] + 0.25, bp[290] - 0.25, o);
+  EXPECT_LE(std::abs(part.value - part_ref.value), part.error_estimate + part_ref.error_estimate);
+  // Other seeds and rules: converged or named, and bounded whenever converged.
+  for (unsigned seed : {1u, 2u, 3u})
+    for (int n : {4, 5, 6, 8}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + ", n = " + std::to_string(n));
+      const auto other = road(200, seed);
+      const auto q = al::gauss_length(other, n, al::fixed_estimate::nested);
+      EXPECT_TRUE(well_formed(q, other));
+      if (!q.converged()) continue;
+      const auto qr = al::adaptive_length(other, o);
+      EXPECT_LE(std::abs(q.value - qr.value), q.error_estimate + qr.error_estimate);
+    }
+}
+
+// The halving is bounded: a piece that keeps failing is halved nested_split_levels (4) times, 31
+// tries of 7n evaluations, and then keeps not_guaranteed with its reason. On a parabola's single
+// segment (speed analytic, no speed minimum inside: one piece) the midpoint rule fails at every
+// level; the count is the search for speed minima (speed_features, as fixed_segment calls it) and
+// exactly the 31 tries.
+TEST(status_reasons, nested_gauss_halving_is_bounded) {
+  const std::vector<pt2> p{pt2(0, 0), pt2(1, 2), pt2(3, 0)};
+  const cb::bezier<double, 2> c{std::span<const pt2>(p)};
+  std::size_t search = 0;
+  std::vector<al::detail::speed_minimum<double>> shallow;
+  const auto pieces = al::detail::speed_features(c, 0.0, 1.0, al::detail::fixed_minimum_samples, search, &shallow);
+  ASSERT_EQ(pieces.size(), 2u);  // one piece: no deep minimum to split at
+  const auto one = al::gauss_length(c, 1, al::fixed_estimate::nested);
+  EXPECT_EQ(one.status, al::result_status::not_guaranteed);
+  EXPECT_EQ(one.reason.what, al::reasons::order_test);
+  EXPECT_EQ(one.reason.segment, 0u);
+  EXPECT_EQ(al::detail::nested_split_levels, 4);
+  EXPECT_EQ(one.evaluations, search + 31u * 7u);
+  EXPECT_DOUBLE_EQ(one.reason.b - one.reason.a, 1.0 / 16);  // the first part of the last level
 }
