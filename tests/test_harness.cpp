@@ -315,6 +315,19 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
     }
     EXPECT_EQ(keys, m->settings) << "every declared key, in order";
     EXPECT_TRUE(r["error"].is_number());
+    // Issue 32: a length record that is not converged names why (arclength/result.hpp's reason as
+    // text); a converged one has null. (composite_gauss is never converged: the quick sweep has it.)
+    if (q == hv::quantities::length.id) {
+      if (status == "converged") {
+        EXPECT_TRUE(r["reason"].is_null());
+      } else {
+        ASSERT_TRUE(r["reason"].is_string());
+        EXPECT_FALSE(r["reason"].get<std::string>().empty());
+        if (method == "composite_gauss") {
+          EXPECT_EQ(r["reason"], "composite rule without an estimate");
+        }
+      }
+    }
   }
   // Every method of the vocabulary produced records for each of its quantities (the channel
   // quantities come from channel cases only: tests/test_channel_sweep.cpp checks those).
