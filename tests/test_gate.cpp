@@ -46,6 +46,21 @@ json clean_results() {
 
 TEST(gate, passes_clean_results) { EXPECT_TRUE(check_gate(clean_results(), thresholds()).empty()); }
 
+// A record's "reason" (issue 32: why a status is not converged) is read by no rule: results with it,
+// text or null, or without it, or with a value of another type, are judged the same.
+TEST(gate, ignores_the_reason_of_a_record) {
+  for (const json& reason : {json("table: chord sums' ratio outside [3, 6]"), json(), json(3), json::array()}) {
+    json r = clean_results();
+    for (auto& rec : r["records"]) rec["reason"] = reason;
+    EXPECT_TRUE(check_gate(r, thresholds()).empty()) << reason;
+    r["records"][1]["error"] = 3e-10;
+    r["records"][1]["estimate"] = 1e-9;
+    const auto breaches = check_gate(r, thresholds());
+    ASSERT_EQ(breaches.size(), 1u) << reason;
+    EXPECT_EQ(breaches[0].message, "error 3e-10 > allowed 1e-13");
+  }
+}
+
 TEST(gate, names_each_breach_with_measured_and_allowed) {
   json r = clean_results();
   r["records"][1]["error"] = 3e-10;    // injected accuracy regression...
@@ -303,13 +318,15 @@ TEST(gate, the_vocabulary_lists_the_registrys_evaluation_algorithms) {
 TEST(record, the_reader_reads_what_the_writer_writes) {
   namespace h = curvebench::harness;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  h::record m = h::record::measured("helix", "smooth", "length", "gauss", "n=4", 1e-9, 2e-9, 28, "converged");
+  h::record m = h::record::measured("helix", "smooth", "length", "gauss", "n=4", 1e-9, 2e-9, 28, "cap_hit");
+  m.reason = "evaluation budget reached (measured 2e-09, bound 1e-12)";
   ASSERT_TRUE(m.bounded.has_value());
   EXPECT_TRUE(*m.bounded);
   m.extra["rms"] = 0.5;
   m.extra["not_a_number"] = nan;  // written as null, as every number that is not finite
   const json mj = h::to_json(m);
   EXPECT_EQ(mj["bounded"], true);
+  EXPECT_EQ(mj["reason"], "evaluation budget reached (measured 2e-09, bound 1e-12)");
   EXPECT_TRUE(mj["not_a_number"].is_null());
   EXPECT_FALSE(mj.contains("subject") || mj.contains("peer"));
   EXPECT_EQ(h::to_json(h::read_record(mj, "m")), mj);
@@ -319,6 +336,7 @@ TEST(record, the_reader_reads_what_the_writer_writes) {
   const json sj = h::to_json(s);
   EXPECT_TRUE(sj["estimate"].is_null());
   EXPECT_TRUE(sj["bounded"].is_null());
+  EXPECT_TRUE(sj["reason"].is_null());  // none given
   EXPECT_EQ(sj["subject"], true);
   EXPECT_EQ(h::to_json(h::read_record(sj, "s")), sj);
 

@@ -174,6 +174,12 @@ TEST(method_table, a_cost_known_before_the_work_is_refused_above_its_limit) {
   // work no count before it knows, so its budget is planned, not a cap.
   EXPECT_EQ(h::method_rows::gauss.cost({{"n", 5}}, 3).budget, 156u);
   EXPECT_FALSE(h::method_rows::gauss.cost({{"n", 5}}, 3).at_most);
+  // Without an estimate (`length --estimate none`) gauss costs exactly n per segment.
+  const h::length_cost none = h::method_rows::gauss_cost({{"n", 5}}, 3, curvebench::arclength::fixed_estimate::none);
+  EXPECT_EQ(none.budget, 15u);
+  EXPECT_TRUE(none.at_most);
+  EXPECT_THAT(h::method_rows::gauss_cost({{"n", 200}}, 1000000, curvebench::arclength::fixed_estimate::none).refusal,
+              HasSubstr("--n 200 --estimate none: 1000000 segments need 200000000 evaluations"));
   EXPECT_TRUE(h::method_rows::composite_gauss.cost({{"n", 5}, {"panels", 4}}, 3).at_most);
   EXPECT_EQ(h::method_rows::composite_gauss.cost({{"n", 5}, {"panels", 4}}, 3).budget, 60u);
   EXPECT_THAT(h::method_rows::composite_gauss.cost({{"n", 200}, {"panels", 1000}}, 1000).refusal,
@@ -315,6 +321,19 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
     }
     EXPECT_EQ(keys, m->settings) << "every declared key, in order";
     EXPECT_TRUE(r["error"].is_number());
+    // Issue 32: a length record that is not converged names why (arclength/result.hpp's reason as
+    // text); a converged one has null. (composite_gauss is never converged: the quick sweep has it.)
+    if (q == hv::quantities::length.id) {
+      if (status == "converged") {
+        EXPECT_TRUE(r["reason"].is_null());
+      } else {
+        ASSERT_TRUE(r["reason"].is_string());
+        EXPECT_FALSE(r["reason"].get<std::string>().empty());
+        if (method == "composite_gauss") {
+          EXPECT_EQ(r["reason"], "composite rule without an estimate");
+        }
+      }
+    }
   }
   // Every method of the vocabulary produced records for each of its quantities (the channel
   // quantities come from channel cases only: tests/test_channel_sweep.cpp checks those).

@@ -2,8 +2,10 @@
 //
 // Results (written by the accuracy runner, reports/accuracy.json) hold "records", one per
 // case x quantity x method x setting:
-//   {"case", "group", "quantity", "method", "setting", "error", "estimate", "bounded", "evaluations", "status"}
-// ("estimate"/"bounded" are null where a method gives no estimate; "status" is a result_status
+//   {"case", "group", "quantity", "method", "setting", "error", "estimate", "bounded", "evaluations", "status",
+//    "reason"}
+// ("estimate"/"bounded" are null where a method gives no estimate; "reason" says why a status is not
+// converged, text or null, and no rule reads it; "status" is a result_status
 // name, "not_guaranteed" for eval records) and "orders", one per case x quantity x method:
 // {"case", "group", "quantity", "method", "observed", "theory"}. Quantity and method ids are those of
 // harness/vocabulary.hpp (eval records name evaluation algorithms), settings "key=value[,key=value]".

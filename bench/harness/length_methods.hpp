@@ -112,6 +112,10 @@ struct run_context {
   double reference_length = 0;
   /// The adaptive methods' cap on evaluations (0: the library's default).
   std::size_t max_evaluations = 0;
+  /// gauss's estimate: nested (the records' and the default) or none, the benchmarks' fast fixed rule
+  /// without an estimate (status not_guaranteed, estimate null). Not a setting of the records (their
+  /// gauss setting is n alone, always nested): `curvebench length --estimate` sets it.
+  arclength::fixed_estimate gauss_estimate = arclength::fixed_estimate::nested;
 };
 
 /// What a length method costs before the work, on a curve of `segments` segments.
@@ -120,7 +124,9 @@ struct length_cost {
   std::string refusal;     ///< "" or why the CLI refuses the setting (above its limit), naming the options
   /// false: budget is the planned work, which the curve may exceed (gauss's nested estimate splits a
   /// segment at each deep speed minimum and refines the minimum first: up to 17 pieces and 90
-  /// evaluations per minimum on top of 7n per piece), so the progress says "planned", not "at most".
+  /// evaluations per minimum on top of 7n per piece; and halves a piece that fails its order test,
+  /// up to 4 levels, 7n per try: at most 31 x 7n per piece), so the progress says "planned", not
+  /// "at most".
   bool at_most = true;
 };
 
@@ -243,30 +249,44 @@ inline length_cost table_cost(const setting_values& v, std::size_t segments) {
   return c;
 }
 
+/// gauss's cost with its estimate: nested, the planned work (at_most false: see length_cost); none,
+/// exactly n per segment.
+inline length_cost gauss_cost(const setting_values& v, std::size_t segments, al::fixed_estimate estimate) {
+  const double n = value_of(v, "n", "gauss");
+  const std::string options = "--n " + std::to_string(static_cast<long long>(n));
+  if (estimate == al::fixed_estimate::none)
+    return fixed_rule_cost(options + " --estimate none", n * static_cast<double>(segments), segments);
+  // The planned work: 7n per segment and its 17 speed samples (speed_features); a speed minimum
+  // adds a piece of 7n and its Newton refinement, and a piece failing the order test its halves'
+  // tries (up to 30 more of 7n), which no count before the work knows.
+  length_cost c = fixed_rule_cost(options, (7.0 * n + 17.0) * static_cast<double>(segments), segments);
+  c.at_most = false;
+  return c;
+}
+
 inline constexpr length_method gauss{
     &vocab::methods::gauss,
     std::array{setting_def{"n", "--n", 5, 1, 200, true,
-                           "Gauss points (7n per piece plus 17 samples per segment, at most 2^26 planned; a "
-                           "segment is split at its deep speed minima, each refined first)"}},
+                           "Gauss points (nested estimate: 7n per piece plus 17 samples per segment, at most 2^26 "
+                           "planned; a segment is split at its deep speed minima, each refined first, and a piece "
+                           "failing the order test is halved, up to 4 levels, each try counted; --estimate none: n "
+                           "per segment, no estimate)"}},
     true,
     [](const sweep& w, double) { return series_of("n", w.gauss_n); },
-    [](const setting_values& v, std::size_t segments) {
-      const double n = value_of(v, "n", "gauss");
-      // The planned work: 7n per segment and its 17 speed samples (speed_features); a speed minimum
-      // adds a piece of 7n and its Newton refinement, which no count before the work knows.
-      length_cost c = fixed_rule_cost("--n " + std::to_string(static_cast<long long>(n)),
-                                      (7.0 * n + 17.0) * static_cast<double>(segments), segments);
-      c.at_most = false;
-      return c;
-    },
-    [](const auto& c, const setting_values& v, const run_context&) {
+    [](const setting_values& v, std::size_t segments) { return gauss_cost(v, segments, al::fixed_estimate::nested); },
+    [](const auto& c, const setting_values& v, const run_context& x) {
       const int n = static_cast<int>(value_of(v, "n", "gauss"));
-      return [&c, n] { return al::gauss_length(c, n, al::fixed_estimate::nested); };
+      // The rule cache outlives every run (gauss_legendre returns a reference into it).
+      const al::gauss_legendre_rule<double>* rule = &al::gauss_legendre<double>(n);
+      const al::fixed_estimate e = x.gauss_estimate;
+      return [&c, rule, e] { return al::gauss_length(c, *rule, e); };
     }};
 
 inline constexpr length_method composite_gauss{
     &vocab::methods::composite_gauss,
-    std::array{setting_def{"n", "--n", 5, 1, 200, true, "Gauss points per panel"},
+    std::array{setting_def{"n", "--n", 5, 1, 200, true,
+                           "Gauss points per panel (the composite rule carries no estimate: status not_guaranteed, "
+                           "estimate null)"},
                setting_def{"panels", "--panels", 4, 1, 1000000, true,
                            "panels per segment (n x panels x segments evaluations, at most 2^26)"}},
     true,

@@ -6,7 +6,9 @@
 //
 // Fields: case, group, quantity, method, setting, error and estimate (numbers, null when not
 // finite: no estimate, or nothing measured), bounded (estimate >= error; null unless both are
-// finite), evaluations, status (a result_status name); "subject": true on a subject's record;
+// finite), evaluations, status (a result_status name), reason (why the status is not converged, one
+// line of text, arclength/result.hpp's to_text; null when the method gave none: converged, or a
+// method that names no reason); "subject": true on a subject's record;
 // a peer's record adds "peer": true, library, peer_status, ns_per_op, counterpart {method, setting},
 // counterpart_ns_per_op and, when measured, counterpart_error; a quantity's extra figures (named
 // in its vocabulary doc) are further fields, numbers null when not finite.
@@ -59,6 +61,7 @@ struct record {
   std::optional<bool> bounded;  ///< as measured() sets it (bounded_of), or as a results file says
   double evaluations = 0;
   std::string status;    ///< a result_status name
+  std::string reason;    ///< why the status is not converged; "" (null in JSON): none given
   bool subject = false;  ///< a user's implementation (`curvebench check`)
   std::optional<peer_fields> peer;
   nlohmann::json extra = nlohmann::json::object();  ///< a quantity's extra figures
@@ -93,7 +96,8 @@ inline nlohmann::json to_json(const record& r) {
                    {"estimate", finite_or_null(r.estimate)},
                    {"bounded", r.bounded ? nlohmann::json(*r.bounded) : nlohmann::json()},
                    {"evaluations", r.evaluations},
-                   {"status", r.status}};
+                   {"status", r.status},
+                   {"reason", r.reason.empty() ? nlohmann::json() : nlohmann::json(r.reason)}};
   if (r.subject) j["subject"] = true;
   if (r.peer) {
     const peer_fields& p = *r.peer;
@@ -161,6 +165,7 @@ inline record read_record(const nlohmann::json& j, const std::string& where) {
     r.bounded = j["bounded"].get<bool>();
   r.evaluations = j.contains("evaluations") && j["evaluations"].is_number() ? j["evaluations"].get<double>() : 0;
   r.status = text("status");
+  r.reason = text("reason");  // read and written back; the gate's rules do not look at it
   r.subject = j.contains("subject") && j["subject"].get<bool>();
   const bool peer = j.contains("peer") && j["peer"].is_boolean() && j["peer"].get<bool>();
   if (peer) {
@@ -178,7 +183,7 @@ inline record read_record(const nlohmann::json& j, const std::string& where) {
     r.peer = std::move(p);
   }
   static constexpr std::string_view known[] = {"case",     "group",   "quantity",    "method", "setting", "error",
-                                               "estimate", "bounded", "evaluations", "status", "subject"};
+                                               "estimate", "bounded", "evaluations", "status", "reason",  "subject"};
   static constexpr std::string_view peer_known[] = {
       "peer", "library", "peer_status", "ns_per_op", "counterpart", "counterpart_error", "counterpart_ns_per_op"};
   for (const auto& [key, value] : j.items()) {

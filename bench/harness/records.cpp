@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace curvebench::harness {
 
@@ -24,8 +25,9 @@ nlohmann::json record_sink::records() const {
 }
 
 void record_sink::add(const vocab::quantity& q, const vocab::method& m, const std::string& setting, double error,
-                      double estimate, double evaluations, std::string_view status) {
+                      double estimate, double evaluations, std::string_view status, std::string reason) {
   push(q.id, m.id, setting, error, estimate, evaluations, status);
+  records_.back().reason = std::move(reason);
 }
 
 void record_sink::add_eval(std::string_view algorithm, double error, double evaluations) {

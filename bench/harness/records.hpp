@@ -25,9 +25,10 @@ class record_sink {
   explicit record_sink(const case_info& info) : case_(info) {}
 
   /// One record of a method of the vocabulary. error and estimate are relative (see accuracy.hpp);
-  /// estimate is NaN (or infinite) when the method gives none; status is a result_status name.
+  /// estimate is NaN (or infinite) when the method gives none; status is a result_status name;
+  /// reason why it is not converged (arclength::to_text of the result's reason), "" for none.
   void add(const vocab::quantity& q, const vocab::method& m, const std::string& setting, double error, double estimate,
-           double evaluations, std::string_view status);
+           double evaluations, std::string_view status, std::string reason = {});
   /// One eval record of an evaluation algorithm (vocab::methods::eval_default.id or a family's).
   void add_eval(std::string_view algorithm, double error, double evaluations);
 

@@ -21,7 +21,7 @@ void sweep_length(record_sink& k, const any_curve<double, Dim>& c, const case_re
       const auto r = row.prepare(c, v, x)();
       k.add(vocab::quantities::length, *row.method, format_setting(row, v), ref.length_error_of(r.value),
             row.estimate ? r.error_estimate / L : std::numeric_limits<double>::quiet_NaN(),
-            static_cast<double>(r.evaluations), arclength::to_string(r.status));
+            static_cast<double>(r.evaluations), arclength::to_string(r.status), arclength::to_text(r.reason));
     }
     k.end(vocab::quantities::length, *row.method);
   });

@@ -120,7 +120,8 @@ void check_results_path(const std::string& path) {
 
 std::string records_csv(const nlohmann::json& records) {
   std::ostringstream os;
-  os << std::setprecision(17) << "case,group,quantity,method,setting,error,estimate,bounded,evaluations,status\n";
+  os << std::setprecision(17)
+     << "case,group,quantity,method,setting,error,estimate,bounded,evaluations,status,reason\n";
   const auto cell = [](const nlohmann::json& v) -> std::string {
     if (v.is_null()) return "";
     if (!v.is_string()) return v.dump();
@@ -133,7 +134,8 @@ std::string records_csv(const nlohmann::json& records) {
   for (const auto& r : records)
     os << cell(r["case"]) << "," << cell(r["group"]) << "," << cell(r["quantity"]) << "," << cell(r["method"]) << ","
        << cell(r["setting"]) << "," << cell(r["error"]) << "," << cell(r["estimate"]) << "," << cell(r["bounded"])
-       << "," << cell(r["evaluations"]) << "," << cell(r["status"]) << "\n";
+       << "," << cell(r["evaluations"]) << "," << cell(r["status"]) << ","
+       << cell(r.contains("reason") ? r["reason"] : nlohmann::json()) << "\n";
   return os.str();
 }
 

@@ -6,7 +6,8 @@
 //   curvebench sample SPEC.json --at V1,V2,... | --at-file FILE | --range A:B:STEP [--derivatives K]
 //   curvebench check SPEC.json --values FILE [--lengths FILE] [--inverse FILE] [--name NAME]
 //                    [--json] [--max-error X] [--thresholds FILE]                           your values vs 50 digits
-//   curvebench length SPEC.json [--method ...] [--tol T] [--n N] [--panels P] [--steps N]    JSON on stdout
+//   curvebench length SPEC.json [--method ...] [--tol T] [--n N] [--estimate nested|none] [--panels P]
+//                    [--steps N]                                                            JSON on stdout
 //   curvebench accuracy [--quick] [--cases DIR] [--out FILE] [--threads N]                 the accuracy runner
 //   curvebench gate [--results FILE] [--thresholds FILE]                                   the CI gate
 //   curvebench compare BASE NEW [--json] [--max-error-growth X] [--max-time-growth X]      two runs compared
@@ -93,6 +94,9 @@ struct length_args {
   std::string spec;
   std::string method{vocab::methods::adaptive_gk.id};
   std::vector<length_option> options = length_options();
+  /// gauss's estimate (not a setting of the records, which run gauss nested: run_context's
+  /// gauss_estimate); "" when --estimate is not given.
+  std::string estimate;
   bool quiet = false;
 };
 
@@ -147,6 +151,12 @@ void length(const cb::io::field& spec, const length_args& a) {
       throw cb::invalid_input(std::string(o.def->option) + " does not apply to --method " + a.method + " (" +
                               (mine.empty() ? "it takes no options" : "its options: " + mine) + ")");
     }
+    const bool is_gauss = row.method == &vocab::methods::gauss;
+    if (!a.estimate.empty() && !is_gauss)
+      throw cb::invalid_input("--estimate " + a.estimate + " does not apply to --method " + a.method +
+                              " (only gauss takes it)");
+    h::run_context ctx;
+    if (a.estimate == "none") ctx.gauss_estimate = al::fixed_estimate::none;
     h::setting_values v;
     for (const h::setting_def& d : row.settings) {
       const auto o = std::find_if(a.options.begin(), a.options.end(), [&](const length_option& x) {
@@ -156,14 +166,15 @@ void length(const cb::io::field& spec, const length_args& a) {
     }
     // Progress: evaluations against the method's budget (fixed rules: their exact count). A cost
     // known before the work is refused above its limit, naming the options.
-    const h::length_cost cost = row.cost(v, segments);
+    const h::length_cost cost =
+        is_gauss ? h::method_rows::gauss_cost(v, segments, ctx.gauss_estimate) : row.cost(v, segments);
     const cb::any_curve<double, Dim> c(
         counted_curve<Dim>{plain, std::make_shared<tool::progress>(
                                       cost.at_most ? "length: evaluations (at most)" : "length: evaluations (planned)",
                                       cost.budget, a.quiet, !cost.at_most)},
         plain.family());
     if (!cost.refusal.empty()) throw cb::invalid_input(cost.refusal);
-    al::quadrature_result<double> r = row.prepare(c, v, h::run_context{})();
+    al::quadrature_result<double> r = row.prepare(c, v, ctx)();
     if (!row.estimate) r.error_estimate = std::numeric_limits<double>::quiet_NaN();
     tool::require_finite(r.value, spec.path + ": length (" + a.method + ")", c);
     // A length at most degenerate_length_eps eps of the curve's size (the largest |P| at its
@@ -174,15 +185,19 @@ void length(const cb::io::field& spec, const length_args& a) {
     const double noise = al::degenerate_length_eps * std::numeric_limits<double>::epsilon() * size;
     if (std::isfinite(r.value) && std::abs(r.value) <= noise && r.status != al::result_status::not_guaranteed) {
       r.error_estimate = std::max(r.error_estimate, noise);
-      r.status =
-          r.value == 0 && r.status == al::result_status::converged ? r.status : al::result_status::rounding_limited;
+      if (!(r.value == 0 && r.status == al::result_status::converged)) {
+        r.status = al::result_status::rounding_limited;
+        r.reason = al::global_reason<double>(al::reasons::noise_length, std::abs(r.value), noise);
+      }
     }
     nlohmann::json j{
         {"method", a.method},
         {"value", r.value},
         {"estimate", std::isfinite(r.error_estimate) ? nlohmann::json(r.error_estimate) : nlohmann::json()},
         {"evaluations", r.evaluations},
-        {"status", std::string(al::to_string(r.status))}};
+        {"status", std::string(al::to_string(r.status))},
+        {"reason",
+         r.status == al::result_status::converged ? nlohmann::json() : nlohmann::json(al::to_text(r.reason))}};
     std::cout << std::setw(2) << j << "\n";
   });
   if (!found) throw cb::invalid_input("--method " + a.method + ": not a length method");
@@ -230,7 +245,9 @@ int run(int argc, char** argv) {
   auto* len = app.add_subcommand(
       "length",
       "arc length of a curve spec: JSON value, estimate (absolute, in the curve's length units: a bound of |value - L| "
-      "unless the status is not_guaranteed, when it is null), status, evaluations");
+      "unless the status is not_guaranteed, when it is null), evaluations, status, reason (why the status is not "
+      "converged: the failed bound or the cap, the segment and parameter interval where the method knows them, the "
+      "quantity against its bound; null when converged)");
   len->add_option("spec", la.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
   const std::vector<std::string> length_ids = length_method_ids();
   std::string length_help;
@@ -251,6 +268,11 @@ int run(int argc, char** argv) {
       o.cli = opt;
     }
   }
+  len->add_option("--estimate", la.estimate,
+                  "gauss: nested (default: the rule on 1, 2 and 4 panels per piece, converged with a bound when the "
+                  "order test passes) or none (the benchmarks' fast fixed rule, n evaluations per segment: it carries "
+                  "no estimate, status not_guaranteed, estimate null)")
+      ->check(CLI::IsMember({"nested", "none"}));
   len->add_flag(
       "--quiet", la.quiet,
       "no progress lines on stderr (evaluations against the method's budget, once a run takes over a second)");

@@ -357,7 +357,7 @@ class ToolCli(unittest.TestCase):
             p = run("length", spec, "--method", method, *options)
             self.assertEqual(p.returncode, 0, p.stderr)
             out = json.loads(p.stdout)
-            self.assertEqual(sorted(out), ["estimate", "evaluations", "method", "status", "value"], method)
+            self.assertEqual(sorted(out), ["estimate", "evaluations", "method", "reason", "status", "value"], method)
             self.assertEqual(out["method"], method)
             self.assertGreater(out["evaluations"], 0, method)
             if out["status"] == "converged":
@@ -369,6 +369,51 @@ class ToolCli(unittest.TestCase):
         many = os.path.join(CASES, "lissajous_many_segments_1e5.json")
         self.assert_error(run("length", many, "--method", "gauss", "--n", "200"), "--n 200: ", " segments need ",
                           "more than the limit of 67108864")
+
+    def test_length_names_the_reason_of_a_status_not_converged(self):
+        # Issue 32: "reason" beside "status" says why a result is not converged (the failed bound or
+        # cap, the segment and interval where the method knows them, the quantity against its
+        # bound); null when converged.
+        spec = os.path.join(CASES, "arch_cubic_bezier.json")
+        out = json.loads(run("length", spec, "--method", "adaptive_gk", "--tol", "1e-10").stdout)
+        self.assertEqual(out["status"], "converged")
+        self.assertIsNone(out["reason"])
+        out = json.loads(run("length", spec, "--method", "forward_difference", "--steps", "10").stdout)
+        self.assertEqual(out["status"], "not_guaranteed")
+        self.assertEqual(out["reason"], "steps per segment not a multiple of 4 of at least 16: no coarser sums "
+                                        "(measured 10, bound 16)")
+        out = json.loads(run("length", spec, "--method", "composite_gauss").stdout)
+        self.assertEqual(out["reason"], "composite rule without an estimate")
+        # The midpoint rule never shows the order the nested test asks for: the segment is named.
+        out = json.loads(run("length", spec, "--method", "gauss", "--n", "1").stdout)
+        self.assertEqual(out["status"], "not_guaranteed")
+        self.assertRegex(out["reason"], r"^segment 0 \(u 0 to 0\.0625\): order test failed: \|Q1 - Q2\| < 16 "
+                                        r"\|Q2 - Q4\| \(measured [0-9.e+-]+, bound [0-9.e+-]+\)$")
+        self.assertIn("--estimate", run("length", "--help").stdout)
+
+    def test_length_gauss_estimate_none_is_the_fixed_rule_without_an_estimate(self):
+        # gauss's estimate is a setting of the CLI: nested (the default, with a bound) or none (the
+        # benchmarks' fast fixed rule: n evaluations per segment, no estimate, and says so).
+        spec = os.path.join(CASES, "arch_cubic_bezier.json")  # one segment
+        nested = json.loads(run("length", spec, "--method", "gauss", "--n", "8").stdout)
+        self.assertEqual(nested, json.loads(run("length", spec, "--method", "gauss", "--n", "8",
+                                                "--estimate", "nested").stdout))
+        self.assertEqual(nested["status"], "converged")
+        p = run("length", spec, "--method", "gauss", "--n", "8", "--estimate", "none")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        none = json.loads(p.stdout)
+        self.assertEqual(none["status"], "not_guaranteed")
+        self.assertIsNone(none["estimate"])
+        self.assertEqual(none["reason"], "fixed rule without an estimate (estimate:none)")
+        self.assertEqual(none["evaluations"], 8)
+        # The same length by one 8-point panel: its error, about |Q1 - Q2| of the nested rule, is
+        # 1.6e-8 relative on the arch (measured); 1e-6 only says it measured the same curve.
+        self.assertLessEqual(abs(none["value"] - nested["value"]), 1e-6 * nested["value"])
+        self.assert_error(run("length", spec, "--method", "adaptive_gk", "--estimate", "none"),
+                          "--estimate none does not apply to --method adaptive_gk (only gauss takes it)")
+        p = run("length", spec, "--method", "gauss", "--estimate", "nothing")
+        self.assertNotEqual(p.returncode, 0)
+        self.assertIn("--estimate", p.stderr)
 
     def test_channel_sample_checks_the_solver_and_names_the_file(self):
         # The truth replaces the spec's solver with the exact one; a misspelt solver is still an

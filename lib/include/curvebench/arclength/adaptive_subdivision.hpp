@@ -32,6 +32,10 @@
 // or max_depth stopped it (the estimate is still a bound: best first, it is the smallest the
 // budget allowed this way), rounding_limited when the pieces left are at their rounding floor or too
 // narrow to halve. A budget too small to measure every segment once gives cap_hit with +inf.
+// Reasons (result.hpp): the first segment the budget could not reach; the budget (estimate against
+// target) or else the first piece stopped at max_depth (its segment, its depth against the cap); the
+// piece at its rounding floor with the largest bound (its segment, its bound against its rounding
+// part); the missing rounding bound or the first piece whose bracket overflowed.
 // Sources: Parent (2012), 3.2.2 (the chord sum, here the bracket's lower end); seed 002; the
 // Bezier bracket chord <= L <= polygon, its refinement under subdivision and the midpoint estimate,
 // Gravesen (1997), in references.md.
@@ -46,6 +50,7 @@
 
 #include "curvebench/arclength/result.hpp"
 #include "curvebench/core/curve.hpp"
+#include "curvebench/core/detail/segment_lookup.hpp"
 #include "curvebench/core/error.hpp"
 
 #include <algorithm>
@@ -54,6 +59,7 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace curvebench::arclength {
@@ -88,7 +94,10 @@ class subdivider {
   quadrature_result<Real> run() {
     using std::max;
     const Real r0 = rounding_bound(c_, 0), r1 = rounding_bound(c_, 1);
-    if (!is_finite(r0) || !is_finite(r1)) not_guaranteed_ = true;
+    if (!is_finite(r0) || !is_finite(r1)) {
+      not_guaranteed_ = true;
+      why_not_ = global_reason<Real>(reasons::no_rounding_bound);
+    }
     r0_ = is_finite(r0) ? r0 : Real(0);
     r1_ = is_finite(r1) ? r1 : Real(0);
     const std::span<const Real> bp = c_.breakpoints();
@@ -98,6 +107,9 @@ class subdivider {
       if (!(bp[i + 1] > bp[i])) continue;
       if (!start_segment(bp[i], bp[i + 1], i + 2 < bp.size(), size)) {
         unmeasured_ = true;
+        why_unmeasured_ = segment_reason(reasons::budget_unmeasured, i, bp[i], bp[i + 1],
+                                         Real(static_cast<long long>(out_.evaluations)),
+                                         Real(static_cast<long long>(opt_.max_evaluations)));
         break;
       }
     }
@@ -134,6 +146,20 @@ class subdivider {
   Real retired_est_{0}, retired_value_{0};  // leaves taken out of the heap (not to be halved)
   std::size_t leaves_{0};
   bool not_guaranteed_{false}, unmeasured_{false}, capped_{false}, floor_{false};
+  bool budget_capped_{false};  // the budget (not max_depth) stopped the refinement
+  // Why, for the reasons (result.hpp): the first piece without a bound, the first segment the budget
+  // could not reach, the first piece at max_depth, the piece at its rounding floor with the largest bound.
+  status_reason<Real> why_not_{}, why_unmeasured_{}, why_depth_{}, why_floor_{};
+
+  // The segment of the curve that holds the piece starting at u (its breakpoints, core/detail).
+  [[nodiscard]] std::size_t segment_at(const Real& u) const {
+    return curvebench::detail::segment_of<Real>(c_.breakpoints(), u);
+  }
+  [[nodiscard]] status_reason<Real> piece_reason(std::string_view what, const leaf& l, const Real& measured,
+                                                 const Real& limit) const {
+    const Real& a = nodes_[l.a].u;
+    return segment_reason(what, segment_at(a), a, nodes_[l.b].u, measured, limit);
+  }
 
   [[nodiscard]] bool affordable(std::size_t n) const {
     return out_.evaluations <= opt_.max_evaluations && n <= opt_.max_evaluations - out_.evaluations &&
@@ -224,6 +250,8 @@ class subdivider {
     ++leaves_;
     running_value_ += br.value();
     if (!is_finite(est) || !is_finite(br.value())) {  // overflow or NaN: no bound, nothing to halve
+      if (!not_guaranteed_)
+        why_not_ = piece_reason(reasons::bracket_not_finite, leaf{est, ia, ib, depth}, Real(0), Real(0));
       not_guaranteed_ = true;
       retired_value_ += br.value();
       return;
@@ -265,6 +293,7 @@ class subdivider {
       if (!(key(top) > Real(0))) return;  // every bound is 0: nothing to gain
       if (!affordable(2)) {
         capped_ = true;
+        budget_capped_ = true;
         return;
       }
       std::pop_heap(heap_.begin(), heap_.end(), less);
@@ -275,6 +304,7 @@ class subdivider {
       const bracket br = measure(A, B);
       const Real m = (A.u + B.u) / Real(2);
       if (l.depth >= opt_.max_depth) {
+        if (why_depth_.empty()) why_depth_ = piece_reason(reasons::max_depth, l, Real(l.depth), Real(opt_.max_depth));
         capped_ = true;
         retire(l, br);
         continue;
@@ -282,6 +312,8 @@ class subdivider {
       // Too narrow to halve, or at the rounding floor: halving adds the rounding of two pieces for
       // less than the part of the bound it can reduce (the gap falls ~4x, the excess vanishes).
       if (!(m > A.u && m < B.u) || (l.depth >= opt_.min_depth && Real(3) * (l.est - br.err) <= Real(4) * br.err)) {
+        if (!floor_ || l.est > why_floor_.measured)
+          why_floor_ = piece_reason(reasons::pieces_at_floor, l, l.est, br.err);
         floor_ = true;
         retire(l, br);
         continue;
@@ -303,13 +335,25 @@ class subdivider {
     if (not_guaranteed_ || !is_finite(out_.error_estimate)) {
       out_.error_estimate = no_bound<Real>();
       out_.status = result_status::not_guaranteed;
+      out_.reason = not_guaranteed_ ? why_not_ : global_reason<Real>(reasons::estimate_not_finite);
     } else if (unmeasured_) {  // segments the budget could not reach: no bound for them
       out_.error_estimate = no_bound<Real>();
       out_.status = result_status::cap_hit;
+      out_.reason = why_unmeasured_;
     } else if (out_.error_estimate <= target_) {
       out_.status = result_status::converged;
+    } else if (capped_) {
+      out_.status = result_status::cap_hit;
+      // The budget ends the whole refinement: the estimate against the target. Without it, the first
+      // piece stopped at max_depth (its depth against the cap).
+      out_.reason = budget_capped_ || why_depth_.empty()
+                        ? global_reason<Real>(reasons::budget, out_.error_estimate, target_)
+                        : why_depth_;
     } else {
-      out_.status = capped_ ? result_status::cap_hit : result_status::rounding_limited;
+      out_.status = result_status::rounding_limited;
+      // The piece at its floor with the largest bound (its bound against its rounding part), or, when
+      // no piece was retired at its floor (every bound 0, nothing to halve), the estimate and target.
+      out_.reason = floor_ ? why_floor_ : global_reason<Real>(reasons::pieces_at_floor, out_.error_estimate, target_);
     }
     return out_;
   }

@@ -10,7 +10,9 @@
 // degrees; otherwise not_guaranteed, since features the table does not resolve make chord sums
 // creep, stall and jump. Richardson R = L_h + d2 / 3, estimate d2 / 3 under the same
 // check. Both estimates add the curve's own rounding, 3 rounding_bound(c, 0) per chord
-// (core/curve.hpp; no bound, not_guaranteed, for a curve without one).
+// (core/curve.hpp; no bound, not_guaranteed, for a curve without one). A result without a bound
+// names the check that failed (result.hpp's reason): the steps, the turn with the segment where the
+// 4h chords turned most, the missing rounding bound, or the ratio d1 / d2 against the end of [3, 6].
 // Sources: seed 002 ("Forward Differencing", table lookup); Parent, Computer Animation (2012), 3.2.
 // Cost: N position evaluations per segment and one more (and one per interior breakpoint for a
 // curve that may jump there) to build, at most 2^24 in all unless the caller allows more (checked
@@ -102,7 +104,12 @@ class forward_difference_table {
             const typename C::point_type dir = e / le;
             if (last_4h != C::point_type::Zero()) {
               const Real cosine = dir.dot(last_4h);
-              if (!(cosine >= min_cosine_)) min_cosine_ = cosine;
+              if (!(cosine >= min_cosine_)) {
+                min_cosine_ = cosine;
+                min_cosine_segment_ = i;
+                min_cosine_a_ = bp[i];
+                min_cosine_b_ = bp[i + 1];
+              }
             }
             last_4h = dir;
           }
@@ -128,9 +135,10 @@ class forward_difference_table {
     quadrature_result<Real> r;
     r.value = s_.back();
     r.evaluations = evaluations_;
-    if (!estimate_trusted() || !is_finite(position_bound_)) {
+    if (const status_reason<Real> why = untrusted(); !why.empty()) {
       r.error_estimate = no_bound<Real>();
       r.status = result_status::not_guaranteed;
+      r.reason = why;
       return r;
     }
     r.error_estimate = abs(r.value - coarse_) + rounding(r.value);
@@ -156,9 +164,10 @@ class forward_difference_table {
     const Real fine = s_.back();
     r.value = fine + (fine - coarse_length()) / Real(3);
     r.evaluations = evaluations_;
-    if (!estimate_trusted() || !is_finite(position_bound_)) {
+    if (const status_reason<Real> why = untrusted(); !why.empty()) {
       r.error_estimate = no_bound<Real>();
       r.status = result_status::not_guaranteed;
+      r.reason = why;
       return r;
     }
     r.error_estimate = Real(2) * abs(r.value - fine) + rounding(fine);
@@ -203,19 +212,31 @@ class forward_difference_table {
   // natural cubic with end slope 1e4 to 1e10, 128 steps) the missed tip makes every chord sum short
   // by an amount that varies erratically with the grid, and the ratio test passed by coincidence
   // with an estimate 0.7x of the error.
-  [[nodiscard]] bool estimate_trusted() const {
-    if (steps_ % 4 != 0 || steps_ < 16) return false;
-    if (!(min_cosine_ >= Real(1) / Real(2))) return false;
+  // Why the estimate is not trusted (empty when it is): the first check that fails, the turn with
+  // the segment where the chords turned most, the ratio with d1 / d2 against the end it passed.
+  // A curve without a rounding bound has no bound either.
+  [[nodiscard]] status_reason<Real> untrusted() const {
+    using R = status_reason<Real>;
+    if (steps_ % 4 != 0 || steps_ < 16)
+      return global_reason<Real>(reasons::table_steps, Real(static_cast<long long>(steps_)), Real(16));
+    if (!(min_cosine_ >= Real(1) / Real(2)))
+      return R{reasons::table_turn, min_cosine_segment_, min_cosine_a_, min_cosine_b_, min_cosine_, Real(1) / Real(2)};
+    if (!is_finite(position_bound_)) return global_reason<Real>(reasons::no_rounding_bound);
     const Real fine = s_.back();
     const Real d2 = fine - coarse_, d1 = coarse_ - coarser_, noise = rounding(fine);
-    if (d1 <= noise && d2 <= noise) return true;
-    return d2 > Real(0) && d1 >= Real(3) * d2 && d1 <= Real(6) * d2;
+    if (d1 <= noise && d2 <= noise) return R{};
+    if (d2 > Real(0) && d1 >= Real(3) * d2 && d1 <= Real(6) * d2) return R{};
+    if (!(d2 > Real(0))) return global_reason<Real>(reasons::table_ratio, d2, noise);  // L_h - L_2h against the noise
+    const Real ratio = d1 / d2;
+    return global_reason<Real>(reasons::table_ratio, ratio, ratio < Real(3) ? Real(3) : Real(6));
   }
 
   std::size_t steps_;
   std::vector<Real> u_, s_;
   Real coarse_{0}, coarser_{0};
-  Real min_cosine_{1};  // the smallest cosine of the turn between consecutive 4h chords of a segment
+  Real min_cosine_{1};                 // the smallest cosine of the turn between consecutive 4h chords of a segment
+  std::size_t min_cosine_segment_{0};  // the segment where it was found
+  Real min_cosine_a_{0}, min_cosine_b_{0};  // and its parameter interval
   Real position_bound_{0};
   std::size_t evaluations_{0};
 };

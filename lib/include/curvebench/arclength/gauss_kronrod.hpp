@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -328,10 +329,18 @@ template <class Real, class F>
   if (!(p.error_estimate > Real(2) * (p.rounding_floor + p.resolution_floor)) || !(mid > (a < b ? a : b)) ||
       !(mid < (a < b ? b : a))) {
     out.status = result_status::rounding_limited;
+    out.reason =
+        status_reason<Real>{reasons::panels_at_floor, status_reason<Real>::npos, a, b, p.error_estimate, tolerance};
     return out;
   }
   if (max_depth <= 0 || budget < 2 * rule.nodes.size()) {
     out.status = result_status::cap_hit;
+    out.reason = status_reason<Real>{max_depth <= 0 ? reasons::max_depth : reasons::budget,
+                                     status_reason<Real>::npos,
+                                     a,
+                                     b,
+                                     p.error_estimate,
+                                     tolerance};
     return out;
   }
   budget -= 2 * rule.nodes.size();
@@ -340,8 +349,13 @@ template <class Real, class F>
   const bool stagnated = bisection_stagnated(p.error_estimate, l.error_estimate + r.error_estimate, p.magnitude);
   if (stagnated && suspect) {  // the halves are f's rounding: accept them, converged if they happen to pass
     const bool pass = l.error_estimate <= tolerance / Real(2) && r.error_estimate <= tolerance / Real(2);
-    return {l.kronrod + r.kronrod, l.error_estimate + r.error_estimate, l.evaluations + r.evaluations,
-            pass ? result_status::converged : result_status::rounding_limited};
+    quadrature_result<Real> halves{l.kronrod + r.kronrod, l.error_estimate + r.error_estimate,
+                                   l.evaluations + r.evaluations,
+                                   pass ? result_status::converged : result_status::rounding_limited};
+    if (!pass)
+      halves.reason = status_reason<Real>{
+          reasons::halves_no_better, status_reason<Real>::npos, a, b, halves.error_estimate, tolerance};
+    return halves;
   }
   quadrature_result<Real> left = bisect(f, a, mid, l, tolerance / Real(2), rule, max_depth - 1, stagnated, budget);
   left += bisect(f, mid, b, r, tolerance / Real(2), rule, max_depth - 1, stagnated, budget);
@@ -388,6 +402,7 @@ template <class Real, class F>
   Real value, err;
   totals(value, err);
   out.status = result_status::converged;
+  std::string_view why;
   while (true) {
     if (estimate(err, value) <= target(value)) {
       totals(value, err);  // confirm with exact sums (the running ones drift by rounding)
@@ -395,11 +410,13 @@ template <class Real, class F>
     }
     if (heap.empty()) {
       out.status = result_status::rounding_limited;
+      why = reasons::panels_at_floor;
       break;
     }
     if (heap.size() + frozen.size() >= opt.max_intervals ||
         out.evaluations + 2 * rule.nodes.size() > opt.max_evaluations) {
       out.status = result_status::cap_hit;
+      why = heap.size() + frozen.size() >= opt.max_intervals ? reasons::interval_cap : reasons::budget;
       break;
     }
     std::pop_heap(heap.begin(), heap.end(), less);
@@ -432,6 +449,16 @@ template <class Real, class F>
   totals(value, err);
   out.value = value;
   out.error_estimate = estimate(err, value);
+  if (out.status != result_status::converged) {
+    // The estimate reached against the target; at the rounding floor also the frozen panel with the
+    // largest estimate (its segment is found by the caller that knows the breakpoints).
+    out.reason = global_reason<Real>(why, out.error_estimate, target(value));
+    if (out.status == result_status::rounding_limited && !frozen.empty()) {
+      const auto top = std::max_element(frozen.begin(), frozen.end(), less);
+      out.reason.a = top->a;
+      out.reason.b = top->b;
+    }
+  }
   return out;
 }
 
