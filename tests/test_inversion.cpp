@@ -126,6 +126,7 @@ void check_round_trips(const char* name, const C& c, const C50& c50, bool cusp, 
   }());
   EXPECT_TRUE(cbt::within_relative(newton.length(), r.length(), 200 * cb::epsilon<double>()));
   EXPECT_EQ(linear.table_status(), al::result_status::not_guaranteed);  // size given: not measured
+  EXPECT_EQ(linear.table_reason().what, al::reasons::table_size_given);
   const double newton_bound = newton.options().newton.relative_tolerance * L;
   const double hermite_bound = std::max(hermite.table_error(), hermite.options().table_tolerance * L) + newton_bound;
   double prev_h = -1, prev_l = -1;
@@ -346,6 +347,7 @@ TEST(inversion, many_segment_tables_are_sized_per_segment) {
     o.table_tolerance = hermite ? 1e-12 : 1e-8;
     const al::parameterization<cb::cardinal_spline<double, 2>> p(c, o);
     EXPECT_EQ(p.table_status(), al::result_status::converged);
+    EXPECT_TRUE(p.table_reason().empty());
     EXPECT_LE(p.table_error(), o.table_tolerance * p.length());
     EXPECT_GE(p.table_intervals(), 1000u);  // at least one cell per segment
     const auto cum = cum_segments.cumulative();
@@ -377,6 +379,9 @@ TEST(inversion, table_construction_budget_ends_in_cap_hit_with_an_honest_bound) 
   o.max_evaluations = 4000;
   const al::parameterization<poly2<double>> capped(c, o);
   EXPECT_EQ(capped.table_status(), al::result_status::cap_hit);
+  // Issue 32: the reason names the cap and the segment with the worst measured error (the only one).
+  EXPECT_EQ(capped.table_reason().what, al::reasons::table_cap);
+  EXPECT_EQ(capped.table_reason().segment, 0u);
   EXPECT_LT(capped.table_intervals(), full.table_intervals());
   // Each node gets at least min_node_evaluations, so the budget is passed by at most that per node.
   EXPECT_LE(capped.construction_evaluations(), o.max_evaluations + al::min_node_evaluations * capped.table_intervals());
@@ -416,6 +421,8 @@ TEST(inversion, table_construction_budget_ends_in_cap_hit_with_an_honest_bound) 
   const al::parameterization<poly2<double>> unmeasured(c, o);
   EXPECT_EQ(unmeasured.table_intervals(), 1u);
   EXPECT_EQ(unmeasured.table_status(), al::result_status::not_guaranteed);
+  EXPECT_EQ(unmeasured.table_reason().what, al::reasons::table_unmeasured);
+  EXPECT_EQ(unmeasured.table_reason().segment, 0u);
   EXPECT_FALSE(std::isfinite(unmeasured.table_error()));
 }
 
@@ -431,7 +438,8 @@ TEST(inversion, newton_budget_ends_in_cap_hit_with_an_honest_bound) {
     const double s = seg.length() * k / 8;
     const auto inv = al::newton_invert(c, seg, s, opt);
     EXPECT_EQ(inv.status, al::result_status::cap_hit) << "s = " << s;
-    EXPECT_LE(inv.evaluations, opt.max_evaluations + 31u);  // the first panel of a call is always computed
+    EXPECT_EQ(inv.reason.what, al::reasons::newton_cap) << "s = " << s;  // issue 32: it says why
+    EXPECT_LE(inv.evaluations, opt.max_evaluations + 31u);               // the first panel of a call is always computed
     ASSERT_TRUE(std::isfinite(inv.s_error_estimate));
     EXPECT_LE(abs(r.s(R(inv.u)) - R(s)), R(inv.s_error_estimate)) << "s = " << s;
   }
@@ -522,6 +530,7 @@ TEST(inversion, length_prefix_bounds_hold_and_newton_from_it_converges) {
     const double s = seg.length() * k / 8;
     const auto inv = al::newton_invert(c, seg, s, starved);
     EXPECT_EQ(inv.status, al::result_status::cap_hit) << "s = " << s;
+    EXPECT_EQ(inv.reason.what, al::reasons::newton_cap) << "s = " << s;  // issue 32: it says why
     ASSERT_TRUE(std::isfinite(inv.s_error_estimate));
     EXPECT_LE(abs(r.s(R(inv.u)) - R(s)), R(inv.s_error_estimate)) << "s = " << s;
   }

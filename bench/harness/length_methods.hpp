@@ -170,6 +170,7 @@ struct u_of_s_answer {
   double estimate = std::numeric_limits<double>::quiet_NaN();  ///< its |s(u) - s| bound, when per query
   double evaluations = 0;                                      ///< the query's own (set-up excluded)
   arclength::result_status status = arclength::result_status::converged;
+  std::string reason;  ///< why status is not converged (arclength::to_text of the reason), "" for none
 };
 
 /// A u(s) method built on a curve.
@@ -412,6 +413,7 @@ inline constexpr auto table_prepare = [](const auto& c, const setting_values& v)
       a.u = p->u(s, Method);
     }
     a.status = p->table_status();  // the record's status is the table's
+    a.reason = al::to_text(p->table_reason());
     return a;
   };
   return r;
@@ -466,6 +468,7 @@ inline constexpr auto sized_table_prepare = [](const auto& c, const setting_valu
     u_of_s_answer a;
     a.u = p->u(s, Method);
     a.status = p->table_status();  // the record's status is the table's
+    a.reason = al::to_text(p->table_reason());
     return a;
   };
   return r;
@@ -505,7 +508,8 @@ inline constexpr u_of_s_method newton{
       r.construction_evaluations = static_cast<double>(p->construction_evaluations());
       r.query = [p](double s) {
         const auto q = p->invert(s, al::inversion_method::newton);
-        return u_of_s_answer{q.u, q.s_error_estimate, static_cast<double>(q.evaluations), q.status};
+        return u_of_s_answer{q.u, q.s_error_estimate, static_cast<double>(q.evaluations), q.status,
+                             al::to_text(q.reason)};
       };
       return r;
     },
@@ -520,7 +524,8 @@ inline constexpr u_of_s_method forward_difference_u_of_s{
       r.length = t->length().value;
       r.construction_evaluations = static_cast<double>(t->evaluations());
       r.query = [t](double s) {
-        return u_of_s_answer{t->u(s), std::numeric_limits<double>::quiet_NaN(), 0, al::result_status::not_guaranteed};
+        return u_of_s_answer{t->u(s), std::numeric_limits<double>::quiet_NaN(), 0, al::result_status::not_guaranteed,
+                             std::string(al::reasons::chord_table_no_estimate)};
       };
       return r;
     }};

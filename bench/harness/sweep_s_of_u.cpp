@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
 
 namespace curvebench::harness {
 
@@ -34,7 +35,7 @@ void sweep_s_of_u(record_sink& k, const any_curve<double, Dim>& c, case_referenc
     k.add(
         q, m::segments_adaptive, setting(m::segments_adaptive, {}), err, est,
         evals / static_cast<double>(us.size()) + static_cast<double>(p.construction_evaluations()) / amortized_queries,
-        al::to_string(p.length_result().status));
+        al::to_string(p.length_result().status), al::to_text(p.length_result().reason));
   }
   k.begin();
   for (std::size_t steps : w.table_steps) {
@@ -44,7 +45,7 @@ void sweep_s_of_u(record_sink& k, const any_curve<double, Dim>& c, case_referenc
     for (std::size_t j = 0; j < us.size(); ++j) err = std::max(err, ref.s_error(j, t.s(us[j])));
     k.add(q, m::forward_difference, setting(m::forward_difference, {{"steps", steps}}), err,
           std::numeric_limits<double>::quiet_NaN(), static_cast<double>(t.evaluations()) / amortized_queries,
-          al::to_string(al::result_status::not_guaranteed));
+          al::to_string(al::result_status::not_guaranteed), std::string(al::reasons::chord_table_no_estimate));
   }
   k.end(q, m::forward_difference);
 }

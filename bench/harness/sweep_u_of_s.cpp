@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
 
 namespace curvebench::harness {
 
@@ -28,13 +29,14 @@ void sweep_u_of_s(record_sink& k, const any_curve<double, Dim>& c, case_referenc
       const u_of_s_run run = row.prepare(c, v);
       double err = 0, est = 0, query = 0;
       al::result_status status = al::result_status::converged;
+      std::string reason;
       for (double target : targets) {
         // The target may exceed this method's own L by an ulp of rounding; u(s) rejects s > L.
         const u_of_s_answer a = run.query(std::min(target, run.length));
         err = std::max(err, ds(a.u, target));
         est = std::max(est, a.estimate / L);
         query += a.evaluations;
-        if (a.status != al::result_status::converged) status = a.status;
+        if (a.status != al::result_status::converged) status = a.status, reason = a.reason;
       }
       if (!row.estimate)
         est = none;
@@ -42,7 +44,7 @@ void sweep_u_of_s(record_sink& k, const any_curve<double, Dim>& c, case_referenc
         est = *run.table_estimate / L;
       k.add(q, *row.method, format_setting(row, v), err, est,
             query / static_cast<double>(targets.size()) + run.construction_evaluations / amortized_queries,
-            al::to_string(status));
+            al::to_string(status), reason);
     }
     k.end(q, *row.method);
   });

@@ -188,6 +188,7 @@ void sample(const io::field& spec, const sample_args& a) {
                           " (sample --by u gives the points of a curve of any length)");
     }
   };
+  const ease_fn ease = parse_ease(a.ease);  // refused before the table is built
   const auto built_at = std::chrono::steady_clock::now();
   const al::parameterization<any_curve<double, Dim>> param = build();
   if (param.table_intervals() > 0 && !a.quiet) {
@@ -201,6 +202,9 @@ void sample(const io::field& spec, const sample_args& a) {
               << " (" << al::to_string(param.table_status()) << ", target " << harness::fmt(opt.table_tolerance)
               << " L), " << param.construction_evaluations() << " evaluations, built in " << harness::fmt(seconds)
               << " s\n";
+    if (!param.table_reason().empty())
+      std::cerr << "sample: the table is " << al::to_string(param.table_status()) << ": "
+                << al::to_text(param.table_reason()) << "\n";
   }
   const auto dom = c.domain();
   for (const parameter& p : given)
@@ -210,7 +214,6 @@ void sample(const io::field& spec, const sample_args& a) {
          << dom.hi << "]";
       throw invalid_input(os.str());
     }
-  const ease_fn ease = parse_ease(a.ease);
   std::cout << "u,s";
   const char* names[] = {"x", "y", "z", "w"};
   for (int d = 0; d < Dim; ++d) std::cout << "," << names[d];

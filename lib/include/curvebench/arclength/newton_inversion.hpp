@@ -155,6 +155,7 @@ class segment_lengths {
     if (!is_finite(rounding_bound(c, 1))) {
       total_.error_estimate = no_bound<Real>();
       total_.status = result_status::not_guaranteed;
+      total_.reason = global_reason<Real>(reasons::no_rounding_bound);
     }
   }
 
@@ -461,9 +462,18 @@ template <curve C>
   const bool bounded = is_finite(rounding_bound(c, 1));
   auto ev = [&](const Real& x, const Real& y) { return bounded ? evaluation_error(c, x, y) : Real(0); };
   auto finish = [&](inversion_result<Real>& o) {
+    if (o.status == result_status::cap_hit && o.reason.empty())
+      o.reason = segment_reason(reasons::newton_cap, status_reason<Real>::npos, br.u_lo, br.u_hi, o.s_error_estimate,
+                                tolerance);
     if (bounded) return;
     o.s_error_estimate = no_bound<Real>();
     o.status = result_status::not_guaranteed;
+    o.reason = global_reason<Real>(reasons::no_rounding_bound);
+  };
+  auto at_end = [&](inversion_result<Real>& o) {
+    if (o.status != result_status::converged)
+      o.reason = segment_reason(reasons::bracket_end_bound, status_reason<Real>::npos, br.u_lo, br.u_hi,
+                                o.s_error_estimate, tolerance);
   };
   Real lo = br.u_lo, slo = br.s_lo, elo = br.s_lo_error;
   Real hi = br.u_hi, shi = br.s_hi, ehi = br.s_hi_error;
@@ -472,6 +482,7 @@ template <curve C>
     out.residual = slo - s_target;
     out.s_error_estimate = abs(out.residual) + elo;
     out.status = out.s_error_estimate <= tolerance ? result_status::converged : result_status::rounding_limited;
+    at_end(out);
     finish(out);
     return out;
   }
@@ -480,6 +491,7 @@ template <curve C>
     out.residual = Real(0);
     out.s_error_estimate = ehi;
     out.status = ehi <= tolerance ? result_status::converged : result_status::rounding_limited;
+    at_end(out);
     finish(out);
     return out;
   }
@@ -545,6 +557,7 @@ template <curve C>
     if (!(next > lo && next < hi)) next = (lo + hi) / Real(2);
     if (!(next > lo && next < hi) || next == u) {
       out.status = result_status::rounding_limited;  // the bracket cannot shrink further in Real
+      out.reason = segment_reason(reasons::bracket_at_rounding, status_reason<Real>::npos, lo, hi, best_f, tolerance);
       break;
     }
     // The step bounded without integrating it (detail::bounded_step_error), where the curve bounds

@@ -156,6 +156,8 @@ class parameterization {
     if (!is_finite(q.error_estimate) || !is_finite(rounding_bound(curve_, 1))) {  // no bound known (core/curve.hpp)
       q.error_estimate = no_bound<Real>();
       q.status = result_status::not_guaranteed;
+      q.reason = global_reason<Real>(is_finite(rounding_bound(curve_, 1)) ? reasons::estimate_not_finite
+                                                                          : reasons::no_rounding_bound);
     }
     return q;
   }
@@ -192,6 +194,9 @@ class parameterization {
     r.evaluations = q.evaluations + polish_evaluations;
     r.status = r.s_error_estimate <= opt_.newton.relative_tolerance * length() ? result_status::converged
                                                                                : result_status::not_guaranteed;
+    if (r.status != result_status::converged)
+      r.reason =
+          global_reason(reasons::table_residual, r.s_error_estimate, Real(opt_.newton.relative_tolerance * length()));
     return r;
   }
 
@@ -223,6 +228,8 @@ class parameterization {
   /// out of its share; table_error then includes the worst node's bound), not_guaranteed (size
   /// given by the caller, or the budget allowed no finer table to measure it: no bound).
   [[nodiscard]] result_status table_status() const { return table_status_; }
+  /// Why table_status() is not converged (which cap, which segment); empty when it is.
+  [[nodiscard]] const status_reason<Real>& table_reason() const { return table_reason_; }
   /// The table's nodes u_j, ascending (M + 1 of them, more when a segment too short for cells lies
   /// between two that have them).
   [[nodiscard]] std::span<const Real> table_parameters() const { return nodes_u_; }
@@ -590,6 +597,7 @@ class parameterization {
       }
       table_error_ = no_bound<Real>();
       table_status_ = result_status::not_guaranteed;
+      table_reason_ = global_reason<Real>(reasons::table_size_given);
     } else {
       size_table(tabled, segs);
     }
@@ -660,27 +668,40 @@ class parameterization {
     }
     Real worst(0), worst_node(0);
     bool any_capped_nodes = false, at_floor = false;
+    const segment_nodes* worst_segment = nullptr;
+    const segment_nodes* unmeasured_segment = nullptr;
     for (const segment_nodes& g : segs) {
       if (g.capped) {
         any_capped_nodes = true;
         for (const Real& e : g.es) worst_node = max(worst_node, e);
       }
       if (g.retired && g.error > target) at_floor = true;
-      if (is_finite(g.error)) worst = max(worst, g.error);
+      if (is_finite(g.error) && !(g.error <= worst)) worst = g.error, worst_segment = &g;
+      if (!is_finite(g.error) && !g.retired && unmeasured_segment == nullptr) unmeasured_segment = &g;
     }
+    const auto pu = segments_.parameters();
+    auto reason_at = [&](std::string_view what, const segment_nodes* g, const Real& measured) {
+      if (g == nullptr) return global_reason<Real>(what, measured, target);
+      return segment_reason<Real>(what, g->index, pu[g->index], pu[g->index + 1], measured, target);
+    };
     if (unmeasured || segs.empty()) {
       // A segment the cap or budget allowed no finer table to measure: no bound.
       table_error_ = no_bound<Real>();
       table_status_ = result_status::not_guaranteed;
+      table_reason_ = reason_at(reasons::table_unmeasured, unmeasured_segment, Real(0));
       return;
     }
     table_error_ = any_capped_nodes ? worst + worst_node : worst;
-    if (any_capped_nodes || (capped && worst > target))
+    if (any_capped_nodes || (capped && worst > target)) {
       table_status_ = result_status::cap_hit;
-    else if (worst <= target)
+      table_reason_ =
+          reason_at(any_capped_nodes ? reasons::table_node_cap : reasons::table_cap, worst_segment, table_error_);
+    } else if (worst <= target) {
       table_status_ = result_status::converged;
-    else
+    } else {
       table_status_ = at_floor ? result_status::rounding_limited : result_status::cap_hit;
+      table_reason_ = reason_at(at_floor ? reasons::table_at_resolution : reasons::table_cap, worst_segment, worst);
+    }
   }
 
   // The table's cells and nodes from the segments' nodes (ascending), and the bucket index of the
@@ -730,6 +751,7 @@ class parameterization {
   Real table_error_{0};
   Real size_{0}, noise_length_{0};
   result_status table_status_{result_status::not_guaranteed};
+  status_reason<Real> table_reason_{};
   std::size_t build_evaluations_{0};
 };
 

@@ -86,6 +86,20 @@ inline constexpr std::string_view table_turn =
     "4h chords turn by more than 60 degrees (cosine of the turn below 1/2): the table does not resolve the curve";
 inline constexpr std::string_view table_ratio = "chord sums' ratio (L_2h - L_4h) / (L_h - L_2h) outside [3, 6]";
 inline constexpr std::string_view noise_length = "length within rounding noise of the curve's size (may be 0)";
+// u(s) and s(u) (newton_inversion.hpp, parameterization.hpp).
+inline constexpr std::string_view bracket_end_bound =
+    "the answer is the bracket's end, whose bound exceeds the tolerance";
+inline constexpr std::string_view newton_cap = "Newton's iteration or evaluation cap reached before the tolerance";
+inline constexpr std::string_view bracket_at_rounding = "the bracket cannot shrink further in Real";
+inline constexpr std::string_view chord_table_no_estimate = "chord table without an estimate (linear interpolation)";
+inline constexpr std::string_view table_residual = "the table value's residual bound exceeds the tolerance";
+inline constexpr std::string_view table_size_given = "table size given: not measured";
+inline constexpr std::string_view table_unmeasured =
+    "the cap on cells or the budget left a segment unhalved: its table is not measured";
+inline constexpr std::string_view table_cap = "the cap on cells or the evaluation budget stopped the table";
+inline constexpr std::string_view table_node_cap = "a table node's Newton solve ran out of its share of the budget";
+inline constexpr std::string_view table_at_resolution =
+    "the table is at the resolution of u in Real (8 eps max|u| max|P'|)";
 }  // namespace reasons
 
 /// A reason naming a segment and its parameter interval.
