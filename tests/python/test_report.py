@@ -215,6 +215,21 @@ class Pareto(unittest.TestCase):
         self.assertEqual(lib.pareto_front([]), [])
 
 
+class Spread(unittest.TestCase):
+    def test_largest_ratio_of_two_methods_within_one_decade_of_cost(self):
+        # decade 1e2: a 1e-6, b 1e-9 (ratio 1e3); decade 1e3: a 1e-8 alone (no second method)
+        pts = [(200, 1e-6, "a"), (500, 1e-9, "b"), (300, 1e-5, "a"), (2000, 1e-8, "a")]
+        self.assertAlmostEqual(lib.method_spread(pts), 1e3)
+        self.assertEqual(lib.method_spread([(10, 1e-3, "a"), (1e4, 1e-9, "b")]), 1.0)  # never at equal cost
+        # errors below the floor compare at it
+        self.assertAlmostEqual(lib.method_spread([(10, 0.0, "a"), (20, 1e-16, "b")]), 1e2)
+
+    def test_featured_cases_largest_spread_first(self):
+        per_case = {"flat": [(10, 1e-6, "a"), (20, 1e-6, "b")], "wide": [(10, 1e-3, "a"), (20, 1e-12, "b")],
+                    "mid": [(10, 1e-3, "a"), (20, 1e-6, "b")]}
+        self.assertEqual([c for c, _ in lib.featured_cases(per_case, 2)], ["wide", "mid"])
+
+
 class Join(unittest.TestCase):
     def test_unmatched_reported_both_ways(self):
         records = [
