@@ -395,7 +395,8 @@ def render_results(h, plots):
         md += ["## Plots", ""]
         if h.get("featured"):
             md += ["The error-vs-time plots shown are of the cases where the methods differ most at equal cost: "
-                   "per case, the largest ratio between two methods' smallest errors within one decade of time "
+                   "per case, the largest ratio between two methods' smallest errors within one decade of time, errors "
+                   "below eps(double) taken as eps "
                    "(" + ", ".join(f"{f['case']} {fmt(f['spread'])}" for f in h["featured"]) + ").", ""]
         md += [f"![{name}](results/{name})" for name in plots] + [""]
     # The page opens with REPORT.md's summary of the same run (report_summary.py) and the contents,

@@ -258,7 +258,8 @@ def pareto_section(records, times, plot_dir, segments=None):
                                   FEATURED_CASES)
     md += ["", "Error-vs-time plots, Pareto front in black (errors below 1e-18 drawn at 1e-18). First the "
            f"{len(featured)} cases where the methods differ most at equal cost (per case, the largest ratio "
-           "between two methods' smallest errors within one decade of time, in brackets; docs/results.md "
+           "between two methods' smallest errors within one decade of time, errors below eps(double) taken as eps, "
+           "in brackets; docs/results.md "
            "publishes these), then the others:", ""]
     first = {case for case, _ in featured}
     md += [f"- [{case}](plots/pareto_length_{slug(case)}.png) ({fmt(spread)})" for case, spread in featured]

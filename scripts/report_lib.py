@@ -373,7 +373,7 @@ def subject_rows(own, subjects):
     return rows
 
 
-SPREAD_FLOOR = 1e-18  # errors below are drawn (and compared) at this level
+SPREAD_FLOOR = 2.0 ** -52  # errors below eps(double) are rounding: compared at eps
 
 
 def method_spread(points):

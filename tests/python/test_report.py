@@ -221,8 +221,9 @@ class Spread(unittest.TestCase):
         pts = [(200, 1e-6, "a"), (500, 1e-9, "b"), (300, 1e-5, "a"), (2000, 1e-8, "a")]
         self.assertAlmostEqual(lib.method_spread(pts), 1e3)
         self.assertEqual(lib.method_spread([(10, 1e-3, "a"), (1e4, 1e-9, "b")]), 1.0)  # never at equal cost
-        # errors below the floor compare at it
-        self.assertAlmostEqual(lib.method_spread([(10, 0.0, "a"), (20, 1e-16, "b")]), 1e2)
+        # errors below eps(double) are rounding: they compare at eps, a lucky 0 is not an infinite spread
+        self.assertAlmostEqual(lib.method_spread([(10, 0.0, "a"), (20, 1e-12, "b")]), 1e-12 / 2.0 ** -52)
+        self.assertEqual(lib.method_spread([(10, 0.0, "a"), (20, 1e-17, "b")]), 1.0)
 
     def test_featured_cases_largest_spread_first(self):
         per_case = {"flat": [(10, 1e-6, "a"), (20, 1e-6, "b")], "wide": [(10, 1e-3, "a"), (20, 1e-12, "b")],
