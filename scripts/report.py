@@ -319,6 +319,18 @@ def error_cost_plots(records, quantity, plot_dir, prefix):
     return paths
 
 
+def series_without_order(records, orders, vocab):
+    """{(quantity, method): [cases]} of the series of a method with a theory order (vocabulary) that
+    have records but no observed order: too few points before the rounding plateau."""
+    theory = {m for m, d in vocab.methods.items() if (d.get("theory") or 0) > 0}
+    have = {(o["case"], o["quantity"], o["method"]) for o in orders}
+    out = defaultdict(set)
+    for r in records:
+        if r.get("method") in theory and (r["case"], r["quantity"], r["method"]) not in have:
+            out[(r["quantity"], r["method"])].add(r["case"])
+    return {k: sorted(v) for k, v in sorted(out.items())}
+
+
 # At most this many cases are drawn in colour and named in each panel of the convergence plot.
 LABELLED_PER_PANEL = 10
 
@@ -537,6 +549,12 @@ def main():
         md.append(table(["case", "segments", "quantity", "method", "observed", "theory", "points", "excluded"],
                         [[o["case"], segments.get(o["case"], "-"), o["quantity"], o["method"], o["observed"],
                           o.get("theory"), o.get("points", "-"), o.get("excluded", "-")] for o in orders]))
+        missing = series_without_order(records, orders, vocab)
+        if missing:
+            md += ["", "No observed order (fewer than 3 points spanning a factor 4 in cost between 1e-2 and the "
+                   "rounding plateau): " + "; ".join(
+                       f"{q} {m} on {len(cs)} case{'s' if len(cs) > 1 else ''} ({', '.join(cs[:5])}"
+                       + (", ..." if len(cs) > 5 else "") + ")" for (q, m), cs in missing.items()) + "."]
         path, panels = convergence_plot(orders, records, plot_dir)
         if path:
             md += ["", f"One panel per quantity and method ({len(panels)} panels), one line per case; in each panel "

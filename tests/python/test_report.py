@@ -231,6 +231,31 @@ class Spread(unittest.TestCase):
         self.assertEqual([c for c, _ in lib.featured_cases(per_case, 2)], ["wide", "mid"])
 
 
+@unittest.skipUnless(importlib.util.find_spec("matplotlib"), "report.py plots with matplotlib")
+class Convergence(unittest.TestCase):
+    def setUp(self):
+        import report
+        self.report = report
+
+    def test_series_of_a_theory_method_without_an_order_are_named(self):
+        records = [{"case": c, "quantity": "length", "method": m, "setting": "n=2", "error": 1e-3}
+                   for c in ("a", "b") for m in ("gauss", "composite_gauss")]
+        orders = [{"case": "a", "quantity": "length", "method": "composite_gauss", "observed": 6.0}]
+        vocab = lib.Vocabulary({"quantities": [], "peers": [], "operations": [], "counters": [],
+                                "methods": [{"id": "gauss", "theory": 0}, {"id": "composite_gauss", "theory": 6}]})
+        self.assertEqual(self.report.series_without_order(records, orders, vocab),
+                         {("length", "composite_gauss"): ["b"]})
+
+    def test_panels_name_at_most_ten_cases_of_extreme_orders(self):
+        orders = [{"case": f"c{i:02d}", "quantity": "length", "method": "m", "observed": float(i)} for i in range(14)]
+        records = [{"case": o["case"], "quantity": "length", "method": "m", "error": 10.0 ** -k, "evaluations": 2 ** k}
+                   for o in orders for k in (1, 2, 3)]
+        panels, labelled = self.report.convergence_panels(orders, records)
+        self.assertEqual(list(panels), [("length", "m")])
+        self.assertEqual(len(panels[("length", "m")]), 14)
+        self.assertEqual(labelled[("length", "m")], [f"c{i:02d}" for i in (0, 1, 2, 3, 4, 9, 10, 11, 12, 13)])
+
+
 class Join(unittest.TestCase):
     def test_unmatched_reported_both_ways(self):
         records = [
