@@ -42,9 +42,9 @@ BEGIN, END = "<!-- results:begin -->", "<!-- results:end -->"
 # recordings and the models only, not on the timing run: its block of docs/results.md can be
 # refreshed alone (--fidelity) and names the curvebench revision it measured.
 FIDELITY_BEGIN, FIDELITY_END = "<!-- fidelity:begin -->", "<!-- fidelity:end -->"
-# Cases whose error-vs-time plots are published first (the hard ones and one of each kind); the
-# rest of the dozen is filled by name order. A case missing from the run is skipped.
-PREFERRED_PLOTS = ("runge", "cusp", "bezier_degree_20", "helix", "knot_ratio", "nurbs_circle", "piecewise_linear")
+# The cases whose error-vs-time plots are published are those where the methods differ most at
+# equal cost (report_lib.method_spread over the joined lengths and times: the largest ratio of the
+# methods' errors within one decade of time); the rest of the dozen is filled by name order.
 
 
 class PublishError(Exception):
@@ -101,15 +101,21 @@ def targets(bench_rows, vocab):
 
 
 def orders_summary(orders):
-    """Per (quantity, method): the median observed order over the cases, its range and theory."""
+    """Per (quantity, method): the median observed order over the cases, its range and theory, and
+    the points excluded from the fits as at the rounding floor (the orders' "excluded", summed;
+    None when the run's orders do not say)."""
     by = defaultdict(list)
-    theory = {}
+    theory, excluded = {}, {}
     for o in orders:
         if isinstance(o.get("observed"), (int, float)):
-            by[(o["quantity"], o["method"])].append(o["observed"])
-            theory[(o["quantity"], o["method"])] = o.get("theory")
+            key = (o["quantity"], o["method"])
+            by[key].append(o["observed"])
+            theory[key] = o.get("theory")
+            if isinstance(o.get("excluded"), int):
+                excluded[key] = excluded.get(key, 0) + o["excluded"]
     return [{"quantity": q, "method": m, "median": statistics.median(v), "min": min(v), "max": max(v),
-             "cases": len(v), "theory": theory[(q, m)]} for (q, m), v in sorted(by.items())]
+             "cases": len(v), "theory": theory[(q, m)], "excluded": excluded.get((q, m))}
+            for (q, m), v in sorted(by.items())]
 
 
 def honesty(records):
@@ -122,19 +128,29 @@ def honesty(records):
             "bounded": len(with_estimate) - len(dishonest), "dishonest": dishonest}
 
 
-def pareto_fastest(records, times):
+def pareto_fastest(records, times, cases=()):
     """Per case and target: the fastest length method reaching it (ns per length), from the join of
-    the sweep's errors with the per-case timings."""
+    the sweep's errors with the per-case timings, with the case's segment count (cases: the
+    accuracy document's cases list; None where it has none)."""
     joined, *_ = lib.join_lengths(records, times)
+    segments = {c["name"]: c.get("segments") for c in cases if "name" in c}
     out = []
     for case, pts in sorted(joined.items()):
-        row = {"case": case}
+        row = {"case": case, "segments": segments.get(case)}
         for t in lib.TARGETS:
             ok = [p for p in pts if p[1] <= t]
             best = min(ok) if ok else None
             row[f"{t:g}"] = None if best is None else {"method": f"{best[2]} {best[3]}".strip(), "ns": best[0]}
         out.append(row)
     return out
+
+
+def featured(records, times):
+    """The cases whose error-vs-time plots are published first: report_lib.featured_cases over the
+    joined lengths and times, [{"case", "spread"}], at most MAX_PLOTS - 1 (the convergence plot is one)."""
+    joined, *_ = lib.join_lengths(records, times)
+    points = {case: [(ns, e, m) for ns, e, m, _ in pts] for case, pts in joined.items()}
+    return [{"case": c, "spread": sp} for c, sp in lib.featured_cases(points, MAX_PLOTS - 1)]
 
 
 def channel_summary(records, bench_rows):
@@ -183,7 +199,8 @@ def headline(acc, bench_context, bench_rows, vocab, run):
         "eval": eval_spread(records, acc.get("cases", [])),
         "peers": peer_ratios(rows, vocab),
         "targets": targets(rows, vocab),
-        "pareto": pareto_fastest(records, times),
+        "pareto": pareto_fastest(records, times, acc.get("cases", [])),
+        "featured": featured(records, times),
         "orders": orders_summary(acc.get("orders", [])),
         "honesty": honesty(records),
         "channel": channel_summary(records, bench_rows),
@@ -329,8 +346,12 @@ def render_results(h, plots):
     def fastest(p, t):
         best = p[f"{t:g}"]
         return f"{best['method']} ({fmt(best['ns'])} ns)" if best else "none reached"
-    md.append(table(["case"] + [f"at {t:g}" for t in lib.TARGETS],
-                    [[p["case"]] + [fastest(p, t) for t in lib.TARGETS] for p in h["pareto"]])
+    # A headline.json published before the segment counts and the excluded points (issue 32) renders
+    # as it was published: the columns appear when the run's data carry them.
+    with_segments = any("segments" in p for p in h["pareto"])
+    md.append(table(["case"] + (["segments"] if with_segments else []) + [f"at {t:g}" for t in lib.TARGETS],
+                    [[p["case"]] + ([p["segments"] if p.get("segments") is not None else "-"] if with_segments else [])
+                     + [fastest(p, t) for t in lib.TARGETS] for p in h["pareto"]])
               if h["pareto"] else "No per-case timings.")
     md += ["", "## Evaluation algorithms", "", "Max error in eps(double) x the curve's size against the 50-digit "
            "evaluation of the same data; cases with more than one algorithm, largest spread first.", ""]
@@ -338,8 +359,15 @@ def render_results(h, plots):
                     [[e["case"], e["family"], ", ".join(f"{a} {fmt(v)}" for a, v in e["errors"].items()), e["spread"]]
                      for e in h["eval"]]))
     md += ["", "## Convergence orders", ""]
-    md.append(table(["quantity", "method", "median observed", "min", "max", "cases", "theory"],
+    with_excluded = any(o.get("excluded") is not None for o in h["orders"])
+    if with_excluded:
+        md += ["Fitted only where the error still falls: the points at the rounding plateau (from the first whose "
+               "error is not 10 % below the best at a lower cost on) are excluded, and a case with fewer than 3 "
+               "points spanning a factor 4 in cost left has no order.", ""]
+    md.append(table(["quantity", "method", "median observed", "min", "max", "cases", "theory"]
+                    + (["excluded points"] if with_excluded else []),
                     [[o["quantity"], o["method"], o["median"], o["min"], o["max"], o["cases"], o["theory"]]
+                     + ([o["excluded"] if o.get("excluded") is not None else "-"] if with_excluded else [])
                      for o in h["orders"]]))
     ho = h["honesty"]
     ch = h.get("channel")
@@ -364,20 +392,28 @@ def render_results(h, plots):
                          for d in ho["dishonest"]]))
         md.append("")
     if plots:
-        md += ["## Plots", ""] + [f"![{name}](results/{name})" for name in plots] + [""]
+        md += ["## Plots", ""]
+        if h.get("featured"):
+            md += ["The error-vs-time plots shown are of the cases where the methods differ most at equal cost: "
+                   "per case, the largest ratio between two methods' smallest errors within one decade of time, errors "
+                   "below eps(double) taken as eps "
+                   "(" + ", ".join(f"{f['case']} {fmt(f['spread'])}" for f in h["featured"]) + ").", ""]
+        md += [f"![{name}](results/{name})" for name in plots] + [""]
     # The page opens with REPORT.md's summary of the same run (report_summary.py) and the contents,
     # as REPORT.md does; the summary's "Details:" link this page's sections that hold its figures.
     summary = (h.get("summary") or []) + [""]
     return "\n".join(report_summary.link_details(head + summary + report_summary.toc(summary, md) + md))
 
 
-def choose_plots(plot_dir):
-    """At most MAX_PLOTS of the run's plots: the convergence plot, then per-case error-vs-time
-    plots of the preferred cases, then the rest by name."""
+def choose_plots(plot_dir, ranked=()):
+    """At most MAX_PLOTS of the run's plots: the convergence plot, then the per-case error-vs-time
+    plots of the cases `ranked` (featured(): where the methods differ most), then the rest by name."""
     pareto = sorted(os.path.basename(p) for p in glob.glob(os.path.join(plot_dir, "pareto_length_*.png")))
     chosen = [n for n in ("convergence.png",) if os.path.exists(os.path.join(plot_dir, n))]
-    for key in PREFERRED_PLOTS:
-        chosen += [n for n in pareto if key in n and n not in chosen][:1]
+    for case in ranked:
+        name = f"pareto_length_{''.join(c if c.isalnum() else '_' for c in case).strip('_')}.png"
+        if name in pareto and name not in chosen:
+            chosen.append(name)
     chosen += [n for n in pareto if n not in chosen]
     return chosen[:MAX_PLOTS]
 
@@ -430,7 +466,7 @@ def publish(report_dir, docs_dir, readme, allow_quick=False, allow_missing_peers
     h.update(run_sections(report_dir, acc, bench_rows, vocab, allow_missing_peers))
     out = os.path.join(docs_dir, "results")
     os.makedirs(out, exist_ok=True)
-    plots = choose_plots(os.path.join(report_dir, "plots"))
+    plots = choose_plots(os.path.join(report_dir, "plots"), [f["case"] for f in h.get("featured", [])])
     size = sum(os.path.getsize(os.path.join(report_dir, "plots", n)) for n in plots)
     if size > MAX_PLOT_BYTES:
         raise PublishError(f"the {len(plots)} chosen plots take {size} bytes, over the {MAX_PLOT_BYTES} budget")

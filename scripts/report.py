@@ -14,8 +14,8 @@ Inputs (all in the reports directory, all produced by scripts):
                    the Peers section (report_peers.py; an accuracy.json without them is accepted)
   fidelity.json    optional, `curvebench fidelity --json` of tests/data/recorded/*.json: the tool models
                    against the real tools
-REPORT.md opens with a summary built from these figures (per quantity and kind of curve the cheapest
-method reaching each error target, each peer's worst finding, each tool model's fidelity) and a table
+REPORT.md opens with a summary built from these figures (per quantity, kind and size of curve the
+cheapest method reaching each error target, each peer's worst finding, each tool model's fidelity) and a table
 of contents (report_summary.py), then the sections. REPORT.html is the same Markdown rendered as one
 self-contained page (report_html.py): sortable, filterable tables and every plot inline as SVG.
 Exits 1, naming the benchmark, on a benchmark the vocabulary does not describe. Every file is
@@ -174,15 +174,22 @@ def fastest_at_target(rows, vocab):
 # Accuracy
 
 
-def cheapest_at(records, quantity):
-    """Per case: the method+setting with the fewest evaluations reaching each target error."""
+def segment_counts(acc):
+    """{case: its segment count} from the accuracy document's cases list ("-" where one has none)."""
+    return {c["name"]: c.get("segments", "-") for c in acc.get("cases", []) if "name" in c}
+
+
+def cheapest_at(records, quantity, segments=None):
+    """Per case: the method+setting with the fewest evaluations reaching each target error, beside
+    the case's segment count (segments: {case: count})."""
+    segments = segments or {}
     per_case = defaultdict(list)
     for r in records:
         if r["quantity"] == quantity and isinstance(r.get("error"), (int, float)):
             per_case[r["case"]].append(r)
     rows = []
     for case, rs in sorted(per_case.items()):
-        row = [case]
+        row = [case, segments.get(case, "-")]
         for t in TARGETS:
             ok = [r for r in rs if r["error"] <= t and r.get("evaluations")]
             if ok:
@@ -191,12 +198,18 @@ def cheapest_at(records, quantity):
             else:
                 row.append("none reached")
         rows.append(row)
-    return table(["case"] + [f"cheapest at {t:g}" for t in TARGETS], rows)
+    return table(["case", "segments"] + [f"cheapest at {t:g}" for t in TARGETS], rows)
 
 
-def pareto_section(records, times, plot_dir):
+# How many per-case error-vs-time plots are featured first (publish.py publishes the same rule's).
+FEATURED_CASES = 6
+
+
+def pareto_section(records, times, plot_dir, segments=None):
     """Length error (accuracy runner) joined with time (per-case benchmarks): the fastest method at
-    each target per case, and one error-vs-time plot per case with its Pareto front."""
+    each target per case (beside its segment count, segments: {case: count}), and one error-vs-time
+    plot per case with its Pareto front."""
+    segments = segments or {}
     joined, unmatched_records, unmatched_times, without_error = lib.join_lengths(records, times)
     per_case = {case: [(ns, max(e, 1e-18), f"{m} {st}", m) for ns, e, m, st in pts] for case, pts in joined.items()}
     notes = join_notes(unmatched_records, unmatched_times, without_error)
@@ -207,7 +220,7 @@ def pareto_section(records, times, plot_dir):
           "(case, method, setting). Fastest reaching each relative error:", ""]
     rows, links = [], []
     for case, pts in sorted(per_case.items()):
-        row = [case]
+        row = [case, segments.get(case, "-")]
         for t in TARGETS:
             ok = [p for p in pts if p[1] <= t]
             if ok:
@@ -240,9 +253,17 @@ def pareto_section(records, times, plot_dir):
         name = f"pareto_length_{slug(case)}.png"
         atomic_savefig(fig, os.path.join(plot_dir, name))
         links.append(f"- [{case}](plots/{name})")
-    md.append(table(["case"] + [f"fastest at {t:g}" for t in TARGETS], rows))
-    md += ["", "Error-vs-time plots, Pareto front in black (errors below 1e-18 drawn at 1e-18):", ""]
-    md += links
+    md.append(table(["case", "segments"] + [f"fastest at {t:g}" for t in TARGETS], rows))
+    featured = lib.featured_cases({case: [(ns, e, m) for ns, e, _, m in pts] for case, pts in per_case.items()},
+                                  FEATURED_CASES)
+    md += ["", "Error-vs-time plots, Pareto front in black (errors below 1e-18 drawn at 1e-18). First the "
+           f"{len(featured)} cases where the methods differ most at equal cost (per case, the largest ratio "
+           "between two methods' smallest errors within one decade of time, errors below eps(double) taken as eps, "
+           "in brackets; docs/results.md "
+           "publishes these), then the others:", ""]
+    first = {case for case, _ in featured}
+    md += [f"- [{case}](plots/pareto_length_{slug(case)}.png) ({fmt(spread)})" for case, spread in featured]
+    md += [link for link, case in zip(links, sorted(per_case)) if case not in first]
     return md + [""] + notes
 
 
@@ -298,28 +319,83 @@ def error_cost_plots(records, quantity, plot_dir, prefix):
     return paths
 
 
-def convergence_plot(orders, records, plot_dir):
-    """Log-log error vs cost for every (case, method) that has an observed order."""
-    if not orders:
-        return None
-    fig, ax = plt.subplots(figsize=(7, 4.6))
-    keys = {(o["case"], o["quantity"], o["method"]) for o in orders}
-    series = defaultdict(list)
+def series_without_order(records, orders, vocab):
+    """{(quantity, method): [cases]} of the series of a method with a theory order (vocabulary) that
+    have records but no observed order: too few points before the rounding plateau."""
+    theory = {m for m, d in vocab.methods.items() if (d.get("theory") or 0) > 0}
+    have = {(o["case"], o["quantity"], o["method"]) for o in orders}
+    out = defaultdict(set)
+    for r in records:
+        if r.get("method") in theory and (r["case"], r["quantity"], r["method"]) not in have:
+            out[(r["quantity"], r["method"])].add(r["case"])
+    return {k: sorted(v) for k, v in sorted(out.items())}
+
+
+# At most this many cases are drawn in colour and named in each panel of the convergence plot.
+LABELLED_PER_PANEL = 10
+
+
+def convergence_panels(orders, records):
+    """{(quantity, method): {case: {"points": [(evaluations, error)] sorted, "order": the order}}} of
+    every (case, quantity, method) with an observed order, and, per panel, the cases named in colour:
+    the LABELLED_PER_PANEL cases of extreme observed order (half the lowest, half the highest),
+    the rest drawn grey. Returns (panels, labelled)."""
+    order_of = {(o["case"], o["quantity"], o["method"]): o.get("observed") for o in orders}
+    panels = defaultdict(dict)
     for r in records:
         k = (r["case"], r["quantity"], r["method"])
-        if k in keys and isinstance(r.get("error"), (int, float)) and r.get("evaluations") and r["error"] > 0:
-            series[k].append((r["evaluations"], r["error"]))
-    for k, pts in sorted(series.items()):
-        pts.sort()
-        ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker=".", lw=0.8, label=f"{k[0]} {k[2]}")
-    ax.set_xlabel("evaluations")
-    ax.set_ylabel("relative error")
-    ax.set_title("convergence")
-    ax.grid(True, which="both", alpha=0.3)
-    if len(series) <= 16:
-        ax.legend(fontsize=6)
+        if k in order_of and isinstance(r.get("error"), (int, float)) and r.get("evaluations") and r["error"] > 0:
+            series = panels[(k[1], k[2])].setdefault(k[0], {"points": [], "order": order_of[k]})
+            series["points"].append((r["evaluations"], r["error"]))
+    labelled = {}
+    for key, by_case in panels.items():
+        for series in by_case.values():
+            series["points"].sort()
+        ranked = sorted(by_case, key=lambda c: (by_case[c]["order"] if isinstance(by_case[c]["order"], (int, float))
+                                                else 0.0, c))
+        if len(ranked) <= LABELLED_PER_PANEL:
+            labelled[key] = ranked
+        else:
+            low = LABELLED_PER_PANEL // 2
+            labelled[key] = ranked[:low] + ranked[len(ranked) - (LABELLED_PER_PANEL - low):]
+    return dict(panels), labelled
+
+
+def convergence_plot(orders, records, plot_dir):
+    """Small multiples of error vs cost: one log-log panel per quantity and method with an observed
+    order, one line per case; at most LABELLED_PER_PANEL cases named in colour per panel (those of
+    the lowest and highest observed orders), the others grey. Returns (path, panels) or (None, {})."""
+    panels, labelled = convergence_panels(orders, records)
+    if not panels:
+        return None, {}
+    keys = sorted(panels)
+    cols = min(3, len(keys))
+    rows = (len(keys) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(5.2 * cols, 3.9 * rows), squeeze=False)
+    for ax, key in zip(axes.flat, keys):
+        by_case = panels[key]
+        named = labelled[key]
+        grey = [c for c in sorted(by_case) if c not in named]
+        for case in grey:
+            pts = by_case[case]["points"]
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], color="0.75", lw=0.6, marker=".", ms=2)
+        for case in named:
+            pts, order = by_case[case]["points"], by_case[case]["order"]
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], lw=0.9, marker=".", ms=3,
+                      label=f"{case} ({fmt(order)})")
+        if grey:
+            ax.plot([], [], color="0.75", lw=0.6, label=f"{len(grey)} other cases")
+        ax.set_title(f"{key[0]}: {key[1]}", fontsize=9)
+        ax.set_xlabel("curve-derivative evaluations", fontsize=8)
+        ax.set_ylabel(f"relative error ({key[0]})", fontsize=8)
+        ax.tick_params(labelsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=5.5, loc="lower left")
+    for ax in list(axes.flat)[len(keys):]:
+        ax.set_visible(False)
+    fig.tight_layout()
     atomic_savefig(fig, os.path.join(plot_dir, "convergence.png"))
-    return "plots/convergence.png"
+    return "plots/convergence.png", panels
 
 
 def honesty_section(records):
@@ -364,6 +440,7 @@ def main():
     # A user's own implementations (subject records) get their own section, beside ours.
     records, subjects = lib.split_subjects(records)
     ctx = acc.get("context", {})
+    segments = segment_counts(acc)
 
     head = ["# curvebench report", "",
             "Generated by `scripts/bench.sh` (scripts/report.py); do not edit by hand.", ""]
@@ -416,10 +493,10 @@ def main():
                             ("u_of_s", "Inversion u(s): error vs cost")):
         md += ["", f"## {title}", ""]
         if quantity == "length":
-            md += ["### Error vs time (Pareto)", ""] + pareto_section(records, times, plot_dir)
+            md += ["### Error vs time (Pareto)", ""] + pareto_section(records, times, plot_dir, segments)
             md += ["", "### Error vs evaluations", ""]
         if any(r["quantity"] == quantity for r in records):
-            md.append(cheapest_at(records, quantity))
+            md.append(cheapest_at(records, quantity, segments))
             md.append("")
             for case, path in error_cost_plots(records, quantity, plot_dir, quantity):
                 md.append(f"- [{case}]({path})")
@@ -430,8 +507,9 @@ def main():
     ev = [r for r in records if r["quantity"] == "eval"]
     if ev:
         family = {c["name"]: c.get("family", "-") for c in acc.get("cases", [])}
-        md.append(table(["case", "family", "algorithm", "max error (eps x size)"],
-                        [[r["case"], family.get(r["case"], "-"), r["method"], r["error"]] for r in ev]))
+        md.append(table(["case", "segments", "family", "algorithm", "max error (eps x size)"],
+                        [[r["case"], segments.get(r["case"], "-"), family.get(r["case"], "-"), r["method"],
+                          r["error"]] for r in ev]))
     else:
         md.append("No results.")
 
@@ -459,11 +537,29 @@ def main():
 
     md += ["", "## Convergence orders", ""]
     if orders:
-        md.append(table(["case", "quantity", "method", "observed", "theory"],
-                        [[o["case"], o["quantity"], o["method"], o["observed"], o.get("theory")] for o in orders]))
-        path = convergence_plot(orders, records, plot_dir)
+        excluded = sum(o.get("excluded", 0) or 0 for o in orders)
+        md.append("The observed order is the least-squares slope of log error against log evaluations over the "
+                  "points where the error still falls: by increasing cost, the first point whose error is not at "
+                  "least 10 % below the best so far (or is below 1e-12) starts the rounding plateau, and it and "
+                  "every costlier point are excluded; points above 1e-2 are pre-asymptotic and skipped. An order "
+                  "needs 3 points spanning a factor 4 in cost, else the case has none. "
+                  f"{excluded} points were excluded over the {len(orders)} orders of this run "
+                  "(column \"excluded\"; \"points\" were fitted).")
+        md.append("")
+        md.append(table(["case", "segments", "quantity", "method", "observed", "theory", "points", "excluded"],
+                        [[o["case"], segments.get(o["case"], "-"), o["quantity"], o["method"], o["observed"],
+                          o.get("theory"), o.get("points", "-"), o.get("excluded", "-")] for o in orders]))
+        missing = series_without_order(records, orders, vocab)
+        if missing:
+            md += ["", "No observed order (fewer than 3 points spanning a factor 4 in cost between 1e-2 and the "
+                   "rounding plateau): " + "; ".join(
+                       f"{q} {m} on {len(cs)} case{'s' if len(cs) > 1 else ''} ({', '.join(cs[:5])}"
+                       + (", ..." if len(cs) > 5 else "") + ")" for (q, m), cs in missing.items()) + "."]
+        path, panels = convergence_plot(orders, records, plot_dir)
         if path:
-            md += ["", f"![convergence]({path})"]
+            md += ["", f"One panel per quantity and method ({len(panels)} panels), one line per case; in each panel "
+                   f"at most {LABELLED_PER_PANEL} cases are named in colour, those of the lowest and the highest "
+                   "observed orders (in brackets), and the others are grey.", "", f"![convergence]({path})"]
     else:
         md.append("No results.")
 

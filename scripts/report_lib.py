@@ -371,3 +371,31 @@ def subject_rows(own, subjects):
         rows.append([s["case"], s["quantity"], label(s), err if err is not None else "-", label(best), best["error"],
                      f"{label(cheapest)} ({cheapest['evaluations']:g} evals)" if cheapest else "none"])
     return rows
+
+
+SPREAD_FLOOR = 2.0 ** -52  # errors below eps(double) are rounding: compared at eps
+
+
+def method_spread(points):
+    """How far apart the methods are at equal cost: points are (cost, error, method). The costs are
+    put in bins of one decade (floor of log10 cost); in each bin each method counts with its smallest
+    error (at least SPREAD_FLOOR); the spread of a bin is the largest of those errors over the
+    smallest, and the case's is the largest over the bins holding at least two methods (1.0 when
+    none does). The rule that picks the featured per-case plots (report.py, publish.py)."""
+    bins = defaultdict(dict)
+    for cost, error, method in points:
+        if not (isinstance(cost, (int, float)) and cost > 0 and isinstance(error, (int, float))
+                and math.isfinite(error)):
+            continue
+        b = bins[math.floor(math.log10(cost))]
+        e = max(error, SPREAD_FLOOR)
+        b[method] = min(e, b.get(method, math.inf))
+    spreads = [max(b.values()) / min(b.values()) for b in bins.values() if len(b) >= 2]
+    return max(spreads, default=1.0)
+
+
+def featured_cases(per_case_points, count):
+    """The `count` cases of {case: [(cost, error, method)]} with the largest method_spread, largest
+    first (ties by name); [(case, spread)]."""
+    ranked = sorted(((c, method_spread(p)) for c, p in per_case_points.items()), key=lambda cs: (-cs[1], cs[0]))
+    return ranked[:count]

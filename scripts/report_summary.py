@@ -1,9 +1,11 @@
 """The summary at the top of REPORT.md and its table of contents (issue 34, "the answers first").
 
 Built from the run's figures alone, with no name or number written in here:
-  - per quantity and kind of curve (the records' "group"), curvebench's cheapest method and setting
-    whose error is at most 1e-6, 1e-10 and 1e-14 on every case of the group, and the best peer
-    reaching the same on every case it ran on (recommendation_rows);
+  - per quantity, kind of curve (the records' "group") and size class (the case's segment count:
+    1, 2-99, 100+), curvebench's cheapest method and setting whose error is at most 1e-6, 1e-10 and
+    1e-14 on every case of the group of that size, and the best peer reaching the same on every case
+    it ran on (recommendation_rows); a choice whose tol is looser than the target says why it
+    reaches it (tolerance_note);
   - per peer, its worst finding (report_peers.grouped_findings; peer_lines);
   - per tool model, how it agrees with the recordings of the real tool (fidelity.json; fidelity_lines);
   - the table of contents: a link to every "## " section (toc).
@@ -129,48 +131,101 @@ def pick(candidates, cases, target, tiers, whole_group=True):
     return best
 
 
-def _by_group(records, quantity, case_groups):
-    """{group: {(method, setting): {case: record}}} of the records of `quantity`."""
+# The sizes of curve the recommendations are given for, by the case's segment count, so that a user
+# with a 1000-segment spline reads the answer for curves of that size.
+SIZE_CLASSES = ("1 segment", "2-99 segments", "100+ segments")
+
+
+def size_class(segments):
+    """The SIZE_CLASSES entry of a segment count, or None (no count)."""
+    if not _number(segments) or segments < 1:
+        return None
+    return SIZE_CLASSES[0] if segments < 2 else SIZE_CLASSES[1] if segments < 100 else SIZE_CLASSES[2]
+
+
+def _size_rank(size):
+    return SIZE_CLASSES.index(size) if size in SIZE_CLASSES else len(SIZE_CLASSES)
+
+
+def _by_group(records, quantity, case_groups, case_segments=None):
+    """{(group, size class): {(method, setting): {case: record}}} of the records of `quantity`; the
+    size class from case_segments ({case: segment count}; None where it has none)."""
+    case_segments = case_segments or {}
     out = defaultdict(lambda: defaultdict(dict))
     for r in records:
         if r.get("quantity") != quantity:
             continue
         group = r.get("group") or case_groups.get(r["case"])
         if group:
-            out[group][(r["method"], r.get("setting") or "")][r["case"]] = r
+            key = (group, size_class(case_segments.get(r["case"])))
+            out[key][(r["method"], r.get("setting") or "")][r["case"]] = r
     return out
 
 
+def _tolerance(setting):
+    """The value of a setting's tol key ("tol=1e-06" -> 1e-06), or None."""
+    for item in (setting or "").split(","):
+        k, _, v = item.partition("=")
+        if k == "tol":
+            try:
+                return float(v)
+            except ValueError:
+                return None
+    return None
+
+
+def tolerance_note(choice, candidates, target):
+    """Why a choice whose tolerance is looser than the target reaches it, from the figures alone:
+    "reaches it at its loosest setting" when no setting of the method in `candidates` ({(method,
+    setting): ...}) asks for less, else its measured max error; None when its setting has no tol or
+    one at most the target."""
+    tol = _tolerance(choice["setting"])
+    if tol is None or not tol > target:
+        return None
+    loosest = max((t for t in (_tolerance(st) for m, st in candidates if m == choice["method"]) if t is not None),
+                  default=tol)
+    if tol >= loosest:
+        return "reaches it at its loosest setting"
+    return f"tol looser than the target, measured max error {lib.fmt(choice['max_error'])}"
+
+
 def recommendation_rows(records, peer_records, times=None, channel_times=None, case_groups=None,
-                        targets=lib.TARGETS):
-    """One row per quantity (QUANTITIES, those the records carry) and group: {"quantity", "group",
-    "cases", "cells": [{"target", "ours", "peer", "peers_ran"}]}, ours and peer as `pick` returns
-    them (None: none reaches it), peers_ran whether any peer has a record of that quantity and group.
-    records: curvebench's own (subjects split off); peer_records: the accuracy runner's and the
-    drivers'; times: report_lib.case_times; channel_times: report_channel.bench_times; case_groups:
-    {case: group} for records without one."""
+                        targets=lib.TARGETS, case_segments=None):
+    """One row per quantity (QUANTITIES, those the records carry), group and size class:
+    {"quantity", "group", "size", "cases", "cells": [{"target", "ours", "peer", "peers_ran"}]}, ours
+    and peer as `pick` returns them (None: none reaches it; ours with "note": tolerance_note), size
+    the SIZE_CLASSES entry of the cases' segment counts (None without counts), peers_ran whether any
+    peer has a record of that quantity, group and size. records: curvebench's own (subjects split
+    off); peer_records: the accuracy runner's and the drivers'; times: report_lib.case_times;
+    channel_times: report_channel.bench_times; case_groups: {case: group} for records without one;
+    case_segments: {case: segment count} (the accuracy document's cases)."""
     times, channel_times, case_groups = times or {}, channel_times or {}, case_groups or {}
     present = {r.get("quantity") for r in records}
     comparable_peers = [r for r in peer_records if not (r.get("quantity") == "eval" and _derivative(r))]
     rows = []
     for quantity in (q for q in QUANTITIES if q in present):
-        ours = _by_group(records, quantity, case_groups)
-        theirs = _by_group(comparable_peers, quantity, case_groups)
+        ours = _by_group(records, quantity, case_groups, case_segments)
+        theirs = _by_group(comparable_peers, quantity, case_groups, case_segments)
         tiers = own_cost_tiers(quantity, records, times, channel_times)
-        # the groups with the most cases first: the kinds of curve the suite holds most of
-        for group in sorted(ours, key=lambda g: (-len({c for by_case in ours[g].values() for c in by_case}), g)):
-            cases = sorted({c for by_case in ours[group].values() for c in by_case})
-            peer_cases = sorted(set(cases) | {c for by_case in theirs.get(group, {}).values() for c in by_case})
+        group_cases = defaultdict(set)
+        for (group, _), by_setting in ours.items():
+            group_cases[group] |= {c for by_case in by_setting.values() for c in by_case}
+        # the groups with the most cases first: the kinds of curve the suite holds most of; then sizes
+        for key in sorted(ours, key=lambda k: (-len(group_cases[k[0]]), k[0], _size_rank(k[1]))):
+            cases = sorted({c for by_case in ours[key].values() for c in by_case})
+            peer_cases = sorted(set(cases) | {c for by_case in theirs.get(key, {}).values() for c in by_case})
             cells = []
             for t in targets:
-                peer = pick(theirs[group], peer_cases, t, peer_cost_tiers(quantity), whole_group=False) \
-                    if group in theirs else None
-                mine = pick(ours[group], cases, t, tiers)
+                peer = pick(theirs[key], peer_cases, t, peer_cost_tiers(quantity), whole_group=False) \
+                    if key in theirs else None
+                mine = pick(ours[key], cases, t, tiers)
                 for p in (mine, peer):  # eval and channel records carry no estimate by nature: not said
                     if p and quantity not in EVALUATIONS_ARE_COSTS:
                         p["unbounded"] = False
-                cells.append({"target": t, "ours": mine, "peer": peer, "peers_ran": group in theirs})
-            rows.append({"quantity": quantity, "group": group, "cases": len(cases), "cells": cells})
+                if mine:
+                    mine["note"] = tolerance_note(mine, ours[key], t)
+                cells.append({"target": t, "ours": mine, "peer": peer, "peers_ran": key in theirs})
+            rows.append({"quantity": quantity, "group": key[0], "size": key[1], "cases": len(cases), "cells": cells})
     return rows
 
 
@@ -188,6 +243,8 @@ def choice_text(p):
         extra.append(f"{p['covered']} of {p['of']} cases")
     if p.get("unbounded"):
         extra.append("no error bound")
+    if p.get("note"):
+        extra.append(p["note"])
     return f"{label} ({', '.join(extra)})"
 
 
@@ -199,9 +256,10 @@ def cell_text(cell):
 
 
 def recommendation_table(rows, targets=lib.TARGETS):
-    return lib.table(["quantity", "kind of curve (group)", "cases"] + [f"error <= {target_text(t)}" for t in targets],
-                     [[f"`{r['quantity']}`", r["group"], r["cases"]] + [cell_text(c) for c in r["cells"]]
-                      for r in rows])
+    return lib.table(["quantity", "kind of curve (group)", "size", "cases"]
+                     + [f"error <= {target_text(t)}" for t in targets],
+                     [[f"`{r['quantity']}`", r["group"], r.get("size") or "-", r["cases"]]
+                      + [cell_text(c) for c in r["cells"]] for r in rows])
 
 
 def peer_lines(peer_records, own_records=()):
@@ -268,17 +326,20 @@ def summary_of_run(acc, report_dir, bench_rows, vocab, fidelity):
         peer_records = list(acc.get("peer_records", []))
     return summary_section(records, peer_records, lib.case_times(bench_rows), report_channel.bench_times(bench_rows),
                            {c["name"]: c.get("group") for c in acc.get("cases", [])}, fidelity,
-                           report_channel.tool_names(vocab))
+                           report_channel.tool_names(vocab),
+                           {c["name"]: c.get("segments") for c in acc.get("cases", []) if "name" in c})
 
 
-def summary_section(records, peer_records, times, channel_times, case_groups, fidelity, tools):
+def summary_section(records, peer_records, times, channel_times, case_groups, fidelity, tools, case_segments=None):
     """The markdown lines of the "Summary" section."""
     md = ["## Summary", "",
           "The answers of this run, from its own figures; the sections below hold every figure behind them.", "",
           "### The method to use for an error target", "",
-          "Per quantity and kind of curve (the cases' group), curvebench's cheapest method and setting whose error "
-          "is at most the target on every case of the group; after \"peer:\", the best peer reaching it on every "
-          "case it ran on.", "",
+          "Per quantity, kind of curve (the cases' group) and size (the cases' segment count: "
+          + ", ".join(f"{c}" for c in SIZE_CLASSES) + "), curvebench's cheapest method and setting whose error "
+          "is at most the target on every case of the group of that size; after \"peer:\", the best peer reaching "
+          "it on every case it ran on. Read the row of your kind and size of curve: the answer for one segment "
+          "need not hold for a thousand.", "",
           "- Errors are relative: " + "; ".join(f"`{q}` to {what}" for q, what in QUANTITIES.items())
           + " (`eval` records are in eps(double) x size, `channel_value` records in eps x range of their precision, "
           "`bits=64` double or `bits=32` float: both are multiplied by that eps).",
@@ -291,8 +352,11 @@ def summary_section(records, peer_records, times, channel_times, case_groups, fi
           "- A peer that ran on fewer cases than the group has says on how many; more cases rank first, then its "
           "own time per operation (the accuracy runner's or its driver's clock, not the benchmarks': compare "
           "peers with each other), else evaluations. Its derivative records are left out (curvebench's `eval` "
-          "records are of values).", ""]
-    rows = recommendation_rows(records, peer_records, times, channel_times, case_groups)
+          "records are of values).",
+          "- A choice whose tolerance (`tol`) is looser than the target says so: \"reaches it at its loosest "
+          "setting\" when the run has no looser setting of that method, else its measured max error.", ""]
+    rows = recommendation_rows(records, peer_records, times, channel_times, case_groups,
+                               case_segments=case_segments)
     md.append(recommendation_table(rows) if rows else "No accuracy records.")
     left = sorted({r.get("quantity") for r in records} - set(QUANTITIES) - {None})
     if left:

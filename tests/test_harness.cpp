@@ -353,6 +353,9 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
     ASSERT_NE(m, nullptr);
     EXPECT_GT(m->theory, 0);
     EXPECT_EQ(o["theory"].get<double>(), m->theory);
+    // The points fitted and those left out at the rounding floor (harness/order_fit.hpp).
+    EXPECT_GE(o["points"].get<std::size_t>(), 3u) << o;
+    EXPECT_TRUE(o["excluded"].is_number_unsigned()) << o;
   }
   // The values agree with the 50-digit reference as the gate requires.
   const auto record = [&](const std::string& q, const std::string& method, const std::string& setting) {
@@ -537,9 +540,54 @@ TEST(fit_order, recovers_a_power_law_and_needs_three_points) {
   std::vector<std::pair<double, double>> series;
   for (double cost : {10.0, 20.0, 40.0, 80.0, 1e6}) series.emplace_back(cost, 0.5 * std::pow(cost, -4.0));
   // The point at cost 1e6 (error 5e-25) is below the floor 1e-12 and left out; the slope is exact.
-  EXPECT_NEAR(fit_order(series, 1e-12, 1e-2), 4.0, 1e-12);
+  const auto fit = fit_order(series, 1e-12, 1e-2);
+  EXPECT_NEAR(fit.order, 4.0, 1e-9);
+  EXPECT_EQ(fit.used, 4u);
+  EXPECT_EQ(fit.excluded, 1u);
   series.resize(2);
-  EXPECT_TRUE(std::isnan(fit_order(series, 1e-12, 1e-2)));
+  EXPECT_TRUE(std::isnan(fit_order(series, 1e-12, 1e-2).order));
+}
+
+TEST(fit_order, a_clean_algebraic_series_in_any_order_gives_its_order) {
+  using curvebench::harness::fit_order;
+  std::vector<std::pair<double, double>> series;
+  for (double cost : {512.0, 16.0, 64.0, 32.0, 128.0, 256.0}) series.emplace_back(cost, 3.0 * std::pow(cost, -2.5));
+  const auto fit = fit_order(series, 1e-12, 1e-2);
+  EXPECT_NEAR(fit.order, 2.5, 1e-9);
+  EXPECT_EQ(fit.used, 6u);
+  EXPECT_EQ(fit.excluded, 0u);
+}
+
+TEST(fit_order, leaves_out_the_plateau_at_the_rounding_floor) {
+  using curvebench::harness::fit_order;
+  // Order 4 down to 1e-9, then the rounding level: flat, noisy, then a lucky lower point after it.
+  const std::vector<std::pair<double, double>> series{{10, 1e-5},    {20, 6.25e-7}, {40, 3.90625e-8}, {80, 2.4e-9},
+                                                      {160, 2.3e-9}, {320, 3e-9},   {640, 1e-10},     {1280, 2e-9}};
+  const auto fit = fit_order(series, 1e-12, 1e-2);
+  // {160, 2.3e-9} is not 10 % below 2.4e-9: it and every costlier point are the plateau.
+  EXPECT_EQ(fit.used, 4u);
+  EXPECT_EQ(fit.excluded, 4u);
+  EXPECT_NEAR(fit.order, 4.0, 0.02);
+  // Without the cut the lucky point and the plateau would pull the slope far from 4.
+}
+
+TEST(fit_order, needs_three_points_spanning_a_factor_four_in_cost) {
+  using curvebench::harness::fit_order;
+  // A plateau from the second point on: one point left, no order.
+  const std::vector<std::pair<double, double>> flat{{10, 1e-8}, {20, 1e-8}, {40, 1.1e-8}, {80, 0.95e-8}};
+  const auto f = fit_order(flat, 1e-12, 1e-2);
+  EXPECT_TRUE(std::isnan(f.order));
+  EXPECT_EQ(f.used, 1u);
+  EXPECT_EQ(f.excluded, 3u);
+  // Three clean points spanning only a factor 3 in cost: no order.
+  const std::vector<std::pair<double, double>> narrow{{10, 1e-4}, {20, 1e-5}, {30, 1e-6}};
+  EXPECT_TRUE(std::isnan(fit_order(narrow, 1e-12, 1e-2).order));
+  // Pre-asymptotic points above the ceiling are skipped, not a plateau.
+  const std::vector<std::pair<double, double>> late{{1, 0.5}, {2, 0.6}, {4, 1e-3}, {8, 1e-4}, {16, 1e-5}};
+  const auto l = fit_order(late, 1e-12, 1e-2);
+  EXPECT_EQ(l.used, 3u);
+  EXPECT_EQ(l.excluded, 0u);
+  EXPECT_NEAR(l.order, std::log2(10.0), 1e-9);
 }
 
 TEST(pool, runs_every_job_once_and_rethrows_a_failure) {

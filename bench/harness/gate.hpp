@@ -7,8 +7,8 @@
 // ("estimate"/"bounded" are null where a method gives no estimate; "reason" says why a status is not
 // converged, text or null, and no rule reads it; "status" is a result_status
 // name, "not_guaranteed" for eval records) and "orders", one per case x quantity x method:
-// {"case", "group", "quantity", "method", "observed", "theory"}. Quantity and method ids are those of
-// harness/vocabulary.hpp (eval records name evaluation algorithms), settings "key=value[,key=value]".
+// {"case", "group", "quantity", "method", "observed", "theory", "points", "excluded"}. Quantity and method ids are
+// those of harness/vocabulary.hpp (eval records name evaluation algorithms), settings "key=value[,key=value]".
 // Thresholds (reports/thresholds.json) hold "rules":
 //   {"quantity", "method", "group", "setting"  (each may be "*" or left out: any),
 //    "max_error"  (optional: every matching record's error must be <= it),

@@ -42,14 +42,16 @@ void record_sink::annotate(const nlohmann::json& fields) {
 
 void record_sink::end(const vocab::quantity& q, const vocab::method& m) {
   if (m.theory > 0) {
-    const double order = fit_order(series_, order_floor, order_ceiling);
-    if (std::isfinite(order))
+    const order_fit fit = fit_order(series_, order_floor, order_ceiling);
+    if (std::isfinite(fit.order))
       orders_.push_back({{"case", case_.name},
                          {"group", case_.group},
                          {"quantity", std::string(q.id)},
                          {"method", std::string(m.id)},
-                         {"observed", order},
-                         {"theory", m.theory}});
+                         {"observed", fit.order},
+                         {"theory", m.theory},
+                         {"points", fit.used},
+                         {"excluded", fit.excluded}});
   }
   series_.clear();
 }

@@ -37,8 +37,9 @@ class record_sink {
 
   /// Opens a series: forgets the (cost, error) points added so far.
   void begin() { series_.clear(); }
-  /// Closes the series of method m: when m.theory > 0, records the order fitted over it (when at
-  /// least 3 points lie in the fitting window, harness/order_fit.hpp). Then opens a new series.
+  /// Closes the series of method m: when m.theory > 0, records the order fitted over it, with the
+  /// points fitted ("points") and those left out at the rounding floor ("excluded"), when at least
+  /// 3 points spanning a factor 4 in cost are left (harness/order_fit.hpp). Then opens a new series.
   void end(const vocab::quantity& q, const vocab::method& m);
 
   /// The records as accuracy.json holds them (harness/record.hpp's writer).

@@ -28,21 +28,23 @@ def record(case, quantity, method, error, setting="", estimate=None, bounded=Non
     return r
 
 
-def order(case, observed):
-    return {"case": case, "quantity": "length", "method": "composite_gauss", "observed": observed, "theory": 6.0}
+def order(case, observed, excluded=1):
+    return {"case": case, "quantity": "length", "method": "composite_gauss", "observed": observed, "theory": 6.0,
+            "points": 4, "excluded": excluded}
 
 
 def accuracy(quick=False):
     return {"context": {"compiler": "gcc 12.2.0", "flags": " -O3", "quick": quick, "revision": "abc1234",
                         "seconds": 12.5},
             "suite": {"name": "curvebench-cases", "version": 2},
-            "cases": [{"name": "deg20", "family": "bezier"}, {"name": "cr", "family": "catmull_rom"}],
+            "cases": [{"name": "deg20", "family": "bezier", "segments": 1},
+                      {"name": "cr", "family": "catmull_rom", "segments": 1000}],
             "records": [record("deg20", "eval", "de_casteljau", 1.0), record("deg20", "eval", "horner", 2.0e7),
                         record("deg20", "eval", "default", 1.0), record("cr", "eval", "power", 0.5),
                         record("cr", "eval", "bezier", 1.5),
                         record("cr", "length", "gauss", 1e-9, "n=4", 1e-8, True, "converged"),
                         record("cr", "length", "gauss", 1e-7, "n=2", 1e-8, False, "converged")],
-            "orders": [order("cr", 5.0), order("deg20", 7.0), order("x", 6.5)]}
+            "orders": [order("cr", 5.0), order("deg20", 7.0, 2), order("x", 6.5)]}
 
 
 def make_run(directory, quick=False):
@@ -82,6 +84,29 @@ class Headline(unittest.TestCase):
     def test_orders_are_medians_over_cases(self):
         (o,) = self.h["orders"]
         self.assertEqual((o["median"], o["min"], o["max"], o["cases"], o["theory"]), (6.5, 5.0, 7.0, 3, 6.0))
+        self.assertEqual(o["excluded"], 4)  # the points left out at the rounding floor, summed over the cases
+
+    def test_pareto_rows_carry_the_segment_count(self):
+        acc = accuracy()
+        times = {("cr", "gauss", "n=4"): 50.0, ("cr", "gauss", "n=2"): 20.0}
+        (row,) = publish.pareto_fastest(acc["records"], times, acc["cases"])
+        self.assertEqual((row["case"], row["segments"]), ("cr", 1000))
+        self.assertEqual(row["1e-06"], {"method": "gauss n=2", "ns": 20.0})
+        # one method (two settings of gauss): nothing to compare at equal cost, spread 1
+        self.assertEqual(publish.featured(acc["records"], times), [{"case": "cr", "spread": 1.0}])
+
+    def test_results_page_shows_segments_and_excluded_points_when_the_run_has_them(self):
+        h = dict(self.h, pareto=[{"case": "cr", "segments": 1000, "1e-06": {"method": "gauss n=2", "ns": 20.0},
+                                  "1e-10": None, "1e-14": None}])
+        page = publish.render_results(h, [])
+        self.assertIn("| cr | 1000 | gauss n=2 (20 ns) | none reached | none reached |", page)
+        self.assertIn("| length | composite_gauss | 6.5 | 5 | 7 | 3 | 6 | 4 |", page)
+        # a headline published before issue 32 renders as it was
+        old = dict(h, pareto=[{k: v for k, v in h["pareto"][0].items() if k != "segments"}],
+                   orders=[{k: v for k, v in o.items() if k != "excluded"} for o in h["orders"]])
+        page = publish.render_results(old, [])
+        self.assertIn("| cr | gauss n=2 (20 ns) | none reached | none reached |", page)
+        self.assertNotIn("excluded points", page)
 
     def test_peers_come_from_the_benchmarks(self):
         self.assertTrue(self.h["peers"])

@@ -215,6 +215,47 @@ class Pareto(unittest.TestCase):
         self.assertEqual(lib.pareto_front([]), [])
 
 
+class Spread(unittest.TestCase):
+    def test_largest_ratio_of_two_methods_within_one_decade_of_cost(self):
+        # decade 1e2: a 1e-6, b 1e-9 (ratio 1e3); decade 1e3: a 1e-8 alone (no second method)
+        pts = [(200, 1e-6, "a"), (500, 1e-9, "b"), (300, 1e-5, "a"), (2000, 1e-8, "a")]
+        self.assertAlmostEqual(lib.method_spread(pts), 1e3)
+        self.assertEqual(lib.method_spread([(10, 1e-3, "a"), (1e4, 1e-9, "b")]), 1.0)  # never at equal cost
+        # errors below eps(double) are rounding: they compare at eps, a lucky 0 is not an infinite spread
+        self.assertAlmostEqual(lib.method_spread([(10, 0.0, "a"), (20, 1e-12, "b")]), 1e-12 / 2.0 ** -52)
+        self.assertEqual(lib.method_spread([(10, 0.0, "a"), (20, 1e-17, "b")]), 1.0)
+
+    def test_featured_cases_largest_spread_first(self):
+        per_case = {"flat": [(10, 1e-6, "a"), (20, 1e-6, "b")], "wide": [(10, 1e-3, "a"), (20, 1e-12, "b")],
+                    "mid": [(10, 1e-3, "a"), (20, 1e-6, "b")]}
+        self.assertEqual([c for c, _ in lib.featured_cases(per_case, 2)], ["wide", "mid"])
+
+
+@unittest.skipUnless(importlib.util.find_spec("matplotlib"), "report.py plots with matplotlib")
+class Convergence(unittest.TestCase):
+    def setUp(self):
+        import report
+        self.report = report
+
+    def test_series_of_a_theory_method_without_an_order_are_named(self):
+        records = [{"case": c, "quantity": "length", "method": m, "setting": "n=2", "error": 1e-3}
+                   for c in ("a", "b") for m in ("gauss", "composite_gauss")]
+        orders = [{"case": "a", "quantity": "length", "method": "composite_gauss", "observed": 6.0}]
+        vocab = lib.Vocabulary({"quantities": [], "peers": [], "operations": [], "counters": [],
+                                "methods": [{"id": "gauss", "theory": 0}, {"id": "composite_gauss", "theory": 6}]})
+        self.assertEqual(self.report.series_without_order(records, orders, vocab),
+                         {("length", "composite_gauss"): ["b"]})
+
+    def test_panels_name_at_most_ten_cases_of_extreme_orders(self):
+        orders = [{"case": f"c{i:02d}", "quantity": "length", "method": "m", "observed": float(i)} for i in range(14)]
+        records = [{"case": o["case"], "quantity": "length", "method": "m", "error": 10.0 ** -k, "evaluations": 2 ** k}
+                   for o in orders for k in (1, 2, 3)]
+        panels, labelled = self.report.convergence_panels(orders, records)
+        self.assertEqual(list(panels), [("length", "m")])
+        self.assertEqual(len(panels[("length", "m")]), 14)
+        self.assertEqual(labelled[("length", "m")], [f"c{i:02d}" for i in (0, 1, 2, 3, 4, 9, 10, 11, 12, 13)])
+
+
 class Join(unittest.TestCase):
     def test_unmatched_reported_both_ways(self):
         records = [

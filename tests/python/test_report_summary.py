@@ -190,6 +190,31 @@ class Recommendation(unittest.TestCase):
         rows = rs.recommendation_rows(records, [], case_groups={"c1": "g", "c2": "g"})
         self.assertEqual(chosen(cells(rows)[0]), ("gauss", "n=2", "evals", 10.0))
 
+    def test_rows_per_size_class_of_the_segment_counts(self):
+        # c1 has 1 segment, c2 1000: each size gets its own row, its own cheapest choice
+        records = length_records()
+        rows = rs.recommendation_rows(records, [], case_segments={"c1": 1, "c2": 1000})
+        self.assertEqual([(r["group"], r["size"], r["cases"]) for r in rows],
+                         [("g", "1 segment", 1), ("g", "100+ segments", 1)])
+        # c1 alone is its size's group: richardson steps=8 (1 eval, record on c1 only) reaches 1e-14 there;
+        # on c2 gauss n=4 misses 1e-6 (2e-6) and richardson has no record: gauss n=2
+        self.assertEqual(chosen(rows[0]["cells"][2]), ("richardson", "steps=8", "evals", 1.0))
+        self.assertEqual(chosen(rows[1]["cells"][0]), ("gauss", "n=2", "evals", 10.0))
+        self.assertIn("| `length` | g | 100+ segments | 1 |", rs.recommendation_table(rows))
+        self.assertEqual([rs.size_class(n) for n in (1, 2, 99, 100, 10000, None)],
+                         ["1 segment", "2-99 segments", "2-99 segments", "100+ segments", "100+ segments", None])
+
+    def test_a_tolerance_looser_than_the_target_says_why_it_reaches_it(self):
+        records = [rec(c, "adaptive_gk", "tol=1e-06", 1e-15, 50.0) for c in ("c1", "c2")]
+        cs = cells(rs.recommendation_rows(records, []))
+        self.assertEqual(rs.cell_text(cs[0]), "adaptive_gk tol=1e-06 (50 evals)")  # tol = target: nothing said
+        self.assertEqual(rs.cell_text(cs[2]), "adaptive_gk tol=1e-06 (50 evals, reaches it at its loosest setting)")
+        # a looser setting exists in the run: its measured max error is said instead
+        records += [rec(c, "adaptive_gk", "tol=1e-04", 1e-5, 20.0) for c in ("c1", "c2")]
+        cs = cells(rs.recommendation_rows(records, []))
+        self.assertEqual(rs.cell_text(cs[2]),
+                         "adaptive_gk tol=1e-06 (50 evals, tol looser than the target, measured max error 1.00e-15)")
+
     def test_target_text(self):
         self.assertEqual([rs.target_text(t) for t in (1e-6, 1e-10, 1e-14)], ["1e-6", "1e-10", "1e-14"])
 
@@ -260,7 +285,10 @@ class ReportScript(unittest.TestCase):
     """report.py puts the summary and the contents right after the title and the "generated" line."""
 
     def test_summary_then_contents_then_sections(self):
+        # both cases of 2-99 segments: one row, its size said; the per-case table gives each count
         acc = {"context": {}, "records": length_records(), "orders": [],
+               "cases": [{"name": "c1", "group": "g", "family": "f", "segments": 2},
+                         {"name": "c2", "group": "g", "family": "f", "segments": 40}],
                "peer_records": [peer("c1", "peer_p", "tol=1e-06", 1e-7, 1000.0),
                                 peer("c2", "peer_p", "tol=1e-06", 2e-7, 3000.0)]}
         lines = report_fixture.run_report(self, acc).splitlines()
@@ -269,9 +297,11 @@ class ReportScript(unittest.TestCase):
         self.assertEqual(lines[4], "## Summary")
         headings = [x for x in lines if x.startswith("## ")]
         self.assertEqual(headings[:3], ["## Summary", "## Contents", "## Machine and build"])
-        self.assertIn("| `length` | g | 2 | gauss n=2 (10 evals); peer: peer_p tol=1e-06 (2e+03 ns) | "
+        self.assertIn("| `length` | g | 2-99 segments | 2 | gauss n=2 (10 evals); peer: peer_p tol=1e-06 (2e+03 ns) | "
                       "gauss n=8 (40 evals); peer: none reaches it | "
                       "adaptive_gk tol=1e-14 (100 evals); peer: none reaches it |", lines)
+        self.assertIn("| c2 | 40 | gauss n=2 (10.0 evals) | gauss n=8 (40.0 evals) | "
+                      "adaptive_gk tol=1e-14 (100.0 evals) |", lines)
         start = lines.index("## Contents")
         links = []
         for x in lines[start + 2:]:
