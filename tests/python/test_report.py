@@ -256,6 +256,28 @@ class Convergence(unittest.TestCase):
         self.assertEqual(labelled[("length", "m")], [f"c{i:02d}" for i in (0, 1, 2, 3, 4, 9, 10, 11, 12, 13)])
 
 
+@unittest.skipUnless(importlib.util.find_spec("matplotlib"), "report.py plots with matplotlib")
+class ManySegments(unittest.TestCase):
+    def test_query_time_is_given_per_case_with_its_ratio_to_one_segment(self):
+        import report
+
+        def row(family, case, ns, cells):
+            return {"family": family, "args": [("case", case), ("tol", "1e-12")], "ns_per_op": ns,
+                    "counters": {"table_intervals": cells}}
+        rows = [row("u_of_s_case", "one", 5.0, 64), row("u_of_s_build_case", "one", 2e6, 64),
+                row("u_of_s_case", "road", 8.0, 250000.0), row("u_of_s_build_case", "road", 4e8, 250000),
+                {"family": "arclength", "args": [], "ns_per_op": 1.0, "counters": {}}]
+        md = "\n".join(report.table_per_segments(rows, {"one": 1, "road": 1000}))
+        self.assertIn("the one-segment case one's in the same run", md)
+        lines = [x for x in md.splitlines() if x.startswith("| road")]
+        self.assertEqual(len(lines), 1)
+        cells = [c.strip() for c in lines[0].strip("|").split("|")]
+        self.assertEqual(cells[:4], ["road", "1000", "1e-12", "250000"])
+        self.assertEqual(cells[4], "400")  # build in ms
+        self.assertEqual(cells[6], "1.6")  # 8 ns against 5 ns
+        self.assertEqual(report.table_per_segments(rows[-1:], {}), [])
+
+
 class Join(unittest.TestCase):
     def test_unmatched_reported_both_ways(self):
         records = [
