@@ -406,6 +406,27 @@ TEST(status_reasons, nested_gauss_keeps_its_bound_on_many_segments) {
     }
 }
 
+// Issue 32's capped subdivision on many segments: with a tolerance it cannot reach within its budget
+// it refines the piece with the largest bound first, so the capped result still carries a finite
+// bound, and that bound holds against adaptive Gauss-Kronrod at 1e-14 (its own estimate added).
+TEST(status_reasons, capped_subdivision_on_many_segments_is_within_its_bound) {
+  const auto c = road(300, 32);
+  al::subdivision_options<double> s;
+  s.relative_tolerance = 1e-14;
+  s.max_evaluations = std::size_t(1) << 18;
+  const auto r = al::subdivision_length(c, s);
+  EXPECT_EQ(r.status, al::result_status::cap_hit);
+  EXPECT_EQ(r.reason.what, al::reasons::budget);
+  EXPECT_LE(r.evaluations, s.max_evaluations);
+  ASSERT_TRUE(std::isfinite(r.error_estimate));
+  al::adaptive_options<double> o;
+  o.relative_tolerance = 1e-14;
+  const auto reference = al::adaptive_length(c, o);
+  EXPECT_LT(reference.error_estimate, 1e-12 * reference.value);
+  EXPECT_LE(std::abs(r.value - reference.value), r.error_estimate + reference.error_estimate);
+  EXPECT_LT(r.error_estimate, 1e-6 * reference.value);  // best first: the budget buys a useful bound
+}
+
 // The halving is bounded: a piece that keeps failing is halved nested_split_levels (4) times, 31
 // tries of 7n evaluations, and then keeps not_guaranteed with its reason. On a parabola's single
 // segment (speed analytic, no speed minimum inside: one piece) the midpoint rule fails at every
