@@ -390,19 +390,16 @@ inline constexpr length_method subdivision{
 inline constexpr setting_def table_intervals{
     "M", "", 0, 1, 1 << 20, true, "table cells in s, shared by the segments in proportion to their lengths"};
 
-template <al::inversion_method Method, bool Polish>
-inline constexpr auto table_prepare = [](const auto& c, const setting_values& v) {
-  using curve = std::decay_t<decltype(c)>;
-  al::parameterization_options<double> o;
-  o.method = Method;
-  o.table_intervals = static_cast<std::size_t>(value_of(v, "M", "u(s) table"));
-  o.newton_polish = Polish;
-  const auto p = std::make_shared<const al::parameterization<curve>>(c, o);
+/// The u(s) run of a table built with options o, by Method, polished or not: its status and reason
+/// are the table's (worded once, here), its estimate the table's measured error when `estimate`.
+template <al::inversion_method Method, bool Polish, class Curve>
+u_of_s_run table_run(const Curve& c, const al::parameterization_options<double>& o, bool estimate) {
+  const auto p = std::make_shared<const al::parameterization<Curve>>(c, o);
   u_of_s_run r;
   r.length = p->length();
   r.construction_evaluations = static_cast<double>(p->construction_evaluations());
-  if (Method == al::inversion_method::hermite_table && !Polish) r.table_estimate = p->table_error();
-  r.query = [p](double s) {
+  if (estimate) r.table_estimate = p->table_error();
+  r.query = [p, reason = al::to_text(p->table_reason())](double s) {
     u_of_s_answer a;
     if constexpr (Polish) {
       const auto q = p->invert(s, Method);
@@ -413,10 +410,19 @@ inline constexpr auto table_prepare = [](const auto& c, const setting_values& v)
       a.u = p->u(s, Method);
     }
     a.status = p->table_status();  // the record's status is the table's
-    a.reason = al::to_text(p->table_reason());
+    a.reason = reason;
     return a;
   };
   return r;
+}
+
+template <al::inversion_method Method, bool Polish>
+inline constexpr auto table_prepare = [](const auto& c, const setting_values& v) {
+  al::parameterization_options<double> o;
+  o.method = Method;
+  o.table_intervals = static_cast<std::size_t>(value_of(v, "M", "u(s) table"));
+  o.newton_polish = Polish;
+  return table_run<Method, Polish>(c, o, Method == al::inversion_method::hermite_table && !Polish);
 };
 
 /// The M of a fixed table is its total, shared by the segments: on a curve of more than 16
@@ -455,23 +461,10 @@ inline constexpr u_of_s_method hermite_table_polished{&vocab::methods::hermite_t
 /// measured error are the table's (parameterization.hpp); its evaluations include the build.
 template <al::inversion_method Method>
 inline constexpr auto sized_table_prepare = [](const auto& c, const setting_values& v) {
-  using curve = std::decay_t<decltype(c)>;
   al::parameterization_options<double> o;
   o.method = Method;
   o.table_tolerance = value_of(v, "tol", "u(s) sized table");
-  const auto p = std::make_shared<const al::parameterization<curve>>(c, o);
-  u_of_s_run r;
-  r.length = p->length();
-  r.construction_evaluations = static_cast<double>(p->construction_evaluations());
-  r.table_estimate = p->table_error();
-  r.query = [p](double s) {
-    u_of_s_answer a;
-    a.u = p->u(s, Method);
-    a.status = p->table_status();  // the record's status is the table's
-    a.reason = al::to_text(p->table_reason());
-    return a;
-  };
-  return r;
+  return table_run<Method, false>(c, o, true);
 };
 
 inline constexpr setting_def table_tol{"tol",
