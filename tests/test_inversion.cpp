@@ -366,6 +366,59 @@ TEST(inversion, many_segment_tables_are_sized_per_segment) {
   }
 }
 
+// Issue 32 item 5: on a table of many segments the query reads two copies of cells chosen by the
+// bucket of s and checks that the one it takes holds s, falling back to bisection where a bucket
+// meets more than two cells. A road of 300 unit steps with one step of 1e-3 and a bump: its cells
+// range from 3e-2 to 8e-6 wide (the segments next to the short step are refined far more than the
+// others, so most buckets there meet many cells). At 5000 table nodes (a cell's end is the next
+// cell's start), the doubles on either side of each and the middle of the cell after it, u(s) must
+// have s(u) within the table's bound of s, and u must not decrease with s. A wrong cell is off by
+// up to a cell's width (2.6e-8 L at the narrowest), far beyond the bound (1e-12 L); s(u) is
+// integrated from the nearest table node, not read from the table.
+TEST(inversion, table_lookup_finds_the_cell_of_every_s_on_unequal_cells) {
+  cb::point_list<double, 2> pts;
+  double x = 0;
+  for (int k = 0; k < 301; ++k) {
+    pts.push_back(pt2<double>(x, k == 200 ? 0.8 : 0.0));
+    x += k == 100 ? 1e-3 : 1.0;
+  }
+  cb::cardinal_spline<double, 2>::options co;
+  co.alpha = 0.5;
+  const cb::cardinal_spline<double, 2> c(pts, co);
+  for (const auto method : {al::inversion_method::hermite_table, al::inversion_method::linear_table}) {
+    const bool hermite = method == al::inversion_method::hermite_table;
+    SCOPED_TRACE(hermite ? "hermite_table" : "linear_table");
+    al::parameterization_options<double> o;
+    o.method = method;
+    o.table_tolerance = hermite ? 1e-12 : 1e-8;
+    const al::parameterization<cb::cardinal_spline<double, 2>> p(c, o);
+    ASSERT_EQ(p.table_status(), al::result_status::converged);
+    const double L = p.length();
+    const auto nodes = p.table_parameters();
+    std::vector<double> s;
+    const std::size_t stride = nodes.size() / 5000 + 1;
+    for (std::size_t j = 0; j < nodes.size(); j += stride) {
+      const double sj = p.s(nodes[j]);
+      s.insert(s.end(), {sj, std::nextafter(sj, -1.0), std::nextafter(sj, 2 * L)});
+      if (j + 1 < nodes.size()) s.push_back((sj + p.s(nodes[j + 1])) / 2);
+    }
+    for (double& v : s) v = std::clamp(v, 0.0, L);
+    std::sort(s.begin(), s.end());
+    double worst = 0, previous = -1;
+    std::size_t decreasing = 0;
+    for (const double v : s) {
+      const double u = p.u(v, method);
+      const auto back = p.s_result(u);
+      worst = std::max(worst, std::abs(back.value - v) - back.error_estimate);
+      decreasing += u < previous;
+      previous = u;
+    }
+    EXPECT_EQ(decreasing, 0u);
+    const double bound = p.table_error() + newton_tolerance_eps * std::numeric_limits<double>::epsilon() * L;
+    EXPECT_LE(worst, bound) << s.size() << " targets on " << p.table_intervals() << " cells";
+  }
+}
+
 // Issue 16, bounded work: the table's construction budget. At 4000 evaluations the smooth cubic
 // (16 nodes ~ 700 evaluations, 32 nodes ~ 1300) affords one doubling but not the next: the table
 // stops measured, cap_hit, its error bound finite, and every u(s) is within that bound plus the

@@ -23,8 +23,9 @@
 // Sources: seed 002 (arc-length table, u = U(s) by lookup); Eberly (2008); Fritsch & Carlson (1980).
 // Cost: construction O(M) Newton solves (each node solved once: a halving adds the midpoints), at
 // most max_evaluations; u(s) O(1) (+15 or 31 with the polish); s(u) O(log M) + one integral.
-// Memory: about 100 bytes per cell in double. Holds a copy of the curve; const members are
-// thread-safe.
+// Memory per cell in double: about 100 bytes on one segment, 230 on many (the cells by bucket, two
+// 64-byte copies per cell, make a query read two lines at once instead of one after the other).
+// Holds a copy of the curve; const members are thread-safe.
 #pragma once
 
 #include "curvebench/arclength/gauss_kronrod.hpp"
@@ -36,7 +37,6 @@
 #include "curvebench/core/error.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -65,7 +65,7 @@ struct parameterization_options {
   /// error of the table's method is below table_tolerance * L (see the header).
   std::size_t table_intervals{0};
   /// The most cells the automatic size may reach (table_status() cap_hit when it stops there):
-  /// about 100 MB in double.
+  /// about 240 MB in double on a curve of many segments.
   std::size_t max_table_intervals{std::size_t(1) << 20};
   /// Target of the table's |ds| error (of the method it is built for), relative to L: max(32 eps,
   /// 1e-15).
@@ -80,8 +80,8 @@ struct parameterization_options {
   std::size_t max_evaluations{std::size_t(1) << 25};
 };
 
-/// The most cells a table may be asked for (table_intervals, max_table_intervals): 2^30, 100 GB in
-/// double; the index of the cells holds 32-bit cell numbers.
+/// The most cells a table may be asked for (table_intervals, max_table_intervals): 2^30, up to
+/// 240 GB in double.
 inline constexpr std::size_t max_table_cells = std::size_t(1) << 30;
 
 /// The fewest evaluations a table node's Newton solve is given however the budget is shared: one
@@ -315,31 +315,49 @@ class parameterization {
       throw std::logic_error("parameterization: a table method needs the object built with a table method");
   }
 
-  // The cell holding s (0 <= s <= L): the bucket of s, then forward over the cells that end at or
-  // before s (at most a few where cells are as wide as a bucket), by bisection where the bucket
-  // holds many (a short segment refined far more than its neighbours).
+  // The cell holding s (0 <= s <= L), as its index: floor(s / ds) on a one-segment table, by
+  // bisection otherwise (the polish only, which costs 15 evaluations or more).
   [[nodiscard]] std::size_t cell_at(const Real& s) const {
     if (uniform_) {  // one segment: its cells are equal in s, the cell is floor(s / ds) (t is clamped)
       const Real y = s * inv_ds_;
       return y > Real(0) ? std::min(to_index(y), cells_.size() - 1) : 0;
     }
-    const Real x = s * inv_bucket_;
-    const std::size_t k = index_.size() - 1;
-    const std::size_t b = x > Real(0) ? std::min(to_index(x), k - 1) : 0;
-    std::size_t j = index_[b];
-    const std::size_t stop = index_[b + 1];
-    if (stop - j > 8) [[unlikely]] {
-      const auto first = cells_.begin() + static_cast<std::ptrdiff_t>(j);
-      const auto last = cells_.begin() + static_cast<std::ptrdiff_t>(stop);
-      j += static_cast<std::size_t>(std::partition_point(first, last, [&s](const piece& p) { return !(s < p.s_end); }) -
-                                    first);
+    return cell_by_search(s);
+  }
+
+  // The first cell that ends after s (the last one ends at +inf).
+  [[nodiscard]] std::size_t cell_by_search(const Real& s) const {
+    return static_cast<std::size_t>(
+        std::partition_point(cells_.begin(), cells_.end(), [&s](const piece& p) { return !(s < p.s_end); }) -
+        cells_.begin());
+  }
+
+  // The cell holding s (0 <= s <= L), for the query. On a table of many segments the two copies
+  // bucket_cells_[b] and [b + 1] are read together (their addresses follow from s alone, so the two
+  // loads overlap, where an index of cell numbers made the cell's load wait for the index's): the
+  // first holds s when s is before its end, the second otherwise, wherever bucket b meets at most two
+  // cells. The chosen cell is checked to hold s, so rounding at a bucket's ends or a bucket meeting
+  // more cells (a short segment refined far more than its neighbours) falls back to the bisection.
+  [[nodiscard]] const piece& piece_at(const Real& s) const {
+    if (uniform_) {
+      const Real y = s * inv_ds_;
+      return cells_[y > Real(0) ? std::min(to_index(y), cells_.size() - 1) : 0];
     }
-    // One step without a branch: where cells are about as wide as two buckets the answer is the
-    // bucket's first cell or the next about half the time, and a branch on it was mispredicted as
-    // often (the linear table's query took 3x its time before the index).
-    j += static_cast<std::size_t>(!(s < cells_[j].s_end));
-    while (!(s < cells_[j].s_end)) [[unlikely]]++ j;  // the last cell ends at +inf
-    return j;
+    const Real x = s * inv_bucket_;
+    const std::size_t b = x > Real(0) ? std::min(to_index(x), bucket_cells_.size() - 2) : 0;
+    const piece& first = bucket_cells_[b];
+    const piece& p = s < first.s_end ? first : bucket_cells_[b + 1];
+    if (!(s < p.s_end) || s < p.s0) [[unlikely]]
+      return cells_[cell_by_search(s)];
+    return p;
+  }
+
+  // u on cell p at s: its cubic (hermite_table) or its chord (linear_table), t clamped to [0, 1].
+  [[nodiscard]] static Real cell_value(const piece& p, const Real& s, inversion_method m) {
+    Real t = (s - p.s0) * p.inv_w;
+    if (t < Real(0)) t = Real(0);  // s in a segment too short for cells, or rounded across a node
+    if (t > Real(1)) t = Real(1);
+    return m == inversion_method::linear_table ? p.c.c0 + t * (p.u1 - p.c.c0) : p.c.eval(t);
   }
 
   // The known point at or left of u nearest to it: a table node or a segment start.
@@ -363,13 +381,9 @@ class parameterization {
   // The table value of u(s) (O(1)), polished when the options say so; evaluations are added to
   // `evaluations`.
   [[nodiscard]] Real table_u(const Real& s, inversion_method m, std::size_t& evaluations) const {
+    if (!opt_.newton_polish) return cell_value(piece_at(s), s, m);
     const std::size_t j = cell_at(s);
-    const piece& p = cells_[j];
-    Real t = (s - p.s0) * p.inv_w;
-    if (t < Real(0)) t = Real(0);  // s in a segment too short for cells, or rounded across a node
-    if (t > Real(1)) t = Real(1);
-    const Real uu = m == inversion_method::linear_table ? p.c.c0 + t * (p.u1 - p.c.c0) : p.c.eval(t);
-    return opt_.newton_polish ? polish(s, uu, j, evaluations) : uu;
+    return polish(s, cell_value(cells_[j], s, m), j, evaluations);
   }
 
   // s(x) - s for x in cell j, integrated from the nearer cell end by one panel of the short-step
@@ -722,9 +736,10 @@ class parameterization {
     }
   }
 
-  // The table's cells and nodes from the segments' nodes (ascending), and the bucket index of the
-  // cells: bucket b of 2 x cells equal buckets over [0, L] holds the first cell that ends after
-  // half a bucket before it starts (the margin covers the rounding of s / bucket width).
+  // The table's cells and nodes from the segments' nodes (ascending), and, for a table of many
+  // segments, the cells by bucket: 2 x cells equal buckets over [0, L], bucket b holding a copy of
+  // the first cell that ends after its start, and one more bucket holding the last cell (see
+  // piece_at).
   void assemble(std::vector<segment_nodes>& segs) {
     const Real none = std::numeric_limits<Real>::infinity();
     for (segment_nodes& g : segs) {
@@ -751,15 +766,17 @@ class parameterization {
     uniform_ = segs.size() == 1 && cells_.front().s0 == Real(0) && cells_.back().s_end == length();
     inv_ds_ = Real(static_cast<long long>(cells_.size())) / length();
     cells_.back().s_end = none;
+    if (uniform_) return;
     const std::size_t k = 2 * cells_.size();
     inv_bucket_ = Real(static_cast<long long>(k)) / length();
-    index_.assign(k + 1, 0);
+    bucket_cells_.reserve(k + 1);
     std::size_t j = 0;
-    for (std::size_t b = 0; b <= k; ++b) {
-      const Real start = (Real(static_cast<long long>(b)) - Real(0.5)) / inv_bucket_;
+    for (std::size_t b = 0; b < k; ++b) {
+      const Real start = Real(static_cast<long long>(b)) / inv_bucket_;
       while (j + 1 < cells_.size() && !(cells_[j].s_end > start)) ++j;
-      index_[b] = static_cast<std::uint32_t>(j);
+      bucket_cells_.push_back(cells_[j]);
     }
+    bucket_cells_.push_back(cells_.back());
   }
 
   C curve_;
@@ -768,10 +785,10 @@ class parameterization {
   std::vector<Real> nodes_u_, nodes_s_, nodes_err_;
   std::vector<piece> cells_;
   std::vector<std::size_t> cell_node_;  // the node at each cell's start (its end is the next node)
-  std::vector<std::uint32_t> index_;    // the bucket index of the cells (see assemble)
-  Real inv_bucket_{0};
-  Real inv_ds_{0};        // cells / L: the cell of s when uniform_
-  bool uniform_ = false;  // one segment has all the cells, equal in s from 0
+  std::vector<piece> bucket_cells_;     // the cells by bucket, many segments only (see assemble)
+  Real inv_bucket_{0};                  // buckets / L (bucket_cells_)
+  Real inv_ds_{0};                      // cells / L: the cell of s when uniform_
+  bool uniform_ = false;                // one segment has all the cells, equal in s from 0
   Real table_error_{0};
   Real size_{0}, noise_length_{0};
   result_status table_status_{result_status::not_guaranteed};
