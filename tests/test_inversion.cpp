@@ -329,6 +329,15 @@ cb::cardinal_spline<Real, 2> road(int keys) {
   return cb::cardinal_spline<Real, 2>(pts, o);
 }
 
+// The sized tables of the many-segment tests: Hermite to issue 32's 1e-12 L, linear to 1e-8 L.
+al::parameterization<cb::cardinal_spline<double, 2>> sized_table(const cb::cardinal_spline<double, 2>& c,
+                                                                 al::inversion_method method) {
+  al::parameterization_options<double> o;
+  o.method = method;
+  o.table_tolerance = method == al::inversion_method::hermite_table ? 1e-12 : 1e-8;
+  return al::parameterization<cb::cardinal_spline<double, 2>>(c, o);
+}
+
 // Issue 32: on 1000 segments a table whose size was global stalled (M = 16 to 256: 7e-7 L; the
 // automatic size stopped at its cap of 65536 cells, 2.2e-10 L). Sized per segment, best first, the
 // Hermite table reaches the issue's 1e-12 L, its measured error bounds the 50-digit error at 400
@@ -342,10 +351,8 @@ TEST(inversion, many_segment_tables_are_sized_per_segment) {
   for (const auto method : {al::inversion_method::hermite_table, al::inversion_method::linear_table}) {
     const bool hermite = method == al::inversion_method::hermite_table;
     SCOPED_TRACE(hermite ? "hermite_table" : "linear_table");
-    al::parameterization_options<double> o;
-    o.method = method;
-    o.table_tolerance = hermite ? 1e-12 : 1e-8;
-    const al::parameterization<cb::cardinal_spline<double, 2>> p(c, o);
+    const auto p = sized_table(c, method);
+    const auto& o = p.options();
     EXPECT_EQ(p.table_status(), al::result_status::converged);
     EXPECT_TRUE(p.table_reason().empty());
     EXPECT_LE(p.table_error(), o.table_tolerance * p.length());
@@ -388,10 +395,7 @@ TEST(inversion, table_lookup_finds_the_cell_of_every_s_on_unequal_cells) {
   for (const auto method : {al::inversion_method::hermite_table, al::inversion_method::linear_table}) {
     const bool hermite = method == al::inversion_method::hermite_table;
     SCOPED_TRACE(hermite ? "hermite_table" : "linear_table");
-    al::parameterization_options<double> o;
-    o.method = method;
-    o.table_tolerance = hermite ? 1e-12 : 1e-8;
-    const al::parameterization<cb::cardinal_spline<double, 2>> p(c, o);
+    const auto p = sized_table(c, method);
     ASSERT_EQ(p.table_status(), al::result_status::converged);
     const double L = p.length();
     const auto nodes = p.table_parameters();
