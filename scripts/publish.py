@@ -353,6 +353,8 @@ def render_results(h, plots):
                     [[p["case"]] + ([p["segments"] if p.get("segments") is not None else "-"] if with_segments else [])
                      + [fastest(p, t) for t in lib.TARGETS] for p in h["pareto"]])
               if h["pareto"] else "No per-case timings.")
+    if h.get("u_of_s_many"):  # REPORT.md's "u(s) on many segments" (report_lib.table_per_segments), a section here
+        md += ["", "## " + h["u_of_s_many"][0].lstrip("# ")] + h["u_of_s_many"][1:]
     md += ["", "## Evaluation algorithms", "", "Max error in eps(double) x the curve's size against the 50-digit "
            "evaluation of the same data; cases with more than one algorithm, largest spread first.", ""]
     md.append(table(["case", "family", "errors per algorithm", "worst / best"],
@@ -455,7 +457,8 @@ def run_sections(report_dir, acc, bench_rows, vocab, allow_missing_peers):
                              "(scripts/bench.sh --publish --allow-missing-peers; docs/results.md then names them)")
     rows = [r for r in bench_rows if r["family"] != lib.CASE_FAMILY]
     return {"summary": report_summary.summary_of_run(acc, report_dir, bench_rows, vocab, load_fidelity(report_dir)),
-            "peers_section": report_peers.peers_section(acc, report_dir, rows, vocab), "peers_missing": missing}
+            "peers_section": report_peers.peers_section(acc, report_dir, rows, vocab), "peers_missing": missing,
+            "u_of_s_many": lib.table_per_segments(bench_rows, lib.segment_counts(acc))}
 
 
 def publish(report_dir, docs_dir, readme, allow_quick=False, allow_missing_peers=False):

@@ -399,3 +399,44 @@ def featured_cases(per_case_points, count):
     first (ties by name); [(case, spread)]."""
     ranked = sorted(((c, method_spread(p)) for c, p in per_case_points.items()), key=lambda cs: (-cs[1], cs[0]))
     return ranked[:count]
+
+
+def segment_counts(acc):
+    """{case: its segment count} from the accuracy document's cases list ("-" where one has none)."""
+    return {c["name"]: c.get("segments", "-") for c in acc.get("cases", []) if "name" in c}
+
+
+def table_per_segments(rows, segments):
+    """u(s) on many segments (issue 32): per case, the Hermite table sized per segment
+    (bench_arclength_cases' u_of_s_build_case and u_of_s_case rows): its cells, build time and time
+    per query, and the ratio of that time to the one-segment case's of the same run. Returns the
+    Markdown lines (none when the run has no such rows)."""
+    per_case = defaultdict(dict)
+    for r in rows:
+        if r["family"] not in ("u_of_s_case", "u_of_s_build_case"):
+            continue
+        args = dict(r["args"])
+        per_case[args.get("case", "-")][r["family"]] = (r, args.get("tol", "-"))
+    if not per_case:
+        return []
+    base = [c for c in sorted(per_case) if segments.get(c) == 1 and "u_of_s_case" in per_case[c]]
+    base_ns = per_case[base[0]]["u_of_s_case"][0]["ns_per_op"] if base else None
+    out = []
+    for case in sorted(per_case, key=lambda c: (segments.get(c, 0) if isinstance(segments.get(c), int) else 0, c)):
+        q = per_case[case].get("u_of_s_case")
+        b = per_case[case].get("u_of_s_build_case")
+        tol = (q or b)[1]
+        cells = (q or b)[0]["counters"].get("table_intervals", "-")
+        if isinstance(cells, float) and cells.is_integer():
+            cells = int(cells)  # Google Benchmark writes counters as doubles
+        ns = q[0]["ns_per_op"] if q else None
+        out.append([case, segments.get(case, "-"), tol, cells, fmt(b[0]["ns_per_op"] / 1e6) if b else "-",
+                    fmt(ns) if ns else "-", fmt(ns / base_ns) if ns and base_ns else "-"])
+    md = ["### u(s) on many segments", "",
+          "The Hermite table sized per segment to its target (tol, relative to L), per case: its cells, the time "
+          "to build it and the time per query (1024 random targets, tables built beforehand), and that time over "
+          + (f"the one-segment case {base[0]}'s in the same run." if base else
+             "a one-segment case's (none in this run: no ratio).") + " Issue 32 asks for at most 2 on 1000 segments.",
+          ""]
+    md.append(table(["case", "segments", "tol", "cells", "build (ms)", "ns per query", "x one segment"], out))
+    return md + [""]

@@ -266,6 +266,39 @@ class Publish(unittest.TestCase):
         self.assertIn("## Peers: the libraries users would pick instead", page)
         self.assertIn("peers_three.json (scripts/peers.sh)", page)  # the versions table names each driver
 
+    def test_the_many_segment_u_of_s_table_is_published(self):
+        # Issue 32 item 5: the time per u(s) query on many segments against one segment, in the same
+        # run, on the published page as REPORT.md gives it (report_lib.table_per_segments).
+        make_run(self.reports)
+        self.peers(report_peers.OPTIONAL_DRIVERS)
+        with open(os.path.join(self.reports, "vocabulary.json"), encoding="utf-8") as f:
+            vocab = json.load(f)
+        vocab["counters"].append({"name": "table_intervals", "kind": "count", "doc": "cells of the table"})
+        vocab["methods"].append({"id": "hermite_table_sized", "quantities": ["u_of_s"], "settings": ["tol"],
+                                 "theory": 0, "doc": "sized Hermite table"})
+        with open(os.path.join(self.reports, "vocabulary.json"), "w", encoding="utf-8") as f:
+            json.dump(vocab, f)
+        run = {"context": {"host_name": "fixture"}, "benchmarks": []}
+        for case, ns, cells in (("arch", 6.0, 2048), ("road", 7.5, 266304)):
+            run["benchmarks"].append({"name": f"u_of_s_case/hermite_table_sized/case:{case}/tol:1e-12",
+                                      "run_type": "iteration", "iterations": 1000, "real_time": ns, "cpu_time": ns,
+                                      "time_unit": "ns", "items_per_second": 1e9 / ns, "label": "query",
+                                      "table_intervals": cells})
+        with open(os.path.join(self.reports, "bench_arclength_cases.json"), "w", encoding="utf-8") as f:
+            json.dump(run, f)
+        acc_path = os.path.join(self.reports, "accuracy.json")
+        with open(acc_path, encoding="utf-8") as f:
+            acc = json.load(f)
+        acc["cases"] = acc.get("cases", []) + [{"name": "arch", "segments": 1}, {"name": "road", "segments": 1000}]
+        with open(acc_path, "w", encoding="utf-8") as f:
+            json.dump(acc, f)
+        h = publish.publish(self.reports, self.docs, self.readme)
+        with open(os.path.join(self.docs, "results.md"), encoding="utf-8") as f:
+            page = f.read()
+        self.assertIn("\n## u(s) on many segments\n", page)
+        self.assertIn("\n".join(h["u_of_s_many"][1:]).strip(), page)
+        self.assertIn("| road | 1000 | 1e-12 | 266304 | - | 7.5 | 1.25 |", page)
+
 
 class CheckedIn(unittest.TestCase):
     """What the repository holds was rendered from its own headline.json, from a full run."""

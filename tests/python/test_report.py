@@ -4,6 +4,7 @@ Pareto front and the join of length records with per-case timings. Run by ctest 
   /usr/bin/python3 -m unittest discover -s tests/python"""
 import copy
 import importlib.util
+import io
 import json
 import os
 import shutil
@@ -256,18 +257,33 @@ class Convergence(unittest.TestCase):
         self.assertEqual(labelled[("length", "m")], [f"c{i:02d}" for i in (0, 1, 2, 3, 4, 9, 10, 11, 12, 13)])
 
 
-@unittest.skipUnless(importlib.util.find_spec("matplotlib"), "report.py plots with matplotlib")
+@unittest.skipUnless(importlib.util.find_spec("matplotlib") and importlib.util.find_spec("PIL"),
+                     "the palette PNG needs matplotlib and Pillow")
+class PalettePng(unittest.TestCase):
+    def test_a_plot_is_saved_with_a_palette_and_keeps_its_colours(self):
+        import report
+        from PIL import Image
+        fig, ax = report.plt.subplots(figsize=(3, 2))
+        ax.plot([0, 1], [0, 1], color="#1f77b4", lw=4)
+        data = report.png_bytes(fig)
+        report.plt.close(fig)
+        im = Image.open(io.BytesIO(data))
+        self.assertEqual(im.mode, "P")
+        colours = {c for _, c in im.convert("RGB").getcolors(65536)}
+        # The line's colour survives the palette within a few levels per channel (median cut).
+        self.assertTrue(any(max(abs(a - b) for a, b in zip(c, (0x1F, 0x77, 0xB4))) <= 8 for c in colours))
+        self.assertIn((255, 255, 255), colours)
+
+
 class ManySegments(unittest.TestCase):
     def test_query_time_is_given_per_case_with_its_ratio_to_one_segment(self):
-        import report
-
         def row(family, case, ns, cells):
             return {"family": family, "args": [("case", case), ("tol", "1e-12")], "ns_per_op": ns,
                     "counters": {"table_intervals": cells}}
         rows = [row("u_of_s_case", "one", 5.0, 64), row("u_of_s_build_case", "one", 2e6, 64),
                 row("u_of_s_case", "road", 8.0, 250000.0), row("u_of_s_build_case", "road", 4e8, 250000),
                 {"family": "arclength", "args": [], "ns_per_op": 1.0, "counters": {}}]
-        md = "\n".join(report.table_per_segments(rows, {"one": 1, "road": 1000}))
+        md = "\n".join(lib.table_per_segments(rows, {"one": 1, "road": 1000}))
         self.assertIn("the one-segment case one's in the same run", md)
         lines = [x for x in md.splitlines() if x.startswith("| road")]
         self.assertEqual(len(lines), 1)
@@ -275,7 +291,7 @@ class ManySegments(unittest.TestCase):
         self.assertEqual(cells[:4], ["road", "1000", "1e-12", "250000"])
         self.assertEqual(cells[4], "400")  # build in ms
         self.assertEqual(cells[6], "1.6")  # 8 ns against 5 ns
-        self.assertEqual(report.table_per_segments(rows[-1:], {}), [])
+        self.assertEqual(lib.table_per_segments(rows[-1:], {}), [])
 
 
 class Join(unittest.TestCase):
