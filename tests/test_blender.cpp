@@ -4,6 +4,7 @@
 // Cycles modifier with counts, and the validation messages.
 #include "support/accuracy.hpp"
 #include "support/fixtures.hpp"
+#include "support/source_dir.hpp"
 
 #include "curvebench/channel/blender.hpp"
 #include "curvebench/reference/multiprecision.hpp"
@@ -55,7 +56,7 @@ constexpr double exact_rel = 1e-14;
 
 const nlohmann::json& fixture() {
   static const nlohmann::json doc = [] {
-    std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/blender_fcurves.json");
+    std::ifstream in(curvebench::testing::source_dir() + "/tests/data/blender_fcurves.json");
     if (!in) throw std::runtime_error("tests/data/blender_fcurves.json not found");
     return nlohmann::json::parse(in);
   }();

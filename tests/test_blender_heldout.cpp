@@ -10,6 +10,7 @@
 // Refused channels (the reader or the float model says "not modelled") are counted and listed
 // exactly: a new refusal fails the test.
 #include "harness/check.hpp"
+#include "support/source_dir.hpp"
 
 #include "curvebench/io/json_fields.hpp"
 
@@ -52,7 +53,7 @@ constexpr double value_tol = 8;
 constexpr double range_tol = 1e-5;
 
 nlohmann::json load(const std::string& file) {
-  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/recorded/" + file);
+  std::ifstream in(curvebench::testing::source_dir() + "/tests/data/recorded/" + file);
   if (!in) throw std::runtime_error("tests/data/recorded/" + file + " not found");
   return nlohmann::json::parse(in);
 }

@@ -7,6 +7,7 @@
 #include "harness/check.hpp"
 
 #include "support/fixtures.hpp"
+#include "support/source_dir.hpp"
 
 #include "curvebench/core/error.hpp"
 #include "curvebench/io/json_fields.hpp"
@@ -201,7 +202,7 @@ TEST(check_times, empty_and_unbounded_derivative_cells_are_not_checked) {
 // values there to float rounding; the truth at the double time does not, and says so in a check
 // against it.
 TEST(check_times, blenders_own_evaluation_rounds_the_time_to_float) {
-  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/blender_fcurves.json");
+  std::ifstream in(curvebench::testing::source_dir() + "/tests/data/blender_fcurves.json");
   const nlohmann::json data = nlohmann::json::parse(in);
   const nlohmann::json* rec = nullptr;
   for (const auto& c : data.at("channels"))

@@ -5,6 +5,7 @@
 #include "harness/compare.hpp"
 
 #include "support/fixtures.hpp"
+#include "support/source_dir.hpp"
 
 #include <gmock/gmock.h>
 
@@ -22,7 +23,7 @@ using ::testing::HasSubstr;
 
 namespace {
 
-const std::string data_dir = std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/compare/";
+std::string data_dir() { return curvebench::testing::source_dir() + "/tests/data/compare/"; }
 
 /// The two-sided exact p of U for samples a, b (no ties) by listing every way to choose which of
 /// the n1 + n2 ranks belong to a: independent of the implementation's recurrence.
@@ -46,7 +47,7 @@ double p_by_listing(const std::vector<double>& a, const std::vector<double>& b) 
   return std::min(1.0, 2.0 * static_cast<double>(std::min(below, above)) / static_cast<double>(total));
 }
 
-h::run_results run_of(const std::string& name) { return h::read_run(data_dir + name); }
+h::run_results run_of(const std::string& name) { return h::read_run(data_dir() + name); }
 
 }  // namespace
 
@@ -248,7 +249,7 @@ TEST(compare, bad_inputs_are_named) {
   EXPECT_THAT(compared(once, twice), HasSubstr("twice.json: records[1]: the same record as"));
   EXPECT_THAT(compared(twice, once), HasSubstr("twice.json: records[1]: the same record as"));
   // Nothing in common: refused, not passed.
-  EXPECT_THAT(compared(once, data_dir + "slow"), HasSubstr("share no record and no benchmark: nothing was compared"));
+  EXPECT_THAT(compared(once, data_dir() + "slow"), HasSubstr("share no record and no benchmark: nothing was compared"));
   // One benchmark in two files of a run: the message names both files.
   const fs::path two = dir / "two_files";
   fs::create_directories(two);

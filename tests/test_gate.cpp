@@ -1,6 +1,7 @@
 // The CI gate names every breach, passes clean results, and fails on an injected regression.
 #include "harness/gate.hpp"
 #include "harness/record.hpp"
+#include "support/source_dir.hpp"
 
 #include "curvebench/core/error.hpp"
 #include "curvebench/io/registry.hpp"
@@ -146,7 +147,7 @@ TEST(gate, rejects_a_rule_naming_an_id_outside_the_vocabulary) {
 }
 
 TEST(gate, the_checked_in_thresholds_name_vocabulary_ids_only) {
-  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/reports/thresholds.json");
+  std::ifstream in(curvebench::testing::source_dir() + "/reports/thresholds.json");
   ASSERT_TRUE(in) << "reports/thresholds.json not found";
   const json t = json::parse(in);
   ASSERT_GT(t["rules"].size(), 10u);
@@ -157,7 +158,7 @@ TEST(gate, the_checked_in_thresholds_name_vocabulary_ids_only) {
 // `|| true`: an honesty rule over every quantity, method and group, and nothing a full sweep's
 // errors could breach otherwise. One dishonest record anywhere must fail it; clean results pass.
 TEST(gate, the_full_sweep_gate_is_honesty_on_every_record) {
-  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/reports/thresholds_full.json");
+  std::ifstream in(curvebench::testing::source_dir() + "/reports/thresholds_full.json");
   ASSERT_TRUE(in) << "reports/thresholds_full.json not found";
   const json t = json::parse(in);
   ASSERT_FALSE(t["rules"].empty());

@@ -19,6 +19,7 @@
 //     64 ulps of the value range (test_usd.cpp: 58).
 #include "support/accuracy.hpp"
 #include "support/fixtures.hpp"
+#include "support/source_dir.hpp"
 
 #include "curvebench/channel/blender.hpp"
 #include "curvebench/channel/css_easing.hpp"
@@ -49,7 +50,7 @@ using R = cb::real50;
 namespace {
 
 nlohmann::json read_case(const std::string& name) {
-  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/bench/cases/" + name + ".json");
+  std::ifstream in(curvebench::testing::source_dir() + "/bench/cases/" + name + ".json");
   return nlohmann::json::parse(in);
 }
 
@@ -353,7 +354,7 @@ nlohmann::json blender_spec(const nlohmann::json& c) {
 }  // namespace
 
 TEST(io_channel, blender_tool_reproduces_blenders_recorded_values) {
-  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/blender_fcurves.json");
+  std::ifstream in(curvebench::testing::source_dir() + "/tests/data/blender_fcurves.json");
   const nlohmann::json data = nlohmann::json::parse(in);
   const double eps_f = std::numeric_limits<float>::epsilon();
   std::size_t checked = 0, skipped = 0;

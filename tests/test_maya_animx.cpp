@@ -7,6 +7,7 @@
 // regression, infinity mode on each side). A channel the model refuses is counted and fails.
 #include "curvebench/io/families/channel.hpp"
 #include "curvebench/io/spec.hpp"
+#include "support/source_dir.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -51,7 +52,7 @@ struct feature_stats {
 }  // namespace
 
 TEST(maya_animx, model_reproduces_animx_values) {
-  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/recorded/animx_curves.json");
+  std::ifstream in(curvebench::testing::source_dir() + "/tests/data/recorded/animx_curves.json");
   ASSERT_TRUE(in) << "tests/data/recorded/animx_curves.json not found";
   const nlohmann::json data = nlohmann::json::parse(in);
   ASSERT_EQ(data.at("tool"), "maya");

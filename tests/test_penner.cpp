@@ -5,6 +5,7 @@
 // tolerance, and the validation messages.
 #include "support/accuracy.hpp"
 #include "support/fixtures.hpp"
+#include "support/source_dir.hpp"
 
 #include "curvebench/channel/penner.hpp"
 #include "curvebench/reference/multiprecision.hpp"
@@ -284,7 +285,7 @@ TEST(penner, derivatives_against_central_differences) {
 // Blender's own values (recorded by scripts/peers/blender_fcurves.py, float32) against the
 // formulas on Blender's float32 inputs, in double and in float.
 TEST(penner, blender_recorded_values) {
-  std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/blender_easing.json");
+  std::ifstream in(curvebench::testing::source_dir() + "/tests/data/blender_easing.json");
   ASSERT_TRUE(in) << "tests/data/blender_easing.json";
   const nlohmann::json doc = nlohmann::json::parse(in);
   EXPECT_EQ(doc.at("blender_version").get<std::string>(), "3.4.1");

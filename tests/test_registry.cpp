@@ -3,6 +3,7 @@
 // with the default evaluation, audit hooks that rebuild the spec, and docs/specs.md's spec section
 // is the registry's generated text.
 #include "support/accuracy.hpp"
+#include "support/source_dir.hpp"
 #include "tools/families_section.hpp"
 
 #include "curvebench/io/spec.hpp"
@@ -31,8 +32,6 @@ constexpr double twin_ulps = 8;
 // - an evaluation algorithm vs the default evaluation of the same double curve: both err by a
 //   few roundings on these examples; the issue asks for 8 eps x size.
 constexpr double algorithm_ulps = 8;
-
-const std::string source_dir = CURVEBENCH_SOURCE_DIR;
 
 std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -82,7 +81,7 @@ std::string build_error(const io::json& j) {
 
 TEST(registry, every_family_has_a_case_file_and_every_case_a_family) {
   std::set<std::string> case_types;
-  for (const auto& e : std::filesystem::directory_iterator(source_dir + "/bench/cases")) {
+  for (const auto& e : std::filesystem::directory_iterator(curvebench::testing::source_dir() + "/bench/cases")) {
     if (e.path().extension() != ".json") continue;
     const io::json j = io::parse(read_text(e.path()), e.path().string());
     const std::string type = io::root(j, e.path().string()).member("type").string();
@@ -272,7 +271,7 @@ TEST(registry, audit_items_rebuild_the_spec) {
 }
 
 TEST(registry, readme_spec_section_is_generated_from_the_registry) {
-  const std::string readme = read_text(source_dir + "/docs/specs.md");
+  const std::string readme = read_text(curvebench::testing::source_dir() + "/docs/specs.md");
   EXPECT_EQ(cb::docs::families_section(readme), io::families_markdown())
       << "docs/specs.md's families section differs from the registry; regenerate it with\n  "
       << cb::docs::regenerate_command;

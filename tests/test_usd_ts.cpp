@@ -12,6 +12,7 @@
 #include "curvebench/io/json_fields.hpp"
 #include "curvebench/io/tools/usd.hpp"
 #include "curvebench/reference/multiprecision.hpp"
+#include "support/source_dir.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -49,7 +50,7 @@ constexpr double tol_ulps = 4096;
 
 const nlohmann::json& recording() {
   static const nlohmann::json doc = [] {
-    std::ifstream in(std::string(CURVEBENCH_SOURCE_DIR) + "/tests/data/recorded/usd_ts_splines.json");
+    std::ifstream in(curvebench::testing::source_dir() + "/tests/data/recorded/usd_ts_splines.json");
     if (!in) throw std::runtime_error("tests/data/recorded/usd_ts_splines.json not found");
     return nlohmann::json::parse(in);
   }();

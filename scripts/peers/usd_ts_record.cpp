@@ -24,7 +24,8 @@
 // Then:
 //   python3 scripts/peers/usd_ts_request.py > /tmp/usd_ts_request.json
 //   /tmp/usd/usd_ts_record /tmp/usd_ts_request.json tests/data/recorded/usd_ts_splines.json
-//   build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/recorded/usd_ts_splines.json
+//   CURVEBENCH_SOURCE_DIR=$PWD build-test/tests/test_usd_ts |
+//       python3 scripts/peers/usd_ts_refusals.py tests/data/recorded/usd_ts_splines.json
 // (the last step records which specs curvebench's reader refuses, and why).
 #include "pxr/base/tf/errorMark.h"
 #include "pxr/base/tf/type.h"
@@ -153,7 +154,7 @@ int main(int argc, char** argv) {
       {"command",
        "python3 scripts/peers/usd_ts_request.py > /tmp/usd_ts_request.json && bash scripts/peers/usd_ts_build.sh "
        "&& /tmp/usd/usd_ts_record /tmp/usd_ts_request.json tests/data/recorded/usd_ts_splines.json && "
-       "build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py "
+       "CURVEBENCH_SOURCE_DIR=$PWD build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py "
        "tests/data/recorded/usd_ts_splines.json"}};
   out["channels"] = nlohmann::json::array();
   for (const auto& c : request.at("channels")) {

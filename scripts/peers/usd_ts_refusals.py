@@ -3,7 +3,8 @@
 tests/test_usd_ts.cpp prints for a refusal the file does not hold yet; a line "accepted<TAB>NAME"
 (a recorded refusal the reader no longer makes) removes the channel's reason. Run after
 scripts/peers/usd_ts_record.cpp has written the file:
-    build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/recorded/usd_ts_splines.json
+    CURVEBENCH_SOURCE_DIR=$PWD build-test/tests/test_usd_ts |
+        python3 scripts/peers/usd_ts_refusals.py tests/data/recorded/usd_ts_splines.json
 """
 
 import json

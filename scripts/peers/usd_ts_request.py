@@ -9,7 +9,8 @@ Regenerate the fixture (see scripts/peers/usd_ts_record.cpp for building the rec
 local OpenUSD build):
     python3 scripts/peers/usd_ts_request.py > /tmp/usd_ts_request.json
     /tmp/usd/usd_ts_record /tmp/usd_ts_request.json tests/data/recorded/usd_ts_splines.json
-    build-test/tests/test_usd_ts | python3 scripts/peers/usd_ts_refusals.py tests/data/recorded/usd_ts_splines.json
+    CURVEBENCH_SOURCE_DIR=$PWD build-test/tests/test_usd_ts |
+        python3 scripts/peers/usd_ts_refusals.py tests/data/recorded/usd_ts_splines.json
 """
 
 import json
