@@ -1,7 +1,7 @@
 // The source tree's root, read at run time: ctest gives every test CURVEBENCH_SOURCE_DIR in its
-// environment (tests/CMakeLists.txt, curvebench_add_test). It is not compiled in: with the path in
-// every test's command line, a checkout at another path (CI's fresh clone) compiled every test again
-// (ccache keys on the command line), about 25 minutes of both cores on a cold machine.
+// environment (tests/CMakeLists.txt, curvebench_add_test). It is not compiled in, so that it is not
+// in every test's command line, which ccache keys on; the precompiled header the tests reuse still
+// holds the path, so a checkout at another path does not yet build its tests from the cache.
 #pragma once
 
 #include <cstdlib>
