@@ -33,6 +33,7 @@
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
 #include "harness/bench_support.hpp"
+#include "harness/length_methods.hpp"  // the vocabulary entries of the length and u(s) methods
 
 #include <array>
 #include <cmath>

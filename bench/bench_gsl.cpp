@@ -23,6 +23,7 @@
 #include <gsl/gsl_spline.h>
 
 #include "harness/bench_support.hpp"
+#include "harness/length_methods.hpp"  // the vocabulary entries of the length and u(s) methods
 
 #include <benchmark/benchmark.h>
 

@@ -17,6 +17,7 @@
 #include "curvebench/reference/multiprecision.hpp"
 
 #include "harness/bench_support.hpp"
+#include "harness/length_methods.hpp"  // the vocabulary entries of the length and u(s) methods
 
 #include <benchmark/benchmark.h>
 

@@ -111,7 +111,7 @@ namespace h = curvebench::harness;
 /// The ids of the vocabulary's methods with records of quantity q, in the vocabulary's order.
 std::vector<std::string> vocabulary_methods_of(const hv::quantity& q) {
   std::vector<std::string> ids;
-  for (const hv::method* m : hv::all_methods)
+  for (const hv::method* m : hv::all_methods())
     if (hv::lists(m->quantities, q.id)) ids.emplace_back(m->id);
   return ids;
 }
@@ -269,7 +269,7 @@ TEST(method_table, every_u_of_s_row_inverts_a_known_arc_length) {
 
 TEST(vocabulary, json_lists_every_entry_with_its_fields) {
   const json v = curvebench::harness::vocabulary_json();
-  ASSERT_EQ(v["methods"].size(), std::size(hv::all_methods));
+  ASSERT_EQ(v["methods"].size(), hv::all_methods().size());
   ASSERT_EQ(v["quantities"].size(), std::size(hv::all_quantities));
   ASSERT_EQ(v["peers"].size(), std::size(hv::all_peers));
   ASSERT_EQ(v["operations"].size(), std::size(hv::all_operations));
@@ -340,7 +340,7 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
   }
   // Every method of the vocabulary produced records for each of its quantities (the channel
   // quantities come from channel cases only: tests/test_channel_sweep.cpp checks those).
-  for (const hv::method* m : hv::all_methods) {
+  for (const hv::method* m : hv::all_methods()) {
     for (const hv::quantity* q : hv::all_quantities) {
       if (hv::lists(m->quantities, q->id) && !q->id.starts_with("channel_")) {
         EXPECT_TRUE(seen.count({std::string(q->id), std::string(m->id)})) << q->id << " " << m->id;

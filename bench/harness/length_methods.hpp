@@ -8,8 +8,11 @@
 // Iterated by the accuracy sweeps (harness/sweep_length.cpp, harness/sweep_u_of_s.cpp), the
 // per-case benchmarks (bench/bench_arclength_cases.cpp, through for_each_length_method),
 // `curvebench length` (bench/tool/main.cpp: its --method list, options, budget and dispatch) and
-// the spec fuzz target (tests/fuzz/targets_spec.cpp). Adding a method is its library header, its
-// row here with its entry in length_methods or u_of_s_methods, and its test.
+// the spec fuzz target (tests/fuzz/targets_spec.cpp); the vocabulary's method list follows them
+// (vocab::all_methods(), harness/vocabulary.cpp). A row's vocabulary entry (vocab::methods::<id>:
+// its id, quantities, setting keys, theory order and doc) is declared here, just before the row.
+// Adding a method is its library header, its entry and row here, its one entry in length_methods
+// or u_of_s_methods, and its test.
 //
 // A row's run is prepared in two steps, prepare(curve, settings, context) -> a callable returning
 // the result: what does not belong to the timed work (a rule looked up in a cache) happens in
@@ -235,6 +238,15 @@ inline constexpr setting_def tol_of_length{
 inline constexpr setting_def steps_per_segment{
     "steps", "--steps", 256, 1, 10000000, true, "table steps per segment (steps x segments nodes, at most 2^24)"};
 
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method forward_difference{"forward_difference", "length s_of_u u_of_s", "steps", 2,
+                                           "chord sums of a table of N steps per segment (seed 002)"};
+}  // namespace vocab::methods
+
+namespace method_rows {
+
 /// The refusal of a forward-difference table above its node limit.
 inline length_cost table_cost(const setting_values& v, std::size_t segments) {
   const auto steps = static_cast<std::size_t>(value_of(v, "steps", vocab::methods::forward_difference.id));
@@ -265,6 +277,16 @@ inline length_cost gauss_cost(const setting_values& v, std::size_t segments, al:
   return c;
 }
 
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method gauss{
+    "gauss", "length", "n", 0,
+    "fixed n-point Gauss-Legendre per segment; estimate from the same rule on 1, 2 and 4 panels"};
+}  // namespace vocab::methods
+
+namespace method_rows {
+
 inline constexpr length_method gauss{
     &vocab::methods::gauss,
     std::array{setting_def{"n", "--n", 5, 1, 200, true,
@@ -282,6 +304,15 @@ inline constexpr length_method gauss{
       const al::fixed_estimate e = x.gauss_estimate;
       return [&c, rule, e] { return al::gauss_length(c, *rule, e); };
     }};
+
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method composite_gauss{"composite_gauss", "length", "n panels", 6,
+                                        "n-point Gauss-Legendre on equal panels per segment (theory 2n: 6 for n = 3)"};
+}  // namespace vocab::methods
+
+namespace method_rows {
 
 inline constexpr length_method composite_gauss{
     &vocab::methods::composite_gauss,
@@ -322,6 +353,15 @@ inline length_cost adaptive_cost(const setting_values&, std::size_t segments) {
   return length_cost{first > budget ? first : budget, {}};
 }
 
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method adaptive_gk{"adaptive_gk", "length", "tol", 0,
+                                    "adaptive Gauss-Kronrod G7-K15 to a relative tolerance, split at speed minima"};
+}  // namespace vocab::methods
+
+namespace method_rows {
+
 inline constexpr length_method adaptive_gk{&vocab::methods::adaptive_gk,
                                            std::array{tol_of_length},
                                            true,
@@ -348,6 +388,15 @@ inline constexpr length_method forward_difference{
       };
     }};
 
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method richardson{"richardson", "length", "steps", 4,
+                                   "Richardson extrapolation of the chord sums of N and N/2 steps"};
+}  // namespace vocab::methods
+
+namespace method_rows {
+
 inline constexpr length_method richardson{&vocab::methods::richardson,
                                           std::array{steps_per_segment},
                                           true,
@@ -361,6 +410,16 @@ inline constexpr length_method richardson{&vocab::methods::richardson,
                                               return t.richardson_length();
                                             };
                                           }};
+
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method subdivision{"subdivision", "length", "tol", 2,
+                                    "adaptive subdivision, the piece with the largest chord / control-polygon bracket "
+                                    "halved first; tolerance relative to the length"};
+}  // namespace vocab::methods
+
+namespace method_rows {
 
 inline constexpr length_method subdivision{
     &vocab::methods::subdivision,
@@ -441,18 +500,47 @@ inline std::vector<setting_values> table_intervals_series(const sweep& w, double
   return out;
 }
 
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method linear_table{"linear_table", "u_of_s", "M", 2,
+                                     "u(s): table of M cells in s shared by the segments by length, linear "
+                                     "interpolation"};
+}  // namespace vocab::methods
+
+namespace method_rows {
+
 inline constexpr u_of_s_method linear_table{&vocab::methods::linear_table,
                                             std::array{table_intervals},
                                             false,
                                             table_intervals_series,
                                             table_prepare<al::inversion_method::linear_table, false>,
                                             al::inversion_method::linear_table};
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method hermite_table{"hermite_table", "u_of_s", "M", 4,
+                                      "u(s): table of M cells in s shared by the segments by length, cubic Hermite "
+                                      "interpolation (du/ds = 1/|P'|)"};
+}  // namespace vocab::methods
+
+namespace method_rows {
+
 inline constexpr u_of_s_method hermite_table{&vocab::methods::hermite_table,
                                              std::array{table_intervals},
                                              true,
                                              table_intervals_series,
                                              table_prepare<al::inversion_method::hermite_table, false>,
                                              al::inversion_method::hermite_table};
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method hermite_table_polished{"hermite_table_polished", "u_of_s", "M", 0,
+                                               "u(s): the Hermite table followed by one safeguarded Newton step"};
+}  // namespace vocab::methods
+
+namespace method_rows {
+
 inline constexpr u_of_s_method hermite_table_polished{&vocab::methods::hermite_table_polished,
                                                       std::array{table_intervals}, true, table_intervals_series,
                                                       table_prepare<al::inversion_method::hermite_table, true>};
@@ -475,14 +563,43 @@ inline constexpr setting_def table_tol{"tol",
                                        false,
                                        "target of the table's measured |s(u) - s|, relative to L"};
 
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method linear_table_sized{"linear_table_sized", "u_of_s", "tol", 0,
+                                           "u(s): linear table sized per segment until its measured error is below "
+                                           "tol x L, the worst segment halved first"};
+}  // namespace vocab::methods
+
+namespace method_rows {
+
 inline constexpr u_of_s_method linear_table_sized{
     &vocab::methods::linear_table_sized, std::array{table_tol}, true,
     [](const sweep& w, double) { return series_of("tol", w.linear_table_tol); },
     sized_table_prepare<al::inversion_method::linear_table>};
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method hermite_table_sized{"hermite_table_sized", "u_of_s", "tol", 0,
+                                            "u(s): Hermite table sized per segment until its measured error is below "
+                                            "tol x L, the worst segment halved first"};
+}  // namespace vocab::methods
+
+namespace method_rows {
+
 inline constexpr u_of_s_method hermite_table_sized{
     &vocab::methods::hermite_table_sized, std::array{table_tol}, true,
     [](const sweep& w, double) { return series_of("tol", w.hermite_table_tol); },
     sized_table_prepare<al::inversion_method::hermite_table>};
+
+}  // namespace method_rows
+
+namespace vocab::methods {
+inline constexpr method newton{"newton", "u_of_s", "tol", 0,
+                               "u(s): Newton on s(u) - s from the segment bracket, no table, to a relative tolerance"};
+}  // namespace vocab::methods
+
+namespace method_rows {
 
 inline constexpr u_of_s_method newton{
     &vocab::methods::newton,

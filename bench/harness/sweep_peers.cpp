@@ -33,6 +33,7 @@
 #include "harness/peers.hpp"
 #include "harness/sweeps.hpp"
 
+#include "harness/length_methods.hpp"  // the vocabulary entries of adaptive_gk and newton
 #include "harness/peer_record.hpp"
 
 #include "harness/setting.hpp"

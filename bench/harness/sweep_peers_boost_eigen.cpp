@@ -26,6 +26,7 @@
 //             bspline cases' own knot vector and control points (clamped, uniform or periodic).
 //           Boost and Eigen report no status; an exception (Boost's domain errors) is the record's
 //           peer_status and leaves it without a value.
+#include "harness/length_methods.hpp"  // the vocabulary entry of adaptive_gk
 #include "harness/peer_record.hpp"
 #include "harness/peers.hpp"
 #include "harness/sweeps.hpp"

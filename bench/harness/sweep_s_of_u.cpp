@@ -1,5 +1,6 @@
 // The s(u) sweep: s(u) from adaptive segment lengths (no table) and from forward-difference tables.
 #include "harness/accuracy.hpp"
+#include "harness/length_methods.hpp"
 #include "harness/sweeps.hpp"
 
 #include "curvebench/arclength/forward_difference.hpp"

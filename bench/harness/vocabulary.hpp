@@ -1,5 +1,7 @@
 // The harness's one vocabulary: quantities, method ids and their settings, peers, benchmark
-// operations and counters, each declared once here. The CLI (`curvebench length --method`,
+// operations and counters, each declared once: here, but for the length and u(s) methods, whose
+// entries are declared with their rows in the method tables (harness/length_methods.hpp) and
+// listed by all_methods(). The CLI (`curvebench length --method`,
 // `sample --method`), the accuracy records, the benchmark names, the gate's thresholds and
 // scripts/report.py (through `curvebench list vocabulary --json`, which scripts/bench.sh writes to
 // reports/vocabulary.json) all use these ids; code names them through the constants below, so a
@@ -70,38 +72,8 @@ struct method {
 };
 
 namespace methods {
-inline constexpr method gauss{
-    "gauss", "length", "n", 0,
-    "fixed n-point Gauss-Legendre per segment; estimate from the same rule on 1, 2 and 4 panels"};
-inline constexpr method composite_gauss{"composite_gauss", "length", "n panels", 6,
-                                        "n-point Gauss-Legendre on equal panels per segment (theory 2n: 6 for n = 3)"};
-inline constexpr method adaptive_gk{"adaptive_gk", "length", "tol", 0,
-                                    "adaptive Gauss-Kronrod G7-K15 to a relative tolerance, split at speed minima"};
-inline constexpr method forward_difference{"forward_difference", "length s_of_u u_of_s", "steps", 2,
-                                           "chord sums of a table of N steps per segment (seed 002)"};
-inline constexpr method richardson{"richardson", "length", "steps", 4,
-                                   "Richardson extrapolation of the chord sums of N and N/2 steps"};
-inline constexpr method subdivision{"subdivision", "length", "tol", 2,
-                                    "adaptive subdivision, the piece with the largest chord / control-polygon bracket "
-                                    "halved first; tolerance relative to the length"};
 inline constexpr method segments_adaptive{"segments_adaptive", "s_of_u", "", 0,
                                           "s(u): adaptive segment lengths plus one adaptive partial integral"};
-inline constexpr method linear_table{"linear_table", "u_of_s", "M", 2,
-                                     "u(s): table of M cells in s shared by the segments by length, linear "
-                                     "interpolation"};
-inline constexpr method hermite_table{"hermite_table", "u_of_s", "M", 4,
-                                      "u(s): table of M cells in s shared by the segments by length, cubic Hermite "
-                                      "interpolation (du/ds = 1/|P'|)"};
-inline constexpr method linear_table_sized{"linear_table_sized", "u_of_s", "tol", 0,
-                                           "u(s): linear table sized per segment until its measured error is below "
-                                           "tol x L, the worst segment halved first"};
-inline constexpr method hermite_table_sized{"hermite_table_sized", "u_of_s", "tol", 0,
-                                            "u(s): Hermite table sized per segment until its measured error is below "
-                                            "tol x L, the worst segment halved first"};
-inline constexpr method hermite_table_polished{"hermite_table_polished", "u_of_s", "M", 0,
-                                               "u(s): the Hermite table followed by one safeguarded Newton step"};
-inline constexpr method newton{"newton", "u_of_s", "tol", 0,
-                               "u(s): Newton on s(u) - s from the segment bracket, no table, to a relative tolerance"};
 inline constexpr method eval_default{"default", "eval", "", 0,
                                      "the family's default evaluation; the other eval methods are the algorithms "
                                      "each family offers in the family registry"};
@@ -150,32 +122,22 @@ inline constexpr const method* time_solver_methods[] = {
     &methods::solver_bisection12, &methods::solver_bisection30,  &methods::solver_isolate_brent,
     &methods::solver_curvebench,  &methods::solver_exact};
 
-inline constexpr const method* all_methods[] = {&methods::gauss,
-                                                &methods::composite_gauss,
-                                                &methods::adaptive_gk,
-                                                &methods::forward_difference,
-                                                &methods::richardson,
-                                                &methods::subdivision,
-                                                &methods::segments_adaptive,
-                                                &methods::linear_table,
-                                                &methods::hermite_table,
-                                                &methods::hermite_table_polished,
-                                                &methods::linear_table_sized,
-                                                &methods::hermite_table_sized,
-                                                &methods::newton,
-                                                &methods::eval_default,
-                                                &methods::solver_closed_form,
-                                                &methods::solver_table_newton,
-                                                &methods::solver_newton_bisection,
-                                                &methods::solver_bisection12,
-                                                &methods::solver_bisection30,
-                                                &methods::solver_isolate_brent,
-                                                &methods::solver_curvebench,
-                                                &methods::solver_exact,
-                                                &methods::rotation_step,
-                                                &methods::rotation_slerp,
-                                                &methods::rotation_nlerp,
-                                                &methods::rotation_cubicspline};
+/// The methods that have no row in the method tables (harness/length_methods.hpp), in the order
+/// all_methods() gives them after the tables' rows.
+inline constexpr const method* methods_without_row[] = {
+    &methods::segments_adaptive,       &methods::eval_default,
+    &methods::solver_closed_form,      &methods::solver_table_newton,
+    &methods::solver_newton_bisection, &methods::solver_bisection12,
+    &methods::solver_bisection30,      &methods::solver_isolate_brent,
+    &methods::solver_curvebench,       &methods::solver_exact,
+    &methods::rotation_step,           &methods::rotation_slerp,
+    &methods::rotation_nlerp,          &methods::rotation_cubicspline};
+
+/// Every method: the rows of the length table, the s(u) method, the rows of the u(s) table (a
+/// method in both tables once), then the other methods of methods_without_row. The length and u(s)
+/// methods are declared with their rows (harness/length_methods.hpp), so that adding one is its row
+/// and its entry in its table; this list follows the tables (harness/vocabulary.cpp).
+[[nodiscard]] std::span<const method* const> all_methods();
 
 /// A library users would pick instead, timed (and measured) on the same data.
 struct peer {
@@ -459,11 +421,7 @@ inline constexpr const counter* all_counters[] = {
     &counters::max_err_range_eps, &counters::estimate_rel, &counters::flops};
 
 /// The method with this id, or nullptr.
-[[nodiscard]] constexpr const method* find_method(std::string_view id) {
-  for (const method* m : all_methods)
-    if (m->id == id) return m;
-  return nullptr;
-}
+[[nodiscard]] const method* find_method(std::string_view id);
 
 /// Whether a space-separated list holds the word w.
 [[nodiscard]] constexpr bool lists(std::string_view words, std::string_view w) {

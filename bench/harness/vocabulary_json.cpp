@@ -31,7 +31,7 @@ nlohmann::json vocabulary_json() {
                    {"variant_keys", nlohmann::json::array()}, {"tools", nlohmann::json::array()}};
   for (const vocab::quantity* q : vocab::all_quantities)
     v["quantities"].push_back({{"id", str(q->id)}, {"doc", str(q->doc)}});
-  for (const vocab::method* m : vocab::all_methods)
+  for (const vocab::method* m : vocab::all_methods())
     v["methods"].push_back({{"id", str(m->id)},
                             {"quantities", words(m->quantities)},
                             {"settings", words(m->settings)},

@@ -354,7 +354,7 @@ int run(int argc, char** argv) {
       if (list_what == "methods" || list_what == "all") {
         std::cout << "methods (length --method takes those with length records; sample --method linear_table, "
                      "hermite_table, newton):\n";
-        for (const vocab::method* m : vocab::all_methods) {
+        for (const vocab::method* m : vocab::all_methods()) {
           std::cout << "  " << std::left << std::setw(24) << m->id << std::setw(28) << std::string(m->quantities)
                     << std::setw(12) << (m->settings.empty() ? std::string("-") : std::string(m->settings)) << m->doc
                     << "\n";
@@ -365,7 +365,7 @@ int run(int argc, char** argv) {
         for (const vocab::quantity* q : vocab::all_quantities)
           std::cout << "  " << std::left << std::setw(24) << q->id << q->doc << "\n";
         std::cout << "methods:\n";
-        for (const vocab::method* m : vocab::all_methods)
+        for (const vocab::method* m : vocab::all_methods())
           std::cout << "  " << std::left << std::setw(24) << m->id << m->doc << "\n";
         std::cout << "peers:\n";
         for (const vocab::peer* p : vocab::all_peers)
