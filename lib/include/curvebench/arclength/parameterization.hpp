@@ -38,7 +38,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -317,12 +316,13 @@ class parameterization {
 
   // The cell holding s (0 <= s <= L), as its index: floor(s / ds) on a one-segment table, by
   // bisection otherwise (the polish only, which costs 15 evaluations or more).
-  [[nodiscard]] std::size_t cell_at(const Real& s) const {
-    if (uniform_) {  // one segment: its cells are equal in s, the cell is floor(s / ds) (t is clamped)
-      const Real y = s * inv_ds_;
-      return y > Real(0) ? std::min(to_index(y), cells_.size() - 1) : 0;
-    }
-    return cell_by_search(s);
+  [[nodiscard]] std::size_t cell_at(const Real& s) const { return uniform_ ? uniform_cell(s) : cell_by_search(s); }
+
+  // One segment: its cells are equal in s, the cell is floor(s / ds), clamped to the table (t is
+  // clamped in the cell).
+  [[nodiscard]] std::size_t uniform_cell(const Real& s) const {
+    const Real y = s * inv_ds_;
+    return y > Real(0) ? std::min(to_index(y), cells_.size() - 1) : 0;
   }
 
   // The first cell that ends after s (the last one ends at +inf).
@@ -339,10 +339,7 @@ class parameterization {
   // cells. The chosen cell is checked to hold s, so rounding at a bucket's ends or a bucket meeting
   // more cells (a short segment refined far more than its neighbours) falls back to the bisection.
   [[nodiscard]] const piece& piece_at(const Real& s) const {
-    if (uniform_) {
-      const Real y = s * inv_ds_;
-      return cells_[y > Real(0) ? std::min(to_index(y), cells_.size() - 1) : 0];
-    }
+    if (uniform_) return cells_[uniform_cell(s)];
     const Real x = s * inv_bucket_;
     const std::size_t b = x > Real(0) ? std::min(to_index(x), bucket_cells_.size() - 2) : 0;
     const piece& first = bucket_cells_[b];
