@@ -3,6 +3,7 @@
 
 #include "harness/check.hpp"
 #include "harness/files.hpp"
+#include "harness/record.hpp"  // finite_or_null
 
 #include "curvebench/core/error.hpp"
 #include "curvebench/io/json_fields.hpp"
@@ -16,8 +17,6 @@
 namespace curvebench::harness {
 
 namespace {
-
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
 
 /// Measures one channel of a recording; refused when its spec or the model refuses it.
 fidelity_channel measure_channel(const io::field& c) {
