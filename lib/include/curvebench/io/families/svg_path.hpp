@@ -33,6 +33,11 @@ namespace detail {
 inline void arc_pieces(const svg::segment& s, std::vector<std::vector<std::array<double, 2>>>& points,
                        std::vector<std::vector<double>>& weights) {
   const svg::arc_center<double> a = svg::center_form<double>(s);
+  // Radii or coordinates near double's limits overflow the conversion; the cast below must not
+  // see a NaN (undefined behaviour), and the curve's own validation would refuse an inf anyway.
+  for (const double v : {a.cx, a.cy, a.rx, a.ry, a.theta1, a.dtheta})
+    if (!std::isfinite(v))
+      throw invalid_input("an elliptical arc's centre form overflows double (its radii or coordinates are too large)");
   const double quarter = std::acos(-1.0) / 2;
   const int n = std::max(1, static_cast<int>(std::ceil(std::abs(a.dtheta) / quarter - 1e-12)));
   const double alpha = a.dtheta / n, c = std::cos(alpha / 2);
