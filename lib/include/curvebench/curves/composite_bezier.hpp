@@ -1,5 +1,6 @@
 // Composite Bezier curves: a chain of Bezier segments (bezier.hpp) of any, mixed, degrees on
-// strictly increasing knots u_0 < ... < u_n; segment i is its Bezier curve on [u_i, u_{i+1}].
+// strictly increasing knots u_0 < ... < u_n; segment i is its Bezier curve on [u_i, u_{i+1}]. With
+// rational segments (rational_bezier.hpp, weights per segment) it is composite_rational_bezier.
 // Evaluation: binary search for the segment, then its de Casteljau; the batch evaluate keeps the
 // previous segment while u stays in it (O(1) lookups for sorted parameters). Derivatives of any
 // order by the chain rule (h_i^-k). An interior knot belongs to the segment on its right (right
@@ -18,6 +19,7 @@
 #include "curvebench/core/point.hpp"
 #include "curvebench/core/real.hpp"
 #include "curvebench/curves/bezier.hpp"
+#include "curvebench/curves/rational_bezier.hpp"
 
 #include <algorithm>
 #include <array>
@@ -25,6 +27,7 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace curvebench {
@@ -43,37 +46,26 @@ struct join_continuity {
   bool g1 = false;         ///< c0 and (c1 or (regular and tangent_jump <= tol))
 };
 
-template <class Real, int Dim>
+template <class Real, int Dim, class Segment = bezier<Real, Dim>>
 class composite_bezier {
  public:
   using real_type = Real;
   using point_type = point<Real, Dim>;
   static constexpr int dimension = Dim;
-  using segment_type = bezier<Real, Dim>;
+  using segment_type = Segment;
+  /// Whether the segments are rational Bezier curves (composite_rational_bezier).
+  static constexpr bool rational = std::is_same_v<Segment, rational_bezier<Real, Dim>>;
+  static_assert(rational || std::is_same_v<Segment, bezier<Real, Dim>>, "segments are bezier or rational_bezier");
 
   /// segments[i] are the control points of segment i (any degree >= 1), on [knots[i], knots[i+1]].
-  composite_bezier(std::span<const point_list<Real, Dim>> segments, std::span<const Real> knots) {
-    validate::count_at_least("segments", segments.size(), 1);
-    validate::same_count("knots", knots.size(), "segments + 1", segments.size() + 1);
-    validate::increasing("knots", knots);
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-      const std::string name = validate::indexed("segments", i);
-      validate::count_at_least(name, segments[i].size(), 2, "a Bezier segment of degree L >= 1 has L + 1 points");
-      validate::finite_points<Real, Dim>(name, segments[i]);
-    }
-    knots_.assign(knots.begin(), knots.end());
-    segments_.reserve(segments.size());
-    using std::abs;
-    scale_ = Real(0);
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-      segments_.emplace_back(std::span<const point_type>(segments[i]), interval<Real>{knots_[i], knots_[i + 1]});
-      for (const auto& p : segments[i])
-        for (int d = 0; d < Dim; ++d) scale_ = std::max(scale_, Real(abs(p[d])));
-    }
-    if (scale_ == Real(0)) scale_ = Real(1);
-    for (const segment_type& seg : segments_)
-      for (std::size_t k = 0; k < 2; ++k)
-        rounding_bound_[k] = std::max(rounding_bound_[k], seg.rounding_bound(static_cast<int>(k)));
+  composite_bezier(std::span<const point_list<Real, Dim>> segments, std::span<const Real> knots) requires(!rational) {
+    init(segments, {}, knots);
+  }
+
+  /// Rational segments: weights[i] are segment i's weights, one > 0 per control point.
+  composite_bezier(std::span<const point_list<Real, Dim>> segments, std::span<const std::vector<Real>> weights,
+                   std::span<const Real> knots) requires(rational) {
+    init(segments, weights, knots);
   }
 
   [[nodiscard]] interval<Real> domain() const { return {knots_.front(), knots_.back()}; }
@@ -170,10 +162,50 @@ class composite_bezier {
   }
 
  private:
+  void init(std::span<const point_list<Real, Dim>> segments, std::span<const std::vector<Real>> weights,
+            std::span<const Real> knots) {
+    validate::count_at_least("segments", segments.size(), 1);
+    validate::same_count("knots", knots.size(), "segments + 1", segments.size() + 1);
+    validate::increasing("knots", knots);
+    if constexpr (rational) validate::same_count("weights", weights.size(), "segments", segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const std::string name = validate::indexed("segments", i);
+      validate::count_at_least(name, segments[i].size(), 2, "a Bezier segment of degree L >= 1 has L + 1 points");
+      validate::finite_points<Real, Dim>(name, segments[i]);
+      if constexpr (rational) {
+        const std::string w = validate::indexed("weights", i);
+        validate::same_count(w, weights[i].size(), "points of " + name, segments[i].size());
+        for (std::size_t k = 0; k < weights[i].size(); ++k) validate::positive(w, weights[i][k], k);
+      }
+    }
+    knots_.assign(knots.begin(), knots.end());
+    segments_.reserve(segments.size());
+    using std::abs;
+    scale_ = Real(0);
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const interval<Real> on{knots_[i], knots_[i + 1]};
+      if constexpr (rational)
+        segments_.emplace_back(std::span<const point_type>(segments[i]), std::span<const Real>(weights[i]), on);
+      else
+        segments_.emplace_back(std::span<const point_type>(segments[i]), on);
+      for (const auto& p : segments[i])
+        for (int d = 0; d < Dim; ++d) scale_ = std::max(scale_, Real(abs(p[d])));
+    }
+    if (scale_ == Real(0)) scale_ = Real(1);
+    for (const segment_type& seg : segments_)
+      for (std::size_t k = 0; k < 2; ++k)
+        rounding_bound_[k] = std::max(rounding_bound_[k], seg.rounding_bound(static_cast<int>(k)));
+  }
+
   std::vector<Real> knots_;
   std::vector<segment_type> segments_;
   std::array<Real, 2> rounding_bound_{};
   Real scale_{};
 };
+
+/// A chain of rational Bezier segments (rational_bezier.hpp), e.g. an SVG path whose elliptical
+/// arcs are rational quadratics (io/families/svg_path.hpp).
+template <class Real, int Dim>
+using composite_rational_bezier = composite_bezier<Real, Dim, rational_bezier<Real, Dim>>;
 
 }  // namespace curvebench

@@ -23,6 +23,7 @@
 #include "curvebench/io/families/lagrange.hpp"
 #include "curvebench/io/families/natural_cubic.hpp"
 #include "curvebench/io/families/polyline.hpp"
+#include "curvebench/io/families/svg_path.hpp"
 #include "curvebench/io/family.hpp"
 
 #include <optional>
@@ -39,10 +40,10 @@ template <class... Entries>
 struct family_list {};
 
 /// Every spec type, in the order `curvebench list` and docs/specs.md show them.
-using all_families =
-    family_list<polyline_family, lagrange_family, bezier_family, rational_bezier_family, composite_bezier_family,
-                conic_family, arc_family, circle_family, hermite_family, cardinal_family, catmull_rom_family,
-                kochanek_bartels_family, natural_cubic_family, bspline_family, nurbs_family, channel_family>;
+using all_families = family_list<polyline_family, lagrange_family, bezier_family, rational_bezier_family,
+                                 composite_bezier_family, conic_family, arc_family, circle_family, svg_path_family,
+                                 hermite_family, cardinal_family, catmull_rom_family, kochanek_bartels_family,
+                                 natural_cubic_family, bspline_family, nurbs_family, channel_family>;
 
 namespace detail {
 template <class F, class... Entries>

@@ -1,4 +1,5 @@
-// Registry entry "composite_bezier" (see io/family.hpp): Bezier segments of any degrees, joined.
+// Registry entry "composite_bezier" (see io/family.hpp): Bezier segments of any degrees, joined;
+// rational ones when the spec gives weights.
 #pragma once
 
 #include "curvebench/curves/composite_bezier.hpp"
@@ -12,6 +13,9 @@ struct composite_bezier_family : family_defaults {
   static constexpr field_doc fields[] = {
       {"segments", "one control point list per segment", presence::required},
       {"knots", "the segment boundaries, increasing, one more than the segments (default 0, 1, 2, ...)"},
+      {"weights",
+       "one weight list per segment, one weight > 0 per control point: rational segments (an SVG "
+       "path's elliptical arcs, svg_path)"},
   };
   static constexpr std::string_view examples[] = {
       R"({"type": "composite_bezier", "knots": [0, 1, 2.5], "segments": [[[0,0],[1,2],[2,2]], [[2,2],[4,2],[5,0],[6,1]]]})",
@@ -31,7 +35,16 @@ struct composite_bezier_family : family_defaults {
     std::vector<pl> segments(segs.array_size());
     for (std::size_t i = 0; i < segments.size(); ++i) segments[i] = segs.element(i).points<Real, Dim>();
     const std::vector<Real> k = detail::knots_or_uniform<Real>(spec, segments.size() + 1);
-    return composite_bezier<Real, Dim>(std::span<const pl>(segments), std::span<const Real>(k));
+    if (!spec.has("weights"))
+      return composite_bezier<Real, Dim>(std::span<const pl>(segments), std::span<const Real>(k));
+    const field ws = spec.member("weights");
+    if (ws.array_size() != segments.size())
+      ws.fail("expected one weight list per segment (" + std::to_string(segments.size()) + "), got " +
+              std::to_string(ws.array_size()));
+    std::vector<std::vector<Real>> w(segments.size());
+    for (std::size_t i = 0; i < w.size(); ++i) w[i] = ws.element(i).template reals<Real>();
+    return composite_rational_bezier<Real, Dim>(std::span<const pl>(segments), std::span<const std::vector<Real>>(w),
+                                                std::span<const Real>(k));
   }
 };
 

@@ -1,0 +1,96 @@
+// The "svg_path" family (io/families/svg_path.hpp): a path's curve has the closed-form lengths of
+// its arcs (a circle 2 pi r; an ellipse 4 a E(k), Boost's complete elliptic integral of the second
+// kind at 50 digits), the same length as the Bezier spec of its lines and Beziers (S and T
+// reflected), subpaths add their lengths, the methods bound their error on a path of every
+// command, and bad path data is refused naming the field and the offset.
+//
+// Tolerances: an arc's control data are resolved once in double (as the "arc" family's), so the
+// 50-digit curve is the ellipse to the rounding of those doubles: its length is the closed form to
+// a few ulps, 1e-15 relative (the rotated ellipse's end points are also written to 16 digits:
+// 1e-14). A path of the same double data as a Bezier spec has the same 50-digit length: 1e-40
+// relative (the reference's own bound is below 1e-40 L).
+#include "support/fixtures.hpp"
+
+#include "curvebench/arclength/length.hpp"
+#include "curvebench/core/any_curve.hpp"
+#include "curvebench/io/spec.hpp"
+#include "curvebench/reference/arc_length.hpp"
+#include "curvebench/reference/multiprecision.hpp"
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/ellint_2.hpp>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace cb = curvebench;
+namespace cbt = curvebench::testing;
+using R = cb::real50;
+using ::testing::HasSubstr;
+
+namespace {
+
+R length_of(const std::string& spec_text) {
+  const auto j = cb::io::parse(spec_text);
+  const cb::reference::reference_arc_length<cb::any_curve<R, 2>> ref(cb::io::curve_from_spec<R, 2>(cb::io::root(j)));
+  EXPECT_LT(ref.length_error(), R("1e-40") * ref.length()) << spec_text;
+  return ref.length();
+}
+
+std::string path(const std::string& d) { return R"({"type": "svg_path", "d": ")" + d + R"("})"; }
+
+void expect_relative(const R& got, const R& want, const R& tol, const std::string& what) {
+  EXPECT_LT(abs(got - want), tol * abs(want)) << what << ": got " << cb::to_text(got) << ", want " << cb::to_text(want);
+}
+
+}  // namespace
+
+TEST(svg_path_curve, arcs_have_their_closed_form_lengths) {
+  const R pi = boost::math::constants::pi<R>();
+  expect_relative(length_of(path("M10 0 A10 10 0 0 1 -10 0 A10 10 0 0 1 10 0")), 20 * pi, R("1e-15"), "circle");
+  expect_relative(length_of(path("M1 0 A1 1 0 0 1 0 1")), pi / 2, R("1e-15"), "quarter circle");
+  expect_relative(length_of(path("M1 0 A1 1 0 1 0 0 1")), 3 * pi / 2, R("1e-15"), "three quarters");
+  // Radii too small: scaled to half the circle through both ends.
+  expect_relative(length_of(path("M0 0 A1 1 0 0 1 10 0")), 5 * pi, R("1e-15"), "corrected radius");
+  const R ellipse = 4 * 5 * boost::math::ellint_2(R("0.8"));  // a = 5, b = 3: k = sqrt(1 - 9 / 25)
+  expect_relative(length_of(path("M5 0 A5 3 0 0 1 -5 0 A5 3 0 0 1 5 0")), ellipse, R("1e-15"), "ellipse");
+  // The same ellipse turned by 30 degrees (its ends written to 16 digits).
+  expect_relative(length_of(path("M4.330127018922193 2.5 A5 3 30 1 1 -4.330127018922193 -2.5 "
+                                 "A5 3 30 1 1 4.330127018922193 2.5")),
+                  ellipse, R("1e-14"), "rotated ellipse");
+}
+
+TEST(svg_path_curve, lines_and_beziers_are_the_segments_as_written) {
+  expect_relative(length_of(path("M0 0 L3 4 M10 10 l0 5")), R(10), R("1e-40"), "two subpaths: 5 + 5");
+  expect_relative(length_of(path("M0 0 H3 V4 Z")), R(12), R("1e-40"), "a closed 3-4-5 triangle");
+  const R s_path = length_of(path("M0 0 C1 2 3 2 4 0 S7 -2 8 0 Q9 1 10 0 T12 0"));
+  const R spelled =
+      length_of(R"({"type": "composite_bezier", "segments": [[[0,0],[1,2],[3,2],[4,0]], [[4,0],[5,-2],[7,-2],[8,0]],)"
+                R"( [[8,0],[9,1],[10,0]], [[10,0],[11,-1],[12,0]]]})");
+  expect_relative(s_path, spelled, R("1e-40"), "S and T reflected");
+}
+
+TEST(svg_path_curve, every_method_bounds_its_error_on_a_path_of_every_command) {
+  const std::string spec = path("M0 0 C1 2 3 2 4 0 S7 -2 8 0 Q9 1 10 0 T12 0 A2 1 30 0 1 16 0 L16 -2 H10 V-3 Z");
+  const R truth = length_of(spec);
+  const auto j = cb::io::parse(spec);
+  const auto c = cb::io::curve_from_spec<double, 2>(cb::io::root(j));
+  cb::arclength::adaptive_options<double> o;
+  o.relative_tolerance = 1e-12;
+  const auto r = cb::arclength::adaptive_length(c, o);
+  EXPECT_TRUE(r.converged());
+  EXPECT_LE(abs(R(r.value) - truth), R(r.error_estimate));
+  EXPECT_LT(abs(R(r.value) - truth), R("1e-12") * truth);
+}
+
+TEST(svg_path_curve, bad_path_data_is_refused_naming_the_field_and_the_offset) {
+  const auto error = [](const std::string& d) {
+    return cbt::message_of([&] { (void)cb::io::curve_from_spec<double, 2>(cb::io::root(cb::io::parse(path(d)))); });
+  };
+  EXPECT_THAT(error("M0 0 L1"), HasSubstr("at offset 7 (the end of the data): expected a number (the y coordinate)"));
+  EXPECT_THAT(error("M0 0 L1"), HasSubstr(".d"));
+  EXPECT_THAT(error("M1 1"), HasSubstr("draws no segment"));
+  EXPECT_THAT(error("M0 0 A1 1 0 2 0 1 1"), HasSubstr("expected an arc flag, 0 or 1"));
+}
