@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(g++ cmake make ninja-build ccache libeigen3-dev libboost-dev libboost-math-dev libbenchmark-dev libgtest-dev libgmock-dev
-          nlohmann-json3-dev libcli11-dev libgsl-dev python3-matplotlib python3-numpy "$@")
+          nlohmann-json3-dev libcli11-dev libgsl-dev libpugixml-dev python3-matplotlib python3-numpy "$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -10,6 +10,7 @@
 // 1e-14). A path of the same double data as a Bezier spec has the same 50-digit length: 1e-40
 // relative (the reference's own bound is below 1e-40 L).
 #include "support/fixtures.hpp"
+#include "support/source_dir.hpp"
 
 #include "curvebench/arclength/length.hpp"
 #include "curvebench/core/any_curve.hpp"
@@ -23,6 +24,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace cb = curvebench;
@@ -93,4 +96,76 @@ TEST(svg_path_curve, bad_path_data_is_refused_naming_the_field_and_the_offset) {
   EXPECT_THAT(error("M0 0 L1"), HasSubstr(".d"));
   EXPECT_THAT(error("M1 1"), HasSubstr("draws no segment"));
   EXPECT_THAT(error("M0 0 A1 1 0 2 0 1 1"), HasSubstr("expected an arc flag, 0 or 1"));
+}
+
+namespace {
+
+std::string shape(const std::string& fields) { return R"({"type": "svg_path", "shape": {)" + fields + "}}"; }
+
+R case_length(const std::string& name) {
+  const std::string file = cbt::source_dir() + "/bench/cases/" + name + ".json";
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return length_of(text.str());
+}
+
+}  // namespace
+
+// SVG 2's equivalent paths of the basic shapes, against their closed forms (the arcs' tolerance
+// above: their control data are resolved in double).
+TEST(svg_path_curve, shapes_are_measured_as_the_paths_svg_defines_for_them) {
+  const R pi = boost::math::constants::pi<R>();
+  expect_relative(length_of(shape(R"("element": "circle", "cx": 3, "cy": -2, "r": 5)")), 10 * pi, R("1e-15"), "circle");
+  // rx absent: SVG 2's auto takes ry's value.
+  expect_relative(length_of(shape(R"("element": "ellipse", "ry": 2)")), 4 * pi, R("1e-15"), "ellipse, rx auto");
+  expect_relative(length_of(shape(R"("element": "ellipse", "rx": 5, "ry": 3)")),
+                  4 * 5 * boost::math::ellint_2(R("0.8")), R("1e-15"), "ellipse");
+  expect_relative(length_of(shape(R"("element": "rect", "x": 1, "y": 2, "width": 10, "height": 4)")), R(28), R("1e-40"),
+                  "square corners");
+  // rx and ry are limited separately, rx to width / 2 and ry to height / 2: ry = 5 becomes 2, so the
+  // corners are quarters of the 3 x 2 ellipse and the vertical edges have length 0.
+  const R corner = boost::math::ellint_2(sqrt(R(1) - R(4) / R(9))) * 3;  // a quarter of the 3 x 2 ellipse
+  expect_relative(length_of(shape(R"("element": "rect", "width": 10, "height": 4, "rx": 3, "ry": 5)")),
+                  2 * (10 - 6) + 0 + 4 * corner, R("1e-15"), "rounded corners, ry limited to height / 2");
+  expect_relative(length_of(shape(R"("element": "rect", "width": 10, "height": 4, "rx": 2)")), 2 * 6 + 0 + 2 * pi * 2,
+                  R("1e-15"), "rx = ry = height / 2: no vertical edge");
+  expect_relative(length_of(shape(R"("element": "line", "x1": 1, "y1": 1, "x2": 4, "y2": 5)")), R(5), R("1e-40"),
+                  "line");
+  expect_relative(length_of(shape(R"("element": "polygon", "points": [[0, 0], [3, 0], [3, 4]])")), R(12), R("1e-40"),
+                  "polygon, closed");
+  expect_relative(length_of(shape(R"("element": "polyline", "points": [[0, 0], [3, 0], [3, 4]])")), R(7), R("1e-40"),
+                  "polyline, open");
+}
+
+TEST(svg_path_curve, shapes_svg_does_not_render_or_misspelled_are_refused_by_name) {
+  const auto error = [](const std::string& spec) {
+    return cbt::message_of([&] { (void)cb::io::curve_from_spec<double, 2>(cb::io::root(cb::io::parse(spec))); });
+  };
+  EXPECT_THAT(error(shape(R"("element": "circle", "r": 0)")), HasSubstr("renders nothing"));
+  EXPECT_THAT(error(shape(R"("element": "circle", "r": -1)")), HasSubstr("r = -1 is negative"));
+  EXPECT_THAT(error(shape(R"("element": "rect", "width": 1)")), HasSubstr("width or height is 0"));
+  EXPECT_THAT(error(shape(R"("element": "circle", "radius": 1)")), HasSubstr("spec.shape.radius"));
+  EXPECT_THAT(error(shape(R"("element": "square", "r": 1)")), HasSubstr("spec.shape.element"));
+  EXPECT_THAT(error(shape(R"("element": "polyline", "points": [[0, 0]])")), HasSubstr("at least 2"));
+  EXPECT_THAT(error(R"({"type": "svg_path", "d": "M0 0 L1 1", "shape": {"element": "circle", "r": 1}})"),
+              HasSubstr("gives both d and shape"));
+  EXPECT_THAT(error(R"({"type": "svg_path"})"), HasSubstr("needs d (path data) or shape"));
+}
+
+// The corpus of issue 35 whose lengths have closed forms: its cases are the curves they claim.
+TEST(svg_path_curve, corpus_cases_have_their_closed_form_lengths) {
+  const R pi = boost::math::constants::pi<R>();
+  // fontTools' cusp: x(t) = 150 t - 200 t^3 runs to 50 and back to -50.
+  expect_relative(case_length("svg_cusp_fonttools"), R(150), R("1e-40"), "fontTools' cusp");
+  expect_relative(case_length("svg_quarter_circle_arc"), 50 * pi, R("1e-15"), "quarter circle as an arc");
+  expect_relative(case_length("svg_circle"), 100 * pi, R("1e-15"), "circle shape");
+  expect_relative(case_length("svg_rounded_rect"), 200 + 20 * pi, R("1e-15"), "rounded rect");
+  expect_relative(case_length("svg_thin_ellipse"), 40 * boost::math::ellint_2(sqrt(R("0.99"))), R("1e-15"),
+                  "thin ellipse 10 x 1");
+  // The quadratic (-100, 0) (0, 4) (100, 0) is y = 2 - x^2 / 5000 over [-100, 100]: with a = 1 / 2500
+  // (|y'| = a |x|), length = 2 int_0^100 sqrt(1 + a^2 x^2) = x sqrt(1 + a^2 x^2) + asinh(a x) / a at 100.
+  const R a = R(1) / 2500, x = 100;
+  expect_relative(case_length("svg_wide_parabola"), x * sqrt(1 + a * a * x * x) + asinh(a * x) / a, R("1e-40"),
+                  "wide parabola");
 }

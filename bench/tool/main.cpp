@@ -28,6 +28,7 @@
 #include "harness/vocabulary_json.hpp"
 
 #include "curvebench/arclength/parameterization.hpp"
+#include "curvebench/io/families/svg_path.hpp"
 #include "curvebench/io/spec.hpp"
 
 #include <CLI/CLI.hpp>
@@ -92,6 +93,8 @@ std::vector<length_option> length_options() {
 
 struct length_args {
   std::string spec;
+  std::string svg;  ///< --svg FILE: every path and shape of an SVG file instead of a spec
+  std::string id;   ///< --id: only the element with this id
   std::string method{vocab::methods::adaptive_gk.id};
   std::vector<length_option> options = length_options();
   /// gauss's estimate (not a setting of the records, which run gauss nested: run_context's
@@ -132,10 +135,11 @@ struct counted_curve {
 };
 
 template <int Dim>
-void length(const cb::io::field& spec, const length_args& a) {
+nlohmann::json length(const cb::io::field& spec, const length_args& a) {
   const cb::any_curve<double, Dim> plain = cb::io::curve_from_spec<double, Dim>(spec);
   const std::size_t segments = plain.breakpoints().size() - 1;
   bool found = false;
+  nlohmann::json out;
   h::for_each_row(h::length_methods, [&](const auto& row) {
     if (row.method->id != a.method) return;
     found = true;
@@ -198,9 +202,39 @@ void length(const cb::io::field& spec, const length_args& a) {
         {"status", std::string(al::to_string(r.status))},
         {"reason",
          r.status == al::result_status::converged ? nlohmann::json() : nlohmann::json(al::to_text(r.reason))}};
-    std::cout << std::setw(2) << j << "\n";
+    out = std::move(j);
   });
   if (!found) throw cb::invalid_input("--method " + a.method + ": not a length method");
+  return out;
+}
+
+/// `length --svg FILE [--id ID]`: a JSON array, one object per path or shape of the file (or the
+/// one with the id), each the length output of its svg_path spec with its element, id and index.
+void length_of_svg(const length_args& a) {
+  std::vector<tool::svg_element> elements = tool::read_svg_elements(a.svg);
+  if (!a.id.empty()) {
+    const auto it =
+        std::find_if(elements.begin(), elements.end(), [&](const tool::svg_element& e) { return e.id == a.id; });
+    if (it == elements.end()) {
+      std::string ids;
+      std::size_t shown = 0;
+      for (const auto& e : elements)
+        if (!e.id.empty() && shown++ < 20) ids += (ids.empty() ? "" : ", ") + cb::validate::visible(e.id);
+      throw cb::invalid_input("--id " + cb::validate::visible(a.id) + ": no path or shape of " + a.svg +
+                              " has this id (" + (ids.empty() ? std::string("none has an id") : "ids: " + ids) + ")");
+    }
+    elements = {*it};
+  }
+  nlohmann::json all = nlohmann::json::array();
+  for (const tool::svg_element& e : elements) {
+    const cb::io::field spec = cb::io::root(e.spec, e.where);
+    // "d": the path data measured (a shape's is the path SVG 2 defines for it).
+    nlohmann::json j{
+        {"element", e.element}, {"id", e.id}, {"index", e.index}, {"d", cb::io::svg_path_family::path_data(spec)}};
+    j.update(length<2>(spec, a));
+    all.push_back(std::move(j));
+  }
+  std::cout << std::setw(2) << all << "\n";
 }
 
 }  // namespace
@@ -248,7 +282,14 @@ int run(int argc, char** argv) {
       "unless the status is not_guaranteed, when it is null), evaluations, status, reason (why the status is not "
       "converged: the failed bound or the cap, the segment and parameter interval where the method knows them, the "
       "quantity against its bound; null when converged)");
-  len->add_option("spec", la.spec, "JSON curve spec")->required()->check(CLI::ExistingFile);
+  len->add_option("spec", la.spec, "JSON curve spec (or --svg)")->check(CLI::ExistingFile);
+  len->add_option("--svg", la.svg,
+                  "an SVG file instead of a spec: the length of every <path> and basic shape (circle, ellipse, rect, "
+                  "line, polyline, polygon) in document order, as a JSON array with each one's element, id, "
+                  "index and the path data measured (a shape's: the path SVG 2 defines for it); transforms are not "
+                  "applied (SVG's getTotalLength measures in the element's own units)")
+      ->check(CLI::ExistingFile);
+  len->add_option("--id", la.id, "with --svg: only the path or shape with this id")->check(tool::non_empty());
   const std::vector<std::string> length_ids = length_method_ids();
   std::string length_help;
   for (const auto& id : length_ids) length_help += (length_help.empty() ? "" : ", ") + id;
@@ -398,9 +439,18 @@ int run(int argc, char** argv) {
     if (*fid) return tool::run_fidelity(fa);
     if (*cmp) return tool::run_compare(cma);
     if (*len) {
+      if (la.spec.empty() == la.svg.empty())
+        throw cb::invalid_input(la.spec.empty() ? "length: give a spec file or --svg FILE"
+                                                : "length: give a spec file or --svg FILE, not both");
+      if (!la.id.empty() && la.svg.empty()) throw cb::invalid_input("length: --id selects an element of --svg FILE");
+      if (!la.svg.empty()) {
+        length_of_svg(la);
+        return 0;
+      }
       const auto j = tool::read_spec(la.spec);
       const auto spec = cb::io::root(j, la.spec);
-      tool::with_dimension(spec, [&](auto dim) { length<decltype(dim)::value>(spec, la); });
+      tool::with_dimension(
+          spec, [&](auto dim) { std::cout << std::setw(2) << length<decltype(dim)::value>(spec, la) << "\n"; });
       return 0;
     }
     if (*acc) return cb::harness::run_accuracy(ao);

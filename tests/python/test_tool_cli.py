@@ -391,6 +391,53 @@ class ToolCli(unittest.TestCase):
                                         r"\|Q2 - Q4\| \(measured [0-9.e+-]+, bound [0-9.e+-]+\)$")
         self.assertIn("--estimate", run("length", "--help").stdout)
 
+    def test_length_svg_measures_every_path_and_shape_of_a_drawing(self):
+        # tests/data/svg/drawing.svg: groups, a transform (not applied, as getTotalLength), defs, a
+        # px unit. Closed forms; tolerance 1e-12 relative, adaptive_gk's default tolerance of 1e-10
+        # with its usual margin (the arcs' control data are exact to the last bit of a double).
+        svg = os.path.join(ROOT, "tests", "data", "svg", "drawing.svg")
+        p = run("length", "--svg", svg, "--tol", "1e-13")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        out = json.loads(p.stdout)
+        self.assertEqual([(e["element"], e["id"], e["index"]) for e in out],
+                         [("path", "track", 0), ("circle", "ring", 1), ("rect", "badge", 2), ("polygon", "arrow", 3),
+                          ("path", "wave", 4), ("path", "leaf", 5), ("line", "", 6)])
+        by_id = {e["id"] or e["element"]: e for e in out}
+        want = {"track": math.pi * 50, "ring": 2 * math.pi * 40, "badge": 2 * (120 + 40) - 4 * 2 * 8 + 2 * math.pi * 8,
+                "arrow": 12.0, "line": 50.0}
+        for name, length in want.items():
+            self.assertLess(abs(by_id[name]["value"] - length), 1e-12 * length, by_id[name])
+            # At 1e-13 some reach double's rounding first; either way the estimate bounds the error.
+            self.assertIn(by_id[name]["status"], ("converged", "rounding_limited"))
+            self.assertLessEqual(abs(by_id[name]["value"] - length), by_id[name]["estimate"], by_id[name])
+        # A shape's path data is SVG 2's equivalent path; a polygon's points are a moveto with linetos.
+        self.assertEqual(by_id["ring"]["d"], "M140 100 A40 40 0 0 1 100 140 A40 40 0 0 1 60 100 "
+                                             "A40 40 0 0 1 100 60 A40 40 0 0 1 140 100 Z")
+        self.assertEqual(by_id["arrow"]["d"], "M0,0 3,0 3,4 Z")
+        # The relative quadratics of the leaf against the same curve as a spec.
+        leaf = self.write("leaf.json",
+                          json.dumps({"type": "svg_path", "d": "M200 200 Q220 170 240 200 T280 200 Z"}))
+        self.assertAlmostEqual(json.loads(run("length", leaf, "--tol", "1e-13").stdout)["value"],
+                               by_id["leaf"]["value"], delta=1e-11)
+        one = json.loads(run("length", "--svg", svg, "--id", "ring", "--method", "gauss", "--n", "8").stdout)
+        self.assertEqual([e["id"] for e in one], ["ring"])
+        self.assertEqual(one[0]["method"], "gauss")
+        self.assert_error(run("length", "--svg", svg, "--id", "nope"), "--id nope: no path or shape of " + svg
+                          + " has this id (ids: track, ring, badge, arrow, wave, leaf)")
+        self.assert_error(run("length", "--svg", svg, ARCH), "give a spec file or --svg FILE, not both")
+        self.assert_error(run("length", ARCH, "--id", "x"), "--id selects an element of --svg FILE")
+        bad = self.write("bad.svg", '<svg xmlns="http://www.w3.org/2000/svg"><circle id="c" r="2em"/></svg>')
+        self.assert_error(run("length", "--svg", bad), '<circle id="c"> (shape or path 0, byte ')
+        self.assert_error(run("length", "--svg", bad), 'r="2em" is not a number in user units')
+        broken = self.write("broken.svg", '<svg><path d="M0 0 L1 1"')
+        self.assert_error(run("length", "--svg", broken), "not well-formed XML at byte offset")
+        cut = self.write("cut.svg", '<svg><path id="p" d="M0 0 L1 1 L2"/></svg>')
+        self.assert_error(run("length", "--svg", cut), "at offset 12 (the end of the data): expected a number")
+        none = self.write("none.svg", '<svg><text>no path</text></svg>')
+        self.assert_error(run("length", "--svg", none), "no <path> or basic shape")
+        html = self.write("page.svg", '<html><path d="M0 0 L1 1"/></html>')
+        self.assert_error(run("length", "--svg", html), "the root element is <html>, not <svg>")
+
     def test_length_gauss_estimate_none_is_the_fixed_rule_without_an_estimate(self):
         # gauss's estimate is a setting of the CLI: nested (the default, with a bound) or none (the
         # benchmarks' fast fixed rule: n evaluations per segment, no estimate, and says so).

@@ -11,12 +11,16 @@
 // first and last piece of an arc end exactly at the written points), so a 50-digit twin has the
 // same control data, as for the "arc" family; a path of lines and Beziers only has no weights.
 // A path that draws no segment (only movetos) is refused, naming the field.
+// Instead of "d", a spec may give "shape": one of SVG's basic shapes (circle, ellipse, rect, line,
+// polyline, polygon) with its attributes as numbers ("points" for polyline and polygon: an array of
+// [x, y]), measured as the path data SVG 2 defines for it (io/svg_shapes.hpp).
 #pragma once
 
 #include "curvebench/curves/composite_bezier.hpp"
 #include "curvebench/io/families/composite_bezier.hpp"
 #include "curvebench/io/family.hpp"
 #include "curvebench/io/svg_path.hpp"
+#include "curvebench/io/svg_shapes.hpp"
 
 #include <algorithm>
 #include <array>
@@ -63,22 +67,66 @@ struct svg_path_family : family_defaults {
       "SVG path data (the d attribute): lines, quadratic and cubic Beziers, elliptical arcs (exact, as rational "
       "quadratics), every subpath";
   static constexpr field_doc fields[] = {
-      {"d", "the path data, SVG 1.1 / SVG 2 grammar (M, L, H, V, C, S, Q, T, A, Z, absolute and relative)",
-       presence::required},
+      {"d",
+       "the path data, SVG 1.1 / SVG 2 grammar (M, L, H, V, C, S, Q, T, A, Z, absolute and relative); exactly one of d "
+       "and shape",
+       presence::optional},
+      {"shape",
+       "an SVG basic shape as {\"element\": circle | ellipse | rect | line | polyline | polygon, its attributes as "
+       "numbers "
+       "(cx, cy, r, rx, ry, x, y, width, height, x1, y1, x2, y2), \"points\": [[x, y], ...] for polyline and polygon}, "
+       "measured as the path SVG 2 defines for it",
+       presence::optional},
   };
   static constexpr std::string_view examples[] = {
       R"({"type": "svg_path", "d": "M0 0 C1 2 3 2 4 0 S7 -2 8 0 Q9 1 10 0 A2 1 30 0 1 14 0 L14 -2 Z"})",
+      R"({"type": "svg_path", "shape": {"element": "rect", "x": 0, "y": 0, "width": 10, "height": 4, "rx": 1}})",
   };
+
+  /// The path data of a spec: its "d", or the path of its "shape" (exactly one of them).
+  static std::string path_data(const field& spec) {
+    if (spec.has("d") == spec.has("shape"))
+      spec.fail(spec.has("d") ? "gives both d and shape; an svg_path is one of them"
+                              : "needs d (path data) or shape (an SVG basic shape)");
+    if (spec.has("d")) return spec.member("d").string();
+    const field f = spec.member("shape");
+    svg::shape s;
+    s.element = f.member("element", "a shape names its SVG element")
+                    .one_of({"circle", "ellipse", "rect", "line", "polyline", "polygon"});
+    const bool listed = s.element == "polyline" || s.element == "polygon";
+    static constexpr std::string_view numeric[] = {"cx",    "cy",     "r",  "rx", "ry", "x", "y",
+                                                   "width", "height", "x1", "y1", "x2", "y2"};
+    for (const auto& [key, value] : f.value.items()) {
+      if (key == "element") continue;
+      if (key == "points" && listed) {
+        const point_list<double, 2> pts = f.member("points").points<double, 2>();
+        for (const auto& p : pts) s.points.push_back({p[0], p[1]});
+        continue;
+      }
+      if (std::find(std::begin(numeric), std::end(numeric), key) == std::end(numeric))
+        f.member(key).fail(
+            "is not an attribute of a <" + s.element + "> curvebench reads (" +
+            (listed ? std::string("points") : std::string("cx, cy, r, rx, ry, x, y, width, height, x1, y1, x2, y2")) +
+            ")");
+      s.numbers[key] = f.member(key).number();
+    }
+    try {
+      return svg::shape_path_data(s);
+    } catch (const invalid_input& e) {
+      f.fail(e.what());
+    }
+  }
 
   static int dimension(const field&) { return 2; }
 
   /// The path as a "composite_bezier" spec (see the header).
   template <int Dim>
   static json resolve(const field& spec) {
-    const field d = spec.member("d", "an svg_path is its path data");
+    const std::string data = path_data(spec);
+    const field d = spec.has("d") ? spec.member("d") : spec.member("shape");
     std::vector<svg::subpath> paths;
     try {
-      paths = svg::parse_path(d.string());
+      paths = svg::parse_path(data);
     } catch (const invalid_input& e) {
       d.fail(e.what());
     }
