@@ -423,6 +423,67 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
   return res;
 }
 
+/// The columns of an --at-length file: the point x[,y[,z]] and optionally s, the arc length it was
+/// asked for.
+template <int Dim>
+struct at_length_layout {
+  std::size_t cs = csv_table::npos;
+  std::array<std::size_t, Dim> cp{};
+  explicit at_length_layout(const csv_table& t) {
+    std::vector<std::string> allowed{"s"};
+    for (int i = 0; i < Dim; ++i) {
+      allowed.emplace_back(coordinate_names[i]);
+      cp[static_cast<std::size_t>(i)] =
+          need(t, coordinate_names[i], "coordinate " + std::to_string(i + 1) + " of the point");
+    }
+    cs = t.column("s");
+    only(t, allowed, "check --at-length");
+  }
+};
+
+template <int Dim>
+check_result check_at_length(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
+  check_result res = result_of(check_kind::at_length, t, ref.length());
+  const at_length_layout<Dim> lay(t);
+  const double s_max = res.length * (1 + 64 * std::numeric_limits<double>::epsilon());
+  if (lay.cs != csv_table::npos)
+    for (std::size_t r = 0; r < t.rows.size(); ++r)
+      if (const double s = t.rows[r][lay.cs]; !(s >= 0 && s <= s_max))
+        throw invalid_input(t.where(r, lay.cs) + ": " + num(s) + " is outside [0, L] = [0, " + num(res.length) +
+                            "], the curve's arc-length range");
+  double worst_s = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const auto& row = t.rows[r];
+    check_row cr;
+    cr.line = t.lines[r];
+    point<double, Dim> q;
+    for (int i = 0; i < Dim; ++i) q[i] = row[lay.cp[static_cast<std::size_t>(i)]];
+    const bool asked = lay.cs != csv_table::npos;
+    cr.s = asked ? std::min(row[lay.cs], res.length) : 0.0;
+    const auto near = ref.nearest(q, asked ? cr.s : std::numeric_limits<double>::quiet_NaN());
+    cr.u = near.u;
+    cr.s_true = near.s;
+    cr.off_curve = near.distance / res.length;
+    if (asked) {
+      cr.absolute = ref.distance_at_length(cr.s, q);
+      cr.error = cr.absolute / res.length;
+      cr.s_error = near.ds;
+      worst_s = std::max(worst_s, cr.s_error);
+    } else {
+      cr.absolute = near.distance;
+      cr.error = cr.off_curve;
+    }
+    cr.relative = cr.error;
+    res.rows.push_back(std::move(cr));
+    if (o.on_row) o.on_row(r + 1, t.rows.size(), t.file);
+  }
+  // The s error at the returned point is the u(s) measure of the accuracy runner (|s(u) - s| / L).
+  if (lay.cs != csv_table::npos)
+    res.records.push_back(
+        subject_record(o.case_name, o.group, "u_of_s", o.name, "", worst_s, static_cast<double>(t.rows.size())));
+  return res;
+}
+
 template <int Dim>
 std::vector<check_result> run_dim(const io::field& spec, const std::vector<const check_input*>& inputs,
                                   const check_options& o) {
@@ -441,6 +502,7 @@ std::vector<check_result> run_dim(const io::field& spec, const std::vector<const
     if (in->kind == check_kind::values) values_layout<Dim>(in->table).check_rows(in->table, d);
     if (in->kind == check_kind::lengths) lengths_layout(in->table).check_rows(in->table, d);
     if (in->kind == check_kind::inverse) inverse_layout(in->table).check_rows(in->table, d, o);
+    if (in->kind == check_kind::at_length) at_length_layout<Dim>{in->table};
   }
   case_reference<Dim> ref(spec);
   // A check by arc length grades answers by a reference that must be far better than double: 1e-20
@@ -448,18 +510,19 @@ std::vector<check_result> run_dim(const io::field& spec, const std::vector<const
   // is rounding at 50 digits (a circle of radius 1e-150 centred at 1e10) has no such reference; its
   // rows would be graded against noise.
   const bool by_length = std::any_of(inputs.begin(), inputs.end(), [](const check_input* in) {
-    return in->kind == check_kind::lengths || in->kind == check_kind::inverse;
+    return in->kind == check_kind::lengths || in->kind == check_kind::inverse || in->kind == check_kind::at_length;
   });
   if (by_length && ref.length() > 0 && !(ref.length_error() <= 1e-20))
     throw invalid_input("the 50-digit reference length L = " + num(ref.length()) + " of this curve is good to " +
                         num(ref.length_error(), 3) +
                         " of L only (its speed is rounding at 50 digits: the curve is too small for its coordinates); "
-                        "--lengths and --inverse need 1e-20");
+                        "--lengths, --inverse and --at-length need 1e-20");
   std::vector<check_result> out;
   for (const check_input* in : inputs) {
-    check_result r = in->kind == check_kind::values    ? check_values(ref, in->table, o)
-                     : in->kind == check_kind::lengths ? check_lengths(ref, in->table, o)
-                                                       : check_inverse(ref, in->table, o);
+    check_result r = in->kind == check_kind::values      ? check_values(ref, in->table, o)
+                     : in->kind == check_kind::lengths   ? check_lengths(ref, in->table, o)
+                     : in->kind == check_kind::at_length ? check_at_length(ref, in->table, o)
+                                                         : check_inverse(ref, in->table, o);
     summarize(r, o.worst);
     out.push_back(std::move(r));
   }
@@ -510,6 +573,16 @@ nlohmann::json row_json(const check_result& res, const check_row& r) {
       j["u"] = r.u;
       j["absolute"] = finite_or_null(r.absolute);
       break;
+    case check_kind::at_length:
+      if (r.s_error >= 0) {
+        j["s"] = r.s;
+        j["s_error"] = r.s_error;
+      }
+      j["u"] = r.u;
+      j["s_true"] = r.s_true;
+      j["off_curve"] = r.off_curve;
+      j["absolute"] = finite_or_null(r.absolute);
+      break;
   }
   j["error"] = finite_or_null(r.error);
   j["relative"] = finite_or_null(r.relative);
@@ -524,6 +597,7 @@ std::string_view to_string(check_kind k) {
     case check_kind::lengths: return "lengths";
     case check_kind::inverse: return "inverse";
     case check_kind::times: return "times";
+    case check_kind::at_length: return "at_length";
   }
   return "?";
 }
@@ -558,7 +632,8 @@ double in_unit(double absolute, double scale, value_unit u) {
 }
 
 std::string unit_text(const check_result& r) {
-  if (r.kind == check_kind::lengths || r.kind == check_kind::inverse) return "relative to L";
+  if (r.kind == check_kind::lengths || r.kind == check_kind::inverse || r.kind == check_kind::at_length)
+    return "relative to L";
   const char* of = r.kind == check_kind::times ? "the value range" : "size";
   switch (r.unit) {
     case value_unit::ulp_double: return std::string("ulps of double x ") + of;
@@ -687,6 +762,7 @@ std::vector<std::string> rows_over(const check_result& r, double max_error) {
       case check_kind::lengths: at = "u0 = " + num(row.u) + ", u1 = " + num(row.u1); break;
       case check_kind::inverse: at = "s = " + num(row.s) + ", u = " + num(row.u); break;
       case check_kind::times: at = "t = " + num(row.t); break;
+      case check_kind::at_length: at = row.s_error >= 0 ? "s = " + num(row.s) : "nearest s = " + num(row.s_true); break;
     }
     out.push_back(r.file + ": row " + std::to_string(row.line) + " (" + at + "): error " + num(row.error, 3) +
                   " > allowed " + num(max_error, 3) + " " + unit_text(r));

@@ -12,6 +12,8 @@
 //            values kind of a channel spec whose table has a t column.
 //   lengths  u0, u1, length (the user's arc length from u0 to u1)
 //   inverse  s, u (the user's parameter at arc length s from the domain's start)
+//   at_length x[,y[,z]] and optionally s: the user's point at arc length s (getPointAtLength(s)), or
+//            points with no s (a path's equally spaced points)
 // Errors per row ("error" is the unit --max-error uses):
 //   values   error = |p - P|_inf / (eps(double) x size), ulps of the curve's size, where size is
 //            the largest coordinate magnitude of the exact points at the rows' parameters and at 65
@@ -28,6 +30,10 @@
 //            with outside_is_finding (the subject API) a u beyond an end by d is measured as
 //            (|s(end) - s| + d |P'(end)|) / L, at least the error of the curve extended along its
 //            end tangent, and listed in findings.
+//   at_length error = relative = |q - P(u(s))| / L, the distance of the user's point q from the exact
+//            point at arc length s; s_error = |s(u*) - s| / L, where u* is the point of the curve
+//            nearest q (case_reference::nearest: how far along the curve the point is off);
+//            s_true = s(u*), off_curve = |q - P(u*)| / L. Without an s column: error = off_curve.
 //   times    abs = |value - V(t)|, V the channel at 50 digits at the user's t (exactly as read): the
 //            truth (the spec's tool rules, the time solver "exact"), or with against = tool the
 //            tool's own evaluation (its default or the spec's solver, in its storage precision:
@@ -47,7 +53,8 @@
 // Records: {"case", "group", "quantity", "method": <the subject's name>, "setting", "error",
 // "estimate": null, "bounded": null, "evaluations": <rows>, "status": "not_guaranteed",
 // "subject": true}; quantity eval (setting "" for points, "derivative=K" for the K-th derivative,
-// error in ulps), s_of_u (an s column), length, u_of_s; error the largest over the rows.
+// error in ulps), s_of_u (an s column), length, u_of_s (inverse; at_length with an s column: the
+// largest s_error); error the largest over the rows.
 #pragma once
 
 #include "harness/csv.hpp"
@@ -65,9 +72,9 @@
 
 namespace curvebench::harness {
 
-enum class check_kind { values, lengths, inverse, times };
+enum class check_kind { values, lengths, inverse, times, at_length };
 
-/// "values", "lengths", "inverse", "times".
+/// "values", "lengths", "inverse", "times", "at_length".
 [[nodiscard]] std::string_view to_string(check_kind k);
 
 /// The unit of a values or times check's errors (see the top of this file).
@@ -113,6 +120,8 @@ struct check_row {
                                           ///< inverse: |s(u) - s| (in the curve's units)
   std::vector<double> derivative_errors;  ///< times: dvalue, d2value in the unit (NaN: not checked)
   double time_error = 0;                  ///< times: abs / |V'(t)| (infinite where V' is 0 or unbounded)
+  double s_true = 0;                      ///< at_length: s(u*) at the curve's point u* nearest the user's
+  double off_curve = 0;                   ///< at_length: |q - P(u*)| / L
 };
 
 struct check_summary {

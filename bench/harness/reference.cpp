@@ -7,8 +7,11 @@
 #include "curvebench/reference/multiprecision.hpp"
 
 #include <algorithm>
+#include <array>
 #include <iomanip>
+#include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -18,9 +21,12 @@ namespace curvebench::harness {
 template <int Dim>
 struct case_reference<Dim>::impl {
   using curve_q = any_curve<real50, Dim>;
-  explicit impl(const io::field& spec) : ref(io::curve_from_spec<real50, Dim>(spec)), L(ref.length()) {}
+  explicit impl(const io::field& given)
+      : ref(io::curve_from_spec<real50, Dim>(given)), L(ref.length()), spec(given.value) {}
   reference::reference_arc_length<curve_q> ref;
   real50 L;
+  nlohmann::json spec;                                  // for the double twin of nearest()'s scan
+  std::optional<any_curve<double, Dim>> twin;           // built on nearest()'s first call
   std::vector<real50> s_ref;                            // s(u_j) of set_s_parameters
   std::map<double, std::pair<real50, real50>> anchors;  // target s -> (u, s(u))
   std::vector<point<real50, Dim>> exact;                // P(u_j) of set_eval_parameters
@@ -155,6 +161,122 @@ void case_reference<Dim>::cache_s(std::span<const double> us,
                                         : cache.back().second + impl_->ref.s_between(real50(cache.back().first), uq));
     if (on_done) on_done(cache.size(), sorted.size());
   }
+}
+
+template <int Dim>
+double case_reference<Dim>::distance_at_length(double s, const point<double, Dim>& q) const {
+  using std::sqrt;
+  // s may be the double nearest L, a rounding above it: that is the end.
+  const point<real50, Dim> p = impl_->ref.curve()(impl_->ref.u(std::min(real50(s), impl_->L)));
+  real50 d2(0);
+  for (int i = 0; i < Dim; ++i) d2 += (real50(q[i]) - p[i]) * (real50(q[i]) - p[i]);
+  return static_cast<double>(sqrt(d2));
+}
+
+template <int Dim>
+typename case_reference<Dim>::nearest_point case_reference<Dim>::nearest(const point<double, Dim>& q,
+                                                                         double s_hint) const {
+  using std::abs, std::sqrt;
+  const any_curve<real50, Dim>& c = impl_->ref.curve();
+  // The scan runs on the double twin (a path of 1000 segments is 32000 samples a point), the polish
+  // at 50 digits on the candidates the scan cannot rule out.
+  if (!impl_->twin) impl_->twin = io::curve_from_spec<double, Dim>(io::field{impl_->spec, "spec"});
+  const any_curve<double, Dim>& cd = *impl_->twin;
+  point<real50, Dim> qq;
+  for (int i = 0; i < Dim; ++i) qq[i] = real50(q[i]);
+  // d2(u) on segment [a, b]: at b the limit from the left (the segment's own end).
+  auto d2_at = [&](const real50& u, const real50& b) {
+    const point<real50, Dim> p = u == b ? c.value_from_left(u) : c(u);
+    return real50((p - qq).squaredNorm());
+  };
+  struct sampled {
+    double lo, u, hi, a, b, dist;  // a local minimum of the sampled distance, its neighbours, its segment
+    double reach;                  // the longer chord to a neighbour: how much closer the curve may come
+  };
+  std::vector<sampled> minima;
+  const std::span<const double> bp = cd.breakpoints();
+  constexpr int samples = 32;
+  double best = std::numeric_limits<double>::infinity(), size = 0;
+  std::array<double, samples + 1> us{}, ds{};
+  std::array<point<double, Dim>, samples + 1> ps{};
+  for (std::size_t k = 0; k + 1 < bp.size(); ++k) {
+    const double a = bp[k], b = bp[k + 1];
+    for (int j = 0; j <= samples; ++j) {
+      us[j] = j == samples ? b : a + (b - a) * j / samples;
+      ps[j] = j == samples ? cd.value_from_left(b) : cd(us[j]);
+      ds[j] = safe_norm(point<double, Dim>(ps[j] - q));
+      size = std::max(size, ps[j].cwiseAbs().maxCoeff());
+    }
+    for (int j = 0; j <= samples; ++j) {
+      if ((j > 0 && ds[j] > ds[j - 1]) || (j < samples && ds[j] > ds[j + 1])) continue;  // not a local minimum
+      const int lo = j > 0 ? j - 1 : 0, hi = j < samples ? j + 1 : samples;
+      const double reach =
+          std::max(safe_norm(point<double, Dim>(ps[lo] - ps[j])), safe_norm(point<double, Dim>(ps[hi] - ps[j])));
+      minima.push_back({us[lo], us[j], us[hi], a, b, ds[j], reach});
+      best = std::min(best, ds[j]);
+    }
+  }
+  // Between samples the curve may come closer than a sampled minimum by about the chord to its
+  // neighbour (twice that, for the arc's bulge): a minimum that close to twice the best, plus the
+  // double rounding of the distances (the curve's size), stays a candidate.
+  const double keep = 2 * best + 1e-9 * static_cast<double>(impl_->L) +
+                      1e3 * std::numeric_limits<double>::epsilon() * (size + q.cwiseAbs().maxCoeff());
+  struct candidate {
+    real50 u, d2;
+  };
+  std::vector<candidate> found;
+  for (const sampled& m : minima) {
+    if (m.dist - 2 * m.reach > keep) continue;
+    const real50 a(m.a), b(m.b);
+    // Safeguarded Newton on g(u) = (P - q) . P' inside [lo, hi], bisection where g' <= 0 or the step
+    // leaves the bracket; g(lo) < 0 < g(hi) when the minimum is interior.
+    real50 lo(m.lo), hi(m.hi);
+    auto g = [&](const real50& u, real50& dg) {
+      const point<real50, Dim> p = c(u), d1 = c.derivative(u, 1), d2 = c.derivative(u, 2);
+      dg = d1.squaredNorm() + (p - qq).dot(d2);
+      return real50((p - qq).dot(d1));
+    };
+    // At the segment's end b, g is taken just before it: there the curve may already be the next
+    // segment's (a breakpoint belongs to the segment on its right).
+    const real50 before_b = b - (b - a) * real50(1e-40);
+    real50 dg(0);
+    const real50 glo = g(lo, dg), ghi = g(hi < b ? hi : before_b, dg);
+    real50 u(m.u);
+    if (glo < 0 && ghi > 0) {
+      for (int it = 0; it < 200 && hi - lo > real50(1e-45) * (abs(a) + abs(b) + 1); ++it) {
+        const real50 gu = g(u, dg);
+        if (gu == 0) break;
+        (gu < 0 ? lo : hi) = u;
+        real50 next = dg > 0 ? real50(u - gu / dg) : real50((lo + hi) / 2);
+        if (!(next > lo && next < hi)) next = (lo + hi) / 2;
+        if (abs(next - u) <= real50(1e-45) * (abs(u) + 1)) {
+          u = next;
+          break;
+        }
+        u = next;
+      }
+    }
+    found.push_back({u, d2_at(u, b)});
+  }
+  real50 least = found.front().d2;
+  for (const candidate& f : found) least = std::min(least, f.d2);
+  // Branches about as close as the nearest one: the one whose s is nearest the hint.
+  const real50 near = 2 * sqrt(least) + real50(1e-12) * impl_->L;
+  const bool hinted = !std::isnan(s_hint);
+  const candidate* pick = nullptr;
+  real50 pick_s(0), pick_key(0);
+  for (const candidate& f : found) {
+    if (sqrt(f.d2) > near) continue;
+    const real50 sf = impl_->ref.s(f.u);
+    const real50 key = hinted ? real50(abs(sf - real50(s_hint))) : f.d2;
+    if (pick == nullptr || key < pick_key) pick = &f, pick_s = sf, pick_key = key;
+  }
+  nearest_point r;
+  r.u = static_cast<double>(pick->u);
+  r.distance = static_cast<double>(sqrt(pick->d2));
+  r.s = static_cast<double>(pick_s);
+  r.ds = hinted ? static_cast<double>(abs(pick_s - real50(s_hint)) / impl_->L) : 0.0;
+  return r;
 }
 
 template <int Dim>

@@ -72,6 +72,26 @@ class case_reference {
   /// |value - (s(u1) - s(u0))|, the difference taken in 50 digits, then rounded.
   [[nodiscard]] double length_between_error(double u0, double u1, double value) const;
 
+  /// |q - P(u(s))|, the distance of a point q from the curve's exact point at arc length s
+  /// (0 <= s <= L, or the double nearest L above it; u(s) solved at 50 digits), the difference taken
+  /// in 50 digits, then rounded.
+  [[nodiscard]] double distance_at_length(double s, const point<double, Dim>& q) const;
+
+  /// The point of the curve nearest to q: its parameter, |q - P(u*)|, and the arc length s(u*) (all
+  /// at 50 digits, rounded). Candidates are the local minima of |q - P| over 32 samples per segment
+  /// (each segment on its own, ending at its limit from the left, so a jump between subpaths is no
+  /// candidate), each polished by safeguarded Newton on (P - q) . P' = 0. Where q lies about as
+  /// close to several branches (a loop's crossing, a cusp's two sides: within twice the smallest
+  /// distance plus 1e-12 L), the one whose s is nearest s_hint is taken when s_hint is given (not
+  /// NaN), the one nearest q otherwise.
+  struct nearest_point {
+    double u = 0;
+    double distance = 0;  ///< |q - P(u*)|
+    double s = 0;         ///< s(u*)
+    double ds = 0;        ///< |s(u*) - s_hint| / L (0 without a hint)
+  };
+  [[nodiscard]] nearest_point nearest(const point<double, Dim>& q, double s_hint) const;
+
   /// Evaluates the exact points P(u_j) at the parameters us and the curve's size (the largest
   /// coordinate magnitude among them; 1 when all are 0) for eval_error.
   void set_eval_parameters(std::span<const double> us);

@@ -50,7 +50,7 @@ void print_table(const check_result& r, const std::string& spec) {
   std::cout << "): max " << g(r.summary.max) << ", rms " << g(r.summary.rms);
   std::cout << "; absolute" << (values || times ? "" : " (in the curve's length units)") << ": max "
             << g(r.summary.max_absolute);
-  if (r.kind != check_kind::inverse && r.kind != check_kind::times)
+  if (r.kind != check_kind::inverse && r.kind != check_kind::times && r.kind != check_kind::at_length)
     std::cout << "; relative" << (values ? " to size" : " to the segment") << ": max " << g(r.summary.max_relative)
               << ", rms " << g(r.summary.rms_relative);
   if (times) {  // a row where the value is flat has no time error (its column shows "-"): not a max of inf
@@ -80,6 +80,7 @@ void print_table(const check_result& r, const std::string& spec) {
     case check_kind::lengths: std::cout << std::setw(24) << "u0" << std::setw(24) << "u1"; break;
     case check_kind::inverse: std::cout << std::setw(24) << "s" << std::setw(24) << "u"; break;
     case check_kind::times: std::cout << std::setw(24) << "t"; break;
+    case check_kind::at_length: std::cout << std::setw(24) << "s" << std::setw(24) << "nearest s"; break;
   }
   std::cout << std::setw(11) << "error";
   if (values) {
@@ -91,6 +92,8 @@ void print_table(const check_result& r, const std::string& spec) {
     std::cout << std::setw(11) << "/segment" << std::setw(11) << "absolute";
   } else if (r.kind == check_kind::inverse) {
     std::cout << std::setw(11) << "absolute";
+  } else if (r.kind == check_kind::at_length) {
+    std::cout << std::setw(11) << "s_error/L" << std::setw(11) << "off/L";
   } else if (times) {
     std::cout << std::setw(11) << "absolute";
     for (std::size_t k = 0; k < r.derivative_sizes.size(); ++k)
@@ -106,6 +109,10 @@ void print_table(const check_result& r, const std::string& spec) {
       case check_kind::lengths: std::cout << std::setw(24) << g(row.u, 17) << std::setw(24) << g(row.u1, 17); break;
       case check_kind::inverse: std::cout << std::setw(24) << g(row.s, 17) << std::setw(24) << g(row.u, 17); break;
       case check_kind::times: std::cout << std::setw(24) << g(row.t, 17); break;
+      case check_kind::at_length:
+        std::cout << std::setw(24) << (row.s_error >= 0 ? g(row.s, 17) : std::string("-")) << std::setw(24)
+                  << g(row.s_true, 17);
+        break;
     }
     std::cout << std::setw(11) << g(row.error);
     if (values) {
@@ -117,6 +124,9 @@ void print_table(const check_result& r, const std::string& spec) {
       std::cout << std::setw(11) << g(row.relative) << std::setw(11) << g(row.absolute);
     } else if (r.kind == check_kind::inverse) {
       std::cout << std::setw(11) << g(row.absolute);
+    } else if (r.kind == check_kind::at_length) {
+      std::cout << std::setw(11) << (row.s_error >= 0 ? g(row.s_error) : std::string("-")) << std::setw(11)
+                << g(row.off_curve);
     } else if (times) {
       std::cout << std::setw(11) << g(row.absolute);
       for (std::size_t k = 0; k < row.derivative_errors.size(); ++k)
@@ -131,9 +141,10 @@ void print_table(const check_result& r, const std::string& spec) {
 
 /// The limit of a check kind: its own option, else --max-error (< 0: none).
 double limit_of(const check_args& a, check_kind k) {
-  const double own = k == check_kind::lengths   ? a.max_length_error
-                     : k == check_kind::inverse ? a.max_inverse_error
-                                                : a.max_value_error;
+  const double own = k == check_kind::lengths     ? a.max_length_error
+                     : k == check_kind::inverse   ? a.max_inverse_error
+                     : k == check_kind::at_length ? a.max_at_length_error
+                                                  : a.max_value_error;
   return own >= 0 ? own : a.max_error;
 }
 
@@ -156,12 +167,18 @@ CLI::App* add_check(CLI::App& app, check_args& a) {
   chk->add_option("--lengths", a.lengths, "CSV of arc lengths: u0,u1,length")->check(CLI::ExistingFile);
   chk->add_option("--inverse", a.inverse, "CSV of inverse parameters: s,u (your u at arc length s)")
       ->check(CLI::ExistingFile);
+  chk->add_option("--at-length", a.at_length,
+                  "CSV of points at arc length: s,x[,y[,z]] (your point at arc length s from the domain's start, e.g. "
+                  "SVG's getPointAtLength(s)): error |q - P(s)| / L, and s_error, how far along the curve your point "
+                  "is from s (measured at the curve's point nearest yours); without s (x[,y[,z]] only: equally spaced "
+                  "points) each point's nearest arc length s_true and its distance from the curve")
+      ->check(CLI::ExistingFile);
   chk->add_option("--name", a.name, "your implementation's name: the method of the records (default values)");
   chk->add_flag("--json", a.json, "JSON on stdout: per check the summary, the worst rows, every row, the records");
   chk->add_option("--max-error", a.max_error,
                   "largest allowed row error of every kind without a limit of its own: in --unit for --values "
                   "(points and derivatives, each against its own size), relative to the total length L for "
-                  "--lengths and --inverse")
+                  "--lengths, --inverse and --at-length")
       ->check(non_negative_finite());
   chk->add_option("--max-value-error", a.max_value_error, "largest allowed --values row error, in --unit")
       ->check(non_negative_finite());
@@ -170,6 +187,9 @@ CLI::App* add_check(CLI::App& app, check_args& a) {
       ->check(non_negative_finite());
   chk->add_option("--max-inverse-error", a.max_inverse_error,
                   "largest allowed --inverse row error: |s(u) - s| relative to the total length L")
+      ->check(non_negative_finite());
+  chk->add_option("--max-at-length-error", a.max_at_length_error,
+                  "largest allowed --at-length row error: |q - P(s)| relative to the total length L")
       ->check(non_negative_finite());
   chk->add_option("--unit", a.unit,
                   "unit of --values errors: ulp-double (eps(double) x the size; a channel's: x its value range), "
@@ -205,7 +225,9 @@ int run_check(const check_args& a) {
   if (!a.values.empty()) inputs.push_back({check_kind::values, harness::read_csv(a.values, true)});
   if (!a.lengths.empty()) inputs.push_back({check_kind::lengths, harness::read_csv(a.lengths)});
   if (!a.inverse.empty()) inputs.push_back({check_kind::inverse, harness::read_csv(a.inverse)});
-  if (inputs.empty()) throw invalid_input("check: nothing to check: give --values, --lengths or --inverse FILE");
+  if (!a.at_length.empty()) inputs.push_back({check_kind::at_length, harness::read_csv(a.at_length)});
+  if (inputs.empty())
+    throw invalid_input("check: nothing to check: give --values, --lengths, --inverse or --at-length FILE");
   const nlohmann::json j = read_spec(a.spec);
   const io::field spec = io::root(j, a.spec);
   harness::check_options o;
@@ -245,7 +267,7 @@ int run_check(const check_args& a) {
     if (a.max_error >= 0) out["max_error"] = a.max_error;
     for (const auto& [key, v] :
          {std::pair{"max_value_error", a.max_value_error}, std::pair{"max_length_error", a.max_length_error},
-          std::pair{"max_inverse_error", a.max_inverse_error}})
+          std::pair{"max_inverse_error", a.max_inverse_error}, std::pair{"max_at_length_error", a.max_at_length_error}})
       if (v >= 0) out[key] = v;
     out["failures"] = failures;
     out["passed"] = failures.empty();
@@ -255,7 +277,7 @@ int run_check(const check_args& a) {
     for (const check_result& r : results) print_table(r, a.spec);
     for (const auto& f : failures) std::cout << f << "\n";
     if (a.max_error >= 0 || a.max_value_error >= 0 || a.max_length_error >= 0 || a.max_inverse_error >= 0 ||
-        !a.thresholds.empty())
+        a.max_at_length_error >= 0 || !a.thresholds.empty())
       std::cout << "check: " << (failures.empty() ? "passed" : std::to_string(failures.size()) + " failures") << "\n";
   }
   if (!failures.empty()) say_verdict("check", failures.size(), "failure", "failures");
