@@ -19,8 +19,9 @@ namespace curvebench::harness {
 
 /// The suite's name and version: bump the version when a case changes, so reports are comparable.
 inline constexpr const char* suite_name = "curvebench-cases";
-inline constexpr int suite_version = 3;  // 2: conic_ellipse_arc and rational_cubic_weighted added;
-                                         // 3: catmull_rom_centripetal_end_controls_2d added
+inline constexpr int suite_version = 4;  // 2: conic_ellipse_arc and rational_cubic_weighted added;
+                                         // 3: catmull_rom_centripetal_end_controls_2d added;
+                                         // 4: the svg_* corpus of issue 35 added
 
 struct case_info {
   std::string name;
