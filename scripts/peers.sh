@@ -12,7 +12,8 @@
 #                                  and exit 1 if any would (scripts/bench.sh --publish asks first)
 # Drivers: scripts/peers/scipy_driver.py (SciPy: CubicSpline, make_interp_spline, BSpline, quad);
 # scripts/peers/easing_driver.mjs (Node: bezier-easing 3.2.0 and 2.1.0, @mapbox/unitbezier 1.0.0,
-# pinned in scripts/peers/node/package.json and installed into build-peers/node), measured by
+# @babylonjs/core's BezierCurve.Interpolate, pinned in scripts/peers/node/package.json and installed
+# into build-peers/node), measured by
 # scripts/peers/easing_results.py against a 50-digit truth of the CSS cubic-bezier definition;
 # scripts/peers/chromium_driver.py (headless Chromium, Debian's chromium, major >= 112: Blink's CSS
 # cubic-bezier() and steps() through the Web Animations API), measured the same way;
@@ -26,6 +27,14 @@
 # glTF channel case as a GLB through three's GLTFLoader and evaluates the track's interpolant
 # (float32 keys and results), measured by scripts/peers/gltf_results.py against the glTF 2.0
 # sampler of the case's keys at 60 digits, beside curvebench's gltf model (`curvebench sample`).
+# scripts/peers/shipped_browser_driver.py (headless Chromium and Debian's firefox-esr, whichever is
+# installed): SVG getTotalLength() and getPointAtLength() of a <path> and of the basic shape, on the
+# request of scripts/peers/shipped_request.py, measured by scripts/peers/shipped_results.py.
+# scripts/peers/shipped_node_driver.mjs (Node: bezier-js, svg-path-properties, paper, svg-path-commander,
+# three's curves and SVGLoader, canvaskit-wasm, @babylonjs/core, pinned in the same package.json): their
+# arc lengths and points at length on the same request, measured by scripts/peers/shipped_results.py.
+# scripts/peers/lottie_driver.py (lottie-web, pinned in the same package.json, played in headless Chromium):
+# a layer's position along a spatial Bezier with eased timing, against s = L E(f) by `curvebench check --at-length`.
 # The Node drivers share scripts/peers/node_driver.mjs (command line, sample times, ns per call).
 # Each driver's values are measured by `curvebench check` against the 50-digit reference of the
 # case's spec (scripts/peers/peer_results.py joins them), so the truth is never a double
@@ -52,7 +61,7 @@ done
 # way), so an exact pin breaks the next fresh install. Comparability comes from the record instead:
 # every driver writes the version it ran (Chromium's, SciPy's, Blender's, Node's) into its result,
 # and the report shows it. Where a driver depends on a major version it is checked below.
-apt_packages=(python3-scipy python3-numpy python3-mpmath chromium chromium-common blender)
+apt_packages=(python3-scipy python3-numpy python3-mpmath chromium chromium-common firefox-esr blender)
 
 installed() {  # package -> 0 when installed (any version)
   [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
@@ -88,6 +97,7 @@ if [[ $install -eq 1 ]]; then
   # chromium_driver.py loads pages with --headless=new (Chromium 112 and later); scipy_driver.py
   # uses SciPy 1.x's integrate and interpolate interfaces.
   require_major chromium 112 "the driver runs --headless=new"
+  require_major firefox-esr 60 "shipped_browser_driver.py runs --headless, privacy.reduceTimerPrecision off"
   require_major python3-scipy 1 "scipy_driver.py uses SciPy 1's interfaces"
   # blender_fcurves.py was written and its recordings made against Debian's Blender 3.4.
   require_major blender 3 "blender_fcurves.py uses Blender 3's F-curve API"
@@ -189,6 +199,15 @@ run_three() {
                    --tool "$tool" --work "$work/model" --out "$reports/peers_three.json"
 }
 
+# Arc length and point at length in npm libraries (issue 35), on shipped_request.py's request.
+run_shipped_node() {
+  /usr/bin/python3 "$root/scripts/peers/shipped_request.py" --tool "$tool" --cases "$root/bench/cases" --out "$work/request.json"
+  node_driver shipped_node_driver --request "$work/request.json" --out "$work/shipped_node_driver.json"
+  /usr/bin/python3 "$root/scripts/peers/shipped_results.py" --driver "$work/shipped_node_driver.json" \
+                   --request "$work/request.json" --cases "$root/bench/cases" --tool "$tool" --work "$work/check" \
+                   --out "$reports/peers_shipped_node.json"
+}
+
 run_chromium() {
   mkdir -p "$work/curvebench"
   /usr/bin/python3 "$root/scripts/peers/chromium_driver.py" --cases "$root/bench/cases" \
@@ -198,6 +217,22 @@ run_chromium() {
                    --cases "$root/bench/cases" --tool "$tool" --out "$work/curvebench"
   /usr/bin/python3 "$root/scripts/peers/easing_results.py" --driver "$work/chromium_driver.json" \
                    --cases "$root/bench/cases" --curvebench-dir "$work/curvebench" --out "$reports/peers_chromium.json"
+}
+
+# SVG lengths in the browsers that are installed (the driver lists a missing one's runs as skipped).
+run_shipped_browser() {
+  /usr/bin/python3 "$root/scripts/peers/shipped_request.py" --tool "$tool" --cases "$root/bench/cases" --out "$work/request.json"
+  /usr/bin/python3 "$root/scripts/peers/shipped_browser_driver.py" --request "$work/request.json" \
+                   --out "$work/shipped_browser_driver.json" --work "$work/browsers"
+  /usr/bin/python3 "$root/scripts/peers/shipped_results.py" --driver "$work/shipped_browser_driver.json" \
+                   --request "$work/request.json" --cases "$root/bench/cases" --tool "$tool" --work "$work/check" \
+                   --out "$reports/peers_shipped_browser.json"
+}
+
+# lottie-web's layer position on a spatial Bezier with eased timing, in headless Chromium (issue 35).
+run_lottie() {
+  /usr/bin/python3 "$root/scripts/peers/lottie_driver.py" --lottie "$node_dir/node_modules/lottie-web" \
+                   --tool "$tool" --work "$work" --out "$reports/peers_lottie.json"
 }
 
 # Whether the drivers' requirements are there: a Python module; a pinned npm package in
@@ -239,10 +274,19 @@ optional penner "d3-ease (Node $node_version)" \
   "d3-ease is not installed (node, build-peers/node, python3-mpmath); skipped" node_has d3-ease
 optional three "three.js glTF interpolants (Node $node_version)" \
   "three is not installed (node, build-peers/node, python3-mpmath); skipped" node_has three
+optional shipped_node "arc length in npm libraries (Node $node_version)" \
+  "the arc-length npm peers are not installed (node, build-peers/node, python3-mpmath); skipped" node_has canvaskit-wasm
 optional blender "real Blender ($(blender --version 2>/dev/null | head -n 1))" \
   "blender is not on PATH (or python3-mpmath is missing); the real-Blender comparison is not run" on_path blender
 optional chromium "$(chromium --version 2>/dev/null | head -n 1)" \
   "Chromium is not installed (chromium, python3-mpmath); skipped" on_path chromium
+browser_on_path() { command -v chromium >/dev/null || command -v firefox-esr >/dev/null; }
+optional shipped_browser "SVG lengths in $(chromium --version 2>/dev/null | head -n 1) $(firefox-esr --version 2>/dev/null | head -n 1)" \
+  "neither chromium nor firefox-esr is installed; the browsers' SVG lengths are skipped" browser_on_path
+# lottie's truth is the tool's (its 50-digit CSS easing and Bezier): no node, no mpmath.
+lottie_ready() { command -v chromium >/dev/null && [[ -f "$node_dir/node_modules/lottie-web/build/player/lottie_svg.min.js" ]]; }
+optional lottie "lottie-web in $(chromium --version 2>/dev/null | head -n 1)" \
+  "chromium or lottie-web (build-peers/node) is not installed; lottie's motion is skipped" lottie_ready
 if [[ $check -eq 1 ]]; then
   [[ $absent -eq 0 ]] && echo "peers.sh: every optional peer is installed"
   [[ $absent -eq 0 ]]

@@ -32,6 +32,7 @@ import report_channel as rc  # noqa: E402
 import report_history  # noqa: E402
 import report_lib as lib  # noqa: E402
 import report_peers  # noqa: E402
+import report_shipped  # noqa: E402
 import report_summary  # noqa: E402
 import safe_output  # noqa: E402
 
@@ -336,6 +337,8 @@ def render_results(h, plots):
                      for p in h["peers"]]) if h["peers"] else "No peer benchmarks in this run.")
     if h.get("peers_section"):  # REPORT.md's Peers section: accuracy, findings, versions (report_peers.py)
         md += h["peers_section"]
+    if h.get("shipped_section"):  # REPORT.md's "Arc length in shipped software" (report_shipped.py)
+        md += h["shipped_section"]
     md += ["", "## Fastest reaching an error target (benchmarks)", ""]
     md.append(table(["family", "error counter", "target", "fastest", "ns per op", "fastest peer", "ns per op"],
                     [[t["family"], t["counter"], f"{t['target']:g}", t["best"] or "none reached", t["best_ns"],
@@ -411,7 +414,8 @@ def choose_plots(plot_dir, ranked=()):
     """At most MAX_PLOTS of the run's plots: the convergence plot, then the per-case error-vs-time
     plots of the cases `ranked` (featured(): where the methods differ most), then the rest by name."""
     pareto = sorted(os.path.basename(p) for p in glob.glob(os.path.join(plot_dir, "pareto_length_*.png")))
-    chosen = [n for n in ("convergence.png",) if os.path.exists(os.path.join(plot_dir, n))]
+    chosen = [n for n in ("convergence.png", "shipped_length_vs_extent.png", "shipped_length_vs_offset.png")
+              if os.path.exists(os.path.join(plot_dir, n))]
     for case in ranked:
         name = f"pareto_length_{''.join(c if c.isalnum() else '_' for c in case).strip('_')}.png"
         if name in pareto and name not in chosen:
@@ -467,6 +471,9 @@ def publish(report_dir, docs_dir, readme, allow_quick=False, allow_missing_peers
     if h["run"]["quick"] and not allow_quick:
         raise PublishError(f"{report_dir}/accuracy.json is a quick run: publish a full `scripts/bench.sh` run")
     h.update(run_sections(report_dir, acc, bench_rows, vocab, allow_missing_peers))
+    # The shipped-software section links its plots where docs/results.md finds them (results/).
+    h["shipped_section"] = report_shipped.section(acc, report_dir, os.path.join(report_dir, "plots"),
+                                                  link_prefix="results/")
     out = os.path.join(docs_dir, "results")
     os.makedirs(out, exist_ok=True)
     plots = choose_plots(os.path.join(report_dir, "plots"), [f["case"] for f in h.get("featured", [])])

@@ -35,6 +35,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_lib as lib  # noqa: E402
 import safe_output  # noqa: E402
 import report_peers  # noqa: E402
+import report_shipped  # noqa: E402
 import report_channel  # noqa: E402
 import report_summary  # noqa: E402
 import report_history  # noqa: E402
@@ -553,6 +554,7 @@ def main():
                         lib.subject_rows(records, subjects)))
 
     md += report_peers.peers_section(acc, report_dir, bench_rows, vocab)
+    md += report_shipped.section(acc, report_dir, plot_dir, plt, atomic_savefig)
 
     md += ["", "## Convergence orders", ""]
     if orders:

@@ -36,12 +36,20 @@ EPS_DOUBLE = 2.0 ** -52
 
 # The optional peers scripts/peers.sh runs, by the driver name their peers_<driver>.json carries.
 OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
-                    "easing": "bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)",
+                    "easing": ("bezier-easing 3.2.0 / 2.1.0, @mapbox/unitbezier and Babylon.js's "
+                               "BezierCurve.Interpolate (scripts/peers/easing_driver.mjs)"),
                     "chromium": ("headless Chromium, CSS easing through the Web Animations API "
                                  "(scripts/peers/chromium_driver.py)"),
                     "penner": "d3-ease's Penner easings (scripts/peers/penner_driver.mjs)",
                     "blender": "real Blender F-curves (scripts/peers/blender_channels.py; needs blender on PATH)",
-                    "three": "three.js's glTF interpolants (scripts/peers/gltf_driver.mjs)"}
+                    "three": "three.js's glTF interpolants (scripts/peers/gltf_driver.mjs)",
+                    "shipped_node": ("arc length in npm libraries: bezier-js, svg-path-properties, paper, "
+                                     "svg-path-commander, three.js curves, canvaskit-wasm (Skia), Babylon.js "
+                                     "(scripts/peers/shipped_node_driver.mjs)"),
+                    "shipped_browser": ("SVG getTotalLength / getPointAtLength in headless Chromium and Firefox ESR "
+                                        "(scripts/peers/shipped_browser_driver.py)"),
+                    "lottie": ("lottie-web's position along a spatial Bezier with eased timing, in headless Chromium "
+                               "(scripts/peers/lottie_driver.py)")}
 
 
 def load_peer_files(report_dir):
@@ -82,7 +90,9 @@ def version_rows(acc, peer_files):
             for lib_name, version in sorted(acc.get("context", {}).get("peers", {}).items())]
     for path, data in peer_files:
         versions = ", ".join(f"{k} {v}" for k, v in data.get("versions", {}).items())
-        rows.append([versions, f"{os.path.basename(path)} (scripts/peers.sh)", len(data["peer_records"])])
+        # The shipped-software drivers' measurements are rows of their own section (report_shipped.py).
+        rows.append([versions, f"{os.path.basename(path)} (scripts/peers.sh)",
+                     len(data["peer_records"]) + len(data.get("rows", []))])
     return rows
 
 
@@ -182,7 +192,8 @@ def finding_items(peer_records, own_records=()):
     "beyond_tolerance"); an error estimate that does not bound the true error ("estimate_under"); an
     evaluation (value or derivative) at least EVAL_FINDING_ULPS eps(double) x size from the exact
     curve ("eval_error"), with curvebench's default evaluation of the same case beside it when
-    own_records has it; a value beyond the precision the peer documents ("beyond_documented").
+    own_records has it; a value beyond the precision the peer documents ("beyond_documented"); NaN or
+    infinite values among an evaluation's ("non_finite": the record's count, excess infinite).
     Each item: {"peer", "case", "quantity", "setting", "kind", "text" (the sentence after
     "<peer> on <case> (<setting>): "), "excess" (how many times the defect exceeds what the peer
     promised: the tolerance, its own estimate, EVAL_FINDING_ULPS, its documented precision; the
@@ -220,6 +231,11 @@ def finding_items(peer_records, own_records=()):
             add(r, "beyond_documented", f"absolute error {lib.fmt(abs_err)} in its value ({lib.fmt(err)} eps(double) "
                 f"x size), beyond the {lib.fmt(doc_tol)} it documents as its solver's precision.",
                 abs_err / doc_tol if doc_tol > 0 else math.inf)
+        if isinstance(r.get("non_finite"), int) and r["non_finite"] > 0:  # a NaN or infinity among its values
+            measured = (f"; its error {lib.fmt(err)} eps(double) x size is over the others"
+                        if isinstance(err, (int, float)) else "")
+            add(r, "non_finite", f"{r['non_finite']} of {r.get('evaluations')} values not finite (NaN or infinity)"
+                f"{measured}.", math.inf)
         if r.get("bounded") is False and isinstance(err, (int, float)) and isinstance(est, (int, float)):
             under = f"under by {lib.fmt(err / est)}x; " if est > 0 else ""  # not "under by infx" for an estimate 0
             add(r, "estimate_under", f"its error estimate {lib.fmt(est)} does not bound its true error {lib.fmt(err)} "

@@ -218,6 +218,41 @@ inline constexpr peer blender_fcurve{"peer_blender_fcurve", "Blender",
 // loaded as GLBs by its GLTFLoader, evaluated by the animation track's interpolant (float32).
 inline constexpr peer three_gltf{"peer_three_gltf", "three",
                                  "three 0.187.0: GLTFLoader's animation track, track.createInterpolant().evaluate(t)"};
+// Arc length and point at length in shipped software (issue 35; optional: scripts/peers.sh runs
+// scripts/peers/shipped_browser_driver.py and shipped_node_driver.mjs on shipped_request.py's
+// request, `curvebench check --at-length` measures them into reports/peers_shipped_*.json).
+inline constexpr peer chromium_path{"peer_chromium_path", "Chromium",
+                                    "Chromium (Debian): SVGPathElement getTotalLength / getPointAtLength of a <path>"};
+inline constexpr peer chromium_shape{"peer_chromium_shape", "Chromium",
+                                     "Chromium (Debian): getTotalLength / getPointAtLength of a <circle>, <ellipse> or "
+                                     "<rect> (Skia's contour measure)"};
+inline constexpr peer firefox_path{"peer_firefox_path", "Firefox ESR",
+                                   "Firefox ESR (Debian): getTotalLength / getPointAtLength of a <path>"};
+inline constexpr peer firefox_shape{"peer_firefox_shape", "Firefox ESR",
+                                    "Firefox ESR (Debian): getTotalLength / getPointAtLength of a basic shape"};
+inline constexpr peer bezier_js{"peer_bezier_js", "bezier-js", "bezier-js: Bezier.length() (one Gauss-Legendre panel)"};
+inline constexpr peer svg_path_properties{"peer_svg_path_properties", "svg-path-properties",
+                                          "svg-path-properties: getTotalLength / getPointAtLength"};
+inline constexpr peer paper{"peer_paper", "paper", "paper.js (headless): Path length / getPointAt"};
+inline constexpr peer svg_path_commander{"peer_svg_path_commander", "svg-path-commander",
+                                         "svg-path-commander: getTotalLength / getPointAtLength utilities"};
+inline constexpr peer three_curve{"peer_three_curve", "three",
+                                  "three: CubicBezierCurve / QuadraticBezierCurve getLength, getPointAt, "
+                                  "getSpacedPoints (arcLengthDivisions chords)"};
+inline constexpr peer three_svgloader{"peer_three_svgloader", "three",
+                                      "three: SVGLoader's paths as CurvePath, getLength / getPointAt"};
+inline constexpr peer skia_contour_measure{"peer_skia_contour_measure", "Skia",
+                                           "Skia through canvaskit-wasm: ContourMeasureIter length and getPosTan, "
+                                           "resScale as the setting"};
+inline constexpr peer babylon_curve3{"peer_babylon_curve3", "Babylon.js",
+                                     "@babylonjs/core: Curve3.CreateCubicBezier / CreateQuadraticBezier length(), "
+                                     "Path3D getPointAt"};
+inline constexpr peer babylon_bezier_interpolate{"peer_babylon_bezier_interpolate", "Babylon.js",
+                                                 "@babylonjs/core: BezierCurve.Interpolate, a cubic-bezier easing by 5 "
+                                                 "Newton steps from t, clamped, without a convergence test"};
+inline constexpr peer lottie_web_position{"peer_lottie_web_position", "lottie-web",
+                                          "lottie-web in headless Chromium: a layer's position along spatial Bezier "
+                                          "keyframes with eased timing"};
 }  // namespace peers
 
 inline constexpr const peer* all_peers[] = {&peers::boost_gauss,
@@ -248,7 +283,21 @@ inline constexpr const peer* all_peers[] = {&peers::boost_gauss,
                                             &peers::d3_ease,
                                             &peers::chromium_waapi,
                                             &peers::blender_fcurve,
-                                            &peers::three_gltf};
+                                            &peers::three_gltf,
+                                            &peers::chromium_path,
+                                            &peers::chromium_shape,
+                                            &peers::firefox_path,
+                                            &peers::firefox_shape,
+                                            &peers::bezier_js,
+                                            &peers::svg_path_properties,
+                                            &peers::paper,
+                                            &peers::svg_path_commander,
+                                            &peers::three_curve,
+                                            &peers::three_svgloader,
+                                            &peers::skia_contour_measure,
+                                            &peers::babylon_curve3,
+                                            &peers::babylon_bezier_interpolate,
+                                            &peers::lottie_web_position};
 
 /// What one item of a benchmark is: the unit of its time per operation.
 struct operation {

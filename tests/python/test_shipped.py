@@ -1,0 +1,162 @@
+"""The arc-length peers' pipeline (issue 35) with the tool itself (CURVEBENCH_TOOL; ctest shipped):
+scripts/peers/shipped_request.py's request, shipped_results.py's measurement through `curvebench
+check --at-length`, and scripts/report_shipped.py's section.
+
+The measurement is checked against closed forms, independently of curvebench's reference: on the
+quarter circle of radius 100 (svg_quarter_circle_arc) the point at arc length s is
+100 (cos(s / 100), sin(s / 100)), so a driver answering with it must be measured at rounding level
+(tolerances: 1e-14 of L, a few ulps of the double points and of the 50-digit s(u) rounded), and one
+answering with the point at s + delta must show an s error of delta / L and a point error of the
+chord 2 * 100 * sin(delta / 200) / L. The recorded outputs of the real drivers
+(tests/data/peers/shipped/) are measured too, so their parsing and joining is tested in CI where no
+browser or npm package is installed."""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(HERE, "..", "..")
+sys.path.insert(0, os.path.join(ROOT, "scripts", "peers"))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import report_shipped  # noqa: E402
+import shipped_results  # noqa: E402
+
+CASES = os.path.join(ROOT, "bench", "cases")
+RECORDED = os.path.join(ROOT, "tests", "data", "peers", "shipped")
+TOOL = os.environ.get("CURVEBENCH_TOOL")
+R = 100.0
+L = math.pi * R / 2
+
+
+def circle_point(s):
+    return [R * math.cos(s / R), R * math.sin(s / R)]
+
+
+class Pure(unittest.TestCase):
+    def test_spacing_cv_is_zero_for_equal_gaps_and_the_population_cv_otherwise(self):
+        self.assertEqual(shipped_results.spacing_cv([0.0, 1.0, 2.0, 3.0]), 0.0)
+        # gaps 1 and 3: mean 2, population standard deviation 1.
+        self.assertAlmostEqual(shipped_results.spacing_cv([0.0, 1.0, 4.0]), 0.5, places=15)
+        self.assertIsNone(shipped_results.spacing_cv([0.0, 1.0]))
+
+    def test_a_run_with_the_wrong_number_of_points_or_a_nan_is_refused_naming_it(self):
+        request = {"format": shipped_results.REQUEST_FORMAT, "cases": [{"case": "c", "s": [0, 1]}]}
+        driver = {"format": shipped_results.DRIVER_FORMAT,
+                  "runs": [{"peer": "peer_x", "case": "c", "points": [[0, 0]]}]}
+        with self.assertRaisesRegex(shipped_results.ShippedError, r"runs\[0\] \(peer_x, c\): 1 points"):
+            shipped_results.validate(driver, request)
+        driver["runs"][0]["points"] = [[0, 0], [float("nan"), 1]]
+        with self.assertRaisesRegex(shipped_results.ShippedError, r"points\[1\]"):
+            shipped_results.validate(driver, request)
+        driver["runs"][0] = {"peer": "peer_x", "case": "other"}
+        with self.assertRaisesRegex(shipped_results.ShippedError, "not in the request"):
+            shipped_results.validate(driver, request)
+
+    def test_the_section_says_not_run_without_results(self):
+        md = report_shipped.section({}, tempfile.mkdtemp())
+        self.assertIn("## Arc length in shipped software", md)
+        self.assertTrue(any(line.startswith("Not run") for line in md))
+
+
+@unittest.skipUnless(TOOL, "needs CURVEBENCH_TOOL (ctest shipped sets it)")
+class WithTool(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp()
+        cls.request_path = os.path.join(cls.work, "request.json")
+        only = "svg_quarter_circle_arc,svg_cusp_fonttools,svg_thin_ellipse,svg_every_command,arch_cubic_bezier"
+        subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "peers", "shipped_request.py"), "--cases", CASES,
+                        "--tool", TOOL, "--out", cls.request_path, "--only", only],
+                       check=True, capture_output=True, timeout=300)
+        with open(cls.request_path, encoding="utf-8") as f:
+            cls.request = json.load(f)
+
+    def case(self, name):
+        return next(c for c in self.request["cases"] if c["case"] == name)
+
+    def test_the_request_holds_curvebench_s_path_data_and_lengths(self):
+        names = [c["case"] for c in self.request["cases"]]
+        self.assertEqual(sorted(names), sorted(["svg_quarter_circle_arc", "svg_cusp_fonttools", "svg_thin_ellipse",
+                                                "svg_every_command", "arch_cubic_bezier"]))
+        q = self.case("svg_quarter_circle_arc")
+        self.assertLess(abs(q["length"] - L) / L, 1e-14)  # adaptive_gk at tol 1e-14
+        self.assertEqual(len(q["s"]), 17)
+        # The grid ends at the length's lower bound (value - estimate): at most L, and close to it.
+        self.assertLessEqual(q["s"][-1], L)
+        self.assertGreater(q["s"][-1], L * (1 - 1e-11))  # adaptive_gk's estimate is conservative
+        e = self.case("svg_thin_ellipse")  # a shape: its path as curvebench wrote it, its attributes for browsers
+        self.assertTrue(e["d"].startswith("M10 0 A10 1 0 0 1 0 1"), e["d"])
+        self.assertEqual(e["shape"], {"element": "ellipse", "attributes": {"cx": 0, "cy": 0, "rx": 10, "ry": 1}})
+        self.assertEqual(self.case("svg_cusp_fonttools")["bezier"], [[0, 0], [50, 0], [100, 0], [-50, 0]])
+        self.assertEqual(self.case("svg_cusp_fonttools")["d"], "M0 0 C50 0 100 0 -50 0")
+
+    def measure(self, runs):
+        driver = {"format": shipped_results.DRIVER_FORMAT, "driver": "test", "runs": runs}
+        return shipped_results.measure(driver, self.request, CASES, TOOL, tempfile.mkdtemp())["rows"]
+
+    def test_exact_answers_are_measured_at_rounding_level(self):
+        q = self.case("svg_quarter_circle_arc")
+        spaced = [circle_point(L * k / 16) for k in range(17)]
+        row = self.measure([{"peer": "peer_exact", "case": q["case"], "length": L,
+                             "points": [circle_point(s) for s in q["s"]], "spaced": spaced}])[0]
+        self.assertLess(row["length_error"], 1e-15)
+        self.assertLess(row["point_error"], 1e-14)
+        self.assertLess(row["s_error"], 1e-14)
+        self.assertLess(row["off_curve"], 1e-14)
+        self.assertLess(row["spacing_cv"], 1e-13)
+
+    def test_a_point_late_along_the_curve_shows_its_delay_as_s_error_and_its_chord_as_point_error(self):
+        q = self.case("svg_quarter_circle_arc")
+        delta = 1e-3 * L
+        s_inner = [min(s, L - delta) for s in q["s"]]  # stays on the arc
+        row = self.measure([{"peer": "peer_late", "case": q["case"], "length": L * (1 + 1e-6),
+                             "points": [circle_point(s + delta) for s in s_inner], "spaced": None}])[0]
+        self.assertAlmostEqual(row["length_error"], 1e-6, delta=1e-15)
+        self.assertAlmostEqual(row["s_error"], 1e-3, delta=1e-12)
+        self.assertAlmostEqual(row["point_error"], 2 * R * math.sin(delta / (2 * R)) / L, delta=1e-12)
+        self.assertLess(row["off_curve"], 1e-14)  # on the curve, only in the wrong place
+
+    def test_the_cusp_point_takes_the_branch_nearest_its_s(self):
+        # fontTools' cusp turns back at x = 50 (s = 50); x = 40 is on both branches, at s = 40 and 60.
+        c = self.case("svg_cusp_fonttools")
+        pts = [[40.0, 0.0] for _ in c["s"]]
+        row = self.measure([{"peer": "peer_x", "case": c["case"], "length": 150.0, "points": pts, "spaced": None}])[0]
+        self.assertAlmostEqual(row["length_error"], 0.0, delta=1e-15)  # 150 is the closed form
+        self.assertLess(row["off_curve"], 1e-15)
+        # Each row is charged the branch nearer its s: the worst is the last s (150 less the length's
+        # error bound) against s = 60, about 90 / 150 (the first branch, s = 40, would make it 110 / 150).
+        self.assertAlmostEqual(row["s_error"], (c["s"][-1] - 60) / 150, delta=1e-14)
+
+    def test_recorded_driver_outputs_are_measured_and_reported(self):
+        files = sorted(f for f in os.listdir(RECORDED) if f.endswith("_driver.json")) if os.path.isdir(RECORDED) else []
+        self.assertTrue(files, "the recorded driver outputs are missing")
+        reports = tempfile.mkdtemp()
+        with open(os.path.join(RECORDED, "request.json"), encoding="utf-8") as f:
+            request = json.load(f)
+        for name in files:
+            with open(os.path.join(RECORDED, name), encoding="utf-8") as f:
+                driver = json.load(f)
+            result = shipped_results.measure(driver, request, CASES, TOOL, tempfile.mkdtemp())
+            self.assertTrue(result["rows"], name)
+            asked = {c["case"]: c["length"] for c in request["cases"]}
+            for row in result["rows"]:
+                if row.get("length") is None:
+                    continue
+                # The truth joined is the case's (the request's adaptive_gk length agrees to 1e-14), and
+                # the error is the peer's own length against it (engines can be far off: Firefox ESR
+                # measured fontTools' cusp as 50 for 150).
+                self.assertLess(abs(row["true_length"] - asked[row["case"]]) / asked[row["case"]], 1e-14, row)
+                self.assertEqual(row["length_error"], abs(row["length"] - row["true_length"]) / row["true_length"])
+            with open(os.path.join(reports, "peers_" + driver["driver"] + ".json"), "w", encoding="utf-8") as f:
+                json.dump(result, f)
+        md = "\n".join(report_shipped.section({}, reports))
+        self.assertIn("### Every peer, worst case first", md)
+        self.assertIn("### Findings", md)
+
+
+if __name__ == "__main__":
+    unittest.main()
