@@ -4,16 +4,23 @@
 // truth. scripts/peers.sh copies this file beside the pinned packages (build-peers/node, from
 // scripts/peers/node/package.json) and runs it there:
 //   node easing_driver.mjs --cases DIR --out FILE [--quick]
-// Peers: bezier-easing 3.2.0 (peer_bezier_easing_3), bezier-easing 2.1.0 (peer_bezier_easing_2)
-// and @mapbox/unitbezier 1.0.0 (peer_mapbox_unitbezier, solve(x) with its default epsilon).
+// Peers: bezier-easing 3.2.0 (peer_bezier_easing_3), bezier-easing 2.1.0 (peer_bezier_easing_2),
+// @mapbox/unitbezier 1.0.0 (peer_mapbox_unitbezier, solve(x) with its default epsilon) and
+// @babylonjs/core 9.37.1 (peer_babylon_bezier_interpolate: BezierCurve.Interpolate(x, x1, y1, x2,
+// y2), what Babylon's BezierCurveEase evaluates; five Newton steps on x(u) = x from u = x, each
+// clamped to [0, 1], no convergence test; only Maths/math.path.js is loaded, no engine).
 // Query times: the accuracy runner's sample fractions (0, 1 and frac(j / phi) in between; 65, or
 // 257 without --quick). Time per evaluation: one call per time, as an animation loop calls them,
-// the best of 200 passes over all the times (the first ones warm V8 up) divided by their number.
+// the best of 200 passes over all the times (the first ones warm V8 up) divided by their number;
+// a peer's NaN or infinite values (Babylon's Newton step divides by x'(u), 0 where x(u) = x lands
+// on a flat point: cubic-bezier(0, 4, 1, -3) at x = 1) are written as null and listed in the run's
+// "non_finite", and its time is over the other times.
 import fs from "node:fs";
 import path from "node:path";
 import { createRequire } from "node:module";
 import bezier3 from "bezier-easing-3";
 import unitBezier from "@mapbox/unitbezier";
+import { BezierCurve } from "@babylonjs/core/Maths/math.path.js";
 import { bestNs, driverArgs, sampleFractions } from "./node_driver.mjs";
 
 const require = createRequire(import.meta.url);
@@ -39,6 +46,7 @@ const peers = {
     const solve = unitBezier(...p);
     return (t) => solve(t);
   },
+  peer_babylon_bezier_interpolate: ([x1, y1, x2, y2]) => (t) => BezierCurve.Interpolate(t, x1, y1, x2, y2),
 };
 const runs = [];
 const notes = [];
@@ -59,8 +67,14 @@ for (const file of fs.readdirSync(a.cases).filter((f) => f.endsWith(".json")).so
       runs.push({ case: name, peer, easing: p, refused: String(e.message || e) });
       continue;
     }
-    const run = { case: name, peer, easing: p, times, values: times.map(f),
-                  ns_per_op: bestNs(f, times, "easing_driver: NaN from a peer") };
+    const values = times.map(f);
+    // A NaN or infinite value (JSON null) is recorded with its fraction as "non_finite" [[x, "NaN"]]
+    // for easing_results.py to report; the time per evaluation is then over the other fractions.
+    const bad = times.flatMap((t, i) => (Number.isFinite(values[i]) ? [] : [[t, String(values[i])]]));
+    const timed = bad.length ? times.filter((t, i) => Number.isFinite(values[i])) : times;
+    const run = { case: name, peer, easing: p, times, values,
+                  ns_per_op: timed.length ? bestNs(f, timed, "easing_driver: NaN from a peer") : null };
+    if (bad.length) run.non_finite = bad;
     // @mapbox/unitbezier documents solve(x, epsilon) with epsilon 1e-6 by default: its precision.
     if (peer === "peer_mapbox_unitbezier") run.documented_tolerance = 1e-6;
     runs.push(run);
@@ -74,6 +88,7 @@ const doc = {
     "bezier-easing 3": version("bezier-easing-3"),
     "bezier-easing 2": version("bezier-easing"),
     "@mapbox/unitbezier": version("@mapbox/unitbezier"),
+    "@babylonjs/core": version("@babylonjs/core"),
   },
   notes,
   runs,

@@ -23,7 +23,11 @@ jump-none, else n); the value is step / jumps, computed in exact rationals from 
 Errors: max over the times of |v - y(t)| / (eps(double) x size), size = max |y(t)| over the times
 (the unit of curvebench's eval records), and the absolute max |v - y(t)| as "abs_error"; a peer
 that documents its solver's precision (@mapbox/unitbezier: epsilon 1e-6) carries it as
-"documented_tolerance".
+"documented_tolerance". A value the driver wrote as null (a NaN or infinity, named in the run's
+"non_finite": Babylon's BezierCurve.Interpolate divides by x'(u), 0 where cubic-bezier(0, 4, 1, -3)
+reaches x = 1) has no error: the record's error is over the other times, its "non_finite" counts
+those values, its peer_status says so and a note names their fractions (every value non-finite: no
+error, and the record is listed as a refusal).
 """
 import argparse
 import fractions
@@ -83,10 +87,11 @@ def steps_truth(n, position, x):
     return fractions.Fraction(step, jumps)
 
 
-def measure(values, truths):
-    """(error in eps x size, absolute error) of doubles against the truths."""
+def measure(values, truths, size_of=None):
+    """(error in eps x size, absolute error) of doubles against the truths; size the largest |truth|
+    of size_of (default: the truths)."""
     with mpmath.workdps(60):
-        size = max((abs(y) for y in truths), default=mpmath.mpf(0))
+        size = max((abs(y) for y in (truths if size_of is None else size_of)), default=mpmath.mpf(0))
         if size == 0:
             size = mpmath.mpf(1)
         worst = max(abs(mpmath.mpf(v) - y) for v, y in zip(values, truths))
@@ -146,8 +151,15 @@ def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, ti
         if "steps" in run:
             notes += _steps_notes(run)
             rec["definition"] = f"CSS steps({run['steps'][0]}, {run['steps'][1]}) as CSS Easing defines it,"
-        err, abs_err = measure(run["values"], truths[key])
-        rec.update({"error": err, "abs_error": abs_err, "evaluations": len(times), "peer_status": "success",
+        finite = [i for i, v in enumerate(run["values"]) if _finite(v, case, run["peer"], i)]
+        status = "success"
+        if len(finite) < len(times):
+            status, note = _non_finite(run, truths[key], finite)
+            notes.append(note)
+            rec["non_finite"] = len(times) - len(finite)
+        err, abs_err = (measure([run["values"][i] for i in finite], [truths[key][i] for i in finite], truths[key])
+                        if finite else (None, None))
+        rec.update({"error": err, "abs_error": abs_err, "evaluations": len(times), "peer_status": status,
                     "ns_per_op": run.get("ns_per_op"), "counterpart_error": ours[key][0],
                     "counterpart_abs_error": ours[key][1]})
         if "documented_tolerance" in run:
@@ -155,6 +167,30 @@ def assemble(driver, specs, curvebench_values, tool_model_values=lambda case, ti
         records.append(rec)
     return {"driver": driver["driver"], "versions": driver["versions"], "notes": notes,
             "quick": driver.get("quick"), "peer_records": records}
+
+
+def _finite(v, case, peer, i):
+    """Whether the driver's value i is a number (null: the peer's NaN or infinity); anything else
+    raises EasingResultError."""
+    if v is None:
+        return False
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise EasingResultError(f"driver output: {case} {peer}: value {i} is {v!r}, not a number or null")
+    return True
+
+
+def _non_finite(run, truths, finite):
+    """(peer_status, note) of a run with null values: how many, and the first fractions with what the
+    peer returned there (the run's "non_finite" names NaN or Infinity) and the definition's value."""
+    said = {t: v for t, v in run.get("non_finite", [])}
+    kept = set(finite)
+    n, bad = len(run["times"]), [i for i in range(len(run["times"])) if i not in kept]
+    shown = "; ".join(f"x = {run['times'][i]!r}: {said.get(run['times'][i], 'non-finite')} where the definition "
+                      f"gives {float(truths[i])!r}" for i in bad[:3])
+    status = f"non-finite value at {len(bad)} of {n} fractions"
+    rest = f"its error is over the other {len(finite)}" if finite else "no value to measure"
+    return status, (f"{run['case']} ({run['peer']}): {status} ({shown}" + ("; ..." if len(bad) > 3 else "")
+                    + f"); {rest}")
 
 
 def _steps_notes(run):
@@ -173,7 +209,8 @@ def _steps_notes(run):
 
 def _library(peer, versions):
     names = {"peer_bezier_easing_3": "bezier-easing 3", "peer_bezier_easing_2": "bezier-easing 2",
-             "peer_mapbox_unitbezier": "@mapbox/unitbezier", "peer_chromium_waapi": "Chromium"}
+             "peer_mapbox_unitbezier": "@mapbox/unitbezier", "peer_babylon_bezier_interpolate": "@babylonjs/core",
+             "peer_chromium_waapi": "Chromium"}
     name = names.get(peer, peer)
     return f"{name.split(' ')[0]} {versions.get(name, '?')}"
 

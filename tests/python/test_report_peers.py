@@ -210,8 +210,10 @@ class Joins(unittest.TestCase):
         self.assertEqual(rows[1], ["SciPy 1.10.1", "peers_scipy.json (scripts/peers.sh)", 2])
         self.assertEqual(rp.missing_drivers([("p", {"driver": "scipy"}), ("q", {"driver": "chromium"}),
                                              ("r", {"driver": "penner"}), ("s", {"driver": "blender"}),
-                                             ("t", {"driver": "three"})]),
-                         ["bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs)"])
+                                             ("t", {"driver": "three"}), ("u", {"driver": "shipped_node"}),
+                                             ("v", {"driver": "shipped_browser"}), ("w", {"driver": "lottie"})]),
+                         ["bezier-easing 3.2.0 / 2.1.0, @mapbox/unitbezier and Babylon.js's BezierCurve.Interpolate "
+                          "(scripts/peers/easing_driver.mjs)"])
         self.assertIn("three.js's glTF interpolants (scripts/peers/gltf_driver.mjs)",
                       rp.missing_drivers([("p", {"driver": "scipy"})]))
 
@@ -358,8 +360,10 @@ EASING = os.path.join(DATA, "easing")
 @unittest.skipUnless(importlib.util.find_spec("mpmath"), "the easing truth needs python3-mpmath")
 class EasingRecorded(unittest.TestCase):
     """Recorded: scripts/peers.sh --quick with Node 20.20.2 (bezier-easing 3.2.0 and 2.1.0,
-    @mapbox/unitbezier 1.0.0), cases css_vertical_start and css_wild_overshoot, and curvebench
-    sample's values of the same cases at the same times (exact and table_newton solvers)."""
+    @mapbox/unitbezier 1.0.0; @babylonjs/core 9.37.1's runs added later by easing_driver.mjs --quick
+    on the same two cases, the others' values unchanged), cases css_vertical_start and
+    css_wild_overshoot, and curvebench sample's values of the same cases at the same times (exact and
+    table_newton solvers)."""
 
     def setUp(self):
         import easing_results
@@ -388,7 +392,7 @@ class EasingRecorded(unittest.TestCase):
 
     def test_recorded_errors(self):
         recs = {(r["case"], r["method"]): r for r in self.doc()["peer_records"]}
-        self.assertEqual(len(recs), 6)
+        self.assertEqual(len(recs), 8)
         # bezier-easing 3.2.0 solves x(t) = x in closed form: a few eps; 2.1.0's Newton / bisection
         # stops 1.2e-9 away on the wild overshoot; unitbezier's epsilon 1e-6 shows as ~1e-5 there.
         self.assertLess(recs[("css_wild_overshoot", "peer_bezier_easing_3")]["error"], 64)
@@ -398,8 +402,37 @@ class EasingRecorded(unittest.TestCase):
         for r in recs.values():
             self.assertLess(r["counterpart_error"], 64)  # curvebench with the exact solver
             versions = {"peer_bezier_easing_3": "3.2.0", "peer_bezier_easing_2": "2.1.0",
-                        "peer_mapbox_unitbezier": "1.0.0"}
+                        "peer_mapbox_unitbezier": "1.0.0", "peer_babylon_bezier_interpolate": "9.37.1"}
             self.assertEqual(r["library"].split(" ")[1], versions[r["method"]])
+        # Babylon's BezierCurve.Interpolate: five Newton steps from u = x, no convergence test. On
+        # cubic-bezier(0, 1, 0, 1) (x = u^3) they have not converged near x = 0: 0.038 off in y.
+        babylon = recs[("css_vertical_start", "peer_babylon_bezier_interpolate")]
+        self.assertGreater(babylon["abs_error"], 1e-2)
+        self.assertEqual((babylon["peer_status"], babylon.get("non_finite")), ("success", None))
+        # At x = 1 on cubic-bezier(0, 4, 1, -3), x'(1) = 0 and the step is 0 x infinity: NaN, written
+        # as null, counted and named; the error is over the other 64 fractions.
+        nan = recs[("css_wild_overshoot", "peer_babylon_bezier_interpolate")]
+        self.assertEqual(nan["non_finite"], 1)
+        self.assertEqual(nan["peer_status"], "non-finite value at 1 of 65 fractions")
+        self.assertEqual(nan["evaluations"], 65)
+        self.assertLess(nan["abs_error"], 1e-4)
+        self.assertIn("css_wild_overshoot (peer_babylon_bezier_interpolate): non-finite value at 1 of 65 fractions "
+                      "(x = 1: NaN where the definition gives 1.0); its error is over the other 64",
+                      self.doc()["notes"])
+
+    def test_values_neither_numbers_nor_null_are_refused(self):
+        driver = load(os.path.join("easing", "easing_driver.json"))
+        driver["runs"] = [r for r in driver["runs"] if r["case"] == "css_wild_overshoot"][:1]
+        driver["runs"][0]["values"][3] = "0.5"
+        spec = {"css_wild_overshoot": {"type": "channel", "tool": "css", "easing": "cubic-bezier(0, 4, 1, -3)"}}
+        with self.assertRaisesRegex(self.er.EasingResultError, "value 3 is '0.5'"):
+            self.er.assemble(driver, spec, lambda case, times: None)
+        # Every value null: no error to measure; the record is a refusal with the peer's status.
+        driver["runs"][0]["values"] = [None] * len(driver["runs"][0]["times"])
+        rec = self.er.assemble(driver, spec, lambda case, times: None)["peer_records"][0]
+        self.assertIsNone(rec["error"])
+        self.assertEqual(rp.refusals([rec]), ['peer_bezier_easing_3: "non-finite value at 65 of 65 fractions" '
+                                              'on 1 case(s)'])
 
     def test_findings_and_table(self):
         doc = self.doc()
@@ -411,6 +444,12 @@ class EasingRecorded(unittest.TestCase):
                             and "(curvebench css channel, solver exact: 1.32)" in x for x in f), f)
         # unitbezier is held to its documented 1e-6 once, not twice.
         self.assertEqual(sum(x.startswith("peer_mapbox_unitbezier on css_wild_overshoot") for x in f), 1, f)
+        # Babylon's NaN at x = 1 is a finding of its own, the worst of the peer's (nothing promised holds).
+        self.assertIn("peer_babylon_bezier_interpolate on css_wild_overshoot: 1 of 65 values not finite (NaN or "
+                      "infinity); its error 3.85e+10 eps(double) x size is over the others.", f)
+        worst = max((g for g in rp.grouped_findings(doc["peer_records"])
+                     if g["peer"] == "peer_babylon_bezier_interpolate"), key=lambda g: g["worst"]["excess"])
+        self.assertEqual(worst["kind"], "non_finite")
         rows = rp.eval_rows([], doc["peer_records"])
         self.assertTrue(all(r[3] == "curvebench css channel, solver exact" and r[4] < 64 for r in rows), rows)
         self.assertTrue(any("table_newton" in n for n in doc["notes"]))
@@ -538,7 +577,8 @@ class ReportWithAndWithoutPeers(unittest.TestCase):
                       "real Blender F-curves", report)
         self.assertIn("### Real Blender F-curves\n\nNot run: no reports/peers_blender.json", report)
         self.assertIn("### three.js glTF interpolants\n\nNot run: no reports/peers_three.json", report)
-        self.assertIn("bezier-easing 3.2.0 / 2.1.0 and @mapbox/unitbezier (scripts/peers/easing_driver.mjs), ", report)
+        self.assertIn("bezier-easing 3.2.0 / 2.1.0, @mapbox/unitbezier and Babylon.js's BezierCurve.Interpolate "
+                      "(scripts/peers/easing_driver.mjs), ", report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | peer_scipy_make_interp_spline | 661 | default | 0.813 |",
                       report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | tol=1e-10 | peer_scipy_quad | 5.35e-09 |", report)
