@@ -183,8 +183,11 @@ def plot_sweeps(rows, ours_rows, plot_dir, plt, savefig, link_prefix="plots/"):
         if not series:
             continue
         fig, ax = plt.subplots(figsize=(8, 4.5))
-        for lbl, pts in list(series.items()) + [("curvebench adaptive_gk tol=1e-10", v) for v in mine.values()]:
-            ax.plot([x for x, _ in pts], [e for _, e in pts], marker="o", label=lbl,
+        lines = list(series.items()) + [("curvebench adaptive_gk tol=1e-10", v) for v in mine.values()]
+        for i, (lbl, pts) in enumerate(lines):
+            # Colours repeat after ten lines: the line style and marker tell the next ten apart.
+            ax.plot([x for x, _ in pts], [e for _, e in pts], marker="os^D"[i // 10 % 4],
+                    linestyle=("-", "--", ":", "-.")[i // 10 % 4], label=lbl,
                     linewidth=2.5 if lbl.startswith("curvebench") else 1.2)
         ax.set_xscale("log")
         ax.set_yscale("log")
