@@ -256,7 +256,8 @@ def section(acc, report_dir, plot_dir=None, plt=None, savefig=None, link_prefix=
         md += ["", "### Error against the curve's extent and offset", "",
                f"Log-log, one line per peer; an absolute tolerance shows as a slope of -1 against the extent, "
                f"float32 coordinates as a rise with the offset. An error of exactly 0 is drawn at {FLOOR:g}.", ""]
-        md += [f"![length error against {t}]({p})" for t, p in written]
+        # As list items: docs/results.md's own gallery is its lines that start with "![" (publish.py).
+        md += [f"- ![length error against {t}]({p})" for t, p in written]
     skipped = [s for _, data in files for s in data.get("skipped", [])]
     if skipped:
         md += ["", "Not measured (the peer cannot represent the case, or threw): " + "; ".join(
