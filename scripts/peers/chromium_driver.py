@@ -28,7 +28,6 @@ The page, the parsing of the dump and the runs are pure functions (tested with p
 tests/python/test_chromium_driver.py on a recorded dump); only main() starts Chromium.
 """
 import argparse
-import html
 import json
 import os
 import re
@@ -43,7 +42,7 @@ PEER = "peer_chromium_waapi"
 # steps() easings the driver adds (no case of the suite has one): every jump position.
 STEPS = ("steps(4, jump-end)", "steps(4, jump-start)", "steps(5, jump-none)", "steps(3, jump-both)",
          "steps(10, jump-end)")
-RESULT_ID = "curvebench-result"
+RESULT_ID = peer_io.RESULT_ID
 
 
 class ChromiumDriverError(Exception):
@@ -138,16 +137,7 @@ document.getElementById("{RESULT_ID}").textContent = JSON.stringify(out);
 
 def parse_dump(dom):
     """The JSON the page wrote, from chromium --dump-dom's output."""
-    m = re.search(rf'<pre id="{RESULT_ID}">(.*?)</pre>', dom, re.S)
-    if not m or not m.group(1).strip():
-        raise ChromiumDriverError("the dumped DOM holds no result (did the page's script run?)")
-    try:
-        doc = json.loads(html.unescape(m.group(1)))
-    except json.JSONDecodeError as e:
-        raise ChromiumDriverError(f"the page's result is not JSON: {e}") from e
-    if "error" in doc:
-        raise ChromiumDriverError(f"the page's script failed: {doc['error']}")
-    return doc
+    return peer_io.dump_result(dom, ChromiumDriverError)
 
 
 def chromium_version(text):
@@ -216,14 +206,11 @@ def main():
             page_path = os.path.abspath(os.path.join(work, "chromium_easing.html"))
             with open(page_path, "w", encoding="utf-8") as f:
                 f.write(page(easings))
-            # --no-sandbox: the driver may run as root (containers, CI), where Chromium's sandbox refuses.
-            proc = subprocess.run([a.chromium, "--headless=new", "--no-sandbox", "--disable-gpu", "--no-first-run",
-                                   f"--user-data-dir={os.path.join(work, 'profile')}", "--dump-dom",
-                                   "file://" + page_path], capture_output=True, text=True, timeout=300)
+            dom = peer_io.chromium_dump(a.chromium, page_path, os.path.join(work, "profile"), 300, ChromiumDriverError)
             if a.work:
                 with open(os.path.join(work, "dump.html"), "w", encoding="utf-8") as f:
-                    f.write(proc.stdout)
-            doc = parse_dump(proc.stdout)
+                    f.write(dom)
+            doc = parse_dump(dom)
         runs = runs_of(doc, easings)
     except (OSError, subprocess.SubprocessError, ChromiumDriverError) as e:
         print(f"chromium_driver: {e}", file=sys.stderr)

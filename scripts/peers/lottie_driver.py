@@ -61,7 +61,7 @@ import peer_io
 from chromium_driver import chromium_version
 
 PEER = "peer_lottie_web_position"
-RESULT_ID = "curvebench-result"
+RESULT_ID = peer_io.RESULT_ID
 LAYER_ID = "curvebench-mover"
 LOTTIE_FILE = "lottie_svg.min.js"  # lottie-web's SVG player, build/player/ in the package
 SEGMENT_FRAMES = 64  # a power of two: f = (frame - frame_A) / 64 is exact
@@ -183,16 +183,7 @@ document.getElementById("{RESULT_ID}").textContent = JSON.stringify(out);
 
 def parse_dump(dom):
     """The JSON the page wrote, from chromium --dump-dom's output."""
-    m = re.search(rf'<pre id="{RESULT_ID}">(.*?)</pre>', dom, re.S)
-    if not m or not m.group(1).strip():
-        raise LottieDriverError("the dumped DOM holds no result (did the page's script run?)")
-    try:
-        doc = json.loads(html.unescape(m.group(1)))
-    except json.JSONDecodeError as e:
-        raise LottieDriverError(f"the page's result is not JSON: {e}") from e
-    if "error" in doc:
-        raise LottieDriverError(f"the page's script failed: {doc['error']}")
-    return doc
+    return peer_io.dump_result(dom, LottieDriverError)
 
 
 def translation(transform):
@@ -355,14 +346,13 @@ def run_chromium(chromium, work, frames, lottie_dir):
     page_path = os.path.abspath(os.path.join(work, "lottie_peer.html"))
     with open(page_path, "w", encoding="utf-8") as f:
         f.write(page(frames))
-    # --no-sandbox: the driver may run as root (containers, CI), where Chromium's sandbox refuses.
-    proc = subprocess.run([chromium, "--headless=new", "--no-sandbox", "--disable-gpu", "--no-first-run",
-                           f"--user-data-dir={os.path.join(work, 'profile')}", "--dump-dom", "file://" + page_path],
-                          capture_output=True, text=True, timeout=300)
+    try:
+        dom = peer_io.chromium_dump(chromium, page_path, os.path.join(work, "profile"), 300, LottieDriverError)
+    finally:
+        shutil.rmtree(os.path.join(work, "profile"), ignore_errors=True)
     with open(os.path.join(work, "dump.html"), "w", encoding="utf-8") as f:
-        f.write(proc.stdout)
-    shutil.rmtree(os.path.join(work, "profile"), ignore_errors=True)
-    return parse_dump(proc.stdout)
+        f.write(dom)
+    return parse_dump(dom)
 
 
 def main():

@@ -2,13 +2,19 @@
 imported with it on sys.path): the accuracy runner's sample fractions, the all-or-nothing write of
 a result file, and `curvebench sample`'s command and CSV for the tool models beside the peers."""
 import csv
+import html
 import json
 import os
+import re
+import signal
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import safe_output  # noqa: E402
 
+# The element a browser peer's page writes its JSON into (chromium --dump-dom prints it).
+RESULT_ID = "curvebench-result"
 INV_PHI = 0.6180339887498949  # 1 / golden ratio, as bench/harness/sweeps.hpp
 
 
@@ -53,3 +59,60 @@ def read_sample(path, times, columns=("value",), error=ValueError, exact_times=T
     if len(columns) == 1:
         return [float(r[1]) for r in body]
     return [tuple(float(x) for x in r[1:1 + len(columns)]) for r in body]
+
+
+def page_result(text, error):
+    """The JSON object a browser peer's page produced (its text, as posted or unescaped from a dump);
+    error(message) is raised when it is not a JSON object or names the error its script hit."""
+    try:
+        doc = json.loads(text)
+    except json.JSONDecodeError as e:
+        raise error(f"the page's result is not JSON: {e}") from e
+    if not isinstance(doc, dict):
+        raise error("the page's result is not a JSON object")
+    if "error" in doc:
+        raise error(f"the page's script failed: {doc['error']}")
+    return doc
+
+
+def dump_result(dom, error):
+    """page_result of the <pre id=RESULT_ID> in chromium --dump-dom's output."""
+    m = re.search(rf'<pre id="{RESULT_ID}">(.*?)</pre>', dom, re.S)
+    if not m or not m.group(1).strip():
+        raise error("the dumped DOM holds no result (did the page's script run?)")
+    return page_result(html.unescape(m.group(1)), error)
+
+
+def stop_group(proc):
+    """Ends the process group a driver started for one browser (start_new_session), then reaps it."""
+    if proc.poll() is None:
+        try:
+            os.killpg(proc.pid, signal.SIGTERM)
+            proc.wait(timeout=10)
+        except (ProcessLookupError, subprocess.TimeoutExpired):
+            pass
+    try:
+        os.killpg(proc.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+    proc.wait()
+
+
+def chromium_dump(program, page_path, profile, timeout, error):
+    """The DOM `chromium --headless=new --dump-dom` prints for the page at page_path, with a fresh
+    profile directory; the browser's whole process group is ended on return. error(message) for a
+    timeout or an empty dump."""
+    # --no-sandbox: the driver may run as root (containers, CI), where Chromium's sandbox refuses.
+    cmd = [program, "--headless=new", "--no-sandbox", "--disable-gpu", "--no-first-run",
+           f"--user-data-dir={profile}", "--dump-dom", "file://" + os.path.abspath(page_path)]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        dom, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        stop_group(proc)
+        raise error(f"chromium timed out after {timeout:g} s without dumping the page") from None
+    finally:
+        stop_group(proc)
+    if not dom.strip():
+        raise error(f"chromium exited with status {proc.returncode} and dumped nothing: {err.strip()[-400:]}")
+    return dom

@@ -53,7 +53,6 @@ are pure functions (tested with plain Python by tests/python/test_shipped_browse
 recorded result); only main() starts browsers.
 """
 import argparse
-import html
 import http.server
 import json
 import math
@@ -61,7 +60,6 @@ import os
 import queue
 import re
 import shutil
-import signal
 import subprocess
 import sys
 import tempfile
@@ -73,7 +71,7 @@ import peer_io
 DRIVER = "shipped_browser"
 FORMAT = "curvebench-shipped-driver-1"
 REQUEST_FORMAT = "curvebench-shipped-request-1"
-RESULT_ID = "curvebench-result"
+RESULT_ID = peer_io.RESULT_ID
 BROWSERS = ("chromium", "firefox")
 SHAPES = {"circle": ("cx", "cy", "r"), "ellipse": ("cx", "cy", "rx", "ry"),
           "rect": ("x", "y", "width", "height", "rx", "ry")}
@@ -313,24 +311,13 @@ def user_js():
 
 def parse_dump(dom):
     """The JSON the page wrote, from chromium --dump-dom's output."""
-    m = re.search(rf'<pre id="{RESULT_ID}">(.*?)</pre>', dom, re.S)
-    if not m or not m.group(1).strip():
-        raise DriverError("the dumped DOM holds no result (did the page's script run?)")
-    return parse_result(html.unescape(m.group(1)))
+    return peer_io.dump_result(dom, DriverError)
 
 
 def parse_result(text):
     """The page's JSON (as posted to the listener or unescaped from the dump); a page whose script
     failed raises DriverError naming the error."""
-    try:
-        doc = json.loads(text)
-    except json.JSONDecodeError as e:
-        raise DriverError(f"the page's result is not JSON: {e}") from e
-    if not isinstance(doc, dict):
-        raise DriverError("the page's result is not a JSON object")
-    if "error" in doc:
-        raise DriverError(f"the page's script failed: {doc['error']}")
-    return doc
+    return peer_io.page_result(text, DriverError)
 
 
 def _points(v, n, what):
@@ -433,41 +420,14 @@ def _version(program):
                           timeout=60).stdout.strip().splitlines()[0]
 
 
-def _stop(proc):
-    """Ends the process group the driver started for one browser, then reaps it."""
-    if proc.poll() is None:
-        try:
-            os.killpg(proc.pid, signal.SIGTERM)
-            proc.wait(timeout=10)
-        except (ProcessLookupError, subprocess.TimeoutExpired):
-            pass
-    try:
-        os.killpg(proc.pid, signal.SIGKILL)
-    except ProcessLookupError:
-        pass
-    proc.wait()
-
-
 def run_chromium(program, text, work, timeout):
     """The page's result from `chromium --headless=new --dump-dom` on the page written to work."""
     page_path = os.path.abspath(os.path.join(work, "chromium_page.html"))
     with open(page_path, "w", encoding="utf-8") as f:
         f.write(text)
-    # --no-sandbox: the driver may run as root (containers, CI), where Chromium's sandbox refuses.
-    cmd = [program, "--headless=new", "--no-sandbox", "--disable-gpu", "--no-first-run",
-           f"--user-data-dir={os.path.join(work, 'chromium_profile')}", "--dump-dom", "file://" + page_path]
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
-    try:
-        dom, err = proc.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        _stop(proc)
-        raise DriverError(f"chromium timed out after {timeout:g} s without dumping the page") from None
-    finally:
-        _stop(proc)
+    dom = peer_io.chromium_dump(program, page_path, os.path.join(work, "chromium_profile"), timeout, DriverError)
     with open(os.path.join(work, "chromium_dump.html"), "w", encoding="utf-8") as f:
         f.write(dom)
-    if not dom.strip():
-        raise DriverError(f"chromium exited with status {proc.returncode} and dumped nothing: {err.strip()[-400:]}")
     return parse_dump(dom)
 
 
@@ -543,7 +503,7 @@ def run_firefox(program, page_of_url, work, timeout):
             if time.monotonic() > deadline:
                 raise DriverError(f"firefox timed out after {timeout:g} s: the page posted no result")
     finally:
-        _stop(proc)
+        peer_io.stop_group(proc)
         log.close()
         server.shutdown()
         server.server_close()
