@@ -8,14 +8,13 @@ length and its error, point error, s error, spacing CV and times) and accuracy.j
 same cases (curvebench's length and u(s) methods). Every sentence of the findings is built from
 these figures. Pure functions but the plot writer; tested by tests/python/test_report_shipped.py.
 """
-import glob
-import json
 import math
 import os
 import re
 import statistics
 
 import report_lib as lib
+import report_peers
 
 fmt, table = lib.fmt, lib.table
 
@@ -35,16 +34,9 @@ class ShippedReportError(Exception):
 
 def load(report_dir):
     """[(path, data)] of the peers_*.json files with "rows" (the shipped-software drivers' and
-    lottie's); ShippedReportError naming a malformed one."""
+    lottie's), read by report_peers.load_peer_files; ShippedReportError naming a malformed one."""
     out = []
-    for path in sorted(glob.glob(os.path.join(report_dir, "peers_*.json"))):
-        with open(path, encoding="utf-8") as f:
-            try:
-                data = json.load(f)
-            except json.JSONDecodeError as e:
-                raise ShippedReportError(f"{path}: not JSON ({e})") from e
-        if not isinstance(data, dict):
-            raise ShippedReportError(f"{path}: expected a JSON object")
+    for path, data in report_peers.load_peer_files(report_dir):
         if "rows" not in data and os.path.basename(path).startswith("peers_shipped_"):
             raise ShippedReportError(f"{path}: expected an object with a \"rows\" array")
         if "rows" not in data:
@@ -207,7 +199,7 @@ def section(acc, report_dir, plot_dir=None, plt=None, savefig=None, link_prefix=
     md = ["", "## Arc length in shipped software", ""]
     try:
         files = load(report_dir)
-    except (OSError, ShippedReportError) as e:
+    except (OSError, ShippedReportError, lib.ReportError) as e:
         return md + [f"The shipped-software results could not be read: {e}", ""]
     if not files:
         return md + ["Not run: no reports/peers_shipped_*.json (scripts/peers.sh runs the drivers: "
