@@ -165,6 +165,58 @@ def findings(rows, ours_rows):
     return out
 
 
+def catmull_rom_rows(rows):
+    """The rows of runs on Catmull-Rom cases (three's CatmullRomCurve3): those with eval_error."""
+    return [r for r in rows if "eval_error" in r]
+
+
+def catmull_rom_table(rows):
+    """[[case, mode and divisions, length error, point error, getUtoTmapping s error, spacing CV,
+    getPoint ulps, curvebench ulps, parameter rounding ulps, ns / length, ns / point]]."""
+    return [[r["case"], r.get("setting") or "-", fmt(r.get("length_error")), fmt(r.get("point_error")),
+             fmt(r.get("map_s_error")), fmt(r.get("spacing_cv")), fmt(r.get("eval_error")),
+             fmt(r.get("curvebench_eval_error")), fmt(r.get("eval_floor")), fmt(r.get("ns_length")),
+             fmt(r.get("ns_point"))] for r in sorted(rows, key=lambda r: (r["case"], r.get("ns_length") or 0))]
+
+
+def catmull_rom_findings(rows):
+    """Sentences on three's CatmullRomCurve3: its worst length error at its defaults and with the
+    most divisions measured, and its getPoint against curvebench's evaluation."""
+    if not rows:
+        return []
+    out = []
+    default = [r for r in rows if "divisions=" not in (r.get("setting") or "")]
+    w = _worst(default, "length_error")
+    if w:
+        seg = next((r for r in default if r["case"] == w[1]), {})
+        out.append(f"- **three's CatmullRomCurve3** at its default 200 length divisions: worst length error "
+                   f"{fmt(w[0])} of L "
+                   f"on {w[1]} ({seg.get('setting')}); worst point at length {fmt(_worst(default, 'point_error')[0])} "
+                   f"of L, its getUtoTmapping alone {fmt(_worst(default, 'map_s_error')[0])} of L.")
+    finest = {}
+    for r in rows:
+        div = re.search(r"divisions=(\d+)", r.get("setting") or "")
+        n = int(div.group(1)) if div else 200
+        if r["case"] not in finest or n > finest[r["case"]][0]:
+            finest[r["case"]] = (n, r)
+    wf = _worst([r for _, r in finest.values()], "length_error")
+    if wf:
+        out.append(f"- With the most divisions measured per case the worst is {fmt(wf[0])} ({wf[1]}, "
+                   f"{finest[wf[1]][1].get('setting')}): the table's chords, not the curve, set the error.")
+    over = [r for r in rows if isinstance(r.get("eval_error"), (int, float))
+            and isinstance(r.get("eval_floor"), (int, float))
+            and r["eval_error"] > max(r["eval_floor"], r.get("curvebench_eval_error") or 0) + 4]
+    we, wc = _worst(rows, "eval_error"), _worst(rows, "curvebench_eval_error")
+    if we and wc:
+        out.append(f"- Its getPoint(t) is the same curve as curvebench's Catmull-Rom through the same points: at most "
+                   f"{fmt(we[0])} ulps of the curve's size from the 50-digit point ({we[1]}), curvebench's own double "
+                   f"evaluation at most {fmt(wc[0])} ulps; "
+                   + (f"{len(over)} run(s) exceed both curvebench's and the parameter's rounding by more than 4 ulps."
+                      if over else
+                      "no run exceeds both curvebench's and the parameter's own rounding by more than 4 ulps."))
+    return out
+
+
 def plot_sweeps(rows, ours_rows, plot_dir, plt, savefig, link_prefix="plots/"):
     """One log-log plot per sweep (relative length error against extent or offset, one line per
     peer and curvebench); [(title, path)] of those written."""
@@ -217,7 +269,8 @@ def section(acc, report_dir, plot_dir=None, plt=None, savefig=None, link_prefix=
                  ", ".join(f"{k} {v}" for k, v in data.get("versions", {}).items()), data.get("cpu", "-")]
                 for p, data in files]
     md.append(table(["file", "driver", "versions", "CPU"], versions))
-    md += ["", "### Findings", ""] + findings(rows, ours_rows)
+    cr_rows = catmull_rom_rows(rows)
+    md += ["", "### Findings", ""] + findings(rows, ours_rows) + catmull_rom_findings(cr_rows)
     md += ["", "### Every peer, worst case first", "",
            "Length error |L_peer - L| / L; point error |P_peer(s) - P(s)| / L over s = k L / 16; s error: how far "
            "along the curve the returned point is from s, / L; spacing: the coefficient of variation of the true "
@@ -234,6 +287,18 @@ def section(acc, report_dir, plot_dir=None, plt=None, savefig=None, link_prefix=
         md.append(table(["case", "length error", "u(s) error", "u(s) method"],
                         [[r["case"], fmt(r["length_error"]), fmt(r["s_error"]), r["s_method"] or "-"]
                          for r in ours_rows]))
+    if cr_rows:
+        md += ["", "### three.js CatmullRomCurve3 beside curvebench's Catmull-Rom", "",
+               "The catmull_rom cases three draws as the same curve (its curveType matching the case's alpha; "
+               "phantom or closed ends) through the same points. Length, point at length (getPointAt) and spacing "
+               "(getSpacedPoints) as above; getUtoTmapping: |s(u) - s| / L at curvebench's parameter of the t it "
+               "returns; getPoint: its point at t = k/32 against the 50-digit point of curvebench's spline at the "
+               "same parameter, in ulps of double x the curve's size, beside curvebench's own double evaluation "
+               "there and what rounding that parameter to a double moves the point by (errors under it are not "
+               "three's).", ""]
+        md.append(table(["case", "mode, divisions", "length error", "point error", "getUtoTmapping", "spacing CV",
+                         "getPoint ulps", "curvebench ulps", "parameter rounding ulps", "ns / length", "ns / point"],
+                        catmull_rom_table(cr_rows)))
     for case in FEATURED:
         t = featured_table(rows, case)
         if t:

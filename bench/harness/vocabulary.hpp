@@ -250,6 +250,13 @@ inline constexpr peer babylon_curve3{"peer_babylon_curve3", "Babylon.js",
 inline constexpr peer babylon_bezier_interpolate{"peer_babylon_bezier_interpolate", "Babylon.js",
                                                  "@babylonjs/core: BezierCurve.Interpolate, a cubic-bezier easing by 5 "
                                                  "Newton steps from t, clamped, without a convergence test"};
+inline constexpr peer lottie_bezier_easing{"peer_lottie_bezier_easing", "lottie-web",
+                                           "lottie-web: its player's BezierEaser (float32 sample table, Newton or "
+                                           "bisection), a cubic-bezier easing"};
+inline constexpr peer three_catmull_rom{
+    "peer_three_catmull_rom", "three",
+    "three: CatmullRomCurve3 (uniform, centripetal, chordal) getLength, getPointAt, "
+    "getUtoTmapping, getSpacedPoints and getPoint"};
 inline constexpr peer lottie_web_position{"peer_lottie_web_position", "lottie-web",
                                           "lottie-web in headless Chromium: a layer's position along spatial Bezier "
                                           "keyframes with eased timing"};
@@ -297,6 +304,8 @@ inline constexpr const peer* all_peers[] = {&peers::boost_gauss,
                                             &peers::skia_contour_measure,
                                             &peers::babylon_curve3,
                                             &peers::babylon_bezier_interpolate,
+                                            &peers::lottie_bezier_easing,
+                                            &peers::three_catmull_rom,
                                             &peers::lottie_web_position};
 
 /// What one item of a benchmark is: the unit of its time per operation.

@@ -208,8 +208,50 @@ nlohmann::json length(const cb::io::field& spec, const length_args& a) {
   return out;
 }
 
+/// The subpaths of path data d as JSON, absolute and explicit, for programs that take segments
+/// rather than path data (the native arc-length peers of issue 36): [{"start": [x, y], "closed",
+/// "segments": [{"kind": "line" | "quadratic" | "cubic" | "arc", "points": its 2 to 4 control
+/// points (an arc's two ends), and for an arc "rx", "ry", "rotation" (degrees), "large", "sweep" as
+/// written and "center": its centre form in double (cx, cy, rx, ry after the out-of-range
+/// correction, phi radians, theta1, dtheta)}]}]. A closed subpath's closing line, when not of zero
+/// length, is its last segment.
+nlohmann::json segments_json(const std::string& d) {
+  namespace svg = cb::io::svg;
+  nlohmann::json out = nlohmann::json::array();
+  for (const svg::subpath& sp : svg::parse_path(d)) {
+    nlohmann::json segs = nlohmann::json::array();
+    for (const svg::segment& s : sp.segments) {
+      nlohmann::json pts = nlohmann::json::array();
+      for (int i = 0; i < s.points; ++i)
+        pts.push_back({s.p[static_cast<std::size_t>(i)].x, s.p[static_cast<std::size_t>(i)].y});
+      static constexpr const char* kinds[] = {"line", "quadratic", "cubic", "arc"};
+      nlohmann::json j{{"kind", kinds[static_cast<int>(s.kind)]}, {"points", std::move(pts)}};
+      if (s.kind == svg::segment_kind::arc) {
+        const svg::arc_center<double> c = svg::center_form<double>(s);
+        j.update({{"rx", s.arc.rx},
+                  {"ry", s.arc.ry},
+                  {"rotation", s.arc.rotation},
+                  {"large", s.arc.large},
+                  {"sweep", s.arc.sweep},
+                  {"center",
+                   {{"cx", c.cx},
+                    {"cy", c.cy},
+                    {"rx", c.rx},
+                    {"ry", c.ry},
+                    {"phi", c.phi},
+                    {"theta1", c.theta1},
+                    {"dtheta", c.dtheta}}}});
+      }
+      segs.push_back(std::move(j));
+    }
+    out.push_back({{"start", {sp.start.x, sp.start.y}}, {"closed", sp.closed}, {"segments", std::move(segs)}});
+  }
+  return out;
+}
+
 /// `length --svg FILE [--id ID]`: a JSON array, one object per path or shape of the file (or the
-/// one with the id), each the length output of its svg_path spec with its element, id and index.
+/// one with the id), each the length output of its svg_path spec with its element, id and index,
+/// the path data measured and its segments (segments_json).
 void length_of_svg(const length_args& a) {
   std::vector<tool::svg_element> elements = tool::read_svg_elements(a.svg);
   if (!a.id.empty()) {
@@ -229,8 +271,9 @@ void length_of_svg(const length_args& a) {
   for (const tool::svg_element& e : elements) {
     const cb::io::field spec = cb::io::root(e.spec, e.where);
     // "d": the path data measured (a shape's is the path SVG 2 defines for it).
-    nlohmann::json j{
-        {"element", e.element}, {"id", e.id}, {"index", e.index}, {"d", cb::io::svg_path_family::path_data(spec)}};
+    std::string d = cb::io::svg_path_family::path_data(spec);
+    nlohmann::json j{{"element", e.element}, {"id", e.id}, {"index", e.index}, {"segments", segments_json(d)}};
+    j["d"] = std::move(d);
     j.update(length<2>(spec, a));
     all.push_back(std::move(j));
   }

@@ -65,6 +65,19 @@
 //   nbPoints=1000); length() is that polyline's length. Points: Path3D over the curve's points,
 //   getPointAt(fraction of its own length), walking the polyline from its start on each call and
 //   interpolating linearly between its points (so on the chords).
+// - three 0.187.0 CatmullRomCurve3 (peer_three_catmull_rom) on the request's "catmull_rom" cases
+//   (points, with three's curveType matching the case's alpha: "catmullrom" (tension 0.5) for 0,
+//   "centripetal" for 1/2, "chordal" for 1; closed as the case): getPoint(t) takes segment
+//   floor((n - 1) t) (n t when closed) at weight w, extrapolating P_-1 = 2 P_0 - P_1 at an open
+//   end, and evaluates the cubic Hermite of the nonuniform Catmull-Rom tangents (intervals
+//   |P_i+1 - P_i|^alpha as pow(squared distance, alpha / 2); an interval below 1e-4 is replaced, for
+//   repeated points) at w. Curve.getLength(): the polyline through getPoint at arcLengthDivisions + 1
+//   equally spaced t (200 by default: 200 chords whatever the number of segments; setting
+//   "divisions=1000" and, for long splines, 10 per segment); getUtoTmapping(u): t for a fraction u of
+//   that length by binary search and linear interpolation in the table; getPointAt(u) =
+//   getPoint(getUtoTmapping(u)); getSpacedPoints(n - 1). Each run also carries "t_at_s" (getUtoTmapping
+//   at the request's s) and "values": getPoint at the request's t grid, both measured against
+//   curvebench's Catmull-Rom through the same points (shipped_results.py).
 // Shape cases use "d" for every peer: the libraries' own shape helpers start elsewhere (paper's
 // Path.Ellipse at the left end, svg-path-commander's shapeToPath at (cx - r, cy)), so their points
 // at s would not be the SVG shape's.
@@ -160,10 +173,13 @@ function measure(peer, c, spec, out) {
       spaced = !(n >= 2) ? null : spec.spaced ? spec.spaced(o, n, L)
         : Array.from({ length: n }, (_, k) => spec.point(o, k === n - 1 ? L : (k / (n - 1)) * L));
     }
+    // Extra outputs of a run (CatmullRomCurve3: t_at_s, values): {key: list of numbers or points}.
+    const extra = spec.extra ? spec.extra(o, L, asked ? asked.s : c.s) : {};
     const bad = [];
     if (!finite(L)) bad.push(`length ${L}`);
-    for (const [what, list] of [["point", points], ["spaced point", spaced]])
-      if (list) list.forEach((p, i) => { if (!p || !finite(p[0]) || !finite(p[1])) bad.push(`${what} ${i}: ${JSON.stringify(p)}`); });
+    const okPoint = (p) => Array.isArray(p) && p.length >= 2 && p.every(finite);
+    for (const [what, list] of [["point", points], ["spaced point", spaced], ...Object.entries(extra)])
+      if (list) list.forEach((p, i) => { if (!(typeof p === "number" ? finite(p) : okPoint(p))) bad.push(`${what} ${i}: ${JSON.stringify(p)}`); });
     if (bad.length) {
       out.skipped.push({ peer, case: c.case, reason: (spec.setting ? `[${spec.setting}] ` : "") + `not finite: ${bad.slice(0, 3).join("; ")}` });
       return;
@@ -175,7 +191,7 @@ function measure(peer, c, spec, out) {
       nsPoint = timeNs(() => { let sum = 0; for (const s of ss) sum += spec.point(o, s)[0]; return sum; }) / ss.length;
     }
     const run = { peer, case: c.case, setting: spec.setting, length: L, points, spaced,
-                  ns_length: nsLength, ns_point: nsPoint, ns_build: nsBuild };
+                  ns_length: nsLength, ns_point: nsPoint, ns_build: nsBuild, ...extra };
     const note = notes.filter((x) => x).join("; ");
     if (note) run.note = note;
     for (const k of ["ns_length", "ns_point", "ns_build"]) if (run[k] !== null && !finite(run[k])) run[k] = null;
@@ -412,6 +428,38 @@ const PEERS = [
       }));
     },
   },
+  {
+    peer: "peer_three_catmull_rom", pkgs: ["three"], input: "catmull_rom",
+    load: async () => import("three"),
+    specs: (THREE, c) => {
+      const pts = c.points.map(([x, y, z]) => new THREE.Vector3(x, y, z));
+      const dims = (p) => c.dim === 3 ? [p.x, p.y, p.z] : [p.x, p.y];
+      const segments = c.closed ? pts.length : pts.length - 1;
+      const divisions = [[200, ""], [1000, "divisions=1000"]];
+      if (10 * segments > 1000) divisions.push([10 * segments, `divisions=${10 * segments}`]);
+      return divisions.map(([div, tag]) => ({
+        setting: [c.curve_type, tag].filter((x) => x).join(", "),
+        build: () => {
+          const k = new THREE.CatmullRomCurve3(pts, c.closed, c.curve_type, 0.5);
+          k.arcLengthDivisions = div;
+          k.getLengths();
+          return k;
+        },
+        length: (k) => k.getLength(),
+        point: (k, s) => dims(k.getPointAt(Math.min(Math.max(s / k.getLength(), 0), 1))),
+        spaced: (k, n) => k.getSpacedPoints(n - 1).map(dims),
+        extra: (k, L, ss) => ({
+          t_at_s: ss.map((s) => k.getUtoTmapping(Math.min(Math.max(s / L, 0), 1))),
+          values: c.t.map((t) => dims(k.getPoint(t))),
+        }),
+        lengthFresh: (k) => { k.updateArcLengths(); return k.getLength(); },
+        dispose: () => {},
+        note: `CatmullRomCurve3(points, closed=${c.closed}, "${c.curve_type}", tension 0.5), arcLengthDivisions ${div} ` +
+              `(${segments} segments); points: getPointAt(s / getLength()); t_at_s: getUtoTmapping(s / getLength()); ` +
+              "ns_build: the constructor and its length table (getLengths); ns_length: updateArcLengths() + getLength()",
+      }));
+    },
+  },
 ];
 
 async function main() {
@@ -429,10 +477,11 @@ async function main() {
       api = await peer.load();
       for (const p of peer.pkgs) out.versions[p] = versionOf(p);
     } catch (e) {
-      for (const c of request.cases) out.skipped.push({ peer: peer.peer, case: c.case, reason: `not loaded: ${e.message}` });
+      for (const c of request[peer.input ?? "cases"] ?? [])
+        out.skipped.push({ peer: peer.peer, case: c.case, reason: `not loaded: ${e.message}` });
       continue;
     }
-    for (const c of request.cases) {
+    for (const c of request[peer.input ?? "cases"] ?? []) {
       let specs;
       try {
         specs = peer.specs(api, c);

@@ -17,6 +17,21 @@ point nearest it, all at 50 digits. Per run:
                  lengths between the n equally spaced points (0 for a perfect spacing)
   ns_length, ns_point, ns_build   as the driver timed them (null where it did not)
 
+Runs on the request's "catmull_rom" cases (three's CatmullRomCurve3) carry 2D or 3D points as the
+case is, and two more outputs, measured against curvebench's Catmull-Rom through the same points:
+  map_s_error      max over s of |s(u) - s| / L where u is curvebench's parameter at the peer's
+                   getUtoTmapping t (`check --inverse`): its u(s) alone, without evaluation
+  eval_error       max over the request's t grid of |getPoint(t) - P(u(t))| in ulps of double x the
+                   curve's size (`check --values --unit ulp-double`), beside
+  curvebench_eval_error   the same of curvebench's own double evaluation (`curvebench sample`) at the
+                   same u
+  eval_floor       max over the grid of |P'(u)| ulp(u) / (eps(double) x size): what rounding the
+                   parameter to a double alone moves the point by (0 on uniform knots, where
+                   u = (n - 1) t exactly). three's t becomes curvebench's u = u_i + w (u_i+1 - u_i), rounded;
+                   the exact point of that rounded u is the reference, so a getPoint error below
+                   eval_floor is not distinguishable from that rounding (curvebench's own is
+                   evaluated at the rounded u itself, and does not carry it)
+
 Written to --out as {"driver", "versions", "cpu", "request_tool", "rows": [...], "skipped": [...]};
 scripts/report_shipped.py makes REPORT.md's "Arc length in shipped software" from these files.
 The joining is pure (rows_of, spacing_cv) and tested on recorded outputs by
@@ -33,6 +48,7 @@ import sys
 from concurrent.futures import ThreadPoolExecutor
 
 import peer_io
+import shipped_request
 
 DRIVER_FORMAT = "curvebench-shipped-driver-1"
 REQUEST_FORMAT = "curvebench-shipped-request-1"
@@ -42,14 +58,23 @@ class ShippedError(Exception):
     pass
 
 
-def _finite_points(points, what):
+def _finite(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+
+def _finite_points(points, what, dim=2):
+    shape = "[x, y]" if dim == 2 else "[x, y, z]"
     if not isinstance(points, list):
-        raise ShippedError(f"{what}: expected a list of [x, y], got {points!r}"[:200])
+        raise ShippedError(f"{what}: expected a list of {shape}, got {points!r}"[:200])
     for i, p in enumerate(points):
-        if not (isinstance(p, list) and len(p) == 2 and all(isinstance(v, (int, float)) and math.isfinite(v)
-                                                            for v in p)):
-            raise ShippedError(f"{what}[{i}]: expected [x, y] of finite numbers, got {p!r}"[:200])
+        if not (isinstance(p, list) and len(p) == dim and all(_finite(v) for v in p)):
+            raise ShippedError(f"{what}[{i}]: expected {shape} of finite numbers, got {p!r}"[:200])
     return points
+
+
+def request_cases(request):
+    """{case name: request entry} of both the path cases and the Catmull-Rom cases."""
+    return {c["case"]: c for c in request["cases"] + request.get("catmull_rom", [])}
 
 
 def validate(driver, request):
@@ -59,21 +84,29 @@ def validate(driver, request):
         raise ShippedError(f"driver output: format {driver.get('format')!r}, expected {DRIVER_FORMAT!r}")
     if request.get("format") != REQUEST_FORMAT:
         raise ShippedError(f"request: format {request.get('format')!r}, expected {REQUEST_FORMAT!r}")
-    cases = {c["case"]: c for c in request["cases"]}
+    cases = request_cases(request)
     for i, run in enumerate(driver.get("runs", [])):
         where = f"runs[{i}] ({run.get('peer')}, {run.get('case')})"
         case = cases.get(run.get("case"))
         if case is None:
             raise ShippedError(f"{where}: the case is not in the request")
-        if run.get("length") is not None and not (isinstance(run["length"], (int, float))
-                                                  and math.isfinite(run["length"])):
+        dim = case.get("dim", 2)
+        if run.get("length") is not None and not _finite(run["length"]):
             raise ShippedError(f"{where}: length {run['length']!r} is not a finite number")
         if run.get("points") is not None:
-            _finite_points(run["points"], where + ".points")
+            _finite_points(run["points"], where + ".points", dim)
             if len(run["points"]) != len(case["s"]):
                 raise ShippedError(f"{where}: {len(run['points'])} points for the request's {len(case['s'])} s")
         if run.get("spaced") is not None:
-            _finite_points(run["spaced"], where + ".spaced")
+            _finite_points(run["spaced"], where + ".spaced", dim)
+        if run.get("values") is not None:
+            _finite_points(run["values"], where + ".values", dim)
+            if len(run["values"]) != len(case.get("t", [])):
+                raise ShippedError(f"{where}: {len(run['values'])} values for the request's {len(case.get('t', []))} t")
+        if run.get("t_at_s") is not None:
+            t = run["t_at_s"]
+            if not (isinstance(t, list) and len(t) == len(case["s"]) and all(_finite(v) and 0 <= v <= 1 for v in t)):
+                raise ShippedError(f"{where}: t_at_s must hold one t in [0, 1] per request s, got {t!r}"[:200])
     return cases
 
 
@@ -82,29 +115,39 @@ def file_stem(run):
     return re.sub(r"[^A-Za-z0-9_.=-]", "_", f"{run['peer']}.{run.get('setting') or 'default'}.{run['case']}")
 
 
+def _axes(case):
+    return ["x", "y", "z"][:case.get("dim", 2)]
+
+
 def write_csvs(run, case, work):
-    """The run's points (s,x,y) and spaced points (x,y) as CSV files in work: {kind: path}."""
+    """The run's points (s,x,y[,z]) and spaced points as CSV files in work, and for a Catmull-Rom
+    run its values (u,x,y[,z]) and t_at_s (s,u): {kind: path}."""
     out = {}
     stem = os.path.join(work, file_stem(run))
-    if run.get("points"):
-        out["points"] = stem + ".points.csv"
-        with open(out["points"], "w", newline="", encoding="utf-8") as f:
+    axes = _axes(case)
+
+    def write(kind, header, rows):
+        out[kind] = f"{stem}.{kind}.csv"
+        with open(out[kind], "w", newline="", encoding="utf-8") as f:
             w = csv.writer(f)
-            w.writerow(["s", "x", "y"])
-            for s, (x, y) in zip(case["s"], run["points"]):
-                w.writerow([repr(float(s)), repr(float(x)), repr(float(y))])
+            w.writerow(header)
+            for row in rows:
+                w.writerow([repr(float(v)) for v in row])
+    if run.get("points"):
+        write("points", ["s"] + axes, ([s] + p for s, p in zip(case["s"], run["points"])))
+    if run.get("values"):
+        write("values", ["u"] + axes, ([u] + p for u, p in zip(case["u"], run["values"])))
+    if run.get("t_at_s"):
+        end = case["knots"][-1]
+        u_of = [min(shipped_request.three_parameter(t, case["knots"], case["closed"]), end) for t in run["t_at_s"]]
+        write("inverse", ["s", "u"], zip(case["s"], u_of))
     if run.get("spaced") and len(run["spaced"]) >= 2:
         # Each spaced point is where the k-th of n should be, s = k L / (n - 1) (L the true length):
         # its error is its distance from there, and where the curve passes it twice (a cusp folds
         # back on itself) its s_true is the branch nearest that s.
-        out["spaced"] = stem + ".spaced.csv"
         n = len(run["spaced"])
-        with open(out["spaced"], "w", newline="", encoding="utf-8") as f:
-            w = csv.writer(f)
-            w.writerow(["s", "x", "y"])
-            for k, (x, y) in enumerate(run["spaced"]):
-                s = case["length"] if k == n - 1 else case["length"] * k / (n - 1)
-                w.writerow([repr(float(s)), repr(float(x)), repr(float(y))])
+        write("spaced", ["s"] + axes, ([case["length"] if k == n - 1 else case["length"] * k / (n - 1)] + p
+                                       for k, p in enumerate(run["spaced"])))
     return out
 
 
@@ -120,9 +163,10 @@ def spacing_cv(s_true):
     return math.sqrt(sum((g - mean) ** 2 for g in gaps) / len(gaps)) / mean
 
 
-def row_of(run, checks, true_length=None):
+def row_of(run, checks, true_length=None, ours_eval=None):
     """One result row from a run and the `check --json` outputs of its CSVs ({kind: parsed json});
-    true_length: the case's L from another run's check, for a run with a length only (bezier-js)."""
+    true_length: the case's L from another run's check, for a run with a length only (bezier-js);
+    ours_eval: curvebench's own evaluation error at the case's u grid (Catmull-Rom cases)."""
     row = {k: run.get(k) for k in ("peer", "case", "setting", "ns_length", "ns_point", "ns_build", "note")}
     row["setting"] = row["setting"] or ""
     row["length"] = run.get("length")
@@ -147,11 +191,67 @@ def row_of(run, checks, true_length=None):
         row["off_curve"] = off if row["off_curve"] is None else max(row["off_curve"], off)
     else:
         row["spacing_cv"] = None
+    if "values" in checks or "inverse" in checks:
+        row["eval_error"] = checks["values"]["checks"][0]["summary"]["max"] if "values" in checks else None
+        row["map_s_error"] = checks["inverse"]["checks"][0]["summary"]["max"] if "inverse" in checks else None
+        row["curvebench_eval_error"] = ours_eval
     return row
 
 
-def check_command(tool, spec, csv_path, peer):
-    return [tool, "check", spec, "--at-length", csv_path, "--name", peer, "--json", "--quiet"]
+CHECK_OPTION = {"points": ["--at-length"], "spaced": ["--at-length"], "values": ["--unit", "ulp-double", "--values"],
+                "inverse": ["--inverse"]}
+
+
+def check_command(tool, spec, csv_path, peer, kind="points"):
+    return [tool, "check", spec] + CHECK_OPTION[kind] + [csv_path, "--name", peer, "--json", "--quiet"]
+
+
+def curvebench_eval_jobs(request, cases_dir, tool, work):
+    """For each Catmull-Rom case: curvebench's own double evaluation at the case's u grid (`curvebench
+    sample`), as a values CSV to check like the peers': [(case, check command)]."""
+    jobs = []
+    for c in request.get("catmull_rom", []):
+        spec = os.path.join(cases_dir, c["case"] + ".json")
+        at = os.path.join(work, f"curvebench.{c['case']}.u.txt")
+        with open(at, "w", encoding="utf-8") as f:
+            f.write("".join(repr(float(u)) + "\n" for u in c["u"]))
+        values = os.path.join(work, f"curvebench.{c['case']}.values.csv")
+        with open(values, "w", encoding="utf-8") as f:
+            p = subprocess.run([tool, "sample", spec, "--at-file", at, "--derivatives", "0", "--quiet"], stdout=f,
+                               stderr=subprocess.PIPE, text=True)
+        if p.returncode != 0:
+            raise ShippedError(f"curvebench sample {spec}: exit {p.returncode}: {p.stderr.strip()[:500]}")
+        jobs.append((c["case"], check_command(tool, spec, values, "curvebench", "values")))
+    return jobs
+
+
+def eval_floor(sample_csv, size):
+    """max |P'(u)| ulp(u) / (eps x size) over the rows of `curvebench sample --derivatives 1` output."""
+    eps = 2.0 ** -52
+    worst = 0.0
+    with open(sample_csv, encoding="utf-8") as f:
+        for row in csv.DictReader(f):
+            speed = math.sqrt(sum(float(row[k]) ** 2 for k in row if k.startswith("d") and len(k) == 2))
+            worst = max(worst, speed * math.ulp(float(row["u"])))
+    return worst / (eps * size) if size else None
+
+
+def eval_floors(request, cases_dir, tool, work, sizes):
+    """{case: eval_floor} of the Catmull-Rom cases, from their u grid's derivatives."""
+    out = {}
+    for c in request.get("catmull_rom", []):
+        if c["case"] not in sizes:
+            continue
+        spec = os.path.join(cases_dir, c["case"] + ".json")
+        at = os.path.join(work, f"curvebench.{c['case']}.u.txt")
+        sample = os.path.join(work, f"curvebench.{c['case']}.derivatives.csv")
+        with open(sample, "w", encoding="utf-8") as f:
+            p = subprocess.run([tool, "sample", spec, "--at-file", at, "--derivatives", "1", "--quiet"], stdout=f,
+                               stderr=subprocess.PIPE, text=True)
+        if p.returncode != 0:
+            raise ShippedError(f"curvebench sample {spec}: exit {p.returncode}: {p.stderr.strip()[:500]}")
+        out[c["case"]] = eval_floor(sample, sizes[c["case"]])
+    return out
 
 
 def measure(driver, request, cases_dir, tool, work, jobs=2):
@@ -163,25 +263,39 @@ def measure(driver, request, cases_dir, tool, work, jobs=2):
         files = write_csvs(run, cases[run["case"]], work)
         spec = os.path.join(cases_dir, run["case"] + ".json")
         for kind, path in files.items():
-            jobs_list.append((run, kind, check_command(tool, spec, path, run["peer"])))
+            jobs_list.append((id(run), kind, check_command(tool, spec, path, run["peer"], kind)))
+    if any(run["case"] in {c["case"] for c in request.get("catmull_rom", [])} for run in driver.get("runs", [])):
+        jobs_list += [(case, "curvebench_values", cmd)
+                      for case, cmd in curvebench_eval_jobs(request, cases_dir, tool, work)]
 
     def one(job):
-        run, kind, cmd = job
+        key, kind, cmd = job
         p = subprocess.run(cmd, capture_output=True, text=True)
         if p.returncode != 0:
             raise ShippedError(f"{' '.join(cmd)}: exit {p.returncode}: {p.stderr.strip()[:500]}")
-        return id(run), kind, json.loads(p.stdout)
+        return key, kind, json.loads(p.stdout)
 
     checks = {}
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         for key, kind, out in pool.map(one, jobs_list):
             checks.setdefault(key, {})[kind] = out
+    ours_eval = {case: out["curvebench_values"]["checks"][0]["summary"]["max"]
+                 for case, out in checks.items() if isinstance(case, str)}
+    floors = eval_floors(request, cases_dir, tool, work,
+                         {case: out["curvebench_values"]["checks"][0]["size"]
+                          for case, out in checks.items() if isinstance(case, str)})
     # The case's L (the reference rounded to double, as check prints it) from any of its checks.
     lengths = {}
     for run in driver.get("runs", []):
         for out in checks.get(id(run), {}).values():
             lengths[run["case"]] = out["checks"][0]["length"]
-    rows = [row_of(run, checks.get(id(run), {}), lengths.get(run["case"])) for run in driver.get("runs", [])]
+    rows = [row_of(run, checks.get(id(run), {}), lengths.get(run["case"]), ours_eval.get(run["case"]))
+            for run in driver.get("runs", [])]
+    uniform = {c["case"] for c in request.get("catmull_rom", []) if c["curve_type"] == "catmullrom"}
+    for row in rows:
+        if "eval_error" in row:
+            # Uniform knots: u = u_i + w = (n - 1) t exactly (Sterbenz), nothing rounded.
+            row["eval_floor"] = 0.0 if row["case"] in uniform else floors.get(row["case"])
     # "peer_records" (none): the file sits beside the other peers_*.json, whose readers expect the key;
     # its measurements are "rows", the section of scripts/report_shipped.py.
     return {"driver": driver.get("driver"), "versions": driver.get("versions", {}), "cpu": driver.get("cpu"),

@@ -56,6 +56,20 @@ class Pure(unittest.TestCase):
         with self.assertRaisesRegex(shipped_results.ShippedError, "not in the request"):
             shipped_results.validate(driver, request)
 
+    def test_three_s_parameter_maps_to_the_segment_s_knots(self):
+        import shipped_request
+        knots = [0.0, 2.0, 3.0, 7.0]  # three segments of lengths 2, 1, 4 in curvebench's parameter
+        # three: segment floor(3 t) at weight 3 t - floor(3 t); t = 1 is the last segment at weight 1.
+        self.assertEqual(shipped_request.three_parameter(0.0, knots, False), 0.0)
+        self.assertEqual(shipped_request.three_parameter(0.5, knots, False), 2.5)  # segment 1, w = 1/2
+        self.assertEqual(shipped_request.three_parameter(1.0, knots, False), 7.0)
+        self.assertAlmostEqual(shipped_request.three_parameter(5 / 6, knots, False), 5.0, delta=1e-15)
+        # Knots: 0, then + |P_i+1 - P_i|^alpha; a closed loop adds the way back.
+        pts = [[0, 0], [3, 4], [3, 0]]
+        self.assertEqual(shipped_request.knots_of(pts, 0.5, False), [0.0, 5 ** 0.5, 5 ** 0.5 + 2])
+        self.assertEqual(shipped_request.knots_of(pts, 1, True), [0.0, 5.0, 9.0, 12.0])
+        self.assertEqual(shipped_request.knots_of(pts, 0, False), [0.0, 1.0, 2.0])
+
     def test_the_section_says_not_run_without_results(self):
         md = report_shipped.section({}, tempfile.mkdtemp())
         self.assertIn("## Arc length in shipped software", md)
@@ -132,7 +146,7 @@ class WithTool(unittest.TestCase):
         self.assertAlmostEqual(row["s_error"], (c["s"][-1] - 60) / 150, delta=1e-14)
 
     def test_recorded_driver_outputs_are_measured_and_reported(self):
-        files = sorted(f for f in os.listdir(RECORDED) if f.endswith("_driver.json")) if os.path.isdir(RECORDED) else []
+        files = sorted(f for f in os.listdir(RECORDED) if f.endswith("_driver.json"))
         self.assertTrue(files, "the recorded driver outputs are missing")
         reports = tempfile.mkdtemp()
         with open(os.path.join(RECORDED, "request.json"), encoding="utf-8") as f:
@@ -156,6 +170,41 @@ class WithTool(unittest.TestCase):
         md = "\n".join(report_shipped.section({}, reports))
         self.assertIn("### Every peer, worst case first", md)
         self.assertIn("### Findings", md)
+
+    def test_three_s_catmull_rom_is_measured_against_curvebench_s_spline(self):
+        """Recorded: three 0.187.0's CatmullRomCurve3 (shipped_node_driver.mjs --quick, Node 20.20.2) on
+        tests/data/peers/shipped/catmull_rom_request.json (shipped_request.py --only four catmull_rom
+        cases and svg_quarter_circle_arc)."""
+        with open(os.path.join(RECORDED, "catmull_rom_request.json"), encoding="utf-8") as f:
+            request = json.load(f)
+        with open(os.path.join(RECORDED, "catmull_rom_three.json"), encoding="utf-8") as f:
+            driver = json.load(f)
+        self.assertEqual({c["case"]: (c["curve_type"], c["dim"]) for c in request["catmull_rom"]},
+                         {"catmull_rom_centripetal_2d": ("centripetal", 2), "catmull_rom_uniform_2d": ("catmullrom", 2),
+                          "helix_catmull_rom_3d": ("centripetal", 3), "road_catmull_rom_100": ("centripetal", 2)})
+        rows = {(r["case"], r["setting"]): r
+                for r in shipped_results.measure(driver, request, CASES, TOOL, tempfile.mkdtemp())["rows"]}
+        for (case, setting), r in rows.items():
+            # The same curve: three's getPoint (phantom ends 2 P_0 - P_1, nonuniform Catmull-Rom tangents)
+            # against the 50-digit point of curvebench's spline, within curvebench's own double
+            # evaluation or the parameter's rounding, plus 4 ulps (a Hermite form's few roundings).
+            self.assertLessEqual(r["eval_error"], max(r["eval_floor"], r["curvebench_eval_error"]) + 4, r)
+            self.assertLess(r["curvebench_eval_error"], 4, r)
+            # A polyline inscribed in the curve is shorter than it (up to its sum's rounding).
+            self.assertLess(r["length"], r["true_length"] * (1 + 1e-15), r)
+            # getPointAt(u) = getPoint(getUtoTmapping(u)): the point's s error is its table's.
+            self.assertAlmostEqual(r["s_error"], r["map_s_error"], delta=1e-9 + 0.02 * r["map_s_error"], msg=str(r))
+        self.assertEqual(rows[("catmull_rom_uniform_2d", "catmullrom")]["eval_floor"], 0.0)  # u = (n - 1) t exactly
+        for case in ("catmull_rom_centripetal_2d", "catmull_rom_uniform_2d", "helix_catmull_rom_3d"):
+            kind = [k for c, k in rows if c == case and "divisions" not in k][0]
+            coarse, fine = rows[(case, kind)], rows[(case, kind + ", divisions=1000")]
+            # Chords of a smooth curve miss its length by O(h^2): 200 -> 1000 divisions divides the
+            # error by about 25 (measured 24.9 to 25.1; the band allows the curvature's variation).
+            self.assertGreater(coarse["length_error"] / fine["length_error"], 18, case)
+            self.assertLess(coarse["length_error"] / fine["length_error"], 32, case)
+        md = "\n".join(report_shipped.catmull_rom_findings(list(rows.values())))
+        self.assertIn("three's CatmullRomCurve3", md)
+        self.assertIn("no run exceeds both", md)
 
 
 if __name__ == "__main__":

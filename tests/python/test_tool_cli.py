@@ -414,6 +414,22 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(by_id["ring"]["d"], "M140 100 A40 40 0 0 1 100 140 A40 40 0 0 1 60 100 "
                                              "A40 40 0 0 1 100 60 A40 40 0 0 1 140 100 Z")
         self.assertEqual(by_id["arrow"]["d"], "M0,0 3,0 3,4 Z")
+        # The segments, absolute and explicit: the leaf's relative quadratics and T's reflected
+        # control point, the closing line of Z; the track's arcs with their centre form (centre
+        # (50, 50), radius 50, from angle pi a quarter turn in the direction of increasing angle).
+        leaf_segments = by_id["leaf"]["segments"]
+        self.assertEqual(len(leaf_segments), 1)
+        self.assertTrue(leaf_segments[0]["closed"])
+        self.assertEqual([(s["kind"], s["points"]) for s in leaf_segments[0]["segments"]],
+                         [("quadratic", [[200, 200], [220, 170], [240, 200]]),
+                          ("quadratic", [[240, 200], [260, 230], [280, 200]]), ("line", [[280, 200], [200, 200]])])
+        arc = by_id["track"]["segments"][0]["segments"][0]
+        self.assertEqual((arc["kind"], arc["points"], arc["sweep"], arc["large"]),
+                         ("arc", [[0, 50], [50, 0]], True, False))
+        for key, want_value in (("cx", 50), ("cy", 50), ("rx", 50), ("ry", 50), ("phi", 0), ("theta1", math.pi),
+                                ("dtheta", math.pi / 2)):
+            # atan2 of exact data: within 2 ulps of the angle.
+            self.assertAlmostEqual(arc["center"][key], want_value, delta=4e-16 * max(1, abs(want_value)), msg=key)
         # The relative quadratics of the leaf against the same curve as a spec.
         leaf = self.write("leaf.json",
                           json.dumps({"type": "svg_path", "d": "M200 200 Q220 170 240 200 T280 200 Z"}))
