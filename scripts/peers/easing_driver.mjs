@@ -9,6 +9,12 @@
 // @babylonjs/core 9.37.1 (peer_babylon_bezier_interpolate: BezierCurve.Interpolate(x, x1, y1, x2,
 // y2), what Babylon's BezierCurveEase evaluates; five Newton steps on x(u) = x from u = x, each
 // clamped to [0, 1], no convergence test; only Maths/math.path.js is loaded, no engine).
+// lottie-web 5.13.0 (peer_lottie_bezier_easing): the BezierFactory of its player
+// (player/js/3rd_party/BezierEaser.js, the module its bundles build in; loaded here from the pinned
+// package as an ES module, no page): a bezier-easing variant with an 11-entry sample table of x(u)
+// in a Float32Array (so the table's x are float32), 4 Newton steps when the slope is at least
+// 1e-3, else at most 10 bisection steps to 1e-7; what lottie's keyframes evaluate for their
+// temporal easing (its "o" and "i" tangents).
 // Query times: the accuracy runner's sample fractions (0, 1 and frac(j / phi) in between; 65, or
 // 257 without --quick). Time per evaluation: one call per time, as an animation loop calls them,
 // the best of 200 passes over all the times (the first ones warm V8 up) divided by their number;
@@ -37,6 +43,15 @@ function cubicBezier(easing) {
   return v.length === 4 && v.every(Number.isFinite) ? v : null;
 }
 
+// lottie's BezierEaser.js is an ES module inside a CommonJS package: imported from its text.
+const lottieEaser = (
+  await import(
+    "data:text/javascript," +
+      encodeURIComponent(fs.readFileSync(path.join("node_modules", "lottie-web", "player", "js", "3rd_party",
+                                                   "BezierEaser.js"), "utf8"))
+  )
+).default;
+
 const a = driverArgs("easing_driver", process.argv.slice(2), true);
 const times = sampleFractions(a.quick ? 65 : 257);
 const peers = {
@@ -47,6 +62,10 @@ const peers = {
     return (t) => solve(t);
   },
   peer_babylon_bezier_interpolate: ([x1, y1, x2, y2]) => (t) => BezierCurve.Interpolate(t, x1, y1, x2, y2),
+  peer_lottie_bezier_easing: (p) => {
+    const e = lottieEaser.getBezierEasing(...p);
+    return (t) => e.get(t);
+  },
 };
 const runs = [];
 const notes = [];
@@ -89,6 +108,7 @@ const doc = {
     "bezier-easing 2": version("bezier-easing"),
     "@mapbox/unitbezier": version("@mapbox/unitbezier"),
     "@babylonjs/core": version("@babylonjs/core"),
+    "lottie-web": version("lottie-web"),
   },
   notes,
   runs,
