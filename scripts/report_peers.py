@@ -49,7 +49,18 @@ OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
                     "shipped_browser": ("SVG getTotalLength / getPointAtLength in headless Chromium and Firefox ESR "
                                         "(scripts/peers/shipped_browser_driver.py)"),
                     "lottie": ("lottie-web's position along a spatial Bezier with eased timing, in headless Chromium "
-                               "(scripts/peers/lottie_driver.py)")}
+                               "(scripts/peers/lottie_driver.py)"),
+                    "qt": ("Qt 5's QPainterPath length / percentAtLength / pointAtPercent and QEasingCurve "
+                           "(bench/peers/qt, CURVEBENCH_PEER_QT)"),
+                    "occt": "OpenCASCADE's GCPnts length and abscissa (bench/peers/occt, CURVEBENCH_PEER_OCCT)",
+                    "lib2geom": ("lib2geom's bezier_length, SBasis length and arc_length_parametrization "
+                                 "(bench/peers/lib2geom, CURVEBENCH_PEER_2GEOM)"),
+                    "fonttools": ("fontTools' calcCubicArcLength and approximateCubicArcLength "
+                                  "(scripts/peers/fonttools_driver.py)"),
+                    "blender_length": ("Blender's Spline.calc_length and Follow Path "
+                                       "(scripts/peers/blender_length_driver.py; needs blender on PATH)"),
+                    "godot": ("Godot 3's Curve2D baked length and points, and bezier tracks "
+                              "(scripts/peers/godot_driver.py; needs godot3-server)")}
 
 
 def load_peer_files(report_dir):

@@ -165,6 +165,58 @@ def findings(rows, ours_rows):
     return out
 
 
+def base_peer(row):
+    """(the peer as the report names it, with a mode: a setting's first comma-separated part without
+    "=" (three's "centripetal", lib2geom's "sbasis"), the rest of the setting)."""
+    name = row["peer"][5:] if row["peer"].startswith("peer_") else row["peer"]
+    parts = [p.strip() for p in (row.get("setting") or "").split(",") if p.strip()]
+    if parts and "=" not in parts[0]:
+        return f"{name} ({parts[0]})", ", ".join(parts[1:])
+    return name, ", ".join(parts)
+
+
+def accurate_settings(rows, targets=(1e-6, 1e-10)):
+    """Per peer (without setting): its default setting's worst length error, and for each target the
+    cheapest of its settings (by median ns per length) whose worst length error over every case it
+    measured is at most the target: [[peer, cases, default worst, (setting, ns) per target...]].
+    A setting is compared on the cases the default measured, so a setting that skips the hard ones
+    does not pass."""
+    out = []
+    peers = {}
+    for r in rows:
+        if isinstance(r.get("length_error"), (int, float)):
+            name, setting = base_peer(r)
+            peers.setdefault(name, {}).setdefault(setting, []).append(r)
+    for peer, settings in peers.items():
+        default = settings.get("", next(iter(settings.values())))
+        cases = {r["case"] for r in default}
+        line = [peer, len(cases), fmt(_worst(default, "length_error")[0])]
+        for target in targets:
+            ok = []
+            for setting, rs in settings.items():
+                by_case = {r["case"]: r for r in rs}
+                if not cases <= set(by_case):
+                    continue
+                worst = max(by_case[c]["length_error"] for c in cases)
+                if worst <= target:
+                    ok.append((_median(list(by_case.values()), "ns_length") or math.inf, setting or "default", worst))
+            best = min(ok) if ok else None
+            line.append(f"{best[1]} ({fmt(best[0])} ns)" if best else "no measured setting")
+        out.append(line)
+    return out
+
+
+def tolerance_findings(rows):
+    """Sentences naming every run whose length is outside the error bound its library documents."""
+    out = []
+    for name, rs in by_peer([r for r in rows if r.get("outside_tolerance")]).items():
+        worst = max(rs, key=lambda r: abs(r["length"] - r["true_length"]) / r["documented_tolerance"])
+        out.append(f"- **{name}** is outside its documented length tolerance on {len(rs)} case(s): on {worst['case']} "
+                   f"it is {fmt(abs(worst['length'] - worst['true_length']))} off (absolute) where its documentation "
+                   f"bounds the error by {fmt(worst['documented_tolerance'])}.")
+    return out
+
+
 def catmull_rom_rows(rows):
     """The rows of runs on Catmull-Rom cases (three's CatmullRomCurve3): those with eval_error."""
     return [r for r in rows if "eval_error" in r]
@@ -270,7 +322,8 @@ def section(acc, report_dir, plot_dir=None, plt=None, savefig=None, link_prefix=
                 for p, data in files]
     md.append(table(["file", "driver", "versions", "CPU"], versions))
     cr_rows = catmull_rom_rows(rows)
-    md += ["", "### Findings", ""] + findings(rows, ours_rows) + catmull_rom_findings(cr_rows)
+    md += ["", "### Findings", ""] + findings(rows, ours_rows) + tolerance_findings(rows) + \
+        catmull_rom_findings(cr_rows)
     md += ["", "### Every peer, worst case first", "",
            "Length error |L_peer - L| / L; point error |P_peer(s) - P(s)| / L over s = k L / 16; s error: how far "
            "along the curve the returned point is from s, / L; spacing: the coefficient of variation of the true "
@@ -281,6 +334,11 @@ def section(acc, report_dir, plot_dir=None, plt=None, savefig=None, link_prefix=
                     summary_rows(rows)))
     md += ["", "\"build = points\": how many point queries cost as much as one build (the parse and, where the "
            "peer keeps one, its length table): the number of queries over which the build amortises."]
+    md += ["", "### The setting that reaches 1e-6 and 1e-10", "",
+           "Per peer: its defaults' worst length error, and the cheapest of its measured settings (median ns per "
+           "length call) whose worst length error is within the target on every case its defaults measured.", ""]
+    md.append(table(["peer", "cases", "default: worst length error", "reaches 1e-6", "reaches 1e-10"],
+                    accurate_settings(rows)))
     if ours_rows:
         md += ["", "curvebench on the same cases (accuracy.json): adaptive_gk at tol=1e-10 for the length, the most "
                "accurate u(s) method of the run for the s error:", ""]

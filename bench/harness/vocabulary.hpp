@@ -257,6 +257,35 @@ inline constexpr peer three_catmull_rom{
     "peer_three_catmull_rom", "three",
     "three: CatmullRomCurve3 (uniform, centripetal, chordal) getLength, getPointAt, "
     "getUtoTmapping, getSpacedPoints and getPoint"};
+// Native arc-length peers (issue 36; optional: bench/peers/<peer> under CURVEBENCH_PEER_*, run by
+// scripts/peers.sh on the shipped request and measured the same way).
+inline constexpr peer qt_painterpath{"peer_qt_painterpath", "Qt",
+                                     "Qt 5 (Debian): QPainterPath length, percentAtLength + pointAtPercent (absolute "
+                                     "tolerance 0.01)"};
+inline constexpr peer qt_easing_curve{"peer_qt_easing_curve", "Qt",
+                                      "Qt 5 (Debian): QEasingCurve BezierSpline with addCubicBezierSegment, "
+                                      "valueForProgress"};
+inline constexpr peer occt_gcpnts{"peer_occt_gcpnts", "OpenCASCADE",
+                                  "OpenCASCADE (Debian): GCPnts_AbscissaPoint::Length and the abscissa point, "
+                                  "GCPnts_UniformAbscissa, with and without a tolerance"};
+inline constexpr peer lib2geom{"peer_2geom", "lib2geom",
+                               "lib2geom (Debian): Curve::length (bezier_length), length of the SBasis form, "
+                               "arc_length_parametrization"};
+inline constexpr peer fonttools_calc{"peer_fonttools_calc", "fontTools",
+                                     "fontTools (Debian): calcCubicArcLength / calcQuadraticArcLength, tolerance as "
+                                     "the setting"};
+inline constexpr peer fonttools_approx{"peer_fonttools_approx", "fontTools",
+                                       "fontTools (Debian): approximateCubicArcLength (one 5-point Gauss-Lobatto "
+                                       "panel) / approximateQuadraticArcLength"};
+inline constexpr peer blender_calc_length{"peer_blender_calc_length", "Blender",
+                                          "Blender (Debian, headless): Spline.calc_length at resolution_u, Follow Path "
+                                          "positions"};
+inline constexpr peer godot_curve2d{"peer_godot_curve2d", "Godot",
+                                    "Godot 3.2 (Debian godot3-server): Curve2D get_baked_length, interpolate_baked, "
+                                    "bake_interval as the setting"};
+inline constexpr peer godot_bezier_track{"peer_godot_bezier_track", "Godot",
+                                         "Godot 3.2 (Debian godot3-server): Animation.bezier_track_interpolate of a "
+                                         "cubic-bezier easing"};
 inline constexpr peer lottie_web_position{"peer_lottie_web_position", "lottie-web",
                                           "lottie-web in headless Chromium: a layer's position along spatial Bezier "
                                           "keyframes with eased timing"};
@@ -306,6 +335,15 @@ inline constexpr const peer* all_peers[] = {&peers::boost_gauss,
                                             &peers::babylon_bezier_interpolate,
                                             &peers::lottie_bezier_easing,
                                             &peers::three_catmull_rom,
+                                            &peers::qt_painterpath,
+                                            &peers::qt_easing_curve,
+                                            &peers::occt_gcpnts,
+                                            &peers::lib2geom,
+                                            &peers::fonttools_calc,
+                                            &peers::fonttools_approx,
+                                            &peers::blender_calc_length,
+                                            &peers::godot_curve2d,
+                                            &peers::godot_bezier_track,
                                             &peers::lottie_web_position};
 
 /// What one item of a benchmark is: the unit of its time per operation.

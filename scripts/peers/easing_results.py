@@ -210,7 +210,8 @@ def _steps_notes(run):
 def _library(peer, versions):
     names = {"peer_bezier_easing_3": "bezier-easing 3", "peer_bezier_easing_2": "bezier-easing 2",
              "peer_mapbox_unitbezier": "@mapbox/unitbezier", "peer_babylon_bezier_interpolate": "@babylonjs/core",
-             "peer_chromium_waapi": "Chromium", "peer_lottie_bezier_easing": "lottie-web"}
+             "peer_chromium_waapi": "Chromium", "peer_lottie_bezier_easing": "lottie-web",
+             "peer_qt_easing_curve": "Qt", "peer_godot_bezier_track": "Godot"}
     name = names.get(peer, peer)
     return f"{name.split(' ')[0]} {versions.get(name, '?')}"
 

@@ -16,6 +16,9 @@ point nearest it, all at 50 digits. Per run:
   spacing_cv     the coefficient of variation (population standard deviation / mean) of the true arc
                  lengths between the n equally spaced points (0 for a perfect spacing)
   ns_length, ns_point, ns_build   as the driver timed them (null where it did not)
+  documented_tolerance, outside_tolerance   where the run carries "documented_length_tolerance"
+                   (the error bound its library documents, absolute, in path units: lib2geom's
+                   Curve::length), that bound and whether |L_peer - L| exceeds it
 
 Runs on the request's "catmull_rom" cases (three's CatmullRomCurve3) carry 2D or 3D points as the
 case is, and two more outputs, measured against curvebench's Catmull-Rom through the same points:
@@ -163,10 +166,18 @@ def spacing_cv(s_true):
     return math.sqrt(sum((g - mean) ** 2 for g in gaps) / len(gaps)) / mean
 
 
-def row_of(run, checks, true_length=None, ours_eval=None):
+def is_loop(case):
+    """Whether the request case is one closed subpath (or a closed Catmull-Rom spline)."""
+    if "segments" in case:
+        return len(case["segments"]) == 1 and bool(case["segments"][0].get("closed"))
+    return bool(case.get("closed"))
+
+
+def row_of(run, checks, true_length=None, ours_eval=None, loop=False):
     """One result row from a run and the `check --json` outputs of its CSVs ({kind: parsed json});
     true_length: the case's L from another run's check, for a run with a length only (bezier-js);
-    ours_eval: curvebench's own evaluation error at the case's u grid (Catmull-Rom cases)."""
+    ours_eval: curvebench's own evaluation error at the case's u grid (Catmull-Rom cases); loop:
+    the case is one closed loop (is_loop), whose spaced points' arc lengths count modulo L."""
     row = {k: run.get(k) for k in ("peer", "case", "setting", "ns_length", "ns_point", "ns_build", "note")}
     row["setting"] = row["setting"] or ""
     row["length"] = run.get("length")
@@ -176,6 +187,10 @@ def row_of(run, checks, true_length=None, ours_eval=None):
             L = checks[kind]["checks"][0]["length"]
     row["true_length"] = L
     row["length_error"] = (abs(run["length"] - L) / L if run.get("length") is not None and L else None)
+    if run.get("documented_length_tolerance") is not None and run.get("length") is not None and L:
+        # The peer documents its length's error bound (absolute, path units): outside it is a finding.
+        row["documented_tolerance"] = run["documented_length_tolerance"]
+        row["outside_tolerance"] = abs(run["length"] - L) > run["documented_length_tolerance"]
     if "points" in checks:
         rows = checks["points"]["checks"][0]["rows"]
         row["point_error"] = max(r["error"] for r in rows)
@@ -186,7 +201,12 @@ def row_of(run, checks, true_length=None, ours_eval=None):
         row["point_error"] = row["point_error_at"] = row["s_error"] = row["off_curve"] = None
     if "spaced" in checks:
         rows = checks["spaced"]["checks"][0]["rows"]
-        row["spacing_cv"] = spacing_cv([r["s_true"] for r in rows])
+        s_true = [r["s_true"] for r in rows]
+        if loop and L:
+            # A closed loop's start and end are one point: a spaced point a rounding past the end
+            # is nearest the start (s_true about 0 for s = L). Arc lengths count modulo L there.
+            s_true = [t + L * round((r["s"] - t) / L) for r, t in zip(rows, s_true)]
+        row["spacing_cv"] = spacing_cv(s_true)
         off = max(r["off_curve"] for r in rows)
         row["off_curve"] = off if row["off_curve"] is None else max(row["off_curve"], off)
     else:
@@ -223,6 +243,19 @@ def curvebench_eval_jobs(request, cases_dir, tool, work):
             raise ShippedError(f"curvebench sample {spec}: exit {p.returncode}: {p.stderr.strip()[:500]}")
         jobs.append((c["case"], check_command(tool, spec, values, "curvebench", "values")))
     return jobs
+
+
+def reference_length(case, spec, tool, work):
+    """The 50-digit length L of a request case (as check prints it), from `check --at-length` of the
+    curve's start point at s = 0."""
+    start = case["segments"][0]["start"] if "segments" in case else case["points"][0][:case.get("dim", 2)]
+    path = os.path.join(work, f"start.{re.sub(r'[^A-Za-z0-9_.=-]', '_', case['case'])}.csv")
+    with open(path, "w", newline="", encoding="utf-8") as f:
+        csv.writer(f).writerows([["s"] + _axes(case), [0.0] + [repr(float(v)) for v in start]])
+    p = subprocess.run(check_command(tool, spec, path, "start"), capture_output=True, text=True)
+    if p.returncode != 0:
+        raise ShippedError(f"curvebench check {spec} (its length): exit {p.returncode}: {p.stderr.strip()[:500]}")
+    return json.loads(p.stdout)["checks"][0]["length"]
 
 
 def eval_floor(sample_csv, size):
@@ -284,13 +317,16 @@ def measure(driver, request, cases_dir, tool, work, jobs=2):
     floors = eval_floors(request, cases_dir, tool, work,
                          {case: out["curvebench_values"]["checks"][0]["size"]
                           for case, out in checks.items() if isinstance(case, str)})
-    # The case's L (the reference rounded to double, as check prints it) from any of its checks.
+    # The case's L (the reference rounded to double, as check prints it) from any of its checks; a
+    # case whose runs have lengths only (fontTools, bezier-js alone) gets a check of its start point.
     lengths = {}
     for run in driver.get("runs", []):
         for out in checks.get(id(run), {}).values():
             lengths[run["case"]] = out["checks"][0]["length"]
-    rows = [row_of(run, checks.get(id(run), {}), lengths.get(run["case"]), ours_eval.get(run["case"]))
-            for run in driver.get("runs", [])]
+    for case in sorted({run["case"] for run in driver.get("runs", [])} - set(lengths)):
+        lengths[case] = reference_length(cases[case], os.path.join(cases_dir, case + ".json"), tool, work)
+    rows = [row_of(run, checks.get(id(run), {}), lengths.get(run["case"]), ours_eval.get(run["case"]),
+                   is_loop(cases[run["case"]])) for run in driver.get("runs", [])]
     uniform = {c["case"] for c in request.get("catmull_rom", []) if c["curve_type"] == "catmullrom"}
     for row in rows:
         if "eval_error" in row:

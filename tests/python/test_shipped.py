@@ -70,6 +70,36 @@ class Pure(unittest.TestCase):
         self.assertEqual(shipped_request.knots_of(pts, 1, True), [0.0, 5.0, 9.0, 12.0])
         self.assertEqual(shipped_request.knots_of(pts, 0, False), [0.0, 1.0, 2.0])
 
+    def test_the_setting_reaching_a_target_is_the_cheapest_on_every_case_the_defaults_measured(self):
+        def row(setting, case, err, ns, peer="peer_p"):
+            return {"peer": peer, "setting": setting, "case": case, "length_error": err, "ns_length": ns}
+        rows = [row("", "a", 1e-3, 10), row("", "b", 1e-4, 10),
+                row("tol=1", "a", 1e-7, 50), row("tol=1", "b", 1e-8, 70),      # 1e-6 at median 60 ns
+                row("tol=2", "a", 1e-11, 900), row("tol=2", "b", 1e-12, 900),  # 1e-10 and 1e-6 at 900 ns
+                row("tol=3", "a", 1e-12, 5),                                   # cheap, but skips case b
+                row("centripetal", "c", 1e-2, 3, "peer_q"), row("centripetal, divisions=9", "c", 1e-7, 4, "peer_q")]
+        got = {r[0]: r for r in report_shipped.accurate_settings(rows)}
+        self.assertEqual(got["p"], ["p", 2, "0.001", "tol=1 (60 ns)", "tol=2 (900 ns)"])
+        # A mode (a setting part without '=') belongs to the peer's name; its default is the mode alone.
+        self.assertEqual(got["q (centripetal)"],
+                         ["q (centripetal)", 1, "0.01", "divisions=9 (4 ns)", "no measured setting"])
+
+    def test_a_length_outside_its_documented_tolerance_is_a_finding(self):
+        rows = [{"peer": "peer_2geom", "setting": "tolerance=1e-08", "case": "c", "length": 1.0 + 3e-8,
+                 "true_length": 1.0, "documented_tolerance": 1e-8, "outside_tolerance": True},
+                {"peer": "peer_2geom", "setting": "tolerance=1e-08", "case": "d", "length": 2.0,
+                 "true_length": 2.0, "documented_tolerance": 1e-8, "outside_tolerance": False}]
+        # shipped_results' row: the bound the run carries, and whether |L_peer - L| exceeds it.
+        run = {"peer": "peer_2geom", "case": "c", "setting": "tolerance=1e-08", "length": 1.0 + 3e-8,
+               "documented_length_tolerance": 1e-8}
+        r = shipped_results.row_of(run, {}, 1.0)
+        self.assertEqual((r["documented_tolerance"], r["outside_tolerance"]), (1e-8, True))
+        self.assertFalse(shipped_results.row_of(dict(run, length=1.0 + 5e-9), {}, 1.0)["outside_tolerance"])
+        md = report_shipped.tolerance_findings(rows)
+        self.assertEqual(len(md), 1)
+        self.assertIn("2geom (tolerance=1e-08)** is outside its documented length tolerance on 1 case(s): on c", md[0])
+        self.assertIn("bounds the error by 1.00e-08", md[0])
+
     def test_the_section_says_not_run_without_results(self):
         md = report_shipped.section({}, tempfile.mkdtemp())
         self.assertIn("## Arc length in shipped software", md)
