@@ -1,0 +1,315 @@
+// curvebench_peer_occt: the OpenCASCADE peer of issue 36 (arc length and point at arc length as a CAD
+// kernel computes them), answering a "curvebench-shipped-request-1" with a
+// "curvebench-shipped-driver-1" document (format: scripts/peers/shipped_results.py).
+//
+//   curvebench_peer_occt --request REQ.json --out OUT.json [--quick]
+//
+// --quick: one timing pass per quantity instead of five (for tests and smoke runs).
+//
+// What is built. Each subpath segment of a request case becomes one 2D Geom curve and one
+// Geom2dAdaptor_Curve over it: a line, quadratic or cubic as a Geom2d_BezierCurve on its 2, 3 or 4
+// control points (degree 1, 2, 3); an arc, from the request's centre form
+// c + R(phi) (rx cos th, ry sin th), th from theta1 to theta1 + dtheta, as a Geom2d_Circle (rx == ry)
+// or Geom2d_Ellipse (major radius on the local X direction, so for rx < ry the axes are swapped and
+// the parameter shifted by pi/2) trimmed by a Geom2d_TrimmedCurve to that range; a negative dtheta is
+// taken by an indirect axis placement (gp_Ax22d with Y = -R(phi) e_y), so the trimmed curve runs
+// from the arc's first to its last point with increasing parameter. Coordinates are the SVG numbers
+// as they stand (y down is only a coordinate convention). A segment whose control points all
+// coincide (a zero-length closing line) is not built: OCCT refuses a curve of zero length.
+//
+// What OCCT computes (read from the installed 7.6 headers, /usr/include/opencascade):
+//  - GCPnts_AbscissaPoint::Length(adaptor) and Length(adaptor, tol): the integral of |C'(u)| over the
+//    adaptor's range, in double. CPnts_AbscissaPoint/CPnts_MyGaussFunction and
+//    math_GaussSingleIntegration: Gauss-Legendre with a fixed number of points ("Order") on the
+//    function |C'|; without a tolerance one fixed-order rule per continuity interval of the curve
+//    (Bezier: the whole curve; the order follows the curve's degree, a cubic Bezier gets 6 points —
+//    the issue's reading of the sources); with a tolerance the integration is repeated with more
+//    points/subintervals until successive results agree to that tolerance.
+//  - GCPnts_AbscissaPoint(adaptor, abscissa, U0) and (tol, adaptor, abscissa, U0): the parameter u
+//    with Integral(U0, u) |C'| = abscissa, found by a Newton-type iteration (CPnts_MyRootFunction:
+//    "a function for the Newton algorithm to find the solution of Integral(F) = L", its derivative
+//    |C'|); IsDone() false when it does not converge. The point is adaptor.Value(u).
+//  - GCPnts_UniformAbscissa(adaptor, n[, tol]): n parameters equally spaced by arc length from the
+//    first to the last point (its tolerance "used for more precise calculation of curve length",
+//    Precision::Confusion() = 1e-7 by default).
+//
+// Settings measured (the run's "setting"): "" = the user's default calls (Length without a
+// tolerance, AbscissaPoint without a tolerance, UniformAbscissa with its default tolerance);
+// "tolerance=1e-06" and "tolerance=1e-10" = the same calls with that tolerance. Per peer id
+// peer_occt_gcpnts. A path of several segments: its length is the sum of the segments' lengths; the
+// point at s is AbscissaPoint on the segment holding s (by the segments' lengths of the same
+// setting, computed once) from its first parameter; spaced points of a multi-segment path are those
+// points at k L_occt / (n - 1) (UniformAbscissa takes one curve), of a single segment
+// UniformAbscissa's. An s beyond OCCT's own length is asked at its length.
+//
+// Times (ns, best of five passes after a warm-up, each pass repeated until it lasts >= 20 us, per
+// call; one pass with --quick): ns_build = building all the case's Geom curves and adaptors;
+// ns_length = the path's length (all its segments' Length calls); ns_point = one point at length
+// (segment lookup, AbscissaPoint, Value), averaged over the request's s.
+#include "common/peer_driver.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <GCPnts_AbscissaPoint.hxx>
+#include <GCPnts_UniformAbscissa.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <Geom2d_BezierCurve.hxx>
+#include <Geom2d_Circle.hxx>
+#include <Geom2d_Ellipse.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <Standard_Failure.hxx>
+#include <Standard_Version.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
+#include <gp_Ax22d.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using nlohmann::json;
+namespace peers = curvebench::peers;
+
+namespace {
+
+struct Setting {
+  std::string name;
+  bool has_tol;
+  double tol;
+};
+
+const std::vector<Setting> kSettings = {
+    {"", false, 0.0}, {"tolerance=1e-06", true, 1e-6}, {"tolerance=1e-10", true, 1e-10}};
+
+struct Segment {
+  Handle(Geom2d_Curve) curve;
+  Handle(Geom2dAdaptor_Curve) adaptor;
+};
+
+gp_Pnt2d pnt(const json& p) { return gp_Pnt2d(p.at(0).get<double>(), p.at(1).get<double>()); }
+
+// One request segment as a Geom curve; a null handle for a zero-length one.
+Handle(Geom2d_Curve) build_segment(const json& seg) {
+  const std::string kind = seg.at("kind").get<std::string>();
+  const json& pts = seg.at("points");
+  if (kind == "arc") {
+    const json& c = seg.at("center");
+    const double cx = c.at("cx").get<double>(), cy = c.at("cy").get<double>();
+    const double rx = c.at("rx").get<double>(), ry = c.at("ry").get<double>(), phi = c.at("phi").get<double>();
+    const double th1 = c.at("theta1").get<double>(), dth = c.at("dtheta").get<double>();
+    if (rx == 0.0 || ry == 0.0 || dth == 0.0) throw std::runtime_error("degenerate arc (zero radius or sweep)");
+    const gp_Dir2d ex(std::cos(phi), std::sin(phi)), ey(-std::sin(phi), std::cos(phi));
+    const double sgn = dth < 0 ? -1.0 : 1.0;
+    Handle(Geom2d_Conic) conic;
+    double u1 = 0, u2 = 0;
+    const gp_Pnt2d centre(cx, cy);
+    if (rx >= ry) {
+      // P(u) = c + rx cos u ex + ry sin u (sgn ey), u = sgn th.
+      gp_Ax22d ax(centre, ex, gp_Dir2d(sgn * ey.X(), sgn * ey.Y()));
+      if (rx == ry)
+        conic = new Geom2d_Circle(ax, rx);
+      else
+        conic = new Geom2d_Ellipse(ax, rx, ry);
+      u1 = sgn * th1;
+      u2 = sgn * (th1 + dth);
+    } else {
+      // Major axis along ey: P(u) = c + ry cos u ey + rx sin u (-sgn ex), u = sgn (th - pi/2).
+      gp_Ax22d ax(centre, ey, gp_Dir2d(-sgn * ex.X(), -sgn * ex.Y()));
+      conic = new Geom2d_Ellipse(ax, ry, rx);
+      u1 = sgn * (th1 - std::numbers::pi / 2);
+      u2 = sgn * (th1 + dth - std::numbers::pi / 2);
+    }
+    return new Geom2d_TrimmedCurve(conic, u1, u2, Standard_True, Standard_True);
+  }
+  const int n = static_cast<int>(pts.size());
+  bool all_same = true;
+  for (int i = 1; i < n; ++i) all_same = all_same && pts.at(static_cast<size_t>(i)) == pts.at(0);
+  if (all_same) return Handle(Geom2d_Curve)();
+  TColgp_Array1OfPnt2d poles(1, n);
+  for (int i = 0; i < n; ++i) poles.SetValue(i + 1, pnt(pts.at(static_cast<size_t>(i))));
+  return new Geom2d_BezierCurve(poles);
+}
+
+std::vector<Segment> build_path(const json& c) {
+  std::vector<Segment> out;
+  for (const json& sub : c.at("segments"))
+    for (const json& seg : sub.at("segments")) {
+      Handle(Geom2d_Curve) curve = build_segment(seg);
+      if (curve.IsNull()) continue;
+      out.push_back({curve, new Geom2dAdaptor_Curve(curve)});
+    }
+  return out;
+}
+
+double seg_length(const Segment& s, const Setting& st) {
+  return st.has_tol ? GCPnts_AbscissaPoint::Length(*s.adaptor, st.tol) : GCPnts_AbscissaPoint::Length(*s.adaptor);
+}
+
+gp_Pnt2d seg_point(const Segment& s, double abscissa, const Setting& st) {
+  const double u0 = s.adaptor->FirstParameter();
+  double u = 0;
+  if (st.has_tol) {
+    GCPnts_AbscissaPoint ap(st.tol, *s.adaptor, abscissa, u0);
+    if (!ap.IsDone()) throw std::runtime_error("GCPnts_AbscissaPoint: IsDone() false");
+    u = ap.Parameter();
+  } else {
+    GCPnts_AbscissaPoint ap(*s.adaptor, abscissa, u0);
+    if (!ap.IsDone()) throw std::runtime_error("GCPnts_AbscissaPoint: IsDone() false");
+    u = ap.Parameter();
+  }
+  return s.adaptor->Value(u);
+}
+
+// The point at path arc length s (clamped to [0, total]) from the segments' lengths of this setting.
+gp_Pnt2d path_point(const std::vector<Segment>& segs, const std::vector<double>& lens, double total, double s,
+                    const Setting& st) {
+  s = std::clamp(s, 0.0, total);
+  double before = 0;
+  size_t k = 0;
+  for (; k + 1 < segs.size(); ++k) {
+    if (s <= before + lens[k]) break;
+    before += lens[k];
+  }
+  return seg_point(segs[k], std::min(s - before, lens[k]), st);
+}
+
+json xy(const gp_Pnt2d& p) {
+  if (!std::isfinite(p.X()) || !std::isfinite(p.Y())) throw std::runtime_error("a non-finite point");
+  return json::array({p.X(), p.Y()});
+}
+
+const char* kPeer = "peer_occt_gcpnts";
+
+// One run of a case and setting; throws (the caller records a skip) on a failure of OCCT.
+json run_case(const json& c, const Setting& st, const peers::Timing& timing) {
+  std::vector<Segment> segs = build_path(c);
+  if (segs.empty()) throw std::runtime_error("no segment of non-zero length");
+  std::vector<double> lens;
+  double total = 0;
+  for (const Segment& s : segs) {
+    lens.push_back(seg_length(s, st));
+    if (!std::isfinite(lens.back())) throw std::runtime_error("Length is not finite");
+    total += lens.back();
+  }
+  const std::vector<double> s_list = c.at("s").get<std::vector<double>>();
+  const int n_spaced = c.at("spaced").get<int>();
+  json points = json::array(), spaced = json::array();
+  bool clamped = false;
+  for (double s : s_list) {
+    clamped = clamped || s > total;
+    points.push_back(xy(path_point(segs, lens, total, s, st)));
+  }
+  const bool single = segs.size() == 1;
+  if (single) {
+    GCPnts_UniformAbscissa ua(*segs[0].adaptor, n_spaced, st.has_tol ? st.tol : -1.0);
+    if (!ua.IsDone() || ua.NbPoints() != n_spaced)
+      throw std::runtime_error("GCPnts_UniformAbscissa: not done or " + std::to_string(ua.NbPoints()) + " points");
+    for (int i = 1; i <= n_spaced; ++i) spaced.push_back(xy(segs[0].adaptor->Value(ua.Parameter(i))));
+  } else {
+    for (int k = 0; k < n_spaced; ++k)
+      spaced.push_back(xy(path_point(segs, lens, total, total * k / (n_spaced - 1), st)));
+  }
+
+  const double ns_build = peers::best_ns([&] { return static_cast<double>(build_path(c).size()); }, 1, timing);
+  const double ns_length = peers::best_ns(
+      [&] {
+        double t = 0;
+        for (const Segment& s : segs) t += seg_length(s, st);
+        return t;
+      },
+      1, timing);
+  const double ns_point = peers::best_ns(
+      [&] {
+        double sum = 0;
+        for (double s : s_list) sum += path_point(segs, lens, total, s, st).X();
+        return sum;
+      },
+      static_cast<double>(s_list.size()), timing);
+
+  std::string note = std::string("GCPnts_AbscissaPoint::Length") + (st.has_tol ? "(adaptor, tol)" : "(adaptor)") +
+                     " summed over " + std::to_string(segs.size()) + " Geom2d segment(s); point: AbscissaPoint" +
+                     (st.has_tol ? " with tol" : "") + " on the segment holding s";
+  note += single ? "; spaced: GCPnts_UniformAbscissa(adaptor, n)"
+                 : "; spaced: point at k L/(n-1) (UniformAbscissa takes one curve)";
+  if (clamped) note += "; s beyond OCCT's own length asked at its length";
+  return {{"peer", kPeer},        {"case", c.at("case")}, {"setting", st.name},     {"length", total},
+          {"points", points},     {"spaced", spaced},     {"ns_length", ns_length}, {"ns_point", ns_point},
+          {"ns_build", ns_build}, {"note", note}};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string req_path, out_path;
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--request" && i + 1 < argc)
+      req_path = argv[++i];
+    else if (a == "--out" && i + 1 < argc)
+      out_path = argv[++i];
+    else if (a == "--quick")
+      quick = true;
+    else {
+      std::cerr << "usage: curvebench_peer_occt --request REQ.json --out OUT.json [--quick]\n";
+      return 2;
+    }
+  }
+  if (req_path.empty() || out_path.empty()) {
+    std::cerr << "usage: curvebench_peer_occt --request REQ.json --out OUT.json [--quick]\n";
+    return 2;
+  }
+  json req;
+  try {
+    std::ifstream f(req_path);
+    if (!f) throw std::runtime_error("cannot read " + req_path);
+    f >> req;
+  } catch (const std::exception& e) {
+    std::cerr << "curvebench_peer_occt: " << e.what() << "\n";
+    return 1;
+  }
+  if (req.value("format", "") != "curvebench-shipped-request-1") {
+    std::cerr << "curvebench_peer_occt: not a curvebench-shipped-request-1\n";
+    return 1;
+  }
+  const peers::Timing timing = peers::Timing::fixed(quick);
+  json runs = json::array(), skipped = json::array();
+  for (const json& c : req.at("cases")) {
+    for (const Setting& st : kSettings) {
+      std::string why;
+      try {
+        runs.push_back(run_case(c, st, timing));
+      } catch (const Standard_Failure& e) {
+        why = std::string("OCCT raised ") + e.DynamicType()->Name() + ": " +
+              (e.GetMessageString() ? e.GetMessageString() : "");
+      } catch (const std::exception& e) {
+        why = e.what();
+      }
+      if (!why.empty())
+        skipped.push_back({{"peer", kPeer},
+                           {"case", c.at("case")},
+                           {"reason", (st.name.empty() ? std::string("default setting") : st.name) + ": " + why}});
+    }
+  }
+  json out = {{"driver", "occt"},
+              {"format", "curvebench-shipped-driver-1"},
+              {"versions",
+               {{"opencascade", OCC_VERSION_COMPLETE},
+                {"libocct-foundation-dev", peers::debian_version("libocct-foundation-dev")}}},
+              {"cpu", peers::cpu_model()},
+              {"runs", runs},
+              {"skipped", skipped}};
+  try {
+    peers::write_json(out_path, out);
+  } catch (const std::exception& e) {
+    std::cerr << "curvebench_peer_occt: " << e.what() << "\n";
+    return 1;
+  }
+  std::cerr << "curvebench_peer_occt: " << runs.size() << " runs, " << skipped.size() << " skipped -> " << out_path
+            << "\n";
+  return 0;
+}

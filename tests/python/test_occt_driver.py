@@ -1,0 +1,118 @@
+"""The OpenCASCADE peer driver (bench/peers/occt/occt_driver.cpp, issue 36) on its recorded output
+(tests/data/peers/occt/, README there: source, version, command), so that the output's parsing and
+joining is tested in CI where OCCT is not installed: validated against its request with
+shipped_results.validate, checked against hand-worked values, and, with CURVEBENCH_TOOL set (ctest
+shipped), measured by shipped_results.measure with errors asserted in bands that follow from what
+OCCT's GCPnts computes (the driver's header comment)."""
+import json
+import math
+import os
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(HERE, "..", "..")
+sys.path.insert(0, os.path.join(ROOT, "scripts", "peers"))
+import shipped_results  # noqa: E402
+
+DATA = os.path.join(ROOT, "tests", "data", "peers", "occt")
+CASES = os.path.join(ROOT, "bench", "cases")
+TOOL = os.environ.get("CURVEBENCH_TOOL")
+SETTINGS = {"": None, "tolerance=1e-06": 1e-6, "tolerance=1e-10": 1e-10}
+
+
+def load():
+    with open(os.path.join(DATA, "occt_driver.json"), encoding="utf-8") as f:
+        driver = json.load(f)
+    with open(os.path.join(DATA, "request.json"), encoding="utf-8") as f:
+        request = json.load(f)
+    return driver, request
+
+
+class Recorded(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.driver, cls.request = load()
+
+    def run_of(self, case, setting):
+        return next(r for r in self.driver["runs"] if r["case"] == case and r["setting"] == setting)
+
+    def test_the_output_validates_against_its_request(self):
+        shipped_results.validate(self.driver, self.request)
+        self.assertEqual(self.driver["driver"], "occt")
+        self.assertEqual(self.driver["versions"]["opencascade"], "7.6.3")
+
+    def test_every_case_and_setting_is_a_run_or_a_skip(self):
+        done = {(r["case"], r["setting"]) for r in self.driver["runs"]}
+        skipped = {s["case"] for s in self.driver["skipped"]}
+        for c in self.request["cases"]:
+            for setting in SETTINGS:
+                self.assertTrue((c["case"], setting) in done or c["case"] in skipped, (c["case"], setting))
+        for r in self.driver["runs"]:
+            self.assertTrue(r["peer"].startswith("peer_occt_"))
+            self.assertEqual(len(r["spaced"]), self.request["cases"][0]["spaced"])
+            for k in ("ns_length", "ns_point", "ns_build"):
+                self.assertGreater(r[k], 0)
+
+    def test_the_quarter_circle_is_the_closed_form(self):
+        # M100 0 A100 100 0 0 1 0 100: a Geom2d_Circle of radius 100 about the origin from angle 0 to
+        # pi/2 (y down is just the sign of the coordinates), whose point at arc length s is
+        # 100 (cos(s/100), sin(s/100)) and whose length is 50 pi: OCCT's circle is analytic, so to
+        # rounding (a few ulps of 100).
+        case = next(c for c in self.request["cases"] if c["case"] == "svg_quarter_circle_arc")
+        for setting in SETTINGS:
+            run = self.run_of("svg_quarter_circle_arc", setting)
+            self.assertAlmostEqual(run["length"], 50 * math.pi, delta=1e-12)
+            for s, (x, y) in zip(case["s"], run["points"]):
+                s = min(s, run["length"])
+                self.assertAlmostEqual(x, 100 * math.cos(s / 100), delta=1e-11)
+                self.assertAlmostEqual(y, 100 * math.sin(s / 100), delta=1e-11)
+
+    def test_a_multi_segment_path_ends_at_its_last_point(self):
+        # svg_every_command ends with V-3 Z back at the origin: the point at the path's own length.
+        run = self.run_of("svg_every_command", "tolerance=1e-10")
+        self.assertAlmostEqual(run["spaced"][-1][0], 0.0, delta=1e-9)
+        self.assertAlmostEqual(run["spaced"][-1][1], 0.0, delta=1e-9)
+        self.assertIn("point at k L/(n-1)", run["note"])
+
+
+@unittest.skipUnless(TOOL, "needs CURVEBENCH_TOOL (ctest shipped sets it)")
+class Measured(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        driver, request = load()
+        cls.result = shipped_results.measure(driver, request, CASES, TOOL, tempfile.mkdtemp())
+        cls.rows = {(r["case"], r["setting"]): r for r in cls.result["rows"]}
+
+    def test_with_a_tolerance_the_length_is_within_it(self):
+        # Length(adaptor, tol) repeats the Gauss integration until it agrees to tol: measured relative
+        # errors stay below tol on every recorded case (4.9e-13 the worst at 1e-10, on the 1e-3 cubic).
+        for (case, setting), row in self.rows.items():
+            tol = SETTINGS[setting]
+            if tol is not None:
+                self.assertLessEqual(row["length_error"], tol, (case, setting))
+
+    def test_with_a_tolerance_the_point_is_within_it_except_at_a_cusp(self):
+        # AbscissaPoint with tol: a Newton-type solve of Integral(U0, u)|C'| = s to tol; at the cusp of
+        # svg_cusp_fonttools |C'| = 0 slows it (2e-10 of L measured at 1e-10): a band of 1e-8 there.
+        for (case, setting), row in self.rows.items():
+            tol = SETTINGS[setting]
+            if tol is not None:
+                band = max(tol, 1e-8) if case == "svg_cusp_fonttools" else tol
+                self.assertLessEqual(row["point_error"], band, (case, setting))
+
+    def test_the_default_is_one_fixed_gauss_rule(self):
+        # Without a tolerance: one fixed-order Gauss rule, no error control. Circles are analytic
+        # (0); the smooth cubics 4.1e-4 of L (the same at every offset: a relative, scale-free error);
+        # the cusp about 2 % (|C'| has a kink there a polynomial rule cannot follow).
+        self.assertLess(self.rows[("svg_quarter_circle_arc", "")]["length_error"], 1e-14)
+        for case in ("svg_cubic_extent_1e-3", "svg_cubic_offset_1e6"):
+            self.assertLess(self.rows[(case, "")]["length_error"], 1e-3)
+            self.assertGreater(self.rows[(case, "")]["length_error"], 1e-5)
+        self.assertGreater(self.rows[("svg_cusp_fonttools", "")]["length_error"], 1e-2)
+        self.assertLess(self.rows[("svg_cusp_fonttools", "")]["length_error"], 5e-2)
+
+
+if __name__ == "__main__":
+    unittest.main()
