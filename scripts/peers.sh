@@ -61,7 +61,9 @@ done
 # way), so an exact pin breaks the next fresh install. Comparability comes from the record instead:
 # every driver writes the version it ran (Chromium's, SciPy's, Blender's, Node's) into its result,
 # and the report shows it. Where a driver depends on a major version it is checked below.
-apt_packages=(python3-scipy python3-numpy python3-mpmath chromium chromium-common firefox-esr blender)
+apt_packages=(python3-scipy python3-numpy python3-mpmath chromium chromium-common firefox-esr blender
+              qtbase5-dev libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+              lib2geom-dev python3-fonttools godot3-server)
 
 installed() {  # package -> 0 when installed (any version)
   [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
@@ -101,6 +103,10 @@ if [[ $install -eq 1 ]]; then
   require_major python3-scipy 1 "scipy_driver.py uses SciPy 1's interfaces"
   # blender_fcurves.py was written and its recordings made against Debian's Blender 3.4.
   require_major blender 3 "blender_fcurves.py uses Blender 3's F-curve API"
+  require_major qtbase5-dev 5 "bench/peers/qt is written against Qt 5's QPainterPath and QEasingCurve"
+  require_major libocct-foundation-dev 7 "bench/peers/occt uses OpenCASCADE 7's GCPnts"
+  # Godot 3's Curve2D and Animation APIs (Godot 4 renamed them); the report says these are Godot 3.2's.
+  require_major godot3-server 3 "scripts/peers/godot_driver.gd is GDScript for Godot 3"
   for p in "${apt_packages[@]}"; do
     echo "peers.sh: $p $(dpkg-query -W -f='${Version}' "$p" 2>/dev/null || echo 'not installed')"
   done
@@ -235,6 +241,86 @@ run_lottie() {
                    --tool "$tool" --work "$work" --out "$reports/peers_lottie.json"
 }
 
+# The native peers (issue 36): C++ drivers under bench/peers/, built once into build-peers/native
+# with the CMake switch of each whose Debian package is installed (the project's compiler flags and
+# ccache). native_tool NAME prints the program's path when it is built.
+native_dir="$root/build-peers/native"
+native_built=0
+build_native() {
+  [[ $native_built -eq 0 ]] || return 0
+  native_built=1
+  local options=() targets=() t
+  installed qtbase5-dev && options+=(-DCURVEBENCH_PEER_QT=ON) && targets+=(curvebench_peer_qt)
+  installed libocct-modeling-algorithms-dev && options+=(-DCURVEBENCH_PEER_OCCT=ON) && targets+=(curvebench_peer_occt)
+  installed lib2geom-dev && options+=(-DCURVEBENCH_PEER_2GEOM=ON) && targets+=(curvebench_peer_2geom)
+  [[ ${#options[@]} -gt 0 ]] || return 0
+  echo "peers.sh: building the native peer drivers (${options[*]})" >&2
+  mkdir -p "$native_dir"
+  # A driver that does not build is reported (its peer then says it is skipped), not fatal.
+  if cmake -S "$root" -B "$native_dir" -DCMAKE_BUILD_TYPE=Release -DCURVEBENCH_BUILD_TESTS=OFF \
+           -DCURVEBENCH_BUILD_BENCH=OFF "${options[@]}" >"$native_dir/build.log" 2>&1; then
+    for t in "${targets[@]}"; do
+      cmake --build "$native_dir" --parallel "$(nproc)" --target "$t" >>"$native_dir/build.log" 2>&1 ||
+        echo "peers.sh: $t did not build; see $native_dir/build.log" >&2
+    done
+  else
+    echo "peers.sh: the native peer drivers did not configure; see $native_dir/build.log" >&2
+  fi
+}
+[[ $check -eq 1 ]] || build_native
+native_tool() {
+  build_native
+  local exe="$native_dir/bench/peers/$1/curvebench_peer_${1/lib2geom/2geom}"
+  [[ -x "$exe" ]] && echo "$exe"
+}
+
+# shipped_native NAME DRIVER ARGS...: the shipped request answered by DRIVER ARGS... --request REQ
+# --out OUT and measured into reports/peers_shipped_NAME.json.
+shipped_run() {
+  local name=$1
+  shift
+  /usr/bin/python3 "$root/scripts/peers/shipped_request.py" --tool "$tool" --cases "$root/bench/cases" --out "$work/request.json"
+  "$@" --request "$work/request.json" --out "$work/${name}_driver.json" "${quick_args[@]}"
+  /usr/bin/python3 "$root/scripts/peers/shipped_results.py" --driver "$work/${name}_driver.json" \
+                   --request "$work/request.json" --cases "$root/bench/cases" --tool "$tool" --work "$work/check" \
+                   --out "$reports/peers_shipped_$name.json"
+}
+
+# easing_run NAME DRIVER ARGS...: the CSS cubic-bezier cases evaluated by DRIVER ARGS... --cases DIR
+# --out OUT, measured with curvebench's own evaluation at the same times (the channel solver table
+# of the Peers section) into reports/peers_NAME.json.
+easing_run() {
+  local name=$1
+  shift
+  "$@" --cases "$root/bench/cases" --out "$work/${name}_easing.json" "${quick_args[@]}"
+  mkdir -p "$work/curvebench"
+  /usr/bin/python3 "$root/scripts/peers/sample_css_runs.py" --driver "$work/${name}_easing.json" \
+                   --cases "$root/bench/cases" --tool "$tool" --out "$work/curvebench"
+  /usr/bin/python3 "$root/scripts/peers/easing_results.py" --driver "$work/${name}_easing.json" \
+                   --cases "$root/bench/cases" --curvebench-dir "$work/curvebench" --out "$reports/peers_$name.json"
+}
+
+# Qt 5 (issue 36): QPainterPath on the shipped request, QEasingCurve on the CSS cases (the channel
+# solver table, beside the easing peers).
+run_qt() {
+  local exe
+  exe=$(native_tool qt)
+  shipped_run qt "$exe" paths
+  easing_run qt "$exe" easing
+}
+
+# OpenCASCADE's GCPnts and lib2geom's lengths (issue 36) on the shipped request.
+run_occt() { shipped_run occt "$(native_tool occt)"; }
+run_lib2geom() { shipped_run lib2geom "$(native_tool lib2geom)"; }
+# fontTools' two cubic length functions, Blender's Spline.calc_length and Follow Path, Godot 3's
+# Curve2D (issue 36) on the same request; Godot's bezier tracks in the channel solver table.
+run_fonttools() { shipped_run fonttools /usr/bin/python3 "$root/scripts/peers/fonttools_driver.py"; }
+run_blender_length() { shipped_run blender_length /usr/bin/python3 "$root/scripts/peers/blender_length_driver.py"; }
+run_godot() {
+  shipped_run godot /usr/bin/python3 "$root/scripts/peers/godot_driver.py"
+  easing_run godot /usr/bin/python3 "$root/scripts/peers/godot_driver.py" easing
+}
+
 # Whether the drivers' requirements are there: a Python module; a pinned npm package in
 # build-peers/node (with node and mpmath, the truth of every Node peer); a program on PATH (with mpmath).
 python_has() { /usr/bin/python3 -c "import $1" 2>/dev/null; }
@@ -255,7 +341,7 @@ optional() {
     "$@" || { echo "peers.sh: $name: $missing" >&2; absent=$((absent + 1)); }
     return 0
   fi
-  rm -f "$reports/peers_$name.json"
+  rm -f "$reports/peers_$name.json" "$reports/peers_shipped_$name.json"
   if "$@"; then
     echo "peers.sh: $label"
     work="$reports/peers/$name"
@@ -287,6 +373,25 @@ optional shipped_browser "SVG lengths in $(chromium --version 2>/dev/null | head
 lottie_ready() { command -v chromium >/dev/null && [[ -f "$node_dir/node_modules/lottie-web/build/player/lottie_svg.min.js" ]]; }
 optional lottie "lottie-web in $(chromium --version 2>/dev/null | head -n 1)" \
   "chromium or lottie-web (build-peers/node) is not installed; lottie's motion is skipped" lottie_ready
+# native_ready PACKAGE NAME: the package and mpmath installed, and (unless --check) its driver built.
+native_ready() {
+  installed "$1" && python_has mpmath || return 1
+  [[ $check -eq 1 ]] || [[ -n "$(native_tool "$2")" ]]
+}
+optional qt "Qt $(dpkg-query -W -f='${Version}' qtbase5-dev 2>/dev/null) (QPainterPath, QEasingCurve)" \
+  "Qt 5 is not installed (qtbase5-dev, python3-mpmath) or its driver did not build; skipped" native_ready qtbase5-dev qt
+optional occt "OpenCASCADE $(dpkg-query -W -f='${Version}' libocct-foundation-dev 2>/dev/null) (GCPnts)" \
+  "OpenCASCADE is not installed (libocct-*-dev, python3-mpmath) or its driver did not build; skipped" \
+  native_ready libocct-modeling-algorithms-dev occt
+optional lib2geom "lib2geom $(dpkg-query -W -f='${Version}' lib2geom-dev 2>/dev/null)" \
+  "lib2geom is not installed (lib2geom-dev, python3-mpmath) or its driver did not build; skipped" \
+  native_ready lib2geom-dev lib2geom
+optional fonttools "fontTools $(dpkg-query -W -f='${Version}' python3-fonttools 2>/dev/null)" \
+  "fontTools is not installed (python3-fonttools, python3-mpmath); skipped" python_has "fontTools.misc.bezierTools, mpmath"
+optional blender_length "Blender's calc_length and Follow Path ($(blender --version 2>/dev/null | head -n 1))" \
+  "blender is not on PATH (or python3-mpmath is missing); Blender's curve lengths are skipped" on_path blender
+optional godot "Godot $(dpkg-query -W -f='${Version}' godot3-server 2>/dev/null) (Curve2D, bezier tracks)" \
+  "godot3-server is not installed (or python3-mpmath is missing); Godot is skipped" on_path godot3-server
 if [[ $check -eq 1 ]]; then
   [[ $absent -eq 0 ]] && echo "peers.sh: every optional peer is installed"
   [[ $absent -eq 0 ]]
