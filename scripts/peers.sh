@@ -303,10 +303,16 @@ easing_run() {
 # Qt 5 (issue 36): QPainterPath on the shipped request, QEasingCurve on the CSS cases (the channel
 # solver table, beside the easing peers).
 run_qt() {
-  local exe
+  local exe spec specs=()
   exe=$(native_tool qt)
   shipped_run qt "$exe" paths
   easing_run qt "$exe" easing
+  # QEasingCurve's TCB spline beside curvebench's Kochanek-Bartels through the same keys: the
+  # driver's own easing specs (no bench case is a uniform Kochanek-Bartels easing).
+  for spec in "$root"/bench/peers/qt/specs/*.json; do specs+=(--spec "$spec"); done
+  "$exe" tcb --cases "$root/bench/cases" "${specs[@]}" --out "$work/qt_tcb.json" "${quick_args[@]}"
+  /usr/bin/python3 "$root/scripts/peers/tcb_results.py" --driver "$work/qt_tcb.json" --cases "$root/bench/cases" \
+                   "${specs[@]}" --tool "$tool" --out "$reports/peers_qt_tcb.json"
 }
 
 # OpenCASCADE's GCPnts and lib2geom's lengths (issue 36) on the shipped request.
@@ -341,7 +347,7 @@ optional() {
     "$@" || { echo "peers.sh: $name: $missing" >&2; absent=$((absent + 1)); }
     return 0
   fi
-  rm -f "$reports/peers_$name.json" "$reports/peers_shipped_$name.json"
+  rm -f "$reports/peers_$name".json "$reports/peers_$name"_*.json "$reports/peers_shipped_$name.json"
   if "$@"; then
     echo "peers.sh: $label"
     work="$reports/peers/$name"

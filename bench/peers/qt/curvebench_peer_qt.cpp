@@ -9,7 +9,13 @@
 //       x2, y2)" evaluated at the accuracy runner's sample fractions (257, 65 with --quick); OUT.json
 //       in the format of scripts/peers/easing_driver.mjs (driver "qt_easing") for
 //       scripts/peers/easing_results.py.
-//   --quick: fewer and shorter timing passes (paths), 65 instead of 257 times (easing).
+//   curvebench_peer_qt tcb --cases bench/cases [--spec FILE]... --out OUT.json [--quick]
+//       every case file of DIR (and every --spec FILE) with "type": "kochanek_bartels" that an
+//       easing curve can hold (2D, open, no knots or uniform ones, x strictly increasing from key to
+//       key, first and last y different; the others named in "notes" with the reason) as a
+//       QEasingCurve TCB spline: its Bezier segments (toCubicSpline) and valueForProgress at the
+//       sample fractions; OUT.json (driver "qt_tcb") for scripts/peers/tcb_results.py.
+//   --quick: fewer and shorter timing passes (paths), 65 instead of 257 times (easing, tcb).
 // Neither mode creates a QGuiApplication: QPainterPath, QTransform and QEasingCurve are plain
 // geometry and need no platform plugin, so the program runs without a display.
 //
@@ -53,6 +59,16 @@
 //   finds the segment holding x and solves x(t) = x in closed form (a cube root by a bit trick
 //   refined with one Halley step, polynomial approximations of cos(acos(v) / 3) for three real
 //   roots, a root accepted in [-0.01, 1.01]), then evaluates y(t); all in double.
+// peer_qt_easing_curve (tcb mode): QEasingCurve(QEasingCurve::TCBSpline) with one
+//   addTCBSegment(key, t, c, b) per key, the first at (0, 0) and the last at (1, 1) (Qt's documented
+//   requirement; the keys are mapped affinely into the unit square, x' = (x - x0) / (xn - x0),
+//   y' = (y - y0) / (yn - y0), the map recorded). Adding (1, 1) converts the keys into one cubic
+//   Bezier per pair of keys (toCubicSpline(): inner point, inner point, end per segment, in double;
+//   an inner key's outgoing and incoming tangents weighted by (1 - t)(1 +- c)(1 +- b) / 2 on its
+//   arriving and leaving chords, the first and last key's tangent from their only chord), and
+//   valueForProgress evaluates that Bezier spline as above (the same approximate x(t) = x solve).
+//   A run records the map, the unit-square keys and their t, c, b, toCubicSpline()'s points, the
+//   values at the sample fractions and (key_values) at the keys' own x.
 //
 // Time limit: every phase of a case runs in a forked child process (peers::run_isolated,
 // bench/peers/common/peer_driver.hpp) with kPhaseLimit seconds, and every percentAtLength call in it
@@ -69,7 +85,7 @@
 // pass repeating the operation until it lasts >= 20 us, divided by the repeats:
 // ns_build = building the QPainterPath from the parsed segments; ns_length = one length() call
 // (no cache to clear in Qt 5); ns_point = one percentAtLength + pointAtPercent, averaged over the
-// request's s; ns_per_op (easing) = one valueForProgress, averaged over the times.
+// request's s; ns_per_op (easing, tcb) = one valueForProgress, averaged over the times.
 #include "common/peer_driver.hpp"
 
 #include <QtCore/QEasingCurve>
@@ -465,9 +481,133 @@ int easing_mode(const std::string &cases_dir, const std::string &out_path, bool 
   return 0;
 }
 
+// ---- mode 3: tcb ----------------------------------------------------------------------------------
+
+// A spec's per-key tension, continuity or bias: a number for every key, one per key, or 0.
+std::vector<double> per_key(const json &spec, const char *key, size_t n) {
+  if (!spec.contains(key)) return std::vector<double>(n, 0.0);
+  const json &v = spec.at(key);
+  if (v.is_number()) return std::vector<double>(n, v.get<double>());
+  if (!v.is_array() || v.size() != n)
+    throw std::runtime_error(std::string("\"") + key + "\" is neither a number nor one number per key");
+  std::vector<double> out;
+  for (const auto &e : v) out.push_back(e.get<double>());
+  return out;
+}
+
+// Why an easing curve cannot hold this kochanek_bartels spec, or "" when it can.
+std::string tcb_refusal(const json &spec, const std::vector<QPointF> &keys) {
+  if (spec.value("closed", false)) return "a closed loop (an easing curve is open)";
+  if (keys.size() < 2) return "fewer than two keys";
+  if (spec.contains("knots")) {
+    const json &k = spec.at("knots");
+    if (!k.is_array() || k.size() != keys.size()) return "knots not one per key";
+    const double h = k.at(1).get<double>() - k.at(0).get<double>();
+    for (size_t i = 1; i < k.size(); ++i)
+      if (k.at(i).get<double>() - k.at(i - 1).get<double>() != h)
+        return "non-uniform knots (Qt's TCB spline is uniform: one segment per key pair)";
+  }
+  for (size_t i = 1; i < keys.size(); ++i)
+    if (!(keys[i].x() > keys[i - 1].x())) return "key x not strictly increasing (not an easing curve)";
+  if (keys.back().y() == keys.front().y()) return "first and last key at the same y (no map onto (0, 0)-(1, 1))";
+  return "";
+}
+
+int tcb_mode(const std::string &cases_dir, const std::vector<std::string> &spec_files, const std::string &out_path,
+             bool quick) {
+  const std::vector<double> times = sample_fractions(quick ? 65 : 257);
+  std::vector<std::filesystem::path> files;
+  if (!cases_dir.empty())
+    for (const auto &e : std::filesystem::directory_iterator(cases_dir))
+      if (e.path().extension() == ".json") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const auto &f : spec_files) files.emplace_back(f);
+  json runs = json::array(), notes = json::array();
+  for (const auto &file : files) {
+    std::ifstream f(file);
+    if (!f) throw std::runtime_error("cannot read " + file.string());
+    const json spec = json::parse(f);
+    if (spec.value("type", "") != "kochanek_bartels") continue;
+    const std::string name = file.stem().string();
+    std::vector<QPointF> keys;
+    bool planar = true;
+    for (const auto &p : spec.at("points")) {
+      planar = planar && p.size() == 2;
+      if (planar) keys.push_back(point_of(p));
+    }
+    const std::string refusal = planar ? tcb_refusal(spec, keys) : "not 2D (an easing curve is planar)";
+    if (!refusal.empty()) {
+      notes.push_back(name + ": " + refusal + "; QEasingCurve's TCB spline cannot hold it");
+      continue;
+    }
+    const size_t n = keys.size();
+    const std::vector<double> t = per_key(spec, "tension", n), c = per_key(spec, "continuity", n),
+                              b = per_key(spec, "bias", n);
+    const double x0 = keys.front().x(), y0 = keys.front().y();
+    const double dx = keys.back().x() - x0, dy = keys.back().y() - y0;
+    QEasingCurve curve(QEasingCurve::TCBSpline);
+    json unit = json::array();
+    for (size_t i = 0; i < n; ++i) {
+      const QPointF q((keys[i].x() - x0) / dx, (keys[i].y() - y0) / dy);
+      unit.push_back({q.x(), q.y()});
+      curve.addTCBSegment(q, t[i], c[i], b[i]);
+    }
+    json bezier = json::array();
+    for (const QPointF &q : curve.toCubicSpline()) bezier.push_back({q.x(), q.y()});
+    if (bezier.size() != 3 * (n - 1)) {
+      notes.push_back(name + ": toCubicSpline() gave " + std::to_string(bezier.size()) + " points for " +
+                      std::to_string(n - 1) + " segments (3 each expected); not measured");
+      continue;
+    }
+    json values = json::array(), bad = json::array();
+    std::vector<double> timed;
+    for (const double x : times) {
+      const double v = curve.valueForProgress(x);
+      if (std::isfinite(v)) {
+        values.push_back(v);
+        timed.push_back(x);
+      } else {
+        values.push_back(nullptr);
+        bad.push_back({x, std::isnan(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity"});
+      }
+    }
+    json key_values = json::array();  // valueForProgress at the keys' own x (their y is Qt's segment ends)
+    for (const auto &q : unit) {
+      const double v = curve.valueForProgress(q.at(0).get<double>());
+      key_values.push_back(std::isfinite(v) ? json(v) : json(nullptr));
+    }
+    json run = {{"case", name},
+                {"peer", "peer_qt_easing_curve"},
+                {"key_values", key_values},
+                {"map", {{"x0", x0}, {"y0", y0}, {"dx", dx}, {"dy", dy}}},
+                {"keys", unit},
+                {"tcb", {{"tension", t}, {"continuity", c}, {"bias", b}}},
+                {"bezier", bezier},
+                {"times", times},
+                {"values", values}};
+    run["ns_per_op"] = timed.empty() ? json(nullptr)
+                                     : json(peers::best_ns(
+                                           [&] {
+                                             double sum = 0;
+                                             for (const double x : timed) sum += curve.valueForProgress(x);
+                                             return sum;
+                                           },
+                                           static_cast<double>(timed.size()), peers::Timing::budgeted(quick)));
+    if (!bad.empty()) run["non_finite"] = bad;
+    runs.push_back(run);
+  }
+  const json doc = {{"driver", "qt_tcb"},        {"quick", quick}, {"versions", versions()},
+                    {"cpu", peers::cpu_model()}, {"notes", notes}, {"runs", runs}};
+  peers::write_json(out_path, doc);
+  std::cout << "curvebench_peer_qt: " << runs.size() << " tcb runs, " << notes.size() << " notes -> " << out_path
+            << "\n";
+  return 0;
+}
+
 int usage() {
   std::cerr << "usage: curvebench_peer_qt paths --request REQ.json --out OUT.json [--quick]\n"
-               "       curvebench_peer_qt easing --cases DIR --out OUT.json [--quick]\n";
+               "       curvebench_peer_qt easing --cases DIR --out OUT.json [--quick]\n"
+               "       curvebench_peer_qt tcb [--cases DIR] [--spec FILE]... --out OUT.json [--quick]\n";
   return 2;
 }
 
@@ -477,6 +617,7 @@ int main(int argc, char **argv) {
   if (argc < 2) return usage();
   const std::string mode = argv[1];
   std::string request, cases, out;
+  std::vector<std::string> specs;
   bool quick = false;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
@@ -484,6 +625,8 @@ int main(int argc, char **argv) {
       quick = true;
     } else if ((a == "--request" || a == "--cases" || a == "--out") && i + 1 < argc) {
       (a == "--request" ? request : a == "--cases" ? cases : out) = argv[++i];
+    } else if (a == "--spec" && i + 1 < argc) {
+      specs.emplace_back(argv[++i]);
     } else {
       std::cerr << "curvebench_peer_qt: unknown argument " << a << "\n";
       return usage();
@@ -492,6 +635,7 @@ int main(int argc, char **argv) {
   try {
     if (mode == "paths" && !request.empty() && !out.empty()) return paths_mode(request, out, quick);
     if (mode == "easing" && !cases.empty() && !out.empty()) return easing_mode(cases, out, quick);
+    if (mode == "tcb" && (!cases.empty() || !specs.empty()) && !out.empty()) return tcb_mode(cases, specs, out, quick);
   } catch (const std::exception &e) {
     std::cerr << "curvebench_peer_qt: " << e.what() << "\n";
     return 1;
