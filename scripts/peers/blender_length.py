@@ -9,6 +9,10 @@ IN (written by blender_length_driver.py): {"resolutions": [12, 4, 64], "pass_ns"
 OUT: {"blender": bpy.app.version_string, "cases": [{"case", "results": [{"resolution", "length",
 "ns_length", "points", "spaced", "ns_point", "follow_note"}]} or {"case", "error"}]}.
 
+A case with "nurbs" ({"points": [[x, y, z, w]], "order", "endpoint", "cyclic"}) is one NURBS spline
+instead, and its results also carry "start" and "end": Follow Path at offset 0 and 1. Points are
+read as (x, y, z) for NURBS cases, (x, y) for Bezier ones.
+
 Per case one curve object ('3D', every handle FREE, so Blender keeps the given handles), one
 spline per subpath. Per resolution, every spline's resolution_u (and the curve's) is set and the
 length is the sum of Spline.calc_length() over the splines, as a user calls it; ns_length times
@@ -40,6 +44,18 @@ def build(case, index):
     cu = bpy.data.curves.new(f"cb_curve_{index}", 'CURVE')
     cu.dimensions = '3D'
     cu.use_path = True
+    if "nurbs" in case:
+        nu = case["nurbs"]
+        sp = cu.splines.new('NURBS')
+        sp.points.add(len(nu["points"]) - 1)
+        for pt, co in zip(sp.points, nu["points"]):
+            pt.co = co  # (x, y, z, w): co[3] is the weight (Blender 3.4's point.weight reads the same value)
+        sp.order_u = nu["order"]
+        sp.use_endpoint_u = bool(nu["endpoint"])
+        sp.use_cyclic_u = bool(nu["cyclic"])
+        ob = bpy.data.objects.new(f"cb_path_{index}", cu)
+        bpy.context.scene.collection.objects.link(ob)
+        return cu, ob
     for sp_in in case["splines"]:
         sp = cu.splines.new('BEZIER')
         pts = sp_in["points"]
@@ -70,7 +86,7 @@ def follow(ob, fractions, passes):
         c.offset_factor = f
         dg.update()
         t = e.matrix_world.translation
-        out.append([t[0], t[1]])
+        out.append([t[0], t[1], t[2]])
     best = None
     for _ in range(passes):
         t0 = time.perf_counter_ns()
@@ -107,6 +123,11 @@ def run_case(case, index, resolutions, pass_ns, passes):
             n = case["spaced"]
             if n >= 2:
                 r["spaced"], _ = follow(ob, [k / (n - 1) for k in range(n)], 1)
+            if "nurbs" in case:  # the evaluated path's ends, for the driver's check of the knot vector
+                r["start"], r["end"] = follow(ob, [0.0, 1.0], 1)[0]
+            else:  # a Bezier case is planar: (x, y)
+                r["points"] = [p[:2] for p in r["points"]]
+                r["spaced"] = r["spaced"] and [p[:2] for p in r["spaced"]]
         results.append(r)
     bpy.data.objects.remove(ob)
     bpy.data.curves.remove(cu)

@@ -30,6 +30,15 @@ so the points are rotated by one: point j is the start of segment j + 1, and the
 segment is the subpath's first, from its start. Coordinates go in unchanged (SVG's
 y down: a reflection, which changes no length) and points come back in them.
 
+The request's "splines" (curvebench's bspline/nurbs cases) become one NURBS spline each: order =
+degree + 1, point.co = (x, y, z, w) with w the weight (1 without; in 3.4 point.weight is that same
+co[3]), use_endpoint_u for "clamped", use_cyclic_u for "periodic", neither for "uniform"; a "given"
+knot vector is skipped (Blender makes its own knots). Blender's knots for these flags must give
+curvebench's curve: Follow Path's position at offset 0 must be the request's "start" to float32
+rounding and at offset 1 its "end" to END_GAP (see there), else the case is skipped. Blender samples
+a NURBS spline at resolution_u points per control-point interval, uniformly in the parameter.
+Points of those cases come back with the request's "dim" coordinates.
+
 Points: Follow Path at every resolution, for paths of one subpath (Blender's path follows the first
 spline only; several subpaths: points null). The point at s is asked with offset_factor =
 min(s / L_blender, 1) (an s beyond Blender's own length asked at its length); spaced at
@@ -40,6 +49,7 @@ averaged over the s (best of the passes); ns_build null.
 """
 import argparse
 import json
+import math
 import os
 import shutil
 import sys
@@ -84,8 +94,24 @@ def spline_of(subpath):
     return {"cyclic": cyclic, "points": pts}
 
 
-def blender_input(cases, quick=False):
-    """(Blender's input document, skipped entries for the cases it cannot represent)."""
+def nurbs_of(c):
+    """Blender's NURBS spline of a request "splines" case: {"points": [[x, y, z, w]] (w the weight, 1
+    without weights), "order": degree + 1, "endpoint": clamped, "cyclic": periodic}; DriverError for a
+    knot vector Blender's flags cannot make ("given")."""
+    kind = c["knot_vector"]
+    if kind not in ("clamped", "uniform", "periodic"):
+        raise DriverError(f"knot_vector {kind!r}: Blender's NURBS splines make their own knots (endpoint, "
+                          "cyclic or uniform flags) and cannot hold a given vector")
+    w = c.get("weights") or [1.0] * len(c["points"])
+    if len(w) != len(c["points"]):
+        raise DriverError("not one weight per point")
+    pts = [[float(p[0]), float(p[1]), float(p[2]) if len(p) > 2 else 0.0, float(wi)] for p, wi in zip(c["points"], w)]
+    return {"points": pts, "order": int(c["degree"]) + 1, "endpoint": kind == "clamped", "cyclic": kind == "periodic"}
+
+
+def blender_input(cases, quick=False, spline_cases=()):
+    """(Blender's input document, skipped entries for the cases it cannot represent); `splines` the
+    request's "splines" cases (NURBS splines)."""
     out, skipped = [], []
     for c in cases:
         try:
@@ -96,20 +122,49 @@ def blender_input(cases, quick=False):
             continue
         out.append({"case": c["case"], "splines": splines, "s": [float(x) for x in c["s"]],
                     "spaced": int(c["spaced"])})
+    for c in spline_cases:
+        try:
+            nurbs = nurbs_of(c)
+        except DriverError as e:
+            skipped.append({"peer": PEER, "case": c["case"], "reason": str(e)})
+            continue
+        out.append({"case": c["case"], "nurbs": nurbs, "s": [float(x) for x in c["s"]], "spaced": int(c["spaced"]),
+                    "dim": int(c["dim"]), "start": c["start"], "end": c["end"]})
     doc = {"resolutions": [r for r, _ in RESOLUTIONS], "pass_ns": 200_000 if quick else 1_000_000,
            "passes": 3 if quick else 5, "cases": out}
     return doc, skipped
 
 
 def _finite_points(pts):
-    import math
-    return pts is None or all(len(p) == 2 and all(math.isfinite(v) for v in p) for p in pts)
+    return pts is None or all(len(p) in (2, 3) and all(math.isfinite(v) for v in p) for p in pts)
+
+
+# Blender's curve points are float32: its start may differ from curvebench's (double) by rounding,
+# a few float32 ulps of the curve's size (2^-24 relative each); more means another curve. Its end
+# (Follow Path at offset 1) was observed short of the last point on open NURBS splines in 3.4 by about
+# 1e-6 of the size at resolution 12 (2.6e-7 at 64: it shrinks with the resolution, so it is Blender's
+# evaluation of the last sample, not another knot vector, which would move the end by a sizeable
+# fraction of a span): the end is checked to END_GAP, and the gap stated in the run's note.
+F32_ENDS = 16 * 2.0 ** -24
+END_GAP = 1e-4
+
+
+def ends_differ(case, r):
+    """Why Blender's evaluated start/end (Follow Path at offset 0 and 1) are not the request's, or None."""
+    pts = case["nurbs"]["points"]
+    size = math.dist([min(p[i] for p in pts) for i in range(3)], [max(p[i] for p in pts) for i in range(3)])
+    for name, band in (("start", F32_ENDS), ("end", END_GAP)):
+        want = list(case[name]) + [0.0] * (3 - len(case[name]))
+        got = r.get(name)
+        if got is None or math.dist(got, want) > band * max(size, 1e-300):
+            return (f"Blender's NURBS {name} {got} is not curvebench's {case[name]} (beyond {band:.2g} of the "
+                    "curve's size): its knot vector for these flags is not curvebench's")
+    return None
 
 
 def runs_of(answer, doc):
     """(runs, skipped) from Blender's answer to the input doc; DriverError when it does not answer
     the cases asked."""
-    import math
     asked = [c["case"] for c in doc["cases"]]
     got = [c.get("case") for c in answer.get("cases", [])]
     if got != asked:
@@ -120,8 +175,16 @@ def runs_of(answer, doc):
         if "error" in res:
             skipped.append({"peer": PEER, "case": case["case"], "reason": f"Blender raised {res['error']}"})
             continue
-        several = len(case["splines"]) > 1
+        nurbs = "nurbs" in case
+        several = not nurbs and len(case["splines"]) > 1
+        why = next((w for w in (ends_differ(case, r) for r in res["results"]) if w), None) if nurbs else None
+        if why:
+            skipped.append({"peer": PEER, "case": case["case"], "reason": why})
+            continue
         for r in res["results"]:
+            if nurbs:
+                dim = case["dim"]
+                r = dict(r, points=[p[:dim] for p in r["points"]], spaced=[p[:dim] for p in r["spaced"]])
             L = r["length"]
             if not (isinstance(L, (int, float)) and math.isfinite(L)) or not _finite_points(r["points"]) \
                     or not _finite_points(r["spaced"]):
@@ -129,8 +192,13 @@ def runs_of(answer, doc):
                                 "reason": f"resolution {r['resolution']}: a non-finite length or point"})
                 continue
             beyond = sum(1 for s in case["s"] if s > L)
-            note = (f"Spline.calc_length() at resolution_u {r['resolution']} summed over "
-                    f"{len(case['splines'])} spline(s)"
+            what = (f"a NURBS spline (order {case['nurbs']['order']}, "
+                    + ("use_endpoint_u" if case["nurbs"]["endpoint"] else "use_cyclic_u" if case["nurbs"]["cyclic"]
+                       else "uniform knots") + ", weights in co[3])") if nurbs else f"{len(case['splines'])} spline(s)"
+            if nurbs:
+                gap = math.dist(r["end"], list(case["end"]) + [0.0] * (3 - len(case["end"])))
+                what += f" (its path's end {gap:.2g} from curvebench's end)"
+            note = (f"Spline.calc_length() at resolution_u {r['resolution']} summed over {what}"
                     + ("; several subpaths: no Follow Path points (Blender follows the first spline only)" if several
                        else "; points: Follow Path with use_fixed_location, offset_factor = s / calc_length"
                        + (f" ({beyond} s beyond Blender's own length asked at its length)" if beyond else "")
@@ -166,8 +234,9 @@ def main(argv=None):
     if program is None:
         raise DriverError(f"{a.blender!r} is not on PATH (Debian: apt-get install blender); nothing measured")
     only = [n for n in a.only.split(",") if n] if a.only else None
-    _, cases = load_request(a.request, only)
-    doc, skipped = blender_input(cases, a.quick)
+    request, cases = load_request(a.request, only)
+    spline_cases = [c for c in request.get("splines", []) if only is None or c["case"] in only]
+    doc, skipped = blender_input(cases, a.quick, spline_cases)
     with peer_io.work_dir(a.keep, "cb_blender_length_") as work:
         answer = run_blender(program, doc, work, a.timeout)
     runs, more = runs_of(answer, doc)

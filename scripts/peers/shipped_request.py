@@ -31,8 +31,18 @@ points), for the peers that take points rather than path data:
    own parameter (uniform in the segment index), with "u": curvebench's parameter at each t (the
    segment's knots, linearly: three's segment is the same cubic on [u_i, u_i+1] in w = (u - u_i) / h)}
 
-The drivers (shipped_node_driver.mjs, shipped_browser_driver.py) answer it; shipped_results.py
-measures their answers with `curvebench check --at-length`.
+and "splines": the "bspline" and "nurbs" cases, for the peers with B-spline curves (OpenCASCADE,
+Blender's NURBS splines):
+
+  {"case", "points": [[x, y, z]] (z = 0 for a 2D case), "dim", "degree", "weights": one per point or
+   null, "knot_vector": "clamped" | "uniform" | "periodic" (curvebench's generated vectors: clamped
+   uniform with end knots of multiplicity degree + 1; uniform, every knot simple, the curve on
+   [u_degree, u_n]; periodic: the points a control loop) or "given" with "knots": the full
+   non-decreasing vector, "start" and "end": curvebench's first and last point of the curve (where
+   s = 0 and s = L are: a periodic curve's start), "length", "s", "spaced"}
+
+The drivers (shipped_node_driver.mjs, shipped_browser_driver.py and issue 36's) answer it;
+shipped_results.py measures their answers with `curvebench check --at-length`.
 """
 import argparse
 import glob
@@ -175,11 +185,7 @@ def three_parameter(t, knots, closed):
 def catmull_rom_request(name, spec, tool, case_path):
     """The request entry of a catmull_rom case (see the module's doc)."""
     pts, curve_type, closed, alpha = catmull_rom_of(spec)
-    p = subprocess.run([tool, "length", case_path, "--method", "adaptive_gk", "--tol", "1e-14", "--quiet"],
-                       capture_output=True, text=True)
-    if p.returncode != 0:
-        raise RequestError(f"curvebench length {case_path} failed: {p.stderr.strip()}")
-    m = json.loads(p.stdout)
+    length, s = length_and_grid(tool, case_path)
     d = subprocess.run([tool, "sample", case_path, "--count", "2", "--derivatives", "0", "--quiet"],
                        capture_output=True, text=True)
     if d.returncode != 0:
@@ -189,12 +195,49 @@ def catmull_rom_request(name, spec, tool, case_path):
     knots[-1] = end  # the tool's own domain end (a sum rounded its way), so no u is past it
     t = [k / T_GRID for k in range(T_GRID + 1)]
     u = [min(three_parameter(x, knots, closed), end) for x in t]
+    return {"case": name, "points": [list(map(float, q)) + [0.0] * (3 - len(q)) for q in pts], "dim": len(pts[0]),
+            "curve_type": curve_type, "closed": closed, "knots": knots, "length": length,
+            "s": s, "spaced": SPACED, "t": t, "u": u}
+
+
+def spline_of(spec):
+    """The request entry's curve fields of a bspline or nurbs case; None for another type."""
+    if spec.get("type") not in ("bspline", "nurbs"):
+        return None
+    pts = spec["points"]
+    pts = generated_points(pts) if isinstance(pts, dict) else pts
+    if any(len(p) not in (2, 3) or len(p) != len(pts[0]) for p in pts):
+        return None
+    return {"points": [list(map(float, q)) + [0.0] * (3 - len(q)) for q in pts], "dim": len(pts[0]),
+            "degree": int(spec["degree"]),
+            "weights": [float(w) for w in spec["weights"]] if "weights" in spec else None,
+            "knot_vector": "given" if "knots" in spec else spec.get("knot_vector", "clamped"),
+            "knots": [float(k) for k in spec["knots"]] if "knots" in spec else None}
+
+
+def length_and_grid(tool, case_path):
+    """(L, the request's s grid) of a case spec file: adaptive Gauss-Kronrod at 1e-14, the grid
+    ending at L less the estimate (below the true length, as for the path cases)."""
+    p = subprocess.run([tool, "length", case_path, "--method", "adaptive_gk", "--tol", "1e-14", "--quiet"],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        raise RequestError(f"curvebench length {case_path} failed: {p.stderr.strip()}")
+    m = json.loads(p.stdout)
     length = m["value"]
     low = length - m["estimate"] if m.get("status") == "converged" and m.get("estimate") is not None \
         else length * (1 - 1e-12)
-    return {"case": name, "points": [list(map(float, q)) + [0.0] * (3 - len(q)) for q in pts], "dim": len(pts[0]),
-            "curve_type": curve_type, "closed": closed, "knots": knots, "length": length,
-            "s": [low * k / QUERIES for k in range(QUERIES + 1)], "spaced": SPACED, "t": t, "u": u}
+    return length, [low * k / QUERIES for k in range(QUERIES + 1)]
+
+
+def spline_request(name, spec, tool, case_path):
+    """The request entry of a bspline or nurbs case (see the module's doc)."""
+    length, s = length_and_grid(tool, case_path)
+    d = subprocess.run([tool, "sample", case_path, "--count", "2", "--derivatives", "0", "--quiet"],
+                       capture_output=True, text=True)
+    if d.returncode != 0:
+        raise RequestError(f"curvebench sample {case_path} failed: {d.stderr.strip()}")
+    ends = [[float(v) for v in line.split(",")[2:]] for line in d.stdout.splitlines()[1:3]]
+    return dict({"case": name}, **spline_of(spec), start=ends[0], end=ends[1], length=length, s=s, spaced=SPACED)
 
 
 def svg_document(cases):
@@ -230,7 +273,7 @@ def main():
     ap.add_argument("--only", help="comma-separated case names")
     a = ap.parse_args()
     only = set(a.only.split(",")) if a.only else None
-    cases, splines = [], []
+    cases, catmull_roms, splines = [], [], []
     for path in sorted(glob.glob(os.path.join(a.cases, "*.json"))):
         with open(path, encoding="utf-8") as f:
             spec = json.load(f)
@@ -241,7 +284,9 @@ def main():
         if el is not None:
             cases.append((name, el))
         elif catmull_rom_of(spec) is not None:
-            splines.append(catmull_rom_request(name, spec, a.tool, path))
+            catmull_roms.append(catmull_rom_request(name, spec, a.tool, path))
+        elif spline_of(spec) is not None:
+            splines.append(spline_request(name, spec, a.tool, path))
     if not cases:
         raise RequestError(f"no case of {a.cases} is SVG path data, a shape or a Bezier of degree <= 3")
     with tempfile.TemporaryDirectory() as tmp:
@@ -255,9 +300,11 @@ def main():
         measured = json.loads(p.stdout)
     version = subprocess.run([a.tool, "--version"], capture_output=True, text=True).stdout.strip()
     request = request_of(cases, measured, version)
-    request["catmull_rom"] = splines
+    request["catmull_rom"] = catmull_roms
+    request["splines"] = splines
     peer_io.write_json(a.out, request)
-    print(f"shipped_request.py: {len(cases)} cases and {len(splines)} Catmull-Rom cases in {a.out}")
+    print(f"shipped_request.py: {len(cases)} cases, {len(catmull_roms)} Catmull-Rom and {len(splines)} B-spline "
+          f"cases in {a.out}")
     return 0
 
 

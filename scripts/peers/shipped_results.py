@@ -77,7 +77,7 @@ def _finite_points(points, what, dim=2):
 
 def request_cases(request):
     """{case name: request entry} of both the path cases and the Catmull-Rom cases."""
-    return {c["case"]: c for c in request["cases"] + request.get("catmull_rom", [])}
+    return {c["case"]: c for c in request["cases"] + request.get("catmull_rom", []) + request.get("splines", [])}
 
 
 def validate(driver, request):
@@ -167,10 +167,10 @@ def spacing_cv(s_true):
 
 
 def is_loop(case):
-    """Whether the request case is one closed subpath (or a closed Catmull-Rom spline)."""
+    """Whether the request case is one closed subpath (or a closed Catmull-Rom or periodic B-spline)."""
     if "segments" in case:
         return len(case["segments"]) == 1 and bool(case["segments"][0].get("closed"))
-    return bool(case.get("closed"))
+    return bool(case.get("closed")) or case.get("knot_vector") == "periodic"
 
 
 def row_of(run, checks, true_length=None, ours_eval=None, loop=False):

@@ -76,6 +76,33 @@ class Recorded(unittest.TestCase):
         self.assertAlmostEqual(run["spaced"][-1][1], 0.0, delta=1e-9)
         self.assertIn("point at k L/(n-1)", run["note"])
 
+    def test_every_spline_is_a_run_with_its_dimension(self):
+        # request["splines"]: curvebench's bspline and nurbs cases as Geom_BSplineCurve, no skip (each
+        # starts and ends at curvebench's start and end: the driver's check of the knot vector).
+        self.assertEqual(len(self.request["splines"]), 4)
+        self.assertFalse({s["case"] for s in self.driver["skipped"]} & {c["case"] for c in self.request["splines"]})
+        for c in self.request["splines"]:
+            for setting in SETTINGS:
+                run = self.run_of(c["case"], setting)
+                self.assertIn("Geom_BSplineCurve", run["note"])
+                for p in run["points"] + run["spaced"]:
+                    self.assertEqual(len(p), c["dim"], c["case"])
+                for got, want in zip(run["points"][0], c["start"]):
+                    self.assertAlmostEqual(got, want, delta=1e-12)
+
+    def test_the_periodic_spline_starts_at_curvebench_start(self):
+        # OCCT's periodic curve is measured from the knot whose point is the request's start:
+        # for this cubic control loop (P0 + 4 P1 + P2) / 6 = (0.6333..., 0.6333...), where s = 0 and
+        # s = L (its first and last spaced points) are.
+        c = next(c for c in self.request["splines"] if c["case"] == "bspline_periodic_closed")
+        self.assertEqual(c["knot_vector"], "periodic")
+        want = [(1.0 + 4 * 0.7 + 0.0) / 6, (0.0 + 4 * 0.7 + 1.0) / 6]
+        for setting in SETTINGS:
+            run = self.run_of(c["case"], setting)
+            for p in (run["points"][0], run["spaced"][0], run["spaced"][-1]):
+                self.assertAlmostEqual(p[0], want[0], delta=1e-12)
+                self.assertAlmostEqual(p[1], want[1], delta=1e-12)
+
 
 @unittest.skipUnless(TOOL, "needs CURVEBENCH_TOOL (ctest shipped sets it)")
 class Measured(unittest.TestCase):
@@ -112,6 +139,17 @@ class Measured(unittest.TestCase):
             self.assertGreater(self.rows[(case, "")]["length_error"], 1e-5)
         self.assertGreater(self.rows[("svg_cusp_fonttools", "")]["length_error"], 1e-2)
         self.assertLess(self.rows[("svg_cusp_fonttools", "")]["length_error"], 5e-2)
+
+    def test_splines_at_tolerance_1e10_are_within_it(self):
+        # Length(adaptor, tol) on a Geom_BSplineCurve integrates |C'| span by span (one Gauss rule per
+        # C^N interval, between knots) and repeats until successive results agree to tol: the smooth
+        # polynomial and rational spans converge fast, 1.8e-11 measured the worst (the quintic). A band
+        # of the tolerance itself, 1e-10 (relative), is OCCT's own claim; a wrong knot vector (another
+        # curve) shows as an error of order 1 instead. The point: the same Newton solve to tol.
+        for c in ("bspline_cubic_clamped", "bspline_periodic_closed", "bspline_quintic_3d", "nurbs_weighted_3d"):
+            row = self.rows[(c, "tolerance=1e-10")]
+            self.assertLess(row["length_error"], 1e-10, c)
+            self.assertLess(row["point_error"], 1e-10, c)
 
 
 if __name__ == "__main__":

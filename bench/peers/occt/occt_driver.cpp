@@ -1,6 +1,7 @@
 // curvebench_peer_occt: the OpenCASCADE peer of issue 36 (arc length and point at arc length as a CAD
 // kernel computes them), answering a "curvebench-shipped-request-1" with a
-// "curvebench-shipped-driver-1" document (format: scripts/peers/shipped_results.py).
+// "curvebench-shipped-driver-1" document (format: scripts/peers/shipped_results.py): its "cases"
+// (SVG path segments as 2D Geom curves) and its "splines" (B-spline and NURBS curves, below).
 //
 //   curvebench_peer_occt --request REQ.json --out OUT.json [--quick]
 //
@@ -42,6 +43,21 @@
 // points at k L_occt / (n - 1) (UniformAbscissa takes one curve), of a single segment
 // UniformAbscissa's. An s beyond OCCT's own length is asked at its length.
 //
+// Splines (request["splines"], when present: curvebench's bspline and nurbs cases, same peer id and
+// settings). Each is one 3D Geom_BSplineCurve on the request's points (gp_Pnt, z = 0 for a 2D case;
+// rational with the request's weights when it has them) and OCCT's distinct knots + multiplicities:
+// clamped: 0 .. n - degree, the end knots of multiplicity degree + 1; uniform: 0 .. n + degree, all
+// simple, non-periodic (OCCT's curve then lies on [FlatKnots(degree + 1), FlatKnots(n + 1)], its
+// First/LastParameter); periodic: Periodic = true on the n + 1 knots 0 .. n, all simple, measured on a
+// GeomAdaptor_Curve over [u0, u0 + Period()] with u0 the knot whose point is the request's "start"
+// (so s = 0 is there); given: the full vector folded into distinct knots + multiplicities. The
+// curve's point at the adaptor's first and last parameter must be the request's "start" and "end"
+// within 1e-12 x the diagonal of the points' bounding box, else the case is skipped (OCCT's knot vector
+// would not be curvebench's). Length: GCPnts_AbscissaPoint::Length on the 3D adaptor; points:
+// GCPnts_AbscissaPoint from the first parameter, then Value; spaced: GCPnts_UniformAbscissa on the
+// adaptor; points written with 2 or 3 coordinates as the request's "dim". ns_build there = building
+// the curve and adaptor, including the start check (and the periodic start search).
+//
 // Times (ns, best of five passes after a warm-up, each pass repeated until it lasts >= 20 us, per
 // call; one pass with --quick): ns_build = building all the case's Geom curves and adaptors;
 // ns_length = the path's length (all its segments' Length calls); ns_point = one point at length
@@ -57,18 +73,25 @@
 #include <Geom2d_Circle.hxx>
 #include <Geom2d_Ellipse.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Standard_Failure.hxx>
 #include <Standard_Version.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
 #include <gp_Ax22d.hxx>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 using nlohmann::json;
@@ -145,23 +168,31 @@ std::vector<Segment> build_path(const json& c) {
   return out;
 }
 
-double seg_length(const Segment& s, const Setting& st) {
-  return st.has_tol ? GCPnts_AbscissaPoint::Length(*s.adaptor, st.tol) : GCPnts_AbscissaPoint::Length(*s.adaptor);
+// GCPnts_AbscissaPoint::Length over the adaptor's range (a 2D or a 3D adaptor), with the setting's
+// tolerance if it has one.
+template <class Adaptor>
+double adaptor_length(const Adaptor& a, const Setting& st) {
+  return st.has_tol ? GCPnts_AbscissaPoint::Length(a, st.tol) : GCPnts_AbscissaPoint::Length(a);
 }
 
-gp_Pnt2d seg_point(const Segment& s, double abscissa, const Setting& st) {
-  const double u0 = s.adaptor->FirstParameter();
-  double u = 0;
+// The parameter at arc length `abscissa` from the adaptor's first parameter (GCPnts_AbscissaPoint).
+template <class Adaptor>
+double adaptor_param(const Adaptor& a, double abscissa, const Setting& st) {
+  const double u0 = a.FirstParameter();
   if (st.has_tol) {
-    GCPnts_AbscissaPoint ap(st.tol, *s.adaptor, abscissa, u0);
+    GCPnts_AbscissaPoint ap(st.tol, a, abscissa, u0);
     if (!ap.IsDone()) throw std::runtime_error("GCPnts_AbscissaPoint: IsDone() false");
-    u = ap.Parameter();
-  } else {
-    GCPnts_AbscissaPoint ap(*s.adaptor, abscissa, u0);
-    if (!ap.IsDone()) throw std::runtime_error("GCPnts_AbscissaPoint: IsDone() false");
-    u = ap.Parameter();
+    return ap.Parameter();
   }
-  return s.adaptor->Value(u);
+  GCPnts_AbscissaPoint ap(a, abscissa, u0);
+  if (!ap.IsDone()) throw std::runtime_error("GCPnts_AbscissaPoint: IsDone() false");
+  return ap.Parameter();
+}
+
+double seg_length(const Segment& s, const Setting& st) { return adaptor_length(*s.adaptor, st); }
+
+gp_Pnt2d seg_point(const Segment& s, double abscissa, const Setting& st) {
+  return s.adaptor->Value(adaptor_param(*s.adaptor, abscissa, st));
 }
 
 // The point at path arc length s (clamped to [0, total]) from the segments' lengths of this setting.
@@ -241,6 +272,163 @@ json run_case(const json& c, const Setting& st, const peers::Timing& timing) {
           {"ns_build", ns_build}, {"note", note}};
 }
 
+// ---- the request's "splines": curvebench's bspline and nurbs cases as Geom_BSplineCurve ----------
+
+struct Spline {
+  Handle(Geom_BSplineCurve) curve;
+  Handle(GeomAdaptor_Curve) adaptor;  // on [u0, u1]: s = 0 at the request's "start"
+  int dim = 2;
+};
+
+gp_Pnt pnt3(const json& p) {
+  return gp_Pnt(p.at(0).get<double>(), p.at(1).get<double>(), p.size() > 2 ? p.at(2).get<double>() : 0.0);
+}
+
+// A full non-decreasing knot vector as OCCT's distinct knots and multiplicities.
+void distinct_knots(const std::vector<double>& flat, std::vector<double>& knots, std::vector<int>& mults) {
+  for (size_t i = 0; i < flat.size(); ++i) {
+    if (i > 0 && flat[i] < flat[i - 1]) throw std::runtime_error("the given knot vector decreases");
+    if (!knots.empty() && flat[i] == knots.back())
+      ++mults.back();
+    else {
+      knots.push_back(flat[i]);
+      mults.push_back(1);
+    }
+  }
+}
+
+// The request's spline as a Geom_BSplineCurve and an adaptor on the range from its "start" to its
+// "end"; std::runtime_error (a skip) when OCCT's curve does not start and end there.
+Spline build_spline(const json& c) {
+  const json& pts = c.at("points");
+  const int n = static_cast<int>(pts.size());
+  const int degree = c.at("degree").get<int>();
+  const std::string kind = c.at("knot_vector").get<std::string>();
+  std::vector<double> knots;
+  std::vector<int> mults;
+  bool periodic = false;
+  if (kind == "clamped") {
+    if (n < degree + 1) throw std::runtime_error("fewer points than degree + 1");
+    for (int i = 0; i <= n - degree; ++i) {
+      knots.push_back(i);
+      mults.push_back(i == 0 || i == n - degree ? degree + 1 : 1);
+    }
+  } else if (kind == "uniform") {
+    for (int i = 0; i <= n + degree; ++i) {
+      knots.push_back(i);
+      mults.push_back(1);
+    }
+  } else if (kind == "periodic") {
+    periodic = true;
+    for (int i = 0; i <= n; ++i) {
+      knots.push_back(i);
+      mults.push_back(1);
+    }
+  } else if (kind == "given") {
+    distinct_knots(c.at("knots").get<std::vector<double>>(), knots, mults);
+  } else {
+    throw std::runtime_error("knot_vector " + kind + " unknown to this driver");
+  }
+  TColgp_Array1OfPnt poles(1, n);
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (int i = 0; i < n; ++i) {
+    const gp_Pnt p = pnt3(pts.at(static_cast<size_t>(i)));
+    poles.SetValue(i + 1, p);
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = i == 0 ? p.Coord(d + 1) : std::min(lo[d], p.Coord(d + 1));
+      hi[d] = i == 0 ? p.Coord(d + 1) : std::max(hi[d], p.Coord(d + 1));
+    }
+  }
+  const double size = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  const int nk = static_cast<int>(knots.size());
+  TColStd_Array1OfReal k(1, nk);
+  TColStd_Array1OfInteger m(1, nk);
+  for (int i = 0; i < nk; ++i) {
+    k.SetValue(i + 1, knots[static_cast<size_t>(i)]);
+    m.SetValue(i + 1, mults[static_cast<size_t>(i)]);
+  }
+  Spline out;
+  out.dim = c.at("dim").get<int>();
+  const json& w = c.at("weights");
+  if (w.is_null()) {
+    out.curve = new Geom_BSplineCurve(poles, k, m, degree, periodic);
+  } else {
+    if (static_cast<int>(w.size()) != n) throw std::runtime_error("not one weight per point");
+    TColStd_Array1OfReal weights(1, n);
+    for (int i = 0; i < n; ++i) weights.SetValue(i + 1, w.at(static_cast<size_t>(i)).get<double>());
+    out.curve = new Geom_BSplineCurve(poles, weights, k, m, degree, periodic);
+  }
+  const gp_Pnt start = pnt3(c.at("start")), end = pnt3(c.at("end"));
+  const double eps = 1e-12 * size;
+  double u0 = out.curve->FirstParameter(), u1 = out.curve->LastParameter();
+  if (periodic) {
+    // s = 0 at the request's start: the knot of OCCT's periodic curve whose point it is.
+    bool found = false;
+    for (int i = 1; i < nk && !found; ++i)
+      if (out.curve->Value(k.Value(i)).Distance(start) <= eps) {
+        u0 = k.Value(i);
+        found = true;
+      }
+    if (!found) throw std::runtime_error("no knot of OCCT's periodic curve is at the request's start");
+    u1 = u0 + out.curve->Period();
+  }
+  const double d0 = out.curve->Value(u0).Distance(start), d1 = out.curve->Value(u1).Distance(end);
+  if (d0 > eps || d1 > eps) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "OCCT's curve starts %.3g and ends %.3g from curvebench's start and end", d0, d1);
+    throw std::runtime_error(std::string(msg) + " (not curvebench's knot vector)");
+  }
+  out.adaptor = new GeomAdaptor_Curve(out.curve, u0, u1);
+  return out;
+}
+
+json coords(const gp_Pnt& p, int dim) {
+  if (!std::isfinite(p.X()) || !std::isfinite(p.Y()) || !std::isfinite(p.Z()))
+    throw std::runtime_error("a non-finite point");
+  return dim == 3 ? json::array({p.X(), p.Y(), p.Z()}) : json::array({p.X(), p.Y()});
+}
+
+json run_spline(const json& c, const Setting& st, const peers::Timing& timing) {
+  const Spline sp = build_spline(c);
+  const GeomAdaptor_Curve& a = *sp.adaptor;
+  const double total = adaptor_length(a, st);
+  if (!std::isfinite(total)) throw std::runtime_error("Length is not finite");
+  const std::vector<double> s_list = c.at("s").get<std::vector<double>>();
+  const int n_spaced = c.at("spaced").get<int>();
+  json points = json::array(), spaced = json::array();
+  bool clamped = false;
+  const auto point_at = [&](double s) { return a.Value(adaptor_param(a, std::clamp(s, 0.0, total), st)); };
+  for (double s : s_list) {
+    clamped = clamped || s > total;
+    points.push_back(coords(point_at(s), sp.dim));
+  }
+  GCPnts_UniformAbscissa ua(a, n_spaced, st.has_tol ? st.tol : -1.0);
+  if (!ua.IsDone() || ua.NbPoints() != n_spaced)
+    throw std::runtime_error("GCPnts_UniformAbscissa: not done or " + std::to_string(ua.NbPoints()) + " points");
+  for (int i = 1; i <= n_spaced; ++i) spaced.push_back(coords(a.Value(ua.Parameter(i)), sp.dim));
+
+  const double ns_build = peers::best_ns([&] { return build_spline(c).adaptor->FirstParameter(); }, 1, timing);
+  const double ns_length = peers::best_ns([&] { return adaptor_length(a, st); }, 1, timing);
+  const double ns_point = peers::best_ns(
+      [&] {
+        double sum = 0;
+        for (double s : s_list) sum += point_at(s).X();
+        return sum;
+      },
+      static_cast<double>(s_list.size()), timing);
+  std::string note = "Geom_BSplineCurve (degree " + std::to_string(c.at("degree").get<int>()) + ", " +
+                     c.at("knot_vector").get<std::string>() + " knots" +
+                     (c.at("weights").is_null() ? "" : ", rational") + ") on a GeomAdaptor_Curve over [" +
+                     std::to_string(a.FirstParameter()) + ", " + std::to_string(a.LastParameter()) +
+                     "]; GCPnts_AbscissaPoint::Length" + (st.has_tol ? "(adaptor, tol)" : "(adaptor)") +
+                     "; point: AbscissaPoint" + (st.has_tol ? " with tol" : "") +
+                     "; spaced: GCPnts_UniformAbscissa(adaptor, n)";
+  if (clamped) note += "; s beyond OCCT's own length asked at its length";
+  return {{"peer", kPeer},        {"case", c.at("case")}, {"setting", st.name},     {"length", total},
+          {"points", points},     {"spaced", spaced},     {"ns_length", ns_length}, {"ns_point", ns_point},
+          {"ns_build", ns_build}, {"note", note}};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -278,11 +466,16 @@ int main(int argc, char** argv) {
   }
   const peers::Timing timing = peers::Timing::fixed(quick);
   json runs = json::array(), skipped = json::array();
-  for (const json& c : req.at("cases")) {
+  std::vector<std::pair<const json*, bool>> all;  // (case, is a spline)
+  for (const json& c : req.at("cases")) all.emplace_back(&c, false);
+  if (req.contains("splines"))
+    for (const json& c : req.at("splines")) all.emplace_back(&c, true);
+  for (const auto& [cp, is_spline] : all) {
+    const json& c = *cp;
     for (const Setting& st : kSettings) {
       std::string why;
       try {
-        runs.push_back(run_case(c, st, timing));
+        runs.push_back(is_spline ? run_spline(c, st, timing) : run_case(c, st, timing));
       } catch (const Standard_Failure& e) {
         why = std::string("OCCT raised ") + e.DynamicType()->Name() + ": " +
               (e.GetMessageString() ? e.GetMessageString() : "");
