@@ -36,8 +36,9 @@ EPS_DOUBLE = 2.0 ** -52
 
 # The optional peers scripts/peers.sh runs, by the driver name their peers_<driver>.json carries.
 OPTIONAL_DRIVERS = {"scipy": "SciPy (scripts/peers/scipy_driver.py)",
-                    "easing": ("bezier-easing 3.2.0 / 2.1.0, @mapbox/unitbezier and Babylon.js's "
-                               "BezierCurve.Interpolate (scripts/peers/easing_driver.mjs)"),
+                    "easing": ("bezier-easing 3.2.0 / 2.1.0, @mapbox/unitbezier, Babylon.js's "
+                               "BezierCurve.Interpolate and lottie-web's BezierEaser "
+                               "(scripts/peers/easing_driver.mjs)"),
                     "chromium": ("headless Chromium, CSS easing through the Web Animations API "
                                  "(scripts/peers/chromium_driver.py)"),
                     "penner": "d3-ease's Penner easings (scripts/peers/penner_driver.mjs)",

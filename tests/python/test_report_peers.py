@@ -211,9 +211,12 @@ class Joins(unittest.TestCase):
         self.assertEqual(rp.missing_drivers([("p", {"driver": "scipy"}), ("q", {"driver": "chromium"}),
                                              ("r", {"driver": "penner"}), ("s", {"driver": "blender"}),
                                              ("t", {"driver": "three"}), ("u", {"driver": "shipped_node"}),
-                                             ("v", {"driver": "shipped_browser"}), ("w", {"driver": "lottie"})]),
-                         ["bezier-easing 3.2.0 / 2.1.0, @mapbox/unitbezier and Babylon.js's BezierCurve.Interpolate "
-                          "(scripts/peers/easing_driver.mjs)"])
+                                             ("v", {"driver": "shipped_browser"}), ("w", {"driver": "lottie"}),
+                                             ("x", {"driver": "qt"}), ("y", {"driver": "occt"}),
+                                             ("z", {"driver": "lib2geom"}), ("a", {"driver": "fonttools"}),
+                                             ("b", {"driver": "blender_length"}), ("c", {"driver": "godot"})]),
+                         ["bezier-easing 3.2.0 / 2.1.0, @mapbox/unitbezier, Babylon.js's BezierCurve.Interpolate and "
+                          "lottie-web's BezierEaser (scripts/peers/easing_driver.mjs)"])
         self.assertIn("three.js's glTF interpolants (scripts/peers/gltf_driver.mjs)",
                       rp.missing_drivers([("p", {"driver": "scipy"})]))
 
