@@ -588,8 +588,8 @@ class ReportWithAndWithoutPeers(unittest.TestCase):
                       "real Blender F-curves", report)
         self.assertIn("### Real Blender F-curves\n\nNot run: no reports/peers_blender.json", report)
         self.assertIn("### three.js glTF interpolants\n\nNot run: no reports/peers_three.json", report)
-        self.assertIn("bezier-easing 3.2.0 / 2.1.0, @mapbox/unitbezier and Babylon.js's BezierCurve.Interpolate "
-                      "(scripts/peers/easing_driver.mjs), ", report)
+        self.assertIn("bezier-easing 3.2.0 / 2.1.0, @mapbox/unitbezier, Babylon.js's BezierCurve.Interpolate and "
+                      "lottie-web's BezierEaser (scripts/peers/easing_driver.mjs), ", report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | peer_scipy_make_interp_spline | 661 | default | 0.813 |",
                       report)
         self.assertIn("| natural_cubic_knot_ratio_1e4 | tol=1e-10 | peer_scipy_quad | 5.35e-09 |", report)
