@@ -226,6 +226,15 @@ def check_command(tool, spec, csv_path, peer, kind="points"):
     return [tool, "check", spec] + CHECK_OPTION[kind] + [csv_path, "--name", peer, "--json", "--quiet"]
 
 
+def sample_to(tool, spec, at_file, derivatives, out_csv):
+    """`curvebench sample SPEC --at-file AT --derivatives K` into out_csv; ShippedError on a failure."""
+    with open(out_csv, "w", encoding="utf-8") as f:
+        p = subprocess.run([tool, "sample", spec, "--at-file", at_file, "--derivatives", str(derivatives), "--quiet"],
+                           stdout=f, stderr=subprocess.PIPE, text=True)
+    if p.returncode != 0:
+        raise ShippedError(f"curvebench sample {spec}: exit {p.returncode}: {p.stderr.strip()[:500]}")
+
+
 def curvebench_eval_jobs(request, cases_dir, tool, work):
     """For each Catmull-Rom case: curvebench's own double evaluation at the case's u grid (`curvebench
     sample`), as a values CSV to check like the peers': [(case, check command)]."""
@@ -236,11 +245,7 @@ def curvebench_eval_jobs(request, cases_dir, tool, work):
         with open(at, "w", encoding="utf-8") as f:
             f.write("".join(repr(float(u)) + "\n" for u in c["u"]))
         values = os.path.join(work, f"curvebench.{c['case']}.values.csv")
-        with open(values, "w", encoding="utf-8") as f:
-            p = subprocess.run([tool, "sample", spec, "--at-file", at, "--derivatives", "0", "--quiet"], stdout=f,
-                               stderr=subprocess.PIPE, text=True)
-        if p.returncode != 0:
-            raise ShippedError(f"curvebench sample {spec}: exit {p.returncode}: {p.stderr.strip()[:500]}")
+        sample_to(tool, spec, at, 0, values)
         jobs.append((c["case"], check_command(tool, spec, values, "curvebench", "values")))
     return jobs
 
@@ -278,11 +283,7 @@ def eval_floors(request, cases_dir, tool, work, sizes):
         spec = os.path.join(cases_dir, c["case"] + ".json")
         at = os.path.join(work, f"curvebench.{c['case']}.u.txt")
         sample = os.path.join(work, f"curvebench.{c['case']}.derivatives.csv")
-        with open(sample, "w", encoding="utf-8") as f:
-            p = subprocess.run([tool, "sample", spec, "--at-file", at, "--derivatives", "1", "--quiet"], stdout=f,
-                               stderr=subprocess.PIPE, text=True)
-        if p.returncode != 0:
-            raise ShippedError(f"curvebench sample {spec}: exit {p.returncode}: {p.stderr.strip()[:500]}")
+        sample_to(tool, spec, at, 1, sample)
         out[c["case"]] = eval_floor(sample, sizes[c["case"]])
     return out
 

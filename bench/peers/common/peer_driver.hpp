@@ -23,6 +23,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -142,6 +143,72 @@ inline void write_json(const std::string& path, const json& doc) {
     if (!f) throw std::runtime_error("cannot write " + tmp);
   }
   std::filesystem::rename(tmp, path);
+}
+
+// ---- the shipped request and the driver output (scripts/peers/shipped_request.py, shipped_results.py)
+
+// The command line of a driver answering the shipped request: --request REQ.json --out OUT.json
+// [--quick]. Anything else prints the usage (naming program) and gives std::nullopt.
+struct ShippedArgs {
+  std::string request, out;
+  bool quick = false;
+};
+
+inline std::optional<ShippedArgs> shipped_args(int argc, char** argv, const std::string& program) {
+  ShippedArgs a;
+  bool bad = false;
+  for (int i = 1; i < argc && !bad; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--request" && i + 1 < argc)
+      a.request = argv[++i];
+    else if (arg == "--out" && i + 1 < argc)
+      a.out = argv[++i];
+    else if (arg == "--quick")
+      a.quick = true;
+    else
+      bad = true;
+  }
+  if (bad || a.request.empty() || a.out.empty()) {
+    std::cerr << "usage: " << program << " --request REQ.json --out OUT.json [--quick]\n";
+    return std::nullopt;
+  }
+  return a;
+}
+
+// The request at path, checked to be a "curvebench-shipped-request-1"; std::runtime_error naming the
+// file otherwise.
+inline json read_shipped_request(const std::string& path) {
+  std::ifstream f(path);
+  if (!f) throw std::runtime_error("cannot read " + path);
+  json req;
+  f >> req;
+  if (req.value("format", "") != "curvebench-shipped-request-1")
+    throw std::runtime_error(path + ": not a curvebench-shipped-request-1");
+  return req;
+}
+
+// One "skipped" entry: the peer, the case and why, prefixed by the setting ("default setting" for "").
+inline json skipped_entry(const std::string& peer, const json& c, const std::string& setting, const std::string& why) {
+  return {{"peer", peer},
+          {"case", c.at("case")},
+          {"reason", (setting.empty() ? std::string("default setting") : setting) + ": " + why}};
+}
+
+// The driver output ("curvebench-shipped-driver-1") written to path, with a one-line summary on
+// stderr; the exit status (1 naming program and the error when it cannot be written).
+inline int write_shipped_output(const std::string& path, const std::string& driver, const json& versions,
+                                const json& runs, const json& skipped, const std::string& program) {
+  const json out = {{"driver", driver},     {"format", "curvebench-shipped-driver-1"},
+                    {"versions", versions}, {"cpu", cpu_model()},
+                    {"runs", runs},         {"skipped", skipped}};
+  try {
+    write_json(path, out);
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << "\n";
+    return 1;
+  }
+  std::cerr << program << ": " << runs.size() << " runs, " << skipped.size() << " skipped -> " << path << "\n";
+  return 0;
 }
 
 // ---- one measurement in a child process under a time limit ------------------------------------------

@@ -254,41 +254,19 @@ peers::Isolated run_isolated(const json& c, const Setting& st, const peers::Timi
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string req_path, out_path;
-  bool quick = false;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a == "--request" && i + 1 < argc)
-      req_path = argv[++i];
-    else if (a == "--out" && i + 1 < argc)
-      out_path = argv[++i];
-    else if (a == "--quick")
-      quick = true;
-    else {
-      req_path.clear();
-      break;
-    }
-  }
-  if (req_path.empty() || out_path.empty()) {
-    std::cerr << "usage: curvebench_peer_2geom --request REQ.json --out OUT.json [--quick]\n";
-    return 2;
-  }
+  const std::string program = "curvebench_peer_2geom";
+  const std::optional<peers::ShippedArgs> args = peers::shipped_args(argc, argv, program);
+  if (!args) return 2;
   json req;
   try {
-    std::ifstream f(req_path);
-    if (!f) throw std::runtime_error("cannot read " + req_path);
-    f >> req;
+    req = peers::read_shipped_request(args->request);
   } catch (const std::exception& e) {
-    std::cerr << "curvebench_peer_2geom: " << e.what() << "\n";
-    return 1;
-  }
-  if (req.value("format", "") != "curvebench-shipped-request-1") {
-    std::cerr << "curvebench_peer_2geom: not a curvebench-shipped-request-1\n";
+    std::cerr << program << ": " << e.what() << "\n";
     return 1;
   }
   gsl_set_error_handler(&record_gsl_error);
   const bool verbose = std::getenv("CURVEBENCH_PEER_VERBOSE") != nullptr;
-  const peers::Timing timing = peers::Timing::fixed(quick);
+  const peers::Timing timing = peers::Timing::fixed(args->quick);
   json runs = json::array(), skipped = json::array();
   for (const json& c : req.at("cases")) {
     for (const Setting& st : kSettings) {
@@ -303,28 +281,12 @@ int main(int argc, char** argv) {
       } catch (const std::exception& e) {
         why = e.what();
       }
-      if (!why.empty())
-        skipped.push_back({{"peer", kPeer},
-                           {"case", c.at("case")},
-                           {"reason", (st.name.empty() ? std::string("default setting") : st.name) + ": " + why}});
+      if (!why.empty()) skipped.push_back(peers::skipped_entry(kPeer, c, st.name, why));
     }
   }
-  json out = {{"driver", "lib2geom"},
-              {"format", "curvebench-shipped-driver-1"},
-              {"versions",
-               {{"lib2geom", peers::debian_version("lib2geom-dev")},
-                {"2geom.pc", CURVEBENCH_2GEOM_PKG_VERSION},
-                {"gsl", GSL_VERSION}}},
-              {"cpu", peers::cpu_model()},
-              {"runs", runs},
-              {"skipped", skipped}};
-  try {
-    peers::write_json(out_path, out);
-  } catch (const std::exception& e) {
-    std::cerr << "curvebench_peer_2geom: " << e.what() << "\n";
-    return 1;
-  }
-  std::cerr << "curvebench_peer_2geom: " << runs.size() << " runs, " << skipped.size() << " skipped -> " << out_path
-            << "\n";
-  return 0;
+  return peers::write_shipped_output(args->out, "lib2geom",
+                                     {{"lib2geom", peers::debian_version("lib2geom-dev")},
+                                      {"2geom.pc", CURVEBENCH_2GEOM_PKG_VERSION},
+                                      {"gsl", GSL_VERSION}},
+                                     runs, skipped, program);
 }

@@ -432,39 +432,17 @@ json run_spline(const json& c, const Setting& st, const peers::Timing& timing) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string req_path, out_path;
-  bool quick = false;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a == "--request" && i + 1 < argc)
-      req_path = argv[++i];
-    else if (a == "--out" && i + 1 < argc)
-      out_path = argv[++i];
-    else if (a == "--quick")
-      quick = true;
-    else {
-      std::cerr << "usage: curvebench_peer_occt --request REQ.json --out OUT.json [--quick]\n";
-      return 2;
-    }
-  }
-  if (req_path.empty() || out_path.empty()) {
-    std::cerr << "usage: curvebench_peer_occt --request REQ.json --out OUT.json [--quick]\n";
-    return 2;
-  }
+  const std::string program = "curvebench_peer_occt";
+  const std::optional<peers::ShippedArgs> args = peers::shipped_args(argc, argv, program);
+  if (!args) return 2;
   json req;
   try {
-    std::ifstream f(req_path);
-    if (!f) throw std::runtime_error("cannot read " + req_path);
-    f >> req;
+    req = peers::read_shipped_request(args->request);
   } catch (const std::exception& e) {
-    std::cerr << "curvebench_peer_occt: " << e.what() << "\n";
+    std::cerr << program << ": " << e.what() << "\n";
     return 1;
   }
-  if (req.value("format", "") != "curvebench-shipped-request-1") {
-    std::cerr << "curvebench_peer_occt: not a curvebench-shipped-request-1\n";
-    return 1;
-  }
-  const peers::Timing timing = peers::Timing::fixed(quick);
+  const peers::Timing timing = peers::Timing::fixed(args->quick);
   json runs = json::array(), skipped = json::array();
   std::vector<std::pair<const json*, bool>> all;  // (case, is a spline)
   for (const json& c : req.at("cases")) all.emplace_back(&c, false);
@@ -482,27 +460,11 @@ int main(int argc, char** argv) {
       } catch (const std::exception& e) {
         why = e.what();
       }
-      if (!why.empty())
-        skipped.push_back({{"peer", kPeer},
-                           {"case", c.at("case")},
-                           {"reason", (st.name.empty() ? std::string("default setting") : st.name) + ": " + why}});
+      if (!why.empty()) skipped.push_back(peers::skipped_entry(kPeer, c, st.name, why));
     }
   }
-  json out = {{"driver", "occt"},
-              {"format", "curvebench-shipped-driver-1"},
-              {"versions",
-               {{"opencascade", OCC_VERSION_COMPLETE},
-                {"libocct-foundation-dev", peers::debian_version("libocct-foundation-dev")}}},
-              {"cpu", peers::cpu_model()},
-              {"runs", runs},
-              {"skipped", skipped}};
-  try {
-    peers::write_json(out_path, out);
-  } catch (const std::exception& e) {
-    std::cerr << "curvebench_peer_occt: " << e.what() << "\n";
-    return 1;
-  }
-  std::cerr << "curvebench_peer_occt: " << runs.size() << " runs, " << skipped.size() << " skipped -> " << out_path
-            << "\n";
-  return 0;
+  return peers::write_shipped_output(args->out, "occt",
+                                     {{"opencascade", OCC_VERSION_COMPLETE},
+                                      {"libocct-foundation-dev", peers::debian_version("libocct-foundation-dev")}},
+                                     runs, skipped, program);
 }
