@@ -219,6 +219,27 @@ TEST(svg_path, centre_form_at_50_digits) {
   }
 }
 
+// Radii too small, rotated: after the sqrt(Lambda) scaling the arc is exactly half the ellipse and
+// its centre exactly the chord's midpoint, in double and at 50 digits (F.6.6's radicand is 0 there;
+// computed it is rounding noise, whose square root moved the centre by ~1e-8 before). The arc of
+// svg_every_command: from (12, 0), radii (2, 1) rotated 30 degrees, to (16, 0): Lambda = 3/4 + 1.
+TEST(svg_path, an_arc_with_scaled_radii_is_centred_on_its_chord) {
+  using R = curvebench::real50;
+  const auto s = segments_of("M12 0 A2 1 30 0 1 16 0");
+  ASSERT_EQ(s.size(), 1u);
+  const auto a = svg::center_form<double>(s[0]);
+  EXPECT_EQ(a.cx, 14.0);
+  EXPECT_EQ(a.cy, 0.0);
+  EXPECT_NEAR(a.rx, 2 * std::sqrt(1.75), 4e-15);  // sqrt of a rounded Lambda: a few ulps
+  EXPECT_NEAR(a.ry, std::sqrt(1.75), 2e-15);
+  EXPECT_NEAR(std::abs(a.dtheta), std::numbers::pi, 1e-15);
+  const auto a50 = svg::center_form<R>(s[0]);
+  EXPECT_EQ(a50.cx, R(14));
+  EXPECT_EQ(a50.cy, R(0));
+  const auto end = svg::arc_point(a50, R(a50.theta1 + a50.dtheta));
+  EXPECT_LT(abs(end[0] - R(16)) + abs(end[1]), R(1e-45));
+}
+
 TEST(svg_path, degenerate_arcs) {
   const auto line = segments_of("M0 0 A0 5 0 0 1 10 0");  // a zero radius: a straight line
   ASSERT_EQ(line.size(), 1u);

@@ -19,7 +19,8 @@
 // implementation notes (SVG 1.1 appendix F.6.5 and F.6.6, SVG 2 section 9.5), so that a 50-digit
 // twin of the path converts its own: negative radii count by their absolute value, the rotation is
 // taken modulo 360 degrees, and radii too small to reach the end point are scaled up by
-// sqrt(Lambda) (Lambda = x1'^2 / rx^2 + y1'^2 / ry^2 > 1), which makes the arc half the ellipse.
+// sqrt(Lambda) (Lambda = x1'^2 / rx^2 + y1'^2 / ry^2 > 1), which makes the arc half the ellipse
+// with its centre exactly at the chord's midpoint.
 // The parser decides the two degenerate cases on the data as given: an arc whose endpoints
 // coincide is omitted, one with rx = 0 or ry = 0 is a straight line. The centre form is
 // c + R(phi) (rx cos theta, ry sin theta) for theta from theta1 to theta1 + dtheta (arc_point).
@@ -107,16 +108,22 @@ template <class Real>
   const Real cp = cos(a.phi), sp = sin(a.phi);
   const Real dx = (x1s - x2) / Real(2), dy = (y1s - y2) / Real(2);
   const Real x1 = cp * dx + sp * dy, y1 = -sp * dx + cp * dy;
-  // Radii too small to reach the end: scaled by sqrt(Lambda), the arc is then half the ellipse.
+  // Radii too small to reach the end: scaled by sqrt(Lambda), the arc is then half the ellipse,
+  // its centre the chord's midpoint (coef 0). F.6.6's radicand is exactly 0 there; computed after
+  // the scaling it is rounding noise of either sign, and its square root would move the centre by
+  // about sqrt(eps) of the radii (measured: 5e-8 in the length of svg_every_command's 30-degree arc,
+  // different between two builds of the tool).
   const Real lambda = (x1 / rx) * (x1 / rx) + (y1 / ry) * (y1 / ry);
+  Real coef(0);
   if (lambda > Real(1)) {
     const Real k = sqrt(lambda);
     rx *= k;
     ry *= k;
+  } else {
+    const Real num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
+    const Real den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
+    coef = num > Real(0) && den > Real(0) ? Real(sqrt(num / den)) : Real(0);
   }
-  const Real num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
-  const Real den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
-  Real coef = num > Real(0) && den > Real(0) ? Real(sqrt(num / den)) : Real(0);
   if (s.arc.large == s.arc.sweep) coef = -coef;
   const Real cx1 = coef * rx * y1 / ry, cy1 = -coef * ry * x1 / rx;
   a.cx = cp * cx1 - sp * cy1 + (x1s + x2) / Real(2);
