@@ -20,6 +20,9 @@ DATA = os.path.join(ROOT, "tests", "data", "peers", "occt")
 CASES = os.path.join(ROOT, "bench", "cases")
 TOOL = os.environ.get("CURVEBENCH_TOOL")
 SETTINGS = {"": None, "tolerance=1e-06": 1e-6, "tolerance=1e-10": 1e-10}
+# On paths with a quadratic segment, the same calls with each quadratic as a Geom2d_Parabola's arc.
+PARABOLA = {"parabola": None, "parabola, tolerance=1e-06": 1e-6, "parabola, tolerance=1e-10": 1e-10}
+TOLERANCE = {**SETTINGS, **PARABOLA}
 
 
 def load():
@@ -116,7 +119,7 @@ class Measured(unittest.TestCase):
         # Length(adaptor, tol) repeats the Gauss integration until it agrees to tol: measured relative
         # errors stay below tol on every recorded case (4.9e-13 the worst at 1e-10, on the 1e-3 cubic).
         for (case, setting), row in self.rows.items():
-            tol = SETTINGS[setting]
+            tol = TOLERANCE[setting]
             if tol is not None:
                 self.assertLessEqual(row["length_error"], tol, (case, setting))
 
@@ -124,10 +127,24 @@ class Measured(unittest.TestCase):
         # AbscissaPoint with tol: a Newton-type solve of Integral(U0, u)|C'| = s to tol; at the cusp of
         # svg_cusp_fonttools |C'| = 0 slows it (2e-10 of L measured at 1e-10): a band of 1e-8 there.
         for (case, setting), row in self.rows.items():
-            tol = SETTINGS[setting]
+            tol = TOLERANCE[setting]
             if tol is not None:
                 band = max(tol, 1e-8) if case == "svg_cusp_fonttools" else tol
                 self.assertLessEqual(row["point_error"], band, (case, setting))
+
+    def test_a_quadratic_as_a_parabola_is_the_same_curve(self):
+        # parabola_of turns the quadratic Bezier into the arc of OCCT's analytic Geom2d_Parabola (vertex,
+        # axis along A - 2B + C, focal length |w|^2 / (4 |D|)): a wrong vertex, axis or range would show
+        # as an error of the order of the curve; measured 1.4e-16 on the wide parabola (OCCT measures
+        # a parabola's arc in closed form-like precision), so 1e-12 with margin at every setting.
+        for setting in PARABOLA:
+            for case in ("svg_wide_parabola", "svg_every_command"):
+                row = self.rows[(case, setting)]
+                bound = 1e-12 if case == "svg_wide_parabola" or TOLERANCE[setting] else 1e-4
+                self.assertLess(row["length_error"], bound, (case, setting))
+                self.assertLess(row["off_curve"], 1e-12, (case, setting))
+        # Only paths with a quadratic get these settings.
+        self.assertNotIn(("svg_quarter_circle_arc", "parabola"), self.rows)
 
     def test_the_default_is_one_fixed_gauss_rule(self):
         # Without a tolerance: one fixed-order Gauss rule, no error control. Circles are analytic
