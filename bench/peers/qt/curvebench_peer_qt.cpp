@@ -392,6 +392,35 @@ int paths_mode(const std::string &request_path, const std::string &out_path, boo
 
 // ---- mode 2: easing -------------------------------------------------------------------------------
 
+// valueForProgress of curve at each of times into run, as easing_driver.mjs writes its runs: "times",
+// "values" (null where not finite, each such one listed in "non_finite" as [x, "NaN" | "Infinity" |
+// "-Infinity"]) and "ns_per_op" (one call, over the finite ones; null when none is).
+void add_progress_values(json &run, const QEasingCurve &curve, const std::vector<double> &times, bool quick) {
+  json values = json::array(), bad = json::array();
+  std::vector<double> timed;
+  for (const double x : times) {
+    const double v = curve.valueForProgress(x);
+    if (std::isfinite(v)) {
+      values.push_back(v);
+      timed.push_back(x);
+    } else {
+      values.push_back(nullptr);
+      bad.push_back({x, std::isnan(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity"});
+    }
+  }
+  run["times"] = times;
+  run["values"] = values;
+  run["ns_per_op"] = timed.empty() ? json(nullptr)
+                                   : json(peers::best_ns(
+                                         [&] {
+                                           double sum = 0;
+                                           for (const double x : timed) sum += curve.valueForProgress(x);
+                                           return sum;
+                                         },
+                                         static_cast<double>(timed.size()), peers::Timing::budgeted(quick)));
+  if (!bad.empty()) run["non_finite"] = bad;
+}
+
 std::vector<double> sample_fractions(int n) {
   std::vector<double> out;
   for (int j = 0; j < n; ++j)
@@ -446,32 +475,8 @@ int easing_mode(const std::string &cases_dir, const std::string &out_path, bool 
     const auto [x1, y1, x2, y2] = *p;
     QEasingCurve curve(QEasingCurve::BezierSpline);
     curve.addCubicBezierSegment(QPointF(x1, y1), QPointF(x2, y2), QPointF(1.0, 1.0));
-    json values = json::array(), bad = json::array();
-    std::vector<double> timed;
-    for (const double t : times) {
-      const double v = curve.valueForProgress(t);
-      if (std::isfinite(v)) {
-        values.push_back(v);
-        timed.push_back(t);
-      } else {
-        values.push_back(nullptr);
-        bad.push_back({t, std::isnan(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity"});
-      }
-    }
-    json run = {{"case", name},
-                {"peer", "peer_qt_easing_curve"},
-                {"easing", {x1, y1, x2, y2}},
-                {"times", times},
-                {"values", values}};
-    run["ns_per_op"] = timed.empty() ? json(nullptr)
-                                     : json(peers::best_ns(
-                                           [&] {
-                                             double sum = 0;
-                                             for (const double t : timed) sum += curve.valueForProgress(t);
-                                             return sum;
-                                           },
-                                           static_cast<double>(timed.size()), peers::Timing::budgeted(quick)));
-    if (!bad.empty()) run["non_finite"] = bad;
+    json run = {{"case", name}, {"peer", "peer_qt_easing_curve"}, {"easing", {x1, y1, x2, y2}}};
+    add_progress_values(run, curve, times, quick);
     runs.push_back(run);
   }
   const json doc = {{"driver", "qt_easing"},     {"quick", quick}, {"versions", versions()},
@@ -559,18 +564,6 @@ int tcb_mode(const std::string &cases_dir, const std::vector<std::string> &spec_
                       std::to_string(n - 1) + " segments (3 each expected); not measured");
       continue;
     }
-    json values = json::array(), bad = json::array();
-    std::vector<double> timed;
-    for (const double x : times) {
-      const double v = curve.valueForProgress(x);
-      if (std::isfinite(v)) {
-        values.push_back(v);
-        timed.push_back(x);
-      } else {
-        values.push_back(nullptr);
-        bad.push_back({x, std::isnan(v) ? "NaN" : v > 0 ? "Infinity" : "-Infinity"});
-      }
-    }
     json key_values = json::array();  // valueForProgress at the keys' own x (their y is Qt's segment ends)
     for (const auto &q : unit) {
       const double v = curve.valueForProgress(q.at(0).get<double>());
@@ -582,18 +575,8 @@ int tcb_mode(const std::string &cases_dir, const std::vector<std::string> &spec_
                 {"map", {{"x0", x0}, {"y0", y0}, {"dx", dx}, {"dy", dy}}},
                 {"keys", unit},
                 {"tcb", {{"tension", t}, {"continuity", c}, {"bias", b}}},
-                {"bezier", bezier},
-                {"times", times},
-                {"values", values}};
-    run["ns_per_op"] = timed.empty() ? json(nullptr)
-                                     : json(peers::best_ns(
-                                           [&] {
-                                             double sum = 0;
-                                             for (const double x : timed) sum += curve.valueForProgress(x);
-                                             return sum;
-                                           },
-                                           static_cast<double>(timed.size()), peers::Timing::budgeted(quick)));
-    if (!bad.empty()) run["non_finite"] = bad;
+                {"bezier", bezier}};
+    add_progress_values(run, curve, times, quick);
     runs.push_back(run);
   }
   const json doc = {{"driver", "qt_tcb"},        {"quick", quick}, {"versions", versions()},
