@@ -187,6 +187,21 @@ inline json read_shipped_request(const std::string& path) {
   return req;
 }
 
+// A driver's start: its arguments and its request into args and req; 0, or the exit status after
+// printing why (2: the usage; 1: the request could not be read, naming program and the file).
+inline int start_shipped_driver(int argc, char** argv, const std::string& program, ShippedArgs& args, json& req) {
+  const std::optional<ShippedArgs> a = shipped_args(argc, argv, program);
+  if (!a) return 2;
+  args = *a;
+  try {
+    req = read_shipped_request(args.request);
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 // One "skipped" entry: the peer, the case and why, prefixed by the setting ("default setting" for "").
 inline json skipped_entry(const std::string& peer, const json& c, const std::string& setting, const std::string& why) {
   return {{"peer", peer},

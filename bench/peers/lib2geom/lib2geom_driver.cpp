@@ -255,18 +255,12 @@ peers::Isolated run_isolated(const json& c, const Setting& st, const peers::Timi
 
 int main(int argc, char** argv) {
   const std::string program = "curvebench_peer_2geom";
-  const std::optional<peers::ShippedArgs> args = peers::shipped_args(argc, argv, program);
-  if (!args) return 2;
+  peers::ShippedArgs args;
   json req;
-  try {
-    req = peers::read_shipped_request(args->request);
-  } catch (const std::exception& e) {
-    std::cerr << program << ": " << e.what() << "\n";
-    return 1;
-  }
+  if (const int status = peers::start_shipped_driver(argc, argv, program, args, req)) return status;
   gsl_set_error_handler(&record_gsl_error);
   const bool verbose = std::getenv("CURVEBENCH_PEER_VERBOSE") != nullptr;
-  const peers::Timing timing = peers::Timing::fixed(args->quick);
+  const peers::Timing timing = peers::Timing::fixed(args.quick);
   json runs = json::array(), skipped = json::array();
   for (const json& c : req.at("cases")) {
     for (const Setting& st : kSettings) {
@@ -284,7 +278,7 @@ int main(int argc, char** argv) {
       if (!why.empty()) skipped.push_back(peers::skipped_entry(kPeer, c, st.name, why));
     }
   }
-  return peers::write_shipped_output(args->out, "lib2geom",
+  return peers::write_shipped_output(args.out, "lib2geom",
                                      {{"lib2geom", peers::debian_version("lib2geom-dev")},
                                       {"2geom.pc", CURVEBENCH_2GEOM_PKG_VERSION},
                                       {"gsl", GSL_VERSION}},

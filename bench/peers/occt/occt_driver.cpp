@@ -473,16 +473,10 @@ json run_spline(const json& c, const Setting& st, const peers::Timing& timing) {
 
 int main(int argc, char** argv) {
   const std::string program = "curvebench_peer_occt";
-  const std::optional<peers::ShippedArgs> args = peers::shipped_args(argc, argv, program);
-  if (!args) return 2;
+  peers::ShippedArgs args;
   json req;
-  try {
-    req = peers::read_shipped_request(args->request);
-  } catch (const std::exception& e) {
-    std::cerr << program << ": " << e.what() << "\n";
-    return 1;
-  }
-  const peers::Timing timing = peers::Timing::fixed(args->quick);
+  if (const int status = peers::start_shipped_driver(argc, argv, program, args, req)) return status;
+  const peers::Timing timing = peers::Timing::fixed(args.quick);
   json runs = json::array(), skipped = json::array();
   std::vector<std::pair<const json*, bool>> all;  // (case, is a spline)
   for (const json& c : req.at("cases")) all.emplace_back(&c, false);
@@ -504,7 +498,7 @@ int main(int argc, char** argv) {
       if (!why.empty()) skipped.push_back(peers::skipped_entry(kPeer, c, st.name, why));
     }
   }
-  return peers::write_shipped_output(args->out, "occt",
+  return peers::write_shipped_output(args.out, "occt",
                                      {{"opencascade", OCC_VERSION_COMPLETE},
                                       {"libocct-foundation-dev", peers::debian_version("libocct-foundation-dev")}},
                                      runs, skipped, program);
