@@ -63,9 +63,12 @@ class composite_bezier {
   }
 
   /// Rational segments: weights[i] are segment i's weights, one > 0 per control point.
+  /// `data_error`, empty or one per segment: how far each segment's stored control data may be from
+  /// the data it stands for (rational_bezier.hpp, control_data_error).
   composite_bezier(std::span<const point_list<Real, Dim>> segments, std::span<const std::vector<Real>> weights,
-                   std::span<const Real> knots) requires(rational) {
-    init(segments, weights, knots);
+                   std::span<const Real> knots,
+                   std::span<const control_data_error<Real>> data_error = {}) requires(rational) {
+    init(segments, weights, knots, data_error);
   }
 
   [[nodiscard]] interval<Real> domain() const { return {knots_.front(), knots_.back()}; }
@@ -163,11 +166,14 @@ class composite_bezier {
 
  private:
   void init(std::span<const point_list<Real, Dim>> segments, std::span<const std::vector<Real>> weights,
-            std::span<const Real> knots) {
+            std::span<const Real> knots, std::span<const control_data_error<Real>> data_error = {}) {
     validate::count_at_least("segments", segments.size(), 1);
     validate::same_count("knots", knots.size(), "segments + 1", segments.size() + 1);
     validate::increasing("knots", knots);
-    if constexpr (rational) validate::same_count("weights", weights.size(), "segments", segments.size());
+    if constexpr (rational) {
+      validate::same_count("weights", weights.size(), "segments", segments.size());
+      if (!data_error.empty()) validate::same_count("data_error", data_error.size(), "segments", segments.size());
+    }
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const std::string name = validate::indexed("segments", i);
       validate::count_at_least(name, segments[i].size(), 2, "a Bezier segment of degree L >= 1 has L + 1 points");
@@ -185,7 +191,8 @@ class composite_bezier {
     for (std::size_t i = 0; i < segments.size(); ++i) {
       const interval<Real> on{knots_[i], knots_[i + 1]};
       if constexpr (rational)
-        segments_.emplace_back(std::span<const point_type>(segments[i]), std::span<const Real>(weights[i]), on);
+        segments_.emplace_back(std::span<const point_type>(segments[i]), std::span<const Real>(weights[i]), on,
+                               data_error.empty() ? control_data_error<Real>{} : data_error[i]);
       else
         segments_.emplace_back(std::span<const point_type>(segments[i]), on);
       for (const auto& p : segments[i])

@@ -11,7 +11,9 @@
 // rounding_bound(order), order 0 or 1 (core/curve.hpp): the numerator's and the denominator's
 // de Casteljau bounds (bezier.hpp), plus the rounding of w_k P_k (u max |w_k P_k|, and 2L/(b - a)
 // times that in A'), through the quotient (detail/quotient_rounding.hpp) with W >= min w_k and
-// |C| <= max |P_k|.
+// |C| <= max |P_k|. A curve whose control data stands for other numbers (an SVG arc's pieces,
+// computed and then rounded) takes their distance, control_data_error: its rounding bound then
+// bounds the distance from the curve those numbers define, not only from the one it stores.
 #pragma once
 
 #include "curvebench/core/curve.hpp"
@@ -69,6 +71,14 @@ template <class Real>
 // a recurrence over the previous L derivatives (w^(j) = 0 for j > L), kept in a stack ring buffer
 // of L + 1 points: O(k L (L + Dim)), no allocation. Unlike the polynomial case, derivatives of order
 // > L do not vanish.
+/// How far a rational Bezier curve's stored control data may be from the data it stands for:
+/// |P_k stored - P_k| <= position and |w_k stored - w_k| <= weight for every k (0: the data is exact).
+template <class Real>
+struct control_data_error {
+  Real position{0};
+  Real weight{0};
+};
+
 template <class Real, int Dim>
 class rational_bezier {
  public:
@@ -77,13 +87,20 @@ class rational_bezier {
   static constexpr int dimension = Dim;
 
   /// A rational Bezier curve with one positive weight per control point, on `domain`.
+  /// With `data_error`, rounding_bound(order) also bounds the distance from the curve of the data the
+  /// stored control points and weights stand for (see control_data_error); it must be >= 0.
   rational_bezier(std::span<const point_type> control_points, std::span<const Real> weights,
-                  interval<Real> domain = {Real(0), Real(1)})
+                  interval<Real> domain = {Real(0), Real(1)}, control_data_error<Real> data_error = {})
       : points_(validated(control_points, weights, domain)),
         weights_(weights.begin(), weights.end()),
         numerator_(homogeneous(points_, weights_), domain),
         denominator_(weight_points(weights_), domain) {
-    build_rounding_bounds();
+    validate::finite("data_error.position", data_error.position);
+    validate::finite("data_error.weight", data_error.weight);
+    if (data_error.position < Real(0) || data_error.weight < Real(0))
+      validate::fail("data_error = {" + to_text(data_error.position) + ", " + to_text(data_error.weight) +
+                     "}: must be >= 0");
+    build_rounding_bounds(data_error);
   }
 
   /// Upper bound on the rounding of this curve's evaluation of C (order 0) or C' (order 1) over the
@@ -168,27 +185,35 @@ class rational_bezier {
     return h;
   }
 
-  void build_rounding_bounds() {
+  // The stored curve is A~ / W~; the one it stands for A / W, with control points w_k P_k and w_k.
+  // Its numerator's control points are at most e_A = max_k (w~_k dP + (|P~_k| + dP) dw) from the
+  // stored ones, the denominator's at most dw; a Bezier curve's value moves by at most its control
+  // points' largest move (the Bernstein weights sum to 1) and its derivative by 2L / (b - a) times
+  // that. Those distances enter the quotient bound as errors of A, W, A' and W', and the bounds on
+  // |A'|, |W'|, |C| and min W are widened by them, since they bound the curve stood for.
+  void build_rounding_bounds(const control_data_error<Real>& de) {
     using std::abs;
-    Real max_wp(0), max_p(0), min_w = weights_.front(), max_a1(0), max_w1(0);
+    Real max_wp(0), max_p(0), min_w = weights_.front(), max_a1(0), max_w1(0), e_a(0);
     for (std::size_t k = 0; k < points_.size(); ++k) {
       max_wp = std::max(max_wp, safe_norm(numerator_.control_points()[k]));
       max_p = std::max(max_p, safe_norm(points_[k]));
       min_w = std::min(min_w, weights_[k]);
+      e_a = std::max(e_a, Real(weights_[k] * de.position + (safe_norm(points_[k]) + de.position) * de.weight));
     }
     for (const point_type& d : numerator_.derivative_control_points(1)) max_a1 = std::max(max_a1, safe_norm(d));
     for (const point<Real, 1>& d : denominator_.derivative_control_points(1))
       max_w1 = std::max(max_w1, Real(abs(d[0])));
     const Real data = epsilon<Real>() / Real(2) * max_wp;  // fl(w_k P_k)
     const Real width = domain().hi - domain().lo;
-    detail::quotient_rounding<Real> q{numerator_.rounding_bound(0) + data,
-                                      denominator_.rounding_bound(0),
-                                      numerator_.rounding_bound(1) + Real(2 * degree()) * data / width,
-                                      denominator_.rounding_bound(1),
-                                      max_a1,
-                                      max_w1,
-                                      max_p,
-                                      min_w};
+    const Real slope = Real(2 * degree()) / width;  // a control move's largest effect on the derivative
+    detail::quotient_rounding<Real> q{numerator_.rounding_bound(0) + data + e_a,
+                                      denominator_.rounding_bound(0) + de.weight,
+                                      numerator_.rounding_bound(1) + slope * (data + e_a),
+                                      denominator_.rounding_bound(1) + slope * de.weight,
+                                      max_a1 + slope * e_a,
+                                      max_w1 + slope * de.weight,
+                                      max_p + de.position,
+                                      min_w - de.weight};
     rounding_bound_ = detail::quotient_rounding_bound(q);
   }
 
