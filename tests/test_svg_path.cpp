@@ -12,11 +12,14 @@
 #include "curvebench/io/svg_path.hpp"
 #include "curvebench/reference/multiprecision.hpp"
 
+#include <boost/math/constants/constants.hpp>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -264,4 +267,41 @@ TEST(svg_path, errors_name_the_offset_the_character_and_what_was_expected) {
   EXPECT_THAT(error_of("M1 2,Z"), HasSubstr("at offset 5 ('Z'): expected a number (the x coordinate)"));
   EXPECT_THAT(error_of("M."), HasSubstr("at offset 1 ('.'): expected a number (the x coordinate)"));
   EXPECT_THAT(error_of("M0 0 L1 1 L2"), HasSubstr("at offset 12 (the end of the data)"));  // never shortened
+}
+
+// Radii from 1e-300 to 1e300 over a chord of 10: the centre form is finite, its start angle's unit
+// vector is a unit vector, and the sweep is the closed form 2 asin(5 / r) (pi when r < 5, where SVG
+// scales the radii up) to 1e-15 relative, where squaring the radii twice overflowed past 1e77 and
+// lost the sweep of a radius of 1e20 to the rounding of its centre (1e-16 of 1e20 against 5).
+TEST(svg_path, centre_form_from_the_smallest_to_the_largest_radii) {
+  using R = curvebench::real50;
+  for (int e = -300; e <= 300; e += 25) {
+    const double r = std::pow(10.0, e);
+    char text[80];
+    std::snprintf(text, sizeof text, "M0 0 A%.17g %.17g 0 0 1 10 0", r, r);
+    SCOPED_TRACE(text);
+    const auto s = segments_of(text);
+    ASSERT_EQ(s.size(), 1u);
+    const auto a = svg::center_form<double>(s[0]);
+    EXPECT_TRUE(std::isfinite(a.cx) && std::isfinite(a.cy) && std::isfinite(a.rx) && std::isfinite(a.ry));
+    EXPECT_NEAR(std::hypot(a.ux, a.uy), 1.0, 4e-16);
+    const R rr(r);
+    const R want = rr <= 5 ? boost::math::constants::pi<R>() : R(2 * asin(R(5) / rr));
+    EXPECT_LT(abs(R(a.dtheta) - want), R("1e-15") * want) << "dtheta " << a.dtheta;
+    const auto a50 = svg::center_form<R>(s[0]);
+    EXPECT_LT(abs(a50.dtheta - want), R("1e-45") * want);
+  }
+}
+
+// A path's segments are bounded before they are built: one more than max_segments is refused,
+// naming the limit and where the data passed it.
+TEST(svg_path, at_most_max_segments_per_path) {
+  std::string d = "M0 0";
+  d.reserve(6 * (svg::max_segments + 2));
+  for (std::size_t i = 0; i <= svg::max_segments; ++i) d += "l1 1 ";
+  const std::string message = curvebench::testing::message_of([&] { (void)svg::parse_path(d); });
+  EXPECT_THAT(message, ::testing::HasSubstr("at most 1000000 segments"));
+  EXPECT_THAT(message, ::testing::HasSubstr("at offset " + std::to_string(4 + 5 * svg::max_segments)));
+  d.resize(d.size() - 5);  // exactly the limit: accepted
+  EXPECT_EQ(svg::parse_path(d).at(0).segments.size(), svg::max_segments);
 }

@@ -1,6 +1,6 @@
 // SVG path data (the "d" attribute of <path>): the whole grammar of SVG 1.1 (section 8.3.9) and
 // SVG 2 (section 9.3.9) to a list of subpaths of line, quadratic, cubic and elliptical-arc segments
-// in absolute coordinates (issue 35, item 1).
+// in absolute coordinates.
 //
 // Grammar: moveto (M/m) first; lineto L/l, H/h, V/v; cubic C/c, S/s; quadratic Q/q, T/t; arc A/a;
 // closepath Z/z. A command's argument group may repeat without repeating its letter (after M/m the
@@ -29,10 +29,15 @@
 // a silently shortened path. parse_path throws invalid_input naming the character offset (from 0),
 // the character found there (or the end of the data) and what the grammar expected; a number past
 // double's range is refused the same way (one below it is 0, as it rounds).
+// A relative point past double's range and more than max_segments segments are refused the same way.
+// The centre form is computed without squaring a radius (see center_form), so no radius from the
+// smallest to the largest double overflows it where the arc itself is representable.
 // Cost: O(length of d). No allocation beyond the segments.
 #pragma once
 
 #include "curvebench/core/error.hpp"
+#include "curvebench/core/point.hpp"
+#include "curvebench/core/real.hpp"
 
 #include <boost/math/constants/constants.hpp>
 
@@ -91,51 +96,100 @@ struct arc_center {
   Real phi{0};        ///< the x-axis rotation, radians, in [0, 2 pi)
   Real theta1{0};     ///< the start angle, radians
   Real dtheta{0};     ///< the sweep, radians: > 0 with sweep-flag 1, < 0 with 0; |dtheta| <= 2 pi
+  /// (cos theta1, sin theta1), computed without the angle: the start point relative to the centre
+  /// in the unit circle's frame. Pieces of the arc are built from it and the written end points,
+  /// never as c + (a point relative to c), which loses everything when |c| dwarfs the arc.
+  Real ux{1}, uy{0};
 };
 
 /// The centre form of arc segment s, computed in Real (SVG 1.1 F.6.5 and F.6.6; see the header).
+/// No intermediate can overflow or underflow where the result is representable: the F.6.5 radicand
+/// is taken in the unit circle's frame, X = x1' / rx and Y = y1' / ry (its terms divided by
+/// rx^2 ry^2, so no fourth power of a radius is formed), and the radii scaled up by sqrt(Lambda)
+/// are hypot(x1', y1' rx / ry) and hypot(x1' ry / rx, y1'). A result that is not finite in Real (a
+/// centre or radii past its range, a ratio of radii past it) throws invalid_input naming it.
 template <class Real>
 [[nodiscard]] arc_center<Real> center_form(const segment& s) {
   using std::abs, std::atan2, std::cos, std::fmod, std::sin, std::sqrt;
+  const auto hypot = [](const Real& p, const Real& q) { return safe_norm(point<Real, 2>(p, q)); };
   if (s.kind != segment_kind::arc) throw invalid_input("svg center_form: the segment is not an arc");
   const Real pi = boost::math::constants::pi<Real>();
   const Real x1s(s.p[0].x), y1s(s.p[0].y), x2(s.p[1].x), y2(s.p[1].y);
   Real rx = abs(Real(s.arc.rx)), ry = abs(Real(s.arc.ry));
+  if (!(rx > Real(0)) || !(ry > Real(0)))
+    throw invalid_input("svg center_form: an arc with a zero radius is a line (the parser makes it one)");
   Real degrees = fmod(Real(s.arc.rotation), Real(360));
   if (degrees < Real(0)) degrees += Real(360);
   arc_center<Real> a;
   a.phi = degrees * pi / Real(180);
   const Real cp = cos(a.phi), sp = sin(a.phi);
-  const Real dx = (x1s - x2) / Real(2), dy = (y1s - y2) / Real(2);
+  // Halves first: x1s / 2 - x2 / 2 cannot overflow where x1s - x2 would (halving is exact).
+  const Real dx = x1s / Real(2) - x2 / Real(2), dy = y1s / Real(2) - y2 / Real(2);
+  // |x1'| and |y1'| are at most hypot(dx, dy) <= sqrt(2) max(|dx|, |dy|); computed as below each
+  // term is at most max(|dx|, |dy|), so only a rotated half chord past Real's range overflows.
   const Real x1 = cp * dx + sp * dy, y1 = -sp * dx + cp * dy;
-  // Radii too small to reach the end: scaled by sqrt(Lambda), the arc is then half the ellipse,
-  // its centre the chord's midpoint (coef 0). F.6.6's radicand is exactly 0 there; computed after
-  // the scaling it is rounding noise of either sign, and its square root would move the centre by
-  // about sqrt(eps) of the radii (measured: 5e-8 in the length of svg_every_command's 30-degree arc,
-  // different between two builds of the tool).
-  const Real lambda = (x1 / rx) * (x1 / rx) + (y1 / ry) * (y1 / ry);
-  Real coef(0);
-  if (lambda > Real(1)) {
-    const Real k = sqrt(lambda);
-    rx *= k;
-    ry *= k;
+  const Real X = x1 / rx, Y = y1 / ry;  // the half chord in the unit circle's frame; may be +-inf
+  const Real h = hypot(X, Y);           // sqrt(Lambda), without squaring
+  Real ux, uy;
+  if (h > Real(1)) {
+    // Radii too small to reach the end: scaled by sqrt(Lambda), the arc is half the ellipse, its
+    // centre the chord's midpoint exactly (F.6.6's radicand is 0 there; computed after the scaling it
+    // is rounding noise of either sign, and its square root would move the centre by about sqrt(eps)
+    // of the radii: 5e-8 in the length of a 30-degree arc, different between two builds).
+    const Real q = ry / rx;
+    if (!is_finite(q) || !(q > Real(0)))
+      throw invalid_input("svg arc: the ratio of its radii ry / rx = " + to_text(ry) + " / " + to_text(rx) +
+                          " is past the range of the arithmetic");
+    const Real rx2 = hypot(x1, y1 / q), ry2 = hypot(x1 * q, y1);
+    rx = rx2;
+    ry = ry2;
+    ux = x1 / rx;
+    uy = y1 / ry;
+    // Unit up to rounding; normalised so that the pieces built from it are exact to the arithmetic.
+    const Real n = hypot(ux, uy);
+    ux /= n;
+    uy /= n;
   } else {
-    const Real num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
-    const Real den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
-    coef = num > Real(0) && den > Real(0) ? Real(sqrt(num / den)) : Real(0);
+    // F.6.5.2 divided by rx^2 ry^2: coef^2 = (1 - Lambda) / Lambda, with 1 - Lambda = (1 - h)(1 + h)
+    // (no cancellation beyond that of 1 - h itself). The centre in the primed frame is
+    // coef (rx Y, -ry X); the start point relative to it, in the unit frame, is
+    // u = (X - coef Y, Y + coef X), a unit vector; coef is +-inf only when h is 0, which the parser
+    // excludes (coincident end points are no arc).
+    // Formed as h e + sgn c (-e_y, e_x), e = (X, Y) / h and c = |coef| h = sqrt(1 - h^2), so that
+    // nothing overflows when h is tiny (a huge radius over a short chord).
+    const Real ex = X / h, ey = Y / h;
+    const Real c = sqrt((Real(1) - h) * (Real(1) + h));
+    const Real sgn = s.arc.large == s.arc.sweep ? Real(-1) : Real(1);
+    ux = h * ex - sgn * c * ey;
+    uy = h * ey + sgn * c * ex;
   }
-  if (s.arc.large == s.arc.sweep) coef = -coef;
-  const Real cx1 = coef * rx * y1 / ry, cy1 = -coef * ry * x1 / rx;
-  a.cx = cp * cx1 - sp * cy1 + (x1s + x2) / Real(2);
-  a.cy = sp * cx1 + cp * cy1 + (y1s + y2) / Real(2);
+  // The end relative to the centre, in the unit frame: -u on the half ellipse; else v = u - 2 (X, Y)
+  // (the chord is -2 (x1', y1') in the primed frame).
+  const Real vx = h > Real(1) ? Real(-ux) : Real(ux - Real(2) * X);
+  const Real vy = h > Real(1) ? Real(-uy) : Real(uy - Real(2) * Y);
   a.rx = rx;
   a.ry = ry;
-  const Real ux = (x1 - cx1) / rx, uy = (y1 - cy1) / ry, vx = (-x1 - cx1) / rx, vy = (-y1 - cy1) / ry;
+  a.ux = ux;
+  a.uy = uy;
   a.theta1 = atan2(uy, ux);
   Real dtheta = atan2(ux * vy - uy * vx, ux * vx + uy * vy);
   if (!s.arc.sweep && dtheta > Real(0)) dtheta -= Real(2) * pi;
   if (s.arc.sweep && dtheta < Real(0)) dtheta += Real(2) * pi;
   a.dtheta = dtheta;
+  // The centre: on the half ellipse the chord's midpoint, exactly; else the start point minus A u,
+  // A = R(phi) diag(rx, ry).
+  if (h > Real(1)) {
+    a.cx = x1s / Real(2) + x2 / Real(2);
+    a.cy = y1s / Real(2) + y2 / Real(2);
+  } else {
+    const Real ax = rx * ux, ay = ry * uy;
+    a.cx = x1s - (cp * ax - sp * ay);
+    a.cy = y1s - (sp * ax + cp * ay);
+  }
+  for (const Real* v : {&a.cx, &a.cy, &a.rx, &a.ry})
+    if (!is_finite(*v))
+      throw invalid_input("svg arc: its centre form is past the range of the arithmetic (radii " + to_text(rx) + ", " +
+                          to_text(ry) + ")");
   return a;
 }
 
@@ -147,6 +201,10 @@ template <class Real>
   const Real x = a.rx * cos(theta), y = a.ry * sin(theta);
   return {a.cx + c * x - s * y, a.cy + s * x + c * y};
 }
+
+/// The segments one path's data may draw: past it parse_path refuses the data before building more
+/// (a segment is about 120 bytes here and a few hundred in a curve, so a million is a few hundred MB).
+inline constexpr std::size_t max_segments = 1000000;
 
 namespace detail {
 
@@ -174,6 +232,7 @@ class path_reader {
   std::string_view d_;
   std::size_t pos_ = 0;
   std::vector<subpath> out_;
+  std::size_t segments_ = 0;
   xy current_{}, start_{};
   bool open_ = false;  // a subpath is being written (a moveto started it)
   char previous_ = 0;  // the previous command's letter, upper case
@@ -287,13 +346,28 @@ class path_reader {
   }
 
   xy pair(bool relative) {
+    const std::size_t at = pos_;
     const double x = number("a number (the x coordinate)");
     skip_separator();
     const double y = number("a number (the y coordinate)");
-    return relative ? xy{current_.x + x, current_.y + y} : xy{x, y};
+    return relative ? absolute(xy{current_.x + x, current_.y + y}, at) : xy{x, y};
+  }
+
+  // A relative coordinate added to the current point may pass double's range: refused where it was
+  // written, never carried on as inf.
+  xy absolute(const xy& p, std::size_t at) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+      pos_ = at;
+      fail("a relative point whose absolute coordinates stay within double's range (this one overflows)");
+    }
+    return p;
   }
 
   void add(segment s, std::size_t at) {
+    if (++segments_ > max_segments) {
+      pos_ = at;
+      fail("at most " + std::to_string(max_segments) + " segments in one path's data (the limit of a path)");
+    }
     s.offset = at;
     s.p[0] = current_;
     out_.back().segments.push_back(s);
@@ -366,13 +440,13 @@ class path_reader {
       case 'H': {
         const double x = number("a number (the x coordinate)");
         s.kind = segment_kind::line;
-        s.p[1] = {relative ? current_.x + x : x, current_.y};
+        s.p[1] = absolute({relative ? current_.x + x : x, current_.y}, at);
         break;
       }
       case 'V': {
         const double y = number("a number (the y coordinate)");
         s.kind = segment_kind::line;
-        s.p[1] = {current_.x, relative ? current_.y + y : y};
+        s.p[1] = absolute({current_.x, relative ? current_.y + y : y}, at);
         break;
       }
       case 'C':
@@ -387,7 +461,7 @@ class path_reader {
       case 'S':
         s.kind = segment_kind::cubic;
         s.points = 4;
-        s.p[1] = previous_ == 'C' || previous_ == 'S' ? reflect(last_control_) : current_;
+        s.p[1] = previous_ == 'C' || previous_ == 'S' ? absolute(reflect(last_control_), at) : current_;
         s.p[2] = pair(relative);
         skip_separator();
         s.p[3] = pair(relative);
@@ -402,7 +476,7 @@ class path_reader {
       case 'T':
         s.kind = segment_kind::quadratic;
         s.points = 3;
-        s.p[1] = previous_ == 'Q' || previous_ == 'T' ? reflect(last_control_) : current_;
+        s.p[1] = previous_ == 'Q' || previous_ == 'T' ? absolute(reflect(last_control_), at) : current_;
         s.p[2] = pair(relative);
         break;
       case 'A': {
