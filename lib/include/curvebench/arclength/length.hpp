@@ -3,8 +3,9 @@
 // speed(c, u) = |P'(u)| (one derivative evaluation). gauss_length: the fixed n-point
 // Gauss-Legendre rule per segment; with fixed_estimate::nested each segment is first split at its
 // deep speed minima (detail/speed_minima.hpp), each piece integrated as 1, 2 and 4 panels, Q4
-// reported with estimate |Q2 - Q4| + rounding floor + the floor of its nodes' placement, trusted only at an observed
-// order >= 4
+// reported with estimate |Q2 - Q4| + |Q1 - Q2| / 15 + rounding floor + the floor of its nodes'
+// placement (Q4's error is at most |Q2 - Q4| plus Q2's, which |Q1 - Q2| / 15 bounds where the
+// first halving gained a factor 16), trusted only at an observed order >= 4
 // (|Q1 - Q2| >= 16 |Q2 - Q4|); a piece that fails that test is halved and each half tried again by
 // the same rule, up to 4 levels (a pre-asymptotic piece of a many-segment spline: see fixed_segment),
 // and a part still failing gets no bound; a piece ending at a near-cusp whose branch point is within
@@ -160,7 +161,11 @@ quadrature_result<Real> fixed_panel(F&& f, const Real& a, const Real& b, const g
   // Q1, Q2 and Q4 need not show it (a domain [1e20, 1e20 + 1e10]: d2 was 3e-9 of an error of 9e-8).
   const Real floor = rounding_floor(abs(quarters)) + Real(2) * epsilon<Real>() * (abs(a) + abs(b)) * (fmax - fmin);
   const Real d1 = abs(whole - halves), d2 = abs(halves - quarters);
-  r.error_estimate = d2 + floor;
+  // Q4's error is at most d2 + |Q2's error|, and Q2's at most d1 / 15 when the first halving gained
+  // the factor 16 the order test asks for (|e1| >= 16 |e2|). d2 alone assumed the second halving did
+  // too, and a coarse value accurate by accident breaks that: a quarter of the 10 x 5 ellipse by
+  // 2-point panels has errors 1.1e-1, 3.9e-6 and 3.8e-5 on 1, 2 and 4 panels, d2 = 3.4e-5.
+  r.error_estimate = d2 + d1 / Real(15) + floor;
   // On a smooth speed the rule converges at order 2n >= 4 (n >= 2) once the panels resolve it:
   // d1 >= 16 d2. A kink (cusp) gives order 2 with a constant that depends on where the kink falls
   // in the panels, and a feature narrower than the panels gives anything: not trusted.
@@ -214,7 +219,7 @@ inline constexpr std::size_t fixed_minimum_samples = 16;
 /// ratio has not reached 2^(2n)), one such piece left the whole sum without a bound, and with 100
 /// segments of the same road none failed only by luck. On a half, the same rule's panels are half
 /// as wide and the order test passes where the speed is analytic near the piece; the estimate of
-/// each part is the same |Q2 - Q4| + floors, so the sum keeps a true bound. A near-cusp is not
+/// each part is the same |Q2 - Q4| + |Q1 - Q2| / 15 + floors, so the sum keeps a true bound. A near-cusp is not
 /// halved: halving leaves the branch point as close to the half that ends there.
 template <curve C, class F>
 quadrature_result<typename C::real_type> fixed_segment(const C& c, F&& f, const typename C::real_type& a,
