@@ -181,6 +181,22 @@ nlohmann::json length(const cb::io::field& spec, const length_args& a) {
     al::quadrature_result<double> r = row.prepare(c, v, ctx)();
     if (!row.estimate) r.error_estimate = std::numeric_limits<double>::quiet_NaN();
     tool::require_finite(r.value, spec.path + ": length (" + a.method + ")", c);
+    // A length is at least the chords between consecutive breakpoints (each segment's end from the
+    // left: a jump adds none). A result without a bound that falls short of them is certainly wrong
+    // (the method's nodes missed where the curve moves: rational weights spanning 1e20 put the whole
+    // length within 1e-20 of the ends): refused, never printed with exit code 0. 1e-9 of slack: the
+    // chords are evaluated in double too, and a result that close is not the garbage meant here.
+    if (r.status == al::result_status::not_guaranteed) {
+      const std::span<const double> bp = plain.breakpoints();
+      double chords = 0;
+      for (std::size_t i = 0; i + 1 < bp.size(); ++i)
+        chords += cb::safe_norm(cb::point<double, Dim>(cb::value_from_left(plain, bp[i + 1]) - plain(bp[i])));
+      if (std::isfinite(chords) && r.value < chords * (1 - 1e-9))
+        throw cb::invalid_input(spec.path + ": length (" + a.method + ") " + cb::to_text(r.value) +
+                                " is shorter than the chords between the curve's breakpoints, " + cb::to_text(chords) +
+                                ": the method missed where the curve moves and has no bound to say so (" +
+                                al::to_text(r.reason) + ")");
+    }
     // A length at most degenerate_length_eps eps of the curve's size (the largest |P| at its
     // breakpoints) is rounding noise: the true length may be 0, so the estimate covers that level.
     // A result without a bound (not_guaranteed, null) keeps none: rounding_limited carries an estimate.
@@ -209,7 +225,7 @@ nlohmann::json length(const cb::io::field& spec, const length_args& a) {
 }
 
 /// The subpaths of path data d as JSON, absolute and explicit, for programs that take segments
-/// rather than path data (the native arc-length peers of issue 36): [{"start": [x, y], "closed",
+/// rather than path data (the native arc-length peers): [{"start": [x, y], "closed",
 /// "segments": [{"kind": "line" | "quadratic" | "cubic" | "arc", "points": its 2 to 4 control
 /// points (an arc's two ends), and for an arc "rx", "ry", "rotation" (degrees), "large", "sweep" as
 /// written and "center": its centre form in double (cx, cy, rx, ry after the out-of-range
@@ -227,7 +243,18 @@ nlohmann::json segments_json(const std::string& d) {
       static constexpr const char* kinds[] = {"line", "quadratic", "cubic", "arc"};
       nlohmann::json j{{"kind", kinds[static_cast<int>(s.kind)]}, {"points", std::move(pts)}};
       if (s.kind == svg::segment_kind::arc) {
-        const svg::arc_center<double> c = svg::center_form<double>(s);
+        // At 50 digits, then rounded: each number is the nearest double to the arc's own (in double,
+        // a start angle near -pi/2 would carry an error of 1e-16 radians beside a sweep of 1e-19).
+        const svg::arc_center<cb::real50> c50 = svg::center_form<cb::real50>(s);
+        const auto to_double = [](const cb::real50& x) {
+          const double v = static_cast<double>(x);
+          if (!std::isfinite(v))
+            throw cb::invalid_input("svg arc: its centre form " + cb::to_text(x) + " is past double's range");
+          return v;
+        };
+        const svg::arc_center<double> c{to_double(c50.cx),     to_double(c50.cy),  to_double(c50.rx),
+                                        to_double(c50.ry),     to_double(c50.phi), to_double(c50.theta1),
+                                        to_double(c50.dtheta), to_double(c50.ux),  to_double(c50.uy)};
         j.update({{"rx", s.arc.rx},
                   {"ry", s.arc.ry},
                   {"rotation", s.arc.rotation},
