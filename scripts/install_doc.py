@@ -78,7 +78,8 @@ def check(commands, options, path="docs/checking.md"):
     if p.returncode != 0:
         first = commands[0][0]
         # bash names the line of its input: map it back to the doc's.
-        detail = re.sub(r"line (\d+)", lambda m: f"line {first + int(m.group(1)) - 1} of {path}", p.stderr.strip().replace("bash: ", ""))
+        detail = re.sub(r"line (\d+)", lambda m: f"line {first + int(m.group(1)) - 1} of {path}",
+                        p.stderr.strip().replace("bash: ", ""))
         raise InstallDocError(f"{path}: the install block is not valid bash: {detail}")
     found = {}
     for number, line in commands:
@@ -87,7 +88,8 @@ def check(commands, options, path="docs/checking.md"):
         for command in (c for c in _split_and(words) if c):
             kind = _kind(command, number, path, options)
             if kind in found:
-                raise InstallDocError(f"{path}:{number}: a second {kind} command (the first is on line {found[kind][0]})")
+                raise InstallDocError(f"{path}:{number}: a second {kind} command "
+                                      f"(the first is on line {found[kind][0]})")
             found[kind] = (number, command)
     order = ["configure", "build", "install", "list cases"]
     missing = [k for k in order if k not in found]
@@ -126,7 +128,8 @@ def _kind(command, number, path, options):
     text = " ".join(command)
     if command[0] == "cmake" and "-S" in command:
         if _after(command, "-S") != ".":
-            raise InstallDocError(f"{path}:{number}: the configure command must read the checkout's root (-S .): {text}")
+            raise InstallDocError(f"{path}:{number}: the configure command must read the checkout's root "
+                                  f"(-S .): {text}")
         if _after(command, "-B") is None:
             raise InstallDocError(f"{path}:{number}: the configure command names no build tree (-B DIR): {text}")
         for w in command:
