@@ -45,7 +45,7 @@ if [[ $sanitize -eq 1 ]]; then
   # 46 s to compile against 145 s with -O1 -g (full debug info of the 50-digit templates made the
   # assembler alone take 1.8 GB), and test_inversion runs as fast (53 s against 56 s; -O0 took 340 s).
   cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-Og -g1" \
-        -DCURVEBENCH_SANITIZE=ON -DCURVEBENCH_BUILD_BENCH=OFF -DCURVEBENCH_BUILD_TESTS=ON >/dev/null
+        -DCURVEBENCH_SANITIZE=ON -DCURVEBENCH_BUILD_BENCH=OFF -DCURVEBENCH_BUILD_TESTS=ON -DCURVEBENCH_WERROR=ON >/dev/null
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 else
@@ -53,7 +53,7 @@ else
   configure_generator "$build"
   # -O2 without NDEBUG: optimized enough for 50-digit references, assertions (Eigen's too) kept.
   cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2" \
-        -DCURVEBENCH_BUILD_BENCH=ON -DCURVEBENCH_BUILD_TESTS=ON >/dev/null
+        -DCURVEBENCH_BUILD_BENCH=ON -DCURVEBENCH_BUILD_TESTS=ON -DCURVEBENCH_WERROR=ON >/dev/null
 fi
 
 if [[ $light -eq 1 ]]; then

@@ -345,10 +345,16 @@ class strict_builder {
     std::string p(source_);
     for (std::size_t i = 0; i + 1 < open_.size(); ++i) {
       const json& v = *open_[i].value;
-      if (v.is_array())
-        p += "[" + std::to_string(v.size() - 1) + "]";
-      else
-        p += "." + cut(open_[i].key, 40);
+      // Appended piece by piece (not `"[" + std::to_string(...)`, an insert at the front of a
+      // temporary, where GCC 12 at -O3 warns a false -Wstringop-overflow in libstdc++'s _M_replace).
+      if (v.is_array()) {
+        p += '[';
+        p += std::to_string(v.size() - 1);
+        p += ']';
+      } else {
+        p += '.';
+        p += cut(open_[i].key, 40);
+      }
     }
     return p;
   }
