@@ -117,12 +117,11 @@ class rational_bezier {
     if (order == 0) return (*this)(u);
     const int L = degree();
     const auto ring_size = static_cast<std::size_t>(L) + 1;
-    std::array<Real, bezier_max_degree + 1> wd;  // w^(j)(u), j = 0..min(order, L)
-    // w(u) outside the loop: GCC cannot tell that the loop runs at least once (L >= 1) and warned,
-    // at -O3, that the divisor wd[0] may be used uninitialized.
-    wd[0] = denominator_.derivative(u, 0)[0];
+    // w^(j)(u), j = 0..min(order, L). Zeroed first: only those are read, but GCC cannot tie the
+    // reads below to the loop's bound and warned at -O3 that wd[0] and wd[1] may be uninitialized.
+    std::array<Real, bezier_max_degree + 1> wd{};
     const int jmax = std::min(order, L);
-    for (int j = 1; j <= jmax; ++j) wd[static_cast<std::size_t>(j)] = denominator_.derivative(u, j)[0];
+    for (int j = 0; j <= jmax; ++j) wd[static_cast<std::size_t>(j)] = denominator_.derivative(u, j)[0];
     std::array<point_type, bezier_max_degree + 1> ring;  // C^(m) at m mod (L + 1)
     for (int m = 0; m <= order; ++m) {
       point_type num = m <= L ? numerator_.derivative(u, m) : zero_point<Real, Dim>();
