@@ -465,7 +465,8 @@ class ToolCli(unittest.TestCase):
         cases = [
             # A character reference to U+0000 was decoded into d, which then ended there: a path of
             # 1010 was measured as 10.
-            ('<path d="M0 0 L10 0&#0; L1000 0"/>', 59, "character reference &#0; is to U+0000, a character XML does not allow"),
+            ('<path d="M0 0 L10 0&#0; L1000 0"/>', 59,
+             "character reference &#0; is to U+0000, a character XML does not allow"),
             ('<path d="M0 0 L10 0&#x8; L1000 0"/>', 59, "character reference &#x8; is to U+0008"),
             ('<path d="M0 0 &#xD800;"/>', 54, "character reference &#xD800; is to U+D800"),
             ('<path d="M0 0 &#xFFFE;"/>', 54, "character reference &#xFFFE; is to U+FFFE"),
