@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzing (issue 16): builds the libFuzzer targets of tests/fuzz/ (spec, gate, csv, times) with clang,
+# Fuzzing (issue 16): builds the libFuzzer targets of tests/fuzz/ (spec, gate, csv, times, svg) with clang,
 # AddressSanitizer and UndefinedBehaviorSanitizer in build-fuzz/, then runs each for SECONDS.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   default 600 s per target, every target
 # Installs clang and libFuzzer when missing (non-interactive apt-get, as scripts/setup.sh does).
@@ -7,8 +7,8 @@
 # bench/cases for the spec target (the regressions hold the extreme values of issue 16: 1e200,
 # 1e-170, a 1e-300 knot span, far and one-ulp domains, zero length), and inputs larger than
 # libFuzzer's default length limit (JSON nested 100000 levels, a 100 kB string, a CSV header of
-# 20000 columns) written here, with -max_len 200000 so that
-# mutations reach that size too; -use_value_profile=1 steers mutations by the values compared.
+# 20000 columns, SVG elements nested 20000 levels, 2000 paths, path data of 5000 commands) written
+# here, with -max_len 200000 so that mutations reach that size too; -use_value_profile=1 steers mutations by the values compared.
 # Runs keep going after a finding (-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1), so
 # a known defect does not hide the others; -timeout 60 s and -rss_limit_mb 4096 per input.
 # Each finding is saved under build-fuzz/findings/<target>/ (crash-*, timeout-*, oom-*), replayed
@@ -27,13 +27,13 @@ targets=()
 for arg in "$@"; do
   case "$arg" in
     -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
-    spec|gate|csv|times) targets+=("$arg") ;;
+    spec|gate|csv|times|svg) targets+=("$arg") ;;
     *)
       if [[ "$arg" =~ ^[0-9]+$ && "$arg" -gt 0 ]]; then seconds=$arg
-      else echo "fuzz.sh: '$arg' is neither a number of seconds nor a target (spec, gate, csv, times)" >&2; exit 2; fi ;;
+      else echo "fuzz.sh: '$arg' is neither a number of seconds nor a target (spec, gate, csv, times, svg)" >&2; exit 2; fi ;;
   esac
 done
-[[ ${#targets[@]} -eq 0 ]] && targets=(spec gate csv times)
+[[ ${#targets[@]} -eq 0 ]] && targets=(spec gate csv times svg)
 
 bash "$root/scripts/setup.sh" clang libfuzzer-14-dev
 
@@ -76,6 +76,12 @@ if os.path.isdir(os.path.join(corpus, "gate")):
 if os.path.isdir(os.path.join(corpus, "csv")):
     put("csv", "big_wide_header.csv", ",".join("c%d" % i for i in range(20000)) + "\n" + ",".join("1" for _ in range(20000)) + "\n")
     put("csv", "big_long_cell.csv", "u,x\n0," + "9" * 100000 + "\n")
+if os.path.isdir(os.path.join(corpus, "svg")):
+    ns = '<svg xmlns="http://www.w3.org/2000/svg">'
+    put("svg", "big_deep.svg", ns + "<g>" * 20000 + '<path d="M0 0 L1 1"/>' + "</g>" * 20000 + "</svg>")
+    put("svg", "big_many_paths.svg", ns + "".join('<path id="p%d" d="M%d 0 L1 1"/>' % (i, i) for i in range(2000)) + "</svg>")
+    put("svg", "big_long_d.svg", ns + '<path d="M0 0' + "".join(" L%d %d" % (i, i % 7) for i in range(5000)) + '"/></svg>')
+    put("svg", "big_long_path_data.txt", "d=M0 0" + "".join(" c1 2 3 4 5 %d" % (i % 9) for i in range(3000)))
 EOF
 
 # The first line that says what broke input $1 of target $t: the property, or a sanitizer's report.

@@ -134,8 +134,10 @@ struct counted_curve {
   [[nodiscard]] double rounding_bound(int order) const { return inner.rounding_bound(order); }
 };
 
+/// The length output of `spec` by the method and options of `a`. check_only: everything that
+/// refuses the request before the work (the curve, the method's options, its cost), without measuring.
 template <int Dim>
-nlohmann::json length(const cb::io::field& spec, const length_args& a) {
+nlohmann::json length(const cb::io::field& spec, const length_args& a, bool check_only = false) {
   const cb::any_curve<double, Dim> plain = cb::io::curve_from_spec<double, Dim>(spec);
   const std::size_t segments = plain.breakpoints().size() - 1;
   bool found = false;
@@ -172,6 +174,10 @@ nlohmann::json length(const cb::io::field& spec, const length_args& a) {
     // known before the work is refused above its limit, naming the options.
     const h::length_cost cost =
         is_gauss ? h::method_rows::gauss_cost(v, segments, ctx.gauss_estimate) : row.cost(v, segments);
+    if (check_only) {
+      if (!cost.refusal.empty()) throw cb::invalid_input(spec.path + ": " + cost.refusal);
+      return;
+    }
     const cb::any_curve<double, Dim> c(
         counted_curve<Dim>{plain, std::make_shared<tool::progress>(
                                       cost.at_most ? "length: evaluations (at most)" : "length: evaluations (planned)",
@@ -278,9 +284,14 @@ nlohmann::json segments_json(const std::string& d) {
 
 /// `length --svg FILE [--id ID]`: a JSON array, one object per path or shape of the file (or the
 /// one with the id), each the length output of its svg_path spec with its element, id and index,
-/// the path data measured and its segments (segments_json).
+/// the path data measured and its segments (segments_json). Everything that refuses the file (its
+/// XML, an element, the method's options or cost on any element) is checked before the first
+/// element is measured; then each element is printed as it is measured (the array is never held
+/// whole), so that an error that only the measurement finds leaves an unterminated array on stdout,
+/// which no JSON reader takes for a result, and exit code 1.
 void length_of_svg(const length_args& a) {
-  std::vector<tool::svg_element> elements = tool::read_svg_elements(a.svg);
+  tool::svg_document doc = tool::read_svg_elements(a.svg);
+  std::vector<tool::svg_element>& elements = doc.elements;
   if (!a.id.empty()) {
     const auto it =
         std::find_if(elements.begin(), elements.end(), [&](const tool::svg_element& e) { return e.id == a.id; });
@@ -292,19 +303,26 @@ void length_of_svg(const length_args& a) {
       throw cb::invalid_input("--id " + cb::validate::visible(a.id) + ": no path or shape of " + a.svg +
                               " has this id (" + (ids.empty() ? std::string("none has an id") : "ids: " + ids) + ")");
     }
-    elements = {*it};
+    elements = {std::move(*it)};
   }
-  nlohmann::json all = nlohmann::json::array();
-  for (const tool::svg_element& e : elements) {
+  for (const tool::svg_element& e : elements) length<2>(cb::io::root(e.spec, e.where), a, true);
+  if (doc.skipped && !a.quiet)
+    std::cerr << "curvebench: note: " << a.svg << ": " << doc.skipped << " <path> or shape element"
+              << (doc.skipped == 1 ? " is" : "s are") << " not in the SVG namespace (" << tool::svg_namespace
+              << ") and not measured; the first: " << doc.first_skipped << "\n";
+  // The array as `std::setw(2) << json` prints it: each element's lines indented by two more.
+  std::cout << "[\n";
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const tool::svg_element& e = elements[i];
     const cb::io::field spec = cb::io::root(e.spec, e.where);
-    // "d": the path data measured (a shape's is the path SVG 2 defines for it).
-    std::string d = cb::io::svg_path_family::path_data(spec);
-    nlohmann::json j{{"element", e.element}, {"id", e.id}, {"index", e.index}, {"segments", segments_json(d)}};
-    j["d"] = std::move(d);
+    nlohmann::json j{{"element", e.element}, {"id", e.id}, {"index", e.index}, {"segments", segments_json(e.d)}};
+    j["d"] = e.d;
     j.update(length<2>(spec, a));
-    all.push_back(std::move(j));
+    std::string text = "  " + j.dump(2);
+    for (std::size_t k = text.find('\n'); k != std::string::npos; k = text.find('\n', k + 3)) text.insert(k + 1, "  ");
+    std::cout << text << (i + 1 < elements.size() ? ",\n" : "\n");
   }
-  std::cout << std::setw(2) << all << "\n";
+  std::cout << "]\n";
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "tool/parameters.hpp"
+#include "tool/svg_file.hpp"
 
 #include "harness/compare.hpp"
 
@@ -36,20 +37,6 @@ void with_dimension(const io::field& spec, F&& f) {
     default: f(std::integral_constant<int, 4>{}); break;
   }
 }
-
-/// A path or basic shape of an SVG file, as an svg_path spec (bench/tool/svg_file.cpp).
-struct svg_element {
-  std::string element;    ///< path, circle, ellipse, rect, line, polyline, polygon
-  std::string id;         ///< its id attribute ("" without)
-  std::size_t index = 0;  ///< its position among the file's paths and shapes, from 0, in document order
-  std::string where;      ///< "FILE: <path id="a"> (shape or path 0, byte 120)", for messages
-  nlohmann::json spec;    ///< {"type": "svg_path", "d": ...} or {"type": "svg_path", "shape": {...}}
-};
-/// Every path and basic shape of the SVG file, in document order at any depth (transforms are not
-/// applied: SVG's getTotalLength measures an element in its own user units). invalid_input naming
-/// the file, the element and the attribute for malformed XML, a root other than <svg>, a shape
-/// attribute that is not a number in user units, or a file without any.
-std::vector<svg_element> read_svg_elements(const std::string& file);
 
 /// The installed data directory next to the running executable, <exe dir>/../share/curvebench (the
 /// layout `cmake --install` makes), or "" when the executable has none (a build tree).

@@ -8,6 +8,8 @@
 //   csv    harness::parse_csv, the reader of `curvebench check`'s tables (targets_csv.cpp)
 //   times  `sample --at / --range / --frames` on a channel spec: the tool's parsers of the option,
 //          the spec's tool model and its evaluation at those times (targets_times.cpp)
+//   svg    `length --svg`'s reader of SVG files (bench/tool/svg_file.hpp) and the path data parser
+//          with the svg_path family's build (targets_svg.cpp)
 //
 // A reader may refuse an input only with the exceptions the error policy documents
 // (core/error.hpp: invalid_input and its io::spec_error; std::domain_error outside a domain), with a
@@ -41,5 +43,6 @@ int spec_target(const std::uint8_t* data, std::size_t size);
 int gate_target(const std::uint8_t* data, std::size_t size);
 int csv_target(const std::uint8_t* data, std::size_t size);
 int times_target(const std::uint8_t* data, std::size_t size);
+int svg_target(const std::uint8_t* data, std::size_t size);
 
 }  // namespace curvebench::fuzz

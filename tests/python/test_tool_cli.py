@@ -20,6 +20,8 @@ CASES = os.path.join(ROOT, "bench", "cases")
 ARCH = os.path.join(CASES, "arch_cubic_bezier.json")  # cubic Bezier (0,0) (1,2) (3,2) (4,0), u in [0, 1]
 BENT = '{"type": "polyline", "points": [[0,0],[3,4],[3,10]]}'  # s(u) = 5u, then 5 + 6 (u - 1); L = 11
 
+SVG_NS = 'xmlns="http://www.w3.org/2000/svg"'
+
 
 def run(*args, cwd=None):
     return subprocess.run([TOOL, *args], capture_output=True, text=True, timeout=300, cwd=cwd)
@@ -447,12 +449,170 @@ class ToolCli(unittest.TestCase):
         self.assert_error(run("length", "--svg", bad), 'r="2em" is not a number in user units')
         broken = self.write("broken.svg", '<svg><path d="M0 0 L1 1"')
         self.assert_error(run("length", "--svg", broken), "not well-formed XML at byte offset")
-        cut = self.write("cut.svg", '<svg><path id="p" d="M0 0 L1 1 L2"/></svg>')
+        cut = self.write("cut.svg", '<svg xmlns="http://www.w3.org/2000/svg"><path id="p" d="M0 0 L1 1 L2"/></svg>')
         self.assert_error(run("length", "--svg", cut), "at offset 12 (the end of the data): expected a number")
-        none = self.write("none.svg", '<svg><text>no path</text></svg>')
+        none = self.write("none.svg", '<svg xmlns="http://www.w3.org/2000/svg"><text>no path</text></svg>')
         self.assert_error(run("length", "--svg", none), "no <path> or basic shape")
         html = self.write("page.svg", '<html><path d="M0 0 L1 1"/></html>')
-        self.assert_error(run("length", "--svg", html), "the root element is <html>, not <svg>")
+        self.assert_error(run("length", "--svg", html), "the root element is <html> in no namespace, not SVG's <svg>")
+
+    def svg(self, body, root="svg", declarations=SVG_NS, name="t.svg"):
+        return self.write(name, f'<{root} {declarations}>{body}</{root}>')
+
+    def test_length_svg_refuses_what_xml_refuses(self):
+        # pugixml accepts all of these; XML 1.0 (and Namespaces in XML) does not, so neither does
+        # the reader: each is refused with the file and the byte offset, before anything is printed.
+        cases = [
+            # A character reference to U+0000 was decoded into d, which then ended there: a path of
+            # 1010 was measured as 10.
+            ('<path d="M0 0 L10 0&#0; L1000 0"/>', 59,
+             "character reference &#0; is to U+0000, a character XML does not allow"),
+            ('<path d="M0 0 L10 0&#x8; L1000 0"/>', 59, "character reference &#x8; is to U+0008"),
+            ('<path d="M0 0 &#xD800;"/>', 54, "character reference &#xD800; is to U+D800"),
+            ('<path d="M0 0 &#xFFFE;"/>', 54, "character reference &#xFFFE; is to U+FFFE"),
+            ('<path d="M0 0 &#1114112;"/>', 54, "character reference &#1114112; is to a number past U+10FFFF"),
+            ('<path d="M0 0 &#12a;"/>', 54, "&#12a; is not a character reference"),
+            # A second d was ignored: XML 1.0's Unique Att Spec.
+            ('<path d="M0 0 L10 0" d="M0 0 L1000 0"/>', 61,
+             "attribute d appears twice on <path> (XML 1.0: Unique Att Spec)"),
+            ('<path d="M0 0 L1<2"/>', 56, "'<' in an attribute value"),
+            ('<path d="M0 0 & L1 2"/>', 54, "'&' that does not start a reference"),
+            ('<path d="&ent;"/>', 49, "entity &ent; is not declared"),
+            ('<!-- a -- b -->', 47, '"--" inside a comment'),
+            ('a ]]> b', 42, '"]]>" in character data'),
+            ('<path d="M0 0 L1 1" \x01/>', 60, "character U+0001 is not allowed in XML"),
+            ('<path d="M0 0 L1 1"/></svg><svg xmlns="http://www.w3.org/2000/svg">', 67, "a second root element"),
+            ('<path 1d="M0 0 L1 1"/>', 46, "Error parsing start element tag"),  # pugixml's own check
+        ]
+        for body, offset, words in cases:
+            with self.subTest(body=body):
+                p = run("length", "--svg", self.svg(body))
+                self.assert_error(p, "t.svg: not well-formed XML at byte offset %d: %s" % (offset, words))
+                self.assertEqual(p.stdout, "")
+        root = '<svg xmlns="http://www.w3.org/2000/svg"/>'
+        top = [('<?xml version="1.0"?>' + root + 'junk', 62, "text outside the root element"),
+               (' <?xml version="1.0"?>' + root, 1, "an XML declaration is allowed only at the very start"),
+               ('<?xml version="1.0" encoding="ISO-8859-1"?><svg xmlns="http://www.w3.org/2000/svg"/>', 30,
+                'encoding "ISO-8859-1": curvebench reads SVG files in UTF-8 only'),
+               ('<!DOCTYPE svg [<!ENTITY d "M0 0 L1 1">]><svg xmlns="http://www.w3.org/2000/svg"><path d="&d;"/></svg>',
+                15, "the DOCTYPE declares entities, which curvebench does not read")]
+        for text, offset, words in top:
+            with self.subTest(text=text):
+                self.assert_error(run("length", "--svg", self.write("top.svg", text)),
+                                  "top.svg: not well-formed XML at byte offset %d: %s" % (offset, words))
+        # The decoded value is measured: references and XML's attribute normalisation (a tab, CR LF
+        # and a referenced space are separators); an id's entities are replaced before it is printed.
+        ok = self.svg('<path id="a&amp;b" d="M0&#32;0\tL10&#x20;0\r\nL10 5"/>')
+        out = json.loads(run("length", "--svg", ok).stdout)
+        self.assertEqual((out[0]["id"], out[0]["d"]), ("a&b", "M0 0 L10 0 L10 5"))
+        self.assertAlmostEqual(out[0]["value"], 15, delta=1e-12)
+
+    def test_length_svg_reads_elements_by_namespace(self):
+        # SVG's elements are those of http://www.w3.org/2000/svg, under any prefix: an svg:-prefixed
+        # document was refused at its root and its svg:path skipped, while a <path> of another
+        # namespace was measured as SVG.
+        prefixed = self.svg('<svg:path id="a" d="M0 0 L10 0"/><svg:g><svg:circle r="1"/></svg:g>', root="svg:svg",
+                            declarations='xmlns:svg="http://www.w3.org/2000/svg"')
+        p = run("length", "--svg", prefixed)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertEqual([(e["element"], e["id"], e["index"]) for e in json.loads(p.stdout)],
+                         [("path", "a", 0), ("circle", "", 1)])
+        other = self.svg('<o:path d="M0 0 L1000 0"/><path d="M0 0 L10 0"/><g xmlns="urn:x"><path d="M0 0 L5 0"/></g>',
+                         declarations=SVG_NS + ' xmlns:o="urn:other"')
+        p = run("length", "--svg", other)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        out = json.loads(p.stdout)
+        self.assertEqual([round(e["value"]) for e in out], [10])
+        self.assertIn("curvebench: note: " + other + ": 2 <path> or shape elements are not in the SVG namespace "
+                      '(http://www.w3.org/2000/svg) and not measured; the first: <o:path> at byte 60 (namespace '
+                      '"urn:other")', p.stderr)
+        self.assertEqual(run("length", "--svg", other, "--quiet").stderr, "")
+        only_other = self.svg('<o:path d="M0 0 L1 0"/>', declarations=SVG_NS + ' xmlns:o="urn:other"')
+        self.assert_error(run("length", "--svg", only_other), "no <path> or basic shape (circle, ellipse, rect, line, "
+                          "polyline, polygon) in the SVG namespace (1 outside it were skipped, the first <o:path>")
+        self.assert_error(run("length", "--svg", self.svg("", declarations="")),
+                          "the root element is <svg> in no namespace, not SVG's <svg> (namespace "
+                          'http://www.w3.org/2000/svg: xmlns="http://www.w3.org/2000/svg" on the root)')
+        self.assert_error(run("length", "--svg", self.svg("", declarations='xmlns="urn:x"')),
+                          "the root element is <svg> of namespace urn:x, not SVG's <svg>")
+        for body, offset, words in [
+                ('<p:path d="M0 0 L1 0"/>', 41, "element p:path: prefix p is not declared"),
+                ('<path d="M0 0 L1 0" a:b:c="1"/>', 60, "attribute a:b:c is not a QName"),
+                ('<path xmlns:a="urn:x" xmlns:b="urn:x" a:k="1" b:k="2" d="M0 0 L1 0"/>', 86,
+                 "attribute b:k on <path> has the namespace and local name of another of its attributes"),
+                ('<path xmlns:p="" d="M0 0 L1 0"/>', 46, 'xmlns:p="": a prefix cannot be undeclared in XML 1.0'),
+                ('<path xmlns:xmlns="urn:x" d="M0 0 L1 0"/>', 46, "the prefix xmlns cannot be declared")]:
+            with self.subTest(body=body):
+                self.assert_error(run("length", "--svg", self.svg(body)),
+                                  "t.svg: not namespace-well-formed XML at byte offset %d: %s" % (offset, words))
+
+    def test_length_svg_errors_name_the_file_the_element_and_the_offset(self):
+        # Path data refused in a file said only "at offset 6 (the end of the data): expected a
+        # number": now the file, the element as written, its index, its id, its byte offset and
+        # the attribute's are named too, before any element is printed.
+        f = self.svg('<path id="ok" d="M0 0 L1 0"/><svg:path xmlns:svg="http://www.w3.org/2000/svg" id="bad" '
+                     'd="M0 0 L1"/>')
+        p = run("length", "--svg", f)
+        self.assert_error(p, f + ': <svg:path id="bad"> (shape or path 1, byte 69): d (value at byte 130: "M0 0 L1"): '
+                          "svg path data: at offset 7 (the end of the data): expected a number")
+        self.assertEqual(p.stdout, "")
+        # A polygon's points: the offset counts in the attribute, not in the path data made of it.
+        p = run("length", "--svg", self.svg('<polygon points="0,0 1,1 x"/>'))
+        self.assert_error(p, '<polygon> (shape or path 0, byte 40): points (value at byte 57: "0,0 1,1 x"): '
+                          "svg path data: at offset 8 ('x')")
+        # A byte of a UTF-8 sequence the parser quotes is shown \xNN.
+        p = run("length", "--svg", self.svg('<path d="M0 0 \u00e9"/>'))
+        self.assert_error(p, "at offset 5 ('\\xc3')")
+        # A refusal of the measurement's options comes before any output too: a cost above the
+        # limit on the second element only (10000 segments) would otherwise cut the array short.
+        f = self.svg('<path d="M0 0 L1 0"/><path id="long" d="M0 0' + " L1 1 L0 0" * 5000 + '"/>')
+        p = run("length", "--svg", f, "--method", "composite_gauss", "--n", "10", "--panels", "1000")
+        self.assert_error(p, f + ': <path id="long"> (shape or path 1, byte 61): --n 10 --panels 1000: 10000 segments '
+                          "need 100000000 evaluations, more than the limit of 67108864")
+        self.assertEqual(p.stdout, "")
+
+    def test_length_svg_refuses_bytes_that_are_not_utf8(self):
+        # A non-UTF-8 id printed 126 bytes of JSON, then nlohmann's json.exception: now refused
+        # with the byte offset before any output.
+        path = os.path.join(self.dir, "latin1.svg")
+        with open(path, "wb") as f:
+            f.write(b'<svg xmlns="http://www.w3.org/2000/svg"><path id="caf\xe9" d="M0 0 L1 0"/></svg>')
+        p = run("length", "--svg", path)
+        self.assert_error(p, path + ": not UTF-8 at byte offset 53 (byte \\xe9): curvebench reads SVG files in UTF-8")
+        self.assertEqual(p.stdout, "")
+        for data, offset in ((b"\xc0\x80", 0), (b"ok\xed\xa0\x80", 2), (b"\xf4\x90\x80\x80", 0), (b"\xe2\x82", 0)):
+            with self.subTest(data=data):
+                with open(path, "wb") as f:
+                    f.write(b'<svg xmlns="http://www.w3.org/2000/svg"><!--' + data + b"--></svg>")
+                self.assert_error(run("length", "--svg", path), "not UTF-8 at byte offset %d" % (44 + offset))
+        with open(path, "wb") as f:
+            f.write('<svg xmlns="http://www.w3.org/2000/svg"/>'.encode("utf-16"))
+        self.assert_error(run("length", "--svg", path), "starts with a UTF-16 byte order mark")
+        # UTF-8 with a byte order mark, and text past ASCII, are read.
+        with open(path, "wb") as f:
+            f.write('\ufeff<svg xmlns="http://www.w3.org/2000/svg"><path id="café" d="M0 0 L1 0"/></svg>'.encode())
+        p = run("length", "--svg", path)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertEqual(json.loads(p.stdout)[0]["id"], "café")
+
+    def test_length_svg_bounds_the_elements_and_streams_its_output(self):
+        # 1e6 paths grew to 3 GB of memory: more than 1e5 are refused before any work, naming the
+        # limit and the first element past it.
+        many = self.svg('<path d="M0 0 L1 0"/>' * 100001)
+        p = run("length", "--svg", many)
+        self.assert_error(p, many + ": more than 100000 path and shape elements (the limit per file of curvebench "
+                          "length --svg; element 100000 is <path> at byte 2100040)")
+        self.assertEqual(p.stdout, "")
+        # Streamed, in the layout of the whole array printed at once (two spaces per level).
+        two = self.svg('<path id="a" d="M0 0 L3 4"/><line x2="1"/>')
+        text = run("length", "--svg", two).stdout
+        out = json.loads(text)
+        self.assertEqual([e["id"] for e in out], ["a", ""])
+        for e, length in zip(out, (5, 1)):
+            self.assertAlmostEqual(e["value"], length, delta=1e-14)
+        self.assertTrue(text.startswith('[\n  {\n    "d": "M0 0 L3 4",\n    "element": "path",\n'), text[:80])
+        self.assertRegex(text, r'\n    "value": [0-9.e-]+\n  }\n]\n$')
+        self.assertIn('\n  },\n  {\n    "d": "M0 0 L1 0",', text)
 
     def test_length_gauss_estimate_none_is_the_fixed_rule_without_an_estimate(self):
         # gauss's estimate is a setting of the CLI: nested (the default, with a bound) or none (the
