@@ -1,13 +1,18 @@
 """Export the F-curves of a .blend file as curvebench channel specs, so that an animator's real scene
 is checked without typing keys.
 
-Run inside Blender:
-    blender -b scene.blend --python scripts/blender_export.py -- OUT_DIR [--values]
+Run inside Blender (--python-exit-code: without it Blender exits 0 when the script fails):
+    blender -b scene.blend --python-exit-code 2 --python scripts/blender_export.py -- OUT_DIR [--values]
 
 Writes one spec per F-curve of every action, OUT_DIR/<action>.<data path>.<index>.json, in the
 "blender" tool's format (keys with their handles, handle types, interpolation, easing and its
 parameters; extrapolation; auto-handle smoothing; the Cycles modifier), and OUT_DIR/index.json
-listing them with Blender's version and the file. An F-curve with another modifier (noise,
+listing them with Blender's version and the file. Names that clean to the same file name (actions
+"Walk.001" and "Walk_001", or names differing only in case) get a suffix "-2", "-3", ... in the order
+exported, so that no channel overwrites another. An F-curve with a key that is not a finite number
+(NaN, infinity) is skipped with the key's index (JSON holds no NaN). Files are written as
+scripts/safe_output.py writes: a symbolic link, directory or device at an output path is refused,
+never followed. An F-curve with another modifier (noise,
 envelope, ...) or a Cycles modifier with a restricted frame range or influence is listed under
 "skipped" with the reason, not exported: curvebench's Blender model would not evaluate what Blender
 does. With --values, OUT_DIR/<same name>.blender.csv holds Blender's own fcurve.evaluate(t) every
@@ -28,6 +33,9 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "peers"))
 import blender_fcurves  # noqa: E402  (read_fcurve, blender_version: shared with the peer driver)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import safe_output  # noqa: E402  (write_text: never through a link)
+import math  # noqa: E402
 
 HANDLE_TYPES = {"FREE": "free", "ALIGNED": "aligned", "VECTOR": "vector", "AUTO": "auto",
                 "AUTO_CLAMPED": "auto_clamped"}
@@ -48,6 +56,11 @@ def spec_of(fcurve, name):
         raise ExportError("modifiers " + ", ".join(fcurve["modifiers"]) + " are not modelled (only Cycles)")
     if not fcurve["keys"]:
         raise ExportError("no keyframes")
+    for i, k in enumerate(fcurve["keys"]):
+        for field in ("time", "value", "handle_left", "handle_right") + PARAMETERS.get(k["interpolation"], ()):
+            for x in (k[field] if isinstance(k[field], (list, tuple)) else [k[field]]):
+                if not math.isfinite(x):
+                    raise ExportError(f"key {i}: {field} is {x!r}, not a finite number (JSON holds no NaN)")
     keys = []
     for k in fcurve["keys"]:
         key = {"time": k["time"], "value": k["value"], "interpolation": k["interpolation"].lower(),
@@ -75,10 +88,10 @@ def spec_text(spec):
     lines = []
     for k, v in spec.items():
         if k == "keys":
-            inner = ",\n".join("  " + json.dumps(key, separators=(", ", ": ")) for key in v)
+            inner = ",\n".join("  " + json.dumps(key, separators=(", ", ": "), allow_nan=False) for key in v)
             lines.append(f' "keys": [\n{inner}\n ]')
         else:
-            lines.append(f" {json.dumps(k)}: {json.dumps(v)}")
+            lines.append(f" {json.dumps(k)}: {json.dumps(v, allow_nan=False)}")
     return "{\n" + ",\n".join(lines) + "\n}\n"
 
 
@@ -87,6 +100,29 @@ def file_name(action, data_path, index):
     def clean(s):
         return re.sub(r"[^A-Za-z0-9_-]", "_", s)
     return f"{clean(action)}.{clean(data_path)}.{index}"
+
+
+class Names:
+    """Collision-free file names: file_name's cleaning maps "Walk.001" and "Walk_001" to one name, and a
+    case-insensitive file system maps "Walk" and "walk" to one file; the second of such names gets the
+    first free suffix "-2", "-3", ..., compared without case."""
+
+    def __init__(self):
+        self.used = set()
+
+    def take(self, action, data_path, index):
+        base = file_name(action, data_path, index)
+        name, n = base, 1
+        while name.lower() in self.used:
+            n += 1
+            name = f"{base}-{n}"
+        self.used.add(name.lower())
+        return name
+
+
+def write_output(out_dir, file, text):
+    """text at out_dir/file through safe_output (a link, directory or device there is refused)."""
+    safe_output.write_text(os.path.join(out_dir, file), text)
 
 
 def cycles_restricted(fc):
@@ -108,9 +144,10 @@ def export(bpy, out_dir, with_values):
     scene = bpy.context.scene
     index = {"blender_version": blender_fcurves.blender_version(bpy), "file": os.path.basename(bpy.data.filepath),
              "frames": [scene.frame_start, scene.frame_end], "channels": [], "skipped": []}
+    names = Names()
     for action in bpy.data.actions:
         for fc in action.fcurves:
-            name = file_name(action.name, fc.data_path, fc.array_index)
+            name = names.take(action.name, fc.data_path, fc.array_index)
             try:
                 why = cycles_restricted(fc)
                 if why:
@@ -122,22 +159,18 @@ def export(bpy, out_dir, with_values):
                 index["skipped"].append({"name": name, "why": str(e)})
                 print(f"blender_export.py: {name}: skipped: {e}", file=sys.stderr)
                 continue
-            with open(os.path.join(out_dir, name + ".json"), "w", encoding="utf-8") as f:
-                f.write(spec_text(spec))
+            write_output(out_dir, name + ".json", spec_text(spec))
             entry = {"name": name, "spec": name + ".json"}
             if with_values:
-                with open(os.path.join(out_dir, name + ".blender.csv"), "w", encoding="utf-8") as f:
-                    f.write(f"# Blender {index['blender_version']} fcurve.evaluate every half frame of the scene's "
-                            "range widened by 10 frames on each side\n")
-                    f.write("t,value\n")
-                    for i in range(2 * (scene.frame_end - scene.frame_start + 20) + 1):
-                        t = scene.frame_start - 10 + i / 2
-                        f.write(f"{t!r},{fc.evaluate(t)!r}\n")
+                rows = [f"# Blender {index['blender_version']} fcurve.evaluate every half frame of the scene's "
+                        "range widened by 10 frames on each side\n", "t,value\n"]
+                for i in range(2 * (scene.frame_end - scene.frame_start + 20) + 1):
+                    t = scene.frame_start - 10 + i / 2
+                    rows.append(f"{t!r},{fc.evaluate(t)!r}\n")
+                write_output(out_dir, name + ".blender.csv", "".join(rows))
                 entry["values"] = name + ".blender.csv"
             index["channels"].append(entry)
-    with open(os.path.join(out_dir, "index.json"), "w", encoding="utf-8") as f:
-        json.dump(index, f, indent=1)
-        f.write("\n")
+    write_output(out_dir, "index.json", json.dumps(index, indent=1, allow_nan=False) + "\n")
     return index
 
 
@@ -146,7 +179,8 @@ def arguments(argv):
     values = "--values" in args
     rest = [a for a in args if a != "--values"]
     if len(rest) != 1:
-        raise ExportError("usage: blender -b scene.blend --python scripts/blender_export.py -- OUT_DIR [--values]")
+        raise ExportError("usage: blender -b scene.blend --python-exit-code 2 --python scripts/blender_export.py -- "
+                          "OUT_DIR [--values]")
     return rest[0], values
 
 
@@ -161,6 +195,6 @@ def main(argv):
 if __name__ == "__main__":
     try:
         main(sys.argv)
-    except ExportError as e:
+    except (ExportError, safe_output.OutputError) as e:
         print(f"blender_export.py: {e}", file=sys.stderr)
         sys.exit(2)

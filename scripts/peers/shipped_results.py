@@ -51,6 +51,7 @@ import sys
 from concurrent.futures import ThreadPoolExecutor
 
 import peer_io
+import safe_output
 import shipped_request
 
 DRIVER_FORMAT = "curvebench-shipped-driver-1"
@@ -80,9 +81,24 @@ def request_cases(request):
     return {c["case"]: c for c in request["cases"] + request.get("catmull_rom", []) + request.get("splines", [])}
 
 
+TIMINGS = ("ns_length", "ns_point", "ns_build")
+
+
 def validate(driver, request):
     """Both documents' formats, and every run naming a case of the request with the right count of
-    points; ShippedError naming the run otherwise."""
+    points, finite non-negative timings and tolerance; ShippedError naming the run otherwise."""
+    for what, doc in (("driver output", driver), ("request", request)):
+        if not isinstance(doc, dict):
+            raise ShippedError(f"{what}: expected a JSON object, got {type(doc).__name__} {doc!r}"[:200])
+    if not isinstance(driver.get("runs", []), list):
+        raise ShippedError(f"driver output: runs: expected a list, got {driver['runs']!r}"[:200])
+    for key in ("cases", "catmull_rom", "splines"):
+        if not isinstance(request.get(key, []), list) or not all(isinstance(c, dict) and "case" in c
+                                                                 for c in request.get(key, [])):
+            raise ShippedError(f"request: {key}: expected a list of objects with a case"[:200])
+    for i, run in enumerate(driver.get("runs", [])):
+        if not isinstance(run, dict):
+            raise ShippedError(f"driver output: runs[{i}]: expected an object, got {run!r}"[:200])
     if driver.get("format") != DRIVER_FORMAT:
         raise ShippedError(f"driver output: format {driver.get('format')!r}, expected {DRIVER_FORMAT!r}")
     if request.get("format") != REQUEST_FORMAT:
@@ -96,6 +112,12 @@ def validate(driver, request):
         dim = case.get("dim", 2)
         if run.get("length") is not None and not _finite(run["length"]):
             raise ShippedError(f"{where}: length {run['length']!r} is not a finite number")
+        for key in TIMINGS:
+            if run.get(key) is not None and not (_finite(run[key]) and run[key] >= 0):
+                raise ShippedError(f"{where}: {key} {run[key]!r} is not a finite number of ns >= 0")
+        tol = run.get("documented_length_tolerance")
+        if tol is not None and not (_finite(tol) and tol >= 0):
+            raise ShippedError(f"{where}: documented_length_tolerance {tol!r} is not a finite number >= 0")
         if run.get("points") is not None:
             _finite_points(run["points"], where + ".points", dim)
             if len(run["points"]) != len(case["s"]):
@@ -113,29 +135,46 @@ def validate(driver, request):
     return cases
 
 
-def file_stem(run):
-    """A file name for a run: peer, setting and case, with anything but [A-Za-z0-9_.=-] as '_'."""
-    return re.sub(r"[^A-Za-z0-9_.=-]", "_", f"{run['peer']}.{run.get('setting') or 'default'}.{run['case']}")
+def file_stem(run, index):
+    """A file name for the index-th run: "r<index>." then peer, setting and case with anything but
+    [A-Za-z0-9_.=-] as '_' (readable; the index alone keeps it unique: two runs of one peer,
+    setting and case, or settings "a/b" and "a_b", would otherwise share the name and each other's
+    measurement)."""
+    clean = re.sub(r"[^A-Za-z0-9_.=-]", "_", f"{run['peer']}.{run.get('setting') or 'default'}.{run['case']}")
+    return f"r{index}.{clean}"
+
+
+def _write_file(path, write):
+    """write(f) into a new file at path, through safe_output (a link or device there is refused)."""
+    def fill(tmp):
+        with open(tmp, "w", newline="", encoding="utf-8") as f:
+            write(f)
+    try:
+        safe_output.write_with(path, fill)
+    except safe_output.OutputError as e:
+        raise ShippedError(f"--work: {e}")
 
 
 def _axes(case):
     return ["x", "y", "z"][:case.get("dim", 2)]
 
 
-def write_csvs(run, case, work):
+def write_csvs(run, case, work, index=0):
     """The run's points (s,x,y[,z]) and spaced points as CSV files in work, and for a Catmull-Rom
-    run its values (u,x,y[,z]) and t_at_s (s,u): {kind: path}."""
+    run its values (u,x,y[,z]) and t_at_s (s,u): {kind: path}. index: the run's in the driver's runs."""
     out = {}
-    stem = os.path.join(work, file_stem(run))
+    stem = os.path.join(work, file_stem(run, index))
     axes = _axes(case)
 
     def write(kind, header, rows):
         out[kind] = f"{stem}.{kind}.csv"
-        with open(out[kind], "w", newline="", encoding="utf-8") as f:
+
+        def fill(f):
             w = csv.writer(f)
             w.writerow(header)
             for row in rows:
                 w.writerow([repr(float(v)) for v in row])
+        _write_file(out[kind], fill)
     if run.get("points"):
         write("points", ["s"] + axes, ([s] + p for s, p in zip(case["s"], run["points"])))
     if run.get("values"):
@@ -228,6 +267,10 @@ def check_command(tool, spec, csv_path, peer, kind="points"):
 
 def sample_to(tool, spec, at_file, derivatives, out_csv):
     """`curvebench sample SPEC --at-file AT --derivatives K` into out_csv; ShippedError on a failure."""
+    try:
+        safe_output.check_output_path(out_csv)
+    except safe_output.OutputError as e:
+        raise ShippedError(f"--work: {e}")
     with open(out_csv, "w", encoding="utf-8") as f:
         p = subprocess.run([tool, "sample", spec, "--at-file", at_file, "--derivatives", str(derivatives), "--quiet"],
                            stdout=f, stderr=subprocess.PIPE, text=True)
@@ -235,16 +278,20 @@ def sample_to(tool, spec, at_file, derivatives, out_csv):
         raise ShippedError(f"curvebench sample {spec}: exit {p.returncode}: {p.stderr.strip()[:500]}")
 
 
+def _case_stem(index, case):
+    """The index-th request case's name as a file name (the index keeps names that clean alike apart)."""
+    return f"c{index}." + re.sub(r"[^A-Za-z0-9_.=-]", "_", case["case"])
+
+
 def curvebench_eval_jobs(request, cases_dir, tool, work):
     """For each Catmull-Rom case: curvebench's own double evaluation at the case's u grid (`curvebench
     sample`), as a values CSV to check like the peers': [(case, check command)]."""
     jobs = []
-    for c in request.get("catmull_rom", []):
+    for i, c in enumerate(request.get("catmull_rom", [])):
         spec = os.path.join(cases_dir, c["case"] + ".json")
-        at = os.path.join(work, f"curvebench.{c['case']}.u.txt")
-        with open(at, "w", encoding="utf-8") as f:
-            f.write("".join(repr(float(u)) + "\n" for u in c["u"]))
-        values = os.path.join(work, f"curvebench.{c['case']}.values.csv")
+        at = os.path.join(work, f"curvebench.{_case_stem(i, c)}.u.txt")
+        _write_file(at, lambda f: f.write("".join(repr(float(u)) + "\n" for u in c["u"])))
+        values = os.path.join(work, f"curvebench.{_case_stem(i, c)}.values.csv")
         sample_to(tool, spec, at, 0, values)
         jobs.append((c["case"], check_command(tool, spec, values, "curvebench", "values")))
     return jobs
@@ -255,8 +302,7 @@ def reference_length(case, spec, tool, work):
     curve's start point at s = 0."""
     start = case["segments"][0]["start"] if "segments" in case else case["points"][0][:case.get("dim", 2)]
     path = os.path.join(work, f"start.{re.sub(r'[^A-Za-z0-9_.=-]', '_', case['case'])}.csv")
-    with open(path, "w", newline="", encoding="utf-8") as f:
-        csv.writer(f).writerows([["s"] + _axes(case), [0.0] + [repr(float(v)) for v in start]])
+    _write_file(path, lambda f: csv.writer(f).writerows([["s"] + _axes(case), [0.0] + [repr(float(v)) for v in start]]))
     p = subprocess.run(check_command(tool, spec, path, "start"), capture_output=True, text=True)
     if p.returncode != 0:
         raise ShippedError(f"curvebench check {spec} (its length): exit {p.returncode}: {p.stderr.strip()[:500]}")
@@ -277,12 +323,12 @@ def eval_floor(sample_csv, size):
 def eval_floors(request, cases_dir, tool, work, sizes):
     """{case: eval_floor} of the Catmull-Rom cases, from their u grid's derivatives."""
     out = {}
-    for c in request.get("catmull_rom", []):
+    for i, c in enumerate(request.get("catmull_rom", [])):
         if c["case"] not in sizes:
             continue
         spec = os.path.join(cases_dir, c["case"] + ".json")
-        at = os.path.join(work, f"curvebench.{c['case']}.u.txt")
-        sample = os.path.join(work, f"curvebench.{c['case']}.derivatives.csv")
+        at = os.path.join(work, f"curvebench.{_case_stem(i, c)}.u.txt")
+        sample = os.path.join(work, f"curvebench.{_case_stem(i, c)}.derivatives.csv")
         sample_to(tool, spec, at, 1, sample)
         out[c["case"]] = eval_floor(sample, sizes[c["case"]])
     return out
@@ -293,8 +339,8 @@ def measure(driver, request, cases_dir, tool, work, jobs=2):
     cases = validate(driver, request)
     os.makedirs(work, exist_ok=True)
     jobs_list = []
-    for run in driver.get("runs", []):
-        files = write_csvs(run, cases[run["case"]], work)
+    for i, run in enumerate(driver.get("runs", [])):
+        files = write_csvs(run, cases[run["case"]], work, i)
         spec = os.path.join(cases_dir, run["case"] + ".json")
         for kind, path in files.items():
             jobs_list.append((id(run), kind, check_command(tool, spec, path, run["peer"], kind)))

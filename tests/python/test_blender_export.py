@@ -69,6 +69,47 @@ class SpecOf(unittest.TestCase):
         self.assertEqual(blender_export.file_name("Walk Cycle", 'pose.bones["hip"].location', 1),
                          "Walk_Cycle.pose_bones__hip___location.1")
 
+    def test_names_that_clean_alike_get_distinct_files(self):
+        names = blender_export.Names()
+        got = [names.take("Walk.001", "location", 0), names.take("Walk_001", "location", 0),
+               names.take("walk_001", "location", 0), names.take("Walk_001-2", "location", 0)]
+        self.assertEqual(got[:3], ["Walk_001.location.0", "Walk_001.location.0-2", "walk_001.location.0-3"])
+        self.assertEqual(len({g.lower() for g in got}), len(got), got)
+
+    def test_a_key_that_is_not_finite_is_refused_with_its_index(self):
+        fc = {"keys": [key(), key(time=5.0, value=float("nan"))], "extrapolation": "CONSTANT"}
+        with self.assertRaisesRegex(blender_export.ExportError, r"key 1: value is nan"):
+            blender_export.spec_of(fc, "n")
+        fc = {"keys": [key(handle_right=[2.0, float("inf")])], "extrapolation": "CONSTANT"}
+        with self.assertRaisesRegex(blender_export.ExportError, r"key 0: handle_right is inf"):
+            blender_export.spec_of(fc, "n")
+        fc = {"keys": [key(interpolation="ELASTIC", period=float("nan"))], "extrapolation": "CONSTANT"}
+        with self.assertRaisesRegex(blender_export.ExportError, r"key 0: period is nan"):
+            blender_export.spec_of(fc, "n")
+
+    def test_a_link_in_the_output_folder_is_refused_and_its_target_kept(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            target = os.path.join(tmp, "precious.txt")
+            with open(target, "w") as f:
+                f.write("keep")
+            out = os.path.join(tmp, "out")
+            os.mkdir(out)
+            os.symlink(target, os.path.join(out, "a.location.0.json"))
+            with self.assertRaisesRegex(OSError, "a symbolic link"):
+                blender_export.write_output(out, "a.location.0.json", "{}\n")
+            with open(target) as f:
+                self.assertEqual(f.read(), "keep")
+
+    def test_the_documented_commands_make_blender_exit_non_zero_on_failure(self):
+        with self.assertRaisesRegex(blender_export.ExportError, "--python-exit-code"):
+            blender_export.arguments(["blender", "--"])
+        self.assertIn("--python-exit-code", blender_export.__doc__)
+        with open(os.path.join(ROOT, "docs", "checking.md")) as f:
+            lines = [ln for ln in f if "blender_export.py --" in ln]
+        self.assertTrue(lines)
+        for ln in lines:
+            self.assertIn("--python-exit-code", ln)
+
 
 @unittest.skipUnless(TOOL and os.path.isfile(TOOL), "CURVEBENCH_TOOL is not set (the blender_export ctest sets it)")
 class Recorded(unittest.TestCase):
@@ -108,7 +149,8 @@ class InBlender(unittest.TestCase):
             subprocess.run(["blender", "-b", "--factory-startup", "--python",
                             os.path.join(ROOT, "tests", "blender", "make_scene.py"), "--", scene],
                            check=True, capture_output=True, timeout=300)
-            p = subprocess.run(["blender", "-b", scene, "--python", os.path.join(ROOT, "scripts", "blender_export.py"),
+            p = subprocess.run(["blender", "-b", scene, "--python-exit-code", "2", "--python",
+                                os.path.join(ROOT, "scripts", "blender_export.py"),
                                 "--", out, "--values"], capture_output=True, text=True, timeout=300)
             self.assertEqual(p.returncode, 0, p.stderr)
             for name in sorted(os.listdir(DATA)):

@@ -56,6 +56,51 @@ class Pure(unittest.TestCase):
         with self.assertRaisesRegex(shipped_results.ShippedError, "not in the request"):
             shipped_results.validate(driver, request)
 
+    def test_runs_of_one_peer_setting_and_case_get_distinct_files(self):
+        case = {"case": "c", "s": [0.0, 1.0]}
+        runs = [{"peer": "p", "setting": "a/b", "case": "c", "points": [[0.0, 0.0], [1.0, 0.0]]},
+                {"peer": "p", "setting": "a_b", "case": "c", "points": [[0.0, 0.0], [2.0, 0.0]]},
+                {"peer": "p", "setting": "a_b", "case": "c", "points": [[0.0, 0.0], [3.0, 0.0]]}]
+        with tempfile.TemporaryDirectory() as work:
+            paths = [shipped_results.write_csvs(r, case, work, i)["points"] for i, r in enumerate(runs)]
+            self.assertEqual(len(set(paths)), 3, paths)
+            for path, want in zip(paths, ("1.0", "2.0", "3.0")):
+                with open(path) as f:
+                    self.assertEqual(f.read().splitlines()[-1], f"1.0,{want},0.0")
+
+    def test_a_link_in_the_work_folder_is_refused_and_its_target_kept(self):
+        case = {"case": "c", "s": [0.0]}
+        run = {"peer": "p", "case": "c", "points": [[0.0, 0.0]]}
+        with tempfile.TemporaryDirectory() as work:
+            target = os.path.join(work, "precious")
+            with open(target, "w") as f:
+                f.write("keep")
+            os.symlink(target, os.path.join(work, shipped_results.file_stem(run, 0) + ".points.csv"))
+            with self.assertRaisesRegex(shipped_results.ShippedError, "--work: .*a symbolic link"):
+                shipped_results.write_csvs(run, case, work, 0)
+            with open(target) as f:
+                self.assertEqual(f.read(), "keep")
+
+    def test_a_driver_output_that_is_not_an_object_is_one_clear_error(self):
+        request = {"format": shipped_results.REQUEST_FORMAT, "cases": [{"case": "c", "s": [0, 1]}]}
+        for driver, message in (([], "driver output: expected a JSON object, got list"),
+                                ({"format": shipped_results.DRIVER_FORMAT, "runs": {}}, "runs: expected a list"),
+                                ({"format": shipped_results.DRIVER_FORMAT, "runs": [3]},
+                                 r"runs\[0\]: expected an object")):
+            with self.assertRaisesRegex(shipped_results.ShippedError, message):
+                shipped_results.validate(driver, request)
+        with self.assertRaisesRegex(shipped_results.ShippedError, "request: expected a JSON object"):
+            shipped_results.validate({"format": shipped_results.DRIVER_FORMAT}, [request])
+
+    def test_a_nan_tolerance_or_timing_is_refused_naming_it(self):
+        request = {"format": shipped_results.REQUEST_FORMAT, "cases": [{"case": "c", "s": [0, 1]}]}
+        base = {"peer": "p", "case": "c", "length": 1.0}
+        for field, value in (("documented_length_tolerance", math.nan), ("documented_length_tolerance", -1.0),
+                             ("ns_length", math.nan), ("ns_point", math.inf), ("ns_build", -3.0)):
+            driver = {"format": shipped_results.DRIVER_FORMAT, "runs": [dict(base, **{field: value})]}
+            with self.assertRaisesRegex(shipped_results.ShippedError, rf"runs\[0\] \(p, c\): {field} "):
+                shipped_results.validate(driver, request)
+
     def test_three_s_parameter_maps_to_the_segment_s_knots(self):
         import shipped_request
         knots = [0.0, 2.0, 3.0, 7.0]  # three segments of lengths 2, 1, 4 in curvebench's parameter
