@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzing (issue 16): builds the libFuzzer targets of tests/fuzz/ (spec, gate, csv, times, svg) with clang,
+# Fuzzing: builds the libFuzzer targets of tests/fuzz/ (spec, gate, csv, times, svg) with clang,
 # AddressSanitizer and UndefinedBehaviorSanitizer in build-fuzz/, then runs each for SECONDS.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   default 600 s per target, every target
 # Installs clang and libFuzzer when missing (non-interactive apt-get, as scripts/setup.sh does).

@@ -16,6 +16,7 @@ import unittest
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import install_doc  # noqa: E402
+from test_scripts import usage_comment  # noqa: E402
 
 DOC = os.path.join(ROOT, "docs", "checking.md")
 
@@ -160,14 +161,7 @@ class InstallCheckUsage(unittest.TestCase):
         self.assertEqual(p.returncode, 0, p.stderr)
         self.assertIn("scripts/install_check.sh", p.stdout)
         self.assertNotIn("set -euo pipefail", p.stdout)
-        with open(path, encoding="utf-8") as f:
-            lines = f.read().splitlines()
-        comment = []
-        for line in lines[1:]:
-            if not line.startswith("#"):
-                break
-            comment.append(line[2:] if line.startswith("# ") else line[1:])
-        self.assertEqual(p.stdout.splitlines(), comment)
+        self.assertEqual(p.stdout.splitlines(), usage_comment(path))
         p = subprocess.run(["bash", path, "--fast"], capture_output=True, text=True, timeout=60)
         self.assertEqual(p.returncode, 2)
         self.assertIn("'--fast'", p.stderr)
