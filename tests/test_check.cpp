@@ -3,6 +3,7 @@
 // parameters, long double elsewhere) and a straight polyline, whose s(u) and u(s) are exact.
 #include "harness/check.hpp"
 #include "harness/gate.hpp"
+#include "harness/reference.hpp"
 
 #include "support/fixtures.hpp"
 
@@ -359,4 +360,117 @@ TEST(check, run_checks_keeps_the_order_of_its_inputs) {
   ASSERT_EQ(r.size(), 2u);
   EXPECT_EQ(r[0].kind, check_kind::inverse);
   EXPECT_EQ(r[1].file, "l.csv");
+}
+
+// ---- points at arc length (--at-length) ----------------------------------------------------------
+
+// On the bent polyline P(s) is exact: s <= 5 is (3s/5, 4s/5), beyond it (3, 4 + (s - 5)). A point
+// asked at s and given exactly has no error but the rounding of the 50-digit distance (0 here: the
+// points are exact doubles); one 0.5 off along the curve is 0.5 / 11 of L off, its s_error too.
+TEST(check, at_length_against_the_polylines_exact_points) {
+  const spec_doc s(bent);
+  const check_result r =
+      run_check(s.f, check_kind::at_length, parse_csv("s,x,y\n0,0,0\n2.5,1.5,2\n8,3,7\n11,3,10\n6,3,5.5\n", "p.csv"));
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_LE(r.rows[i].error, 1e-30) << "row " << r.rows[i].line;
+  EXPECT_NEAR(r.rows[4].error, 0.5 / 11, 1e-17);
+  EXPECT_NEAR(r.rows[4].s_error, 0.5 / 11, 1e-17);
+  EXPECT_NEAR(r.rows[4].off_curve, 0, 1e-30);
+  EXPECT_TRUE(std::isnan(r.tool_length));
+}
+
+// A tool's own s runs over its own total length (getTotalLength()): with an L column the row is
+// asked at s / L of the way. A tool whose L is twice the true 11 and whose s is doubled with it
+// gives the true points: no error, and its length's own error |22 - 11| / 11 = 1 exactly.
+TEST(check, an_l_column_puts_s_on_the_tools_own_scale) {
+  const spec_doc s(bent);
+  const check_result r = run_check(s.f, check_kind::at_length,
+                                   parse_csv("s,L,x,y\n0,22,0,0\n5,22,1.5,2\n16,22,3,7\n22,22,3,10\n", "tool.csv"));
+  for (const check_row& row : r.rows) EXPECT_LE(row.error, 1e-30) << "row " << row.line;
+  EXPECT_EQ(r.tool_length, 22);
+  EXPECT_EQ(r.tool_length_error, 1);
+  ASSERT_EQ(r.records.size(), 2u);
+  EXPECT_EQ(r.records[1]["quantity"], "length");
+  EXPECT_EQ(r.records[1]["error"], 1.0);
+  EXPECT_EQ(to_json(r)["tool_length"], 22.0);
+  // Past the tool's own length, rows that disagree on L, an L without s: each refused by row and column.
+  const auto refused = [&](const std::string& text) {
+    return invalid_input_of([&] { (void)run_check(s.f, check_kind::at_length, parse_csv(text, "t.csv")); });
+  };
+  EXPECT_THAT(refused("s,L,x,y\n23,22,3,10\n"), HasSubstr("t.csv: row 2, column s: 23 is outside [0, L] = [0, 22]"));
+  EXPECT_THAT(refused("s,L,x,y\n1,22,0,0\n2,21,0,0\n"),
+              HasSubstr("t.csv: row 3, column L: 21 differs from row 2's 22"));
+  EXPECT_THAT(refused("s,L,x,y\n1,0,0,0\n"), HasSubstr("t.csv: row 2, column L: 0 is not a positive length"));
+  EXPECT_THAT(refused("L,x,y\n22,0,0\n"), HasSubstr("column L: L is the total length on the scale of the s column"));
+  // Without L, s past the curve's own length says how to give a tool's scale.
+  EXPECT_THAT(refused("s,x,y\n12,3,10\n"), HasSubstr("give that length as an L column"));
+}
+
+// A point whose distance from the curve is past double's range cannot be reported or gated.
+TEST(check, an_error_past_doubles_range_is_refused_by_row) {
+  const spec_doc s(bent);
+  EXPECT_THAT(invalid_input_of([&] {
+                (void)run_check(s.f, check_kind::at_length, parse_csv("x,y\n0,0\n1.7e308,-1.7e308\n", "far.csv"));
+              }),
+              HasSubstr("far.csv: row 3: the error overflows double"));
+  // 1e308 away is far, but finite: measured (a gate fails it).
+  const check_result r = run_check(s.f, check_kind::at_length, parse_csv("s,x,y\n0,1e308,0\n", "f.csv"));
+  EXPECT_NEAR(r.rows[0].error, 1e308 / 11, 1e308 / 11 * 1e-15);
+}
+
+// Each row costs a 50-digit u(s) and nearest point: the table's size is capped, and refused before
+// the reference is built.
+TEST(check, at_length_tables_are_capped_in_rows) {
+  const spec_doc s(bent);
+  std::string text = "s,x,y\n";
+  for (std::size_t i = 0; i <= max_at_length_rows; ++i) text += "0,0,0\n";
+  EXPECT_THAT(invalid_input_of([&] { (void)run_check(s.f, check_kind::at_length, parse_csv(text, "many.csv")); }),
+              HasSubstr("many.csv: row " + std::to_string(max_at_length_rows + 2) + ": more than " +
+                        std::to_string(max_at_length_rows) + " rows"));
+}
+
+// The nearest point searches a tree of the segments' boxes, nearest first: on a path of many
+// segments a point near one branch samples a few segments, whatever their number. A straight line
+// of 1024 unit segments along x: the point (x, h) is nearest (x, 0), at distance h and s = x; the
+// candidates lie within 2h + the slack, so at most the three segments x - 2h .. x + 2h touch.
+TEST(check, the_nearest_point_on_a_long_path_samples_a_few_segments) {
+  constexpr int n = 1024;
+  nlohmann::json points = nlohmann::json::array();
+  for (int i = 0; i <= n; ++i) points.push_back({i, 0});
+  const nlohmann::json j{{"type", "polyline"}, {"points", points}};
+  const curvebench::io::field f = curvebench::io::root(j, "line");
+  case_reference<2> ref(f);
+  for (const double x : {0.3, 17.5, 512.0, 1000.01, 1023.9}) {
+    const auto near = ref.nearest({x, 0.25}, std::numeric_limits<double>::quiet_NaN());
+    EXPECT_DOUBLE_EQ(near.distance, 0.25) << x;
+    EXPECT_NEAR(near.s, x, 1e-12 * n) << x;
+    EXPECT_LE(near.scanned, 3u) << x;
+  }
+  // A point equally near every segment (above the middle, far away) needs them all: the tree
+  // prunes by distance, never by a guess.
+  const auto far = ref.nearest({n / 2.0, 1e9}, std::numeric_limits<double>::quiet_NaN());
+  EXPECT_NEAR(far.distance, 1e9, 1e-6);
+  EXPECT_EQ(far.s, n / 2.0);
+}
+
+// A circle of radius 10 drawn as 360 one-degree SVG arcs: the point at radius 10 (1 + d) and angle
+// a is nearest the circle's point at that angle, at distance 10 d, s = 10 a. The arcs' end points
+// are doubles, so each arc's centre is off the circle's by ~1e-15 of the radius: the tolerances.
+TEST(check, the_nearest_point_on_a_circle_of_many_arcs) {
+  std::ostringstream d;
+  d.precision(17);
+  d << "M10 0";
+  for (int k = 1; k <= 360; ++k)
+    d << " A10 10 0 0 1 " << 10 * std::cos(k * M_PI / 180) << " " << 10 * std::sin(k * M_PI / 180);
+  const nlohmann::json j{{"type", "svg_path"}, {"d", d.str()}};
+  const curvebench::io::field f = curvebench::io::root(j, "circle");
+  case_reference<2> ref(f);
+  for (const double a : {0.01, 1.0, 3.0, 5.5}) {
+    for (const double dr : {0.01, -0.01}) {
+      const double r = 10 * (1 + dr);
+      const auto near = ref.nearest({r * std::cos(a), r * std::sin(a)}, std::numeric_limits<double>::quiet_NaN());
+      EXPECT_NEAR(near.distance, 10 * std::abs(dr), 1e-13) << a << " " << dr;
+      EXPECT_NEAR(near.s, 10 * a, 1e-12) << a << " " << dr;
+      EXPECT_LE(near.scanned, 4u) << a << " " << dr;
+    }
+  }
 }

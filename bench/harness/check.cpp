@@ -423,21 +423,39 @@ check_result check_inverse(case_reference<Dim>& ref, const csv_table& t, const c
   return res;
 }
 
-/// The columns of an --at-length file: the point x[,y[,z]] and optionally s, the arc length it was
-/// asked for.
+/// The columns of an --at-length file: the point x[,y[,z]], optionally s, the arc length it was
+/// asked for, and with s optionally L, the total length on the scale of that s (a tool's own,
+/// getTotalLength()'s: s is then the fraction s / L of the way along).
 template <int Dim>
 struct at_length_layout {
-  std::size_t cs = csv_table::npos;
+  std::size_t cs = csv_table::npos, cl = csv_table::npos;
   std::array<std::size_t, Dim> cp{};
   explicit at_length_layout(const csv_table& t) {
-    std::vector<std::string> allowed{"s"};
+    std::vector<std::string> allowed{"s", "L"};
     for (int i = 0; i < Dim; ++i) {
       allowed.emplace_back(coordinate_names[i]);
       cp[static_cast<std::size_t>(i)] =
           need(t, coordinate_names[i], "coordinate " + std::to_string(i + 1) + " of the point");
     }
     cs = t.column("s");
+    cl = t.column("L");
     only(t, allowed, "check --at-length");
+    if (cl != csv_table::npos && cs == csv_table::npos)
+      throw invalid_input(t.file +
+                          ": row 1 (the header), column L: L is the total length on the scale of the s "
+                          "column, and there is no s column");
+    if (t.rows.size() > max_at_length_rows)
+      throw invalid_input(t.where(max_at_length_rows) + ": more than " + std::to_string(max_at_length_rows) +
+                          " rows: each row solves u(s) and the nearest point at 50 digits (tens of milliseconds); "
+                          "split the file");
+    // One tool, one path: one total length. Rows that disagree are two measurements mixed.
+    if (cl != csv_table::npos)
+      for (std::size_t r = 0; r < t.rows.size(); ++r)
+        if (const double l = t.rows[r][cl]; !(l > 0) || l != t.rows[0][cl])
+          throw invalid_input(t.where(r, cl) + ": " + num(l) +
+                              (l > 0 ? " differs from row " + std::to_string(t.lines[0]) + "'s " + num(t.rows[0][cl]) +
+                                           ": L is the one total length of the path on the scale of s"
+                                     : " is not a positive length"));
   }
 };
 
@@ -445,12 +463,22 @@ template <int Dim>
 check_result check_at_length(case_reference<Dim>& ref, const csv_table& t, const check_options& o) {
   check_result res = result_of(check_kind::at_length, t, ref.length());
   const at_length_layout<Dim> lay(t);
-  const double s_max = res.length * (1 + 64 * std::numeric_limits<double>::epsilon());
-  if (lay.cs != csv_table::npos)
+  const bool asked = lay.cs != csv_table::npos;
+  // s on the tool's scale [0, L_tool] is asked at the fraction s / L_tool of the true length.
+  const double given_length = lay.cl != csv_table::npos ? t.rows[0][lay.cl] : res.length;
+  if (lay.cl != csv_table::npos) {
+    res.tool_length = given_length;
+    res.tool_length_error = ref.length_error_of(given_length);
+  }
+  const double s_max = given_length * (1 + 64 * std::numeric_limits<double>::epsilon());
+  if (asked)
     for (std::size_t r = 0; r < t.rows.size(); ++r)
       if (const double s = t.rows[r][lay.cs]; !(s >= 0 && s <= s_max))
-        throw invalid_input(t.where(r, lay.cs) + ": " + num(s) + " is outside [0, L] = [0, " + num(res.length) +
-                            "], the curve's arc-length range");
+        throw invalid_input(
+            t.where(r, lay.cs) + ": " + num(s) + " is outside [0, L] = [0, " + num(given_length) + "], " +
+            (lay.cl != csv_table::npos ? "the arc-length range on the scale of the L column"
+                                       : "the curve's arc-length range (a tool's own s, on the scale of "
+                                         "its own total length: give that length as an L column)"));
   double worst_s = 0;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const auto& row = t.rows[r];
@@ -458,8 +486,9 @@ check_result check_at_length(case_reference<Dim>& ref, const csv_table& t, const
     cr.line = t.lines[r];
     point<double, Dim> q;
     for (int i = 0; i < Dim; ++i) q[i] = row[lay.cp[static_cast<std::size_t>(i)]];
-    const bool asked = lay.cs != csv_table::npos;
-    cr.s = asked ? std::min(row[lay.cs], res.length) : 0.0;
+    cr.s = asked
+               ? std::min(lay.cl != csv_table::npos ? row[lay.cs] / given_length * res.length : row[lay.cs], res.length)
+               : 0.0;
     const auto near = ref.nearest(q, asked ? cr.s : std::numeric_limits<double>::quiet_NaN());
     cr.u = near.u;
     cr.s_true = near.s;
@@ -478,10 +507,22 @@ check_result check_at_length(case_reference<Dim>& ref, const csv_table& t, const
     if (o.on_row) o.on_row(r + 1, t.rows.size(), t.file);
   }
   // The s error at the returned point is the u(s) measure of the accuracy runner (|s(u) - s| / L).
-  if (lay.cs != csv_table::npos)
+  if (asked)
     res.records.push_back(
         subject_record(o.case_name, o.group, "u_of_s", o.name, "", worst_s, static_cast<double>(t.rows.size())));
+  // The tool's own total length is a length measurement of its own.
+  if (lay.cl != csv_table::npos)
+    res.records.push_back(subject_record(o.case_name, o.group, "length", o.name, "", res.tool_length_error, 1));
   return res;
+}
+
+/// An error past double's range cannot be reported, compared or gated: the row is refused.
+void refuse_overflow(const check_result& r, const csv_table& t) {
+  for (std::size_t i = 0; i < r.rows.size(); ++i)
+    if (std::isinf(r.rows[i].error) || std::isinf(r.rows[i].absolute))
+      throw invalid_input(t.where(i) +
+                          ": the error overflows double: the row's values lie further than 1.8e308 "
+                          "from the curve's");
 }
 
 template <int Dim>
@@ -523,6 +564,7 @@ std::vector<check_result> run_dim(const io::field& spec, const std::vector<const
                      : in->kind == check_kind::lengths   ? check_lengths(ref, in->table, o)
                      : in->kind == check_kind::at_length ? check_at_length(ref, in->table, o)
                                                          : check_inverse(ref, in->table, o);
+    refuse_overflow(r, in->table);
     summarize(r, o.worst);
     out.push_back(std::move(r));
   }
@@ -681,14 +723,15 @@ std::vector<check_result> run_checks(const io::field& spec, const std::vector<ch
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     if (by_time(spec, inputs[i])) {
       out[i] = detail::check_times(spec, inputs[i].table, options);
+      refuse_overflow(out[i], inputs[i].table);
       summarize(out[i], options.worst);
     } else {
       // The tool's own evaluation is a channel's at times; a table by u is checked against the
       // curve's 50-digit reference, which would ignore `against`.
-      if (options.against == check_against::tool)
-        throw invalid_input(inputs[i].table.file +
-                            ": checked by u against the curve's 50-digit reference; against = tool (check --against "
-                            "tool) applies to a channel spec's values at times (a t column, no u column)");
+      if (options.against == check_against::tool || options.against_given)
+        throw invalid_input(inputs[i].table.file + ": checked by u against the curve's 50-digit reference; against = " +
+                            (options.against == check_against::tool ? "tool" : "truth") +
+                            " (check --against) applies to a channel spec's values at times (a t column, no u column)");
       by_u.push_back(&inputs[i]);
       at.push_back(i);
     }
@@ -735,6 +778,10 @@ nlohmann::json to_json(const check_result& r) {
     if (!r.digits_warning.empty()) j["digits_warning"] = r.digits_warning;
   }
   if (!r.findings.empty()) j["findings"] = r.findings;
+  if (!std::isnan(r.tool_length)) {
+    j["tool_length"] = r.tool_length;
+    j["tool_length_error"] = r.tool_length_error;
+  }
   if (r.kind == check_kind::times) {
     j["against"] = r.against;
     j["value_range"] = r.size;

@@ -13,7 +13,10 @@
 //   lengths  u0, u1, length (the user's arc length from u0 to u1)
 //   inverse  s, u (the user's parameter at arc length s from the domain's start)
 //   at_length x[,y[,z]] and optionally s: the user's point at arc length s (getPointAtLength(s)), or
-//            points with no s (a path's equally spaced points)
+//            points with no s (a path's equally spaced points); with s optionally L, the total
+//            length on the scale of s (a tool's own getTotalLength(): its s runs over [0, L], and the
+//            row asks for the point at the fraction s / L of the curve's true length). At most
+//            max_at_length_rows rows.
 // Errors per row ("error" is the unit --max-error uses):
 //   values   error = |p - P|_inf / (eps(double) x size), ulps of the curve's size, where size is
 //            the largest coordinate magnitude of the exact points at the rows' parameters and at 65
@@ -34,6 +37,8 @@
 //            point at arc length s; s_error = |s(u*) - s| / L, where u* is the point of the curve
 //            nearest q (case_reference::nearest: how far along the curve the point is off);
 //            s_true = s(u*), off_curve = |q - P(u*)| / L. Without an s column: error = off_curve.
+//            With an L column (L_tool), s is rescaled to s L / L_tool and tool_length_error =
+//            |L_tool - L| / L (a length record of its own).
 //   times    abs = |value - V(t)|, V the channel at 50 digits at the user's t (exactly as read): the
 //            truth (the spec's tool rules, the time solver "exact"), or with against = tool the
 //            tool's own evaluation (its default or the spec's solver, in its storage precision:
@@ -48,7 +53,8 @@
 // table carries at most 9 significant digits (a float's %.9g), then ulp-float (csv_table::digits;
 // tables built in memory: ulp-double). The records stay in ulps of double whatever the unit.
 // Every difference is taken in 50 digits. Parameters outside the domain, s outside [0, L], unknown
-// or missing columns: invalid_input naming the file, row, column and value.
+// or missing columns, a row whose error overflows double: invalid_input naming the file, row,
+// column and value.
 //
 // Records: {"case", "group", "quantity", "method": <the subject's name>, "setting", "error",
 // "estimate": null, "bounded": null, "evaluations": <rows>, "status": "not_guaranteed",
@@ -65,6 +71,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -89,6 +96,9 @@ enum class value_unit { ulp_double, ulp_float, rel, abs };
 /// What a times check compares with: the channel's truth, or the tool's own evaluation.
 enum class check_against { truth, tool };
 
+/// The most rows an --at-length table may have: each row costs a 50-digit u(s) and nearest point.
+inline constexpr std::size_t max_at_length_rows = 20000;
+
 struct check_options {
   std::string name = "values";                   ///< the subject's name: the records' "method"
   std::string case_name = "check";               ///< the records' "case" (the tool uses the spec file's stem)
@@ -96,6 +106,8 @@ struct check_options {
   std::size_t worst = 5;                         ///< how many worst rows check_result::worst lists
   std::optional<value_unit> unit;                ///< values and times: the unit (none: chosen from the digits)
   check_against against = check_against::truth;  ///< times: what the user's values are compared with
+  /// `against` was chosen (check --against): a table checked by u, where it has no effect, is refused.
+  bool against_given = false;
   /// inverse: a u outside the domain is a finding, not an error (the subject API): its row is
   /// measured at the nearest end with the distance beyond it along the end tangent added, and the
   /// result's findings say so.
@@ -136,17 +148,19 @@ struct check_result {
   std::string file;             ///< the table's file
   std::vector<check_row> rows;  ///< in the file's order
   check_summary summary;
-  std::vector<std::size_t> worst;                    ///< indices into rows, worst error first (at most options.worst)
-  double size = 0;                                   ///< values: the points' size
-  std::vector<double> derivative_sizes;              ///< values: the size of derivative k at index k - 1
-  double length = 0;                                 ///< the curve's total length L (rounded)
-  value_unit unit = value_unit::ulp_double;          ///< values, times: the unit of error
-  std::string unit_reason;                           ///< values, times: why that unit ("--unit", "17 digits")
-  std::string digits_warning;                        ///< values, times: the CSV cannot carry the unit's precision
-  std::string against;                               ///< times: what was compared with, in words
-  std::size_t unchecked = 0;                         ///< times: derivative cells not checked (unbounded)
-  std::vector<std::string> findings;                 ///< inverse with outside_is_finding: rows outside the domain
-  nlohmann::json records = nlohmann::json::array();  ///< accuracy.json records (see above)
+  std::vector<std::size_t> worst;            ///< indices into rows, worst error first (at most options.worst)
+  double size = 0;                           ///< values: the points' size
+  std::vector<double> derivative_sizes;      ///< values: the size of derivative k at index k - 1
+  double length = 0;                         ///< the curve's total length L (rounded)
+  value_unit unit = value_unit::ulp_double;  ///< values, times: the unit of error
+  std::string unit_reason;                   ///< values, times: why that unit ("--unit", "17 digits")
+  std::string digits_warning;                ///< values, times: the CSV cannot carry the unit's precision
+  std::string against;                       ///< times: what was compared with, in words
+  std::size_t unchecked = 0;                 ///< times: derivative cells not checked (unbounded)
+  std::vector<std::string> findings;         ///< inverse with outside_is_finding: rows outside the domain
+  double tool_length = std::numeric_limits<double>::quiet_NaN();        ///< at_length with an L column: that L
+  double tool_length_error = std::numeric_limits<double>::quiet_NaN();  ///< |L_column - L| / L
+  nlohmann::json records = nlohmann::json::array();                     ///< accuracy.json records (see above)
 };
 
 /// One input of run_checks.

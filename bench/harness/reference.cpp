@@ -8,10 +8,13 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <optional>
+#include <queue>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -25,8 +28,18 @@ struct case_reference<Dim>::impl {
       : ref(io::curve_from_spec<real50, Dim>(given)), L(ref.length()), spec(given.value) {}
   reference::reference_arc_length<curve_q> ref;
   real50 L;
-  nlohmann::json spec;                                  // for the double twin of nearest()'s scan
-  std::optional<any_curve<double, Dim>> twin;           // built on nearest()'s first call
+  nlohmann::json spec;                         // for the double twin of nearest()'s scan
+  std::optional<any_curve<double, Dim>> twin;  // built on nearest()'s first call
+  // nearest()'s scan index, built with the twin: per segment the box of its samples and its
+  // longest chord between neighbouring samples, and a tree of boxes over runs of segments.
+  struct scan_box {
+    point<double, Dim> lo, hi;
+    double reach = 0;                 // the longest chord between neighbouring samples inside
+    std::size_t first = 0, last = 0;  // the segments [first, last)
+    std::size_t left = 0, right = 0;  // the children (a leaf: last == first + 1)
+  };
+  std::vector<scan_box> boxes;                          // boxes[0]: the root
+  double scan_size = 0;                                 // the largest sampled coordinate magnitude
   std::vector<real50> s_ref;                            // s(u_j) of set_s_parameters
   std::map<double, std::pair<real50, real50>> anchors;  // target s -> (u, s(u))
   std::vector<point<real50, Dim>> exact;                // P(u_j) of set_eval_parameters
@@ -193,34 +206,117 @@ typename case_reference<Dim>::nearest_point case_reference<Dim>::nearest(const p
     double lo, u, hi, a, b, dist;  // a local minimum of the sampled distance, its neighbours, its segment
     double reach;                  // the longer chord to a neighbour: how much closer the curve may come
   };
-  std::vector<sampled> minima;
   const std::span<const double> bp = cd.breakpoints();
   constexpr int samples = 32;
-  double best = std::numeric_limits<double>::infinity(), size = 0;
   std::array<double, samples + 1> us{}, ds{};
   std::array<point<double, Dim>, samples + 1> ps{};
-  for (std::size_t k = 0; k + 1 < bp.size(); ++k) {
+  const auto sample = [&](std::size_t k) {
     const double a = bp[k], b = bp[k + 1];
     for (int j = 0; j <= samples; ++j) {
       us[j] = j == samples ? b : a + (b - a) * j / samples;
       ps[j] = j == samples ? cd.value_from_left(b) : cd(us[j]);
-      ds[j] = safe_norm(point<double, Dim>(ps[j] - q));
-      size = std::max(size, ps[j].cwiseAbs().maxCoeff());
     }
+  };
+  using scan_box = typename impl::scan_box;
+  auto& boxes = impl_->boxes;
+  if (boxes.empty() && bp.size() >= 2) {
+    // Leaves first (segment k at k), then the tree over runs of neighbouring segments: a path's
+    // neighbours lie near each other, so a run's box is tight.
+    const std::size_t n = bp.size() - 1;
+    boxes.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      sample(k);
+      scan_box& bx = boxes[k];
+      bx.lo = bx.hi = ps[0];
+      bx.first = k, bx.last = k + 1;
+      for (int j = 0; j <= samples; ++j) {
+        bx.lo = bx.lo.cwiseMin(ps[j]), bx.hi = bx.hi.cwiseMax(ps[j]);
+        impl_->scan_size = std::max(impl_->scan_size, ps[j].cwiseAbs().maxCoeff());
+        if (j > 0) bx.reach = std::max(bx.reach, safe_norm(point<double, Dim>(ps[j] - ps[j - 1])));
+      }
+    }
+    const std::function<std::size_t(std::size_t, std::size_t)> build = [&](std::size_t first, std::size_t last) {
+      if (last - first == 1) return first;
+      const std::size_t mid = first + (last - first) / 2;
+      const std::size_t l = build(first, mid), r = build(mid, last);
+      scan_box bx;
+      bx.lo = boxes[l].lo.cwiseMin(boxes[r].lo), bx.hi = boxes[l].hi.cwiseMax(boxes[r].hi);
+      bx.reach = std::max(boxes[l].reach, boxes[r].reach);
+      bx.first = first, bx.last = last, bx.left = l, bx.right = r;
+      boxes.push_back(bx);
+      return boxes.size() - 1;
+    };
+    if (n > 1) {
+      const std::size_t root = build(0, n);
+      std::swap(boxes[root], boxes.front());  // the root at 0, its old slot holding leaf 0
+      for (scan_box& bx : boxes) {            // re-point the children at the two moved boxes
+        if (bx.last - bx.first == 1) continue;
+        for (std::size_t* child : {&bx.left, &bx.right})
+          if (*child == root)
+            *child = 0;
+          else if (*child == 0)
+            *child = root;
+      }
+    }
+  }
+  const double size = impl_->scan_size;
+  // The slack of the candidates' test below (keep), but for the best distance so far.
+  const double slack = 1e-9 * static_cast<double>(impl_->L) +
+                       1e3 * std::numeric_limits<double>::epsilon() * (size + q.cwiseAbs().maxCoeff());
+  // How close a box's samples can come to q, less twice its reach (the test below): an under-
+  // estimate (the distance to the box's nearest face, shrunk past its rounding).
+  const auto bound = [&](const scan_box& bx) {
+    point<double, Dim> gap;
+    for (int i = 0; i < Dim; ++i) gap[i] = std::max({bx.lo[i] - q[i], q[i] - bx.hi[i], 0.0});
+    return safe_norm(gap) * (1 - 1e-12) - 2 * bx.reach;
+  };
+  std::vector<sampled> minima;
+  std::vector<std::size_t> minimum_segment;
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t scanned = 0;
+  // Best first over the tree: a box whose bound exceeds 2 best + slack holds no candidate (the
+  // test below, whose best can only be smaller), and neither does any box popped after it.
+  using entry = std::pair<double, std::size_t>;
+  std::priority_queue<entry, std::vector<entry>, std::greater<>> open;
+  if (!boxes.empty()) open.emplace(bound(boxes[0]), 0);
+  while (!open.empty()) {
+    const auto [key, at] = open.top();
+    open.pop();
+    if (key > 2 * best + slack) break;
+    const scan_box& bx = boxes[at];
+    if (bx.last - bx.first > 1) {
+      for (const std::size_t child : {bx.left, bx.right}) open.emplace(bound(boxes[child]), child);
+      continue;
+    }
+    const std::size_t k = bx.first;
+    ++scanned;
+    sample(k);
+    for (int j = 0; j <= samples; ++j) ds[j] = safe_norm(point<double, Dim>(ps[j] - q));
     for (int j = 0; j <= samples; ++j) {
       if ((j > 0 && ds[j] > ds[j - 1]) || (j < samples && ds[j] > ds[j + 1])) continue;  // not a local minimum
       const int lo = j > 0 ? j - 1 : 0, hi = j < samples ? j + 1 : samples;
       const double reach =
           std::max(safe_norm(point<double, Dim>(ps[lo] - ps[j])), safe_norm(point<double, Dim>(ps[hi] - ps[j])));
-      minima.push_back({us[lo], us[j], us[hi], a, b, ds[j], reach});
+      minima.push_back({us[lo], us[j], us[hi], bp[k], bp[k + 1], ds[j], reach});
+      minimum_segment.push_back(k);
       best = std::min(best, ds[j]);
     }
+  }
+  // In the curve's order, as a scan of every segment would list them (ties below go to the first).
+  {
+    std::vector<std::size_t> order(minima.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t x, std::size_t y) { return minimum_segment[x] < minimum_segment[y]; });
+    std::vector<sampled> sorted;
+    sorted.reserve(order.size());
+    for (const std::size_t i : order) sorted.push_back(minima[i]);
+    minima = std::move(sorted);
   }
   // Between samples the curve may come closer than a sampled minimum by about the chord to its
   // neighbour (twice that, for the arc's bulge): a minimum that close to twice the best, plus the
   // double rounding of the distances (the curve's size), stays a candidate.
-  const double keep = 2 * best + 1e-9 * static_cast<double>(impl_->L) +
-                      1e3 * std::numeric_limits<double>::epsilon() * (size + q.cwiseAbs().maxCoeff());
+  const double keep = 2 * best + slack;
   struct candidate {
     real50 u, d2;
   };
@@ -276,6 +372,7 @@ typename case_reference<Dim>::nearest_point case_reference<Dim>::nearest(const p
   r.distance = static_cast<double>(sqrt(pick->d2));
   r.s = static_cast<double>(pick_s);
   r.ds = hinted ? static_cast<double>(abs(pick_s - real50(s_hint)) / impl_->L) : 0.0;
+  r.scanned = scanned;
   return r;
 }
 

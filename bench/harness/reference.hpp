@@ -80,15 +80,19 @@ class case_reference {
   /// The point of the curve nearest to q: its parameter, |q - P(u*)|, and the arc length s(u*) (all
   /// at 50 digits, rounded). Candidates are the local minima of |q - P| over 32 samples per segment
   /// (each segment on its own, ending at its limit from the left, so a jump between subpaths is no
-  /// candidate), each polished by safeguarded Newton on (P - q) . P' = 0. Where q lies about as
+  /// candidate), each polished by safeguarded Newton on (P - q) . P' = 0. Only the segments that can
+  /// hold a candidate are sampled: a tree of the segments' sample boxes (built on the first call) is
+  /// searched nearest first, so a point near one branch of a path of n segments costs O(log n)
+  /// boxes and a few segments, not n. Where q lies about as
   /// close to several branches (a loop's crossing, a cusp's two sides: within twice the smallest
   /// distance plus 1e-12 L), the one whose s is nearest s_hint is taken when s_hint is given (not
   /// NaN), the one nearest q otherwise.
   struct nearest_point {
     double u = 0;
-    double distance = 0;  ///< |q - P(u*)|
-    double s = 0;         ///< s(u*)
-    double ds = 0;        ///< |s(u*) - s_hint| / L (0 without a hint)
+    double distance = 0;      ///< |q - P(u*)|
+    double s = 0;             ///< s(u*)
+    double ds = 0;            ///< |s(u*) - s_hint| / L (0 without a hint)
+    std::size_t scanned = 0;  ///< segments sampled: the scan's work, a few for a point near one branch
   };
   [[nodiscard]] nearest_point nearest(const point<double, Dim>& q, double s_hint) const;
 
