@@ -38,6 +38,9 @@ void print_table(const check_result& r, const std::string& spec) {
         std::cout << ", " << (k == 0 ? "dvalue" : "d2value") << " size " << g(r.derivative_sizes[k], 6);
   } else {
     std::cout << spec << ": L = " << g(r.length, 17);
+    if (std::isfinite(r.tool_length))
+      std::cout << "; the L column (s on its scale, asked at s / L of the way): " << g(r.tool_length, 17)
+                << ", relative error " << g(r.tool_length_error);
   }
   if (values) {
     std::cout << ", size " << g(r.size, 6);
@@ -148,6 +151,44 @@ double limit_of(const check_args& a, check_kind k) {
   return own >= 0 ? own : a.max_error;
 }
 
+/// An option that would change nothing is refused: a user who gives it expects it to act.
+void refuse_without_effect(const check_args& a) {
+  if (!a.unit.empty() && a.values.empty())
+    throw invalid_input("check: --unit " + a.unit +
+                        " sets the unit of --values errors, and no --values file is given (--lengths, --inverse and "
+                        "--at-length errors are relative to the total length L)");
+  struct own_limit {
+    double limit;
+    const char* option;
+    const char* files;
+    const std::string& file;
+  };
+  const own_limit own[] = {{a.max_value_error, "--max-value-error", "--values", a.values},
+                           {a.max_length_error, "--max-length-error", "--lengths", a.lengths},
+                           {a.max_inverse_error, "--max-inverse-error", "--inverse", a.inverse},
+                           {a.max_at_length_error, "--max-at-length-error", "--at-length", a.at_length}};
+  bool some_without_own = false;
+  for (const own_limit& o : own) {
+    if (o.limit >= 0 && o.file.empty())
+      throw invalid_input(std::string("check: ") + o.option + " limits the rows of the " + o.files + " file, and no " +
+                          o.files + " file is given");
+    if (o.limit < 0 && !o.file.empty()) some_without_own = true;
+  }
+  if (a.max_error >= 0 && !some_without_own)
+    throw invalid_input(
+        "check: --max-error applies to the files without a limit of their own, and every file given "
+        "has one (--max-value-error, --max-length-error, --max-inverse-error, --max-at-length-error)");
+}
+
+/// Failure lines printed to the terminal: the first few, then a count (--json lists them all).
+constexpr std::size_t failures_shown = 20;
+
+void print_failures(std::ostream& os, const std::vector<std::string>& failures) {
+  for (std::size_t i = 0; i < failures.size() && i < failures_shown; ++i) os << failures[i] << "\n";
+  if (failures.size() > failures_shown)
+    os << "check: ... and " << failures.size() - failures_shown << " more (--json lists them all)\n";
+}
+
 }  // namespace
 
 CLI::App* add_check(CLI::App& app, check_args& a) {
@@ -167,11 +208,15 @@ CLI::App* add_check(CLI::App& app, check_args& a) {
   chk->add_option("--lengths", a.lengths, "CSV of arc lengths: u0,u1,length")->check(CLI::ExistingFile);
   chk->add_option("--inverse", a.inverse, "CSV of inverse parameters: s,u (your u at arc length s)")
       ->check(CLI::ExistingFile);
-  chk->add_option("--at-length", a.at_length,
-                  "CSV of points at arc length: s,x[,y[,z]] (your point at arc length s from the domain's start, e.g. "
-                  "SVG's getPointAtLength(s)): error |q - P(s)| / L, and s_error, how far along the curve your point "
-                  "is from s (measured at the curve's point nearest yours); without s (x[,y[,z]] only: equally spaced "
-                  "points) each point's nearest arc length s_true and its distance from the curve")
+  chk->add_option(
+         "--at-length", a.at_length,
+         "CSV of points at arc length: s,x[,y[,z]] (your point at arc length s from the domain's start, e.g. "
+         "SVG's getPointAtLength(s)): error |q - P(s)| / L, and s_error, how far along the curve your point "
+         "is from s (measured at the curve's point nearest yours); without s (x[,y[,z]] only: equally spaced "
+         "points) each point's nearest arc length s_true and its distance from the curve. An L column (with s) "
+         "is the total length on the scale of s, a tool's own (SVG's getTotalLength()): each row is then "
+         "asked at the fraction s / L of the way, and the L column's own error is reported. At most " +
+             std::to_string(harness::max_at_length_rows) + " rows")
       ->check(CLI::ExistingFile);
   chk->add_option("--name", a.name, "your implementation's name: the method of the records (default values)");
   chk->add_flag("--json", a.json, "JSON on stdout: per check the summary, the worst rows, every row, the records");
@@ -228,6 +273,7 @@ int run_check(const check_args& a) {
   if (!a.at_length.empty()) inputs.push_back({check_kind::at_length, harness::read_csv(a.at_length)});
   if (inputs.empty())
     throw invalid_input("check: nothing to check: give --values, --lengths, --inverse or --at-length FILE");
+  refuse_without_effect(a);
   const nlohmann::json j = read_spec(a.spec);
   const io::field spec = io::root(j, a.spec);
   harness::check_options o;
@@ -237,6 +283,7 @@ int run_check(const check_args& a) {
   o.worst = a.worst;
   if (!a.unit.empty()) o.unit = harness::value_unit_of(a.unit, "--unit");
   o.against = a.against == "tool" ? harness::check_against::tool : harness::check_against::truth;
+  o.against_given = !a.against.empty();
   // One progress line a second once a file's rows take over a second (the 50-digit reference per row).
   std::unique_ptr<progress> shown;
   std::string shown_file;
@@ -272,10 +319,10 @@ int run_check(const check_args& a) {
     out["failures"] = failures;
     out["passed"] = failures.empty();
     std::cout << std::setw(1) << out << "\n";
-    for (const auto& f : failures) std::cerr << f << "\n";
+    print_failures(std::cerr, failures);
   } else {
     for (const check_result& r : results) print_table(r, a.spec);
-    for (const auto& f : failures) std::cout << f << "\n";
+    print_failures(std::cout, failures);
     if (a.max_error >= 0 || a.max_value_error >= 0 || a.max_length_error >= 0 || a.max_inverse_error >= 0 ||
         a.max_at_length_error >= 0 || !a.thresholds.empty())
       std::cout << "check: " << (failures.empty() ? "passed" : std::to_string(failures.size()) + " failures") << "\n";

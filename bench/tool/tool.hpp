@@ -135,7 +135,7 @@ struct check_args {
   double max_value_error = -1, max_length_error = -1, max_inverse_error = -1,
          max_at_length_error = -1;  ///< < 0: --max-error's
   std::string unit;                 ///< empty: from the digits
-  std::string against = "truth";    ///< channels: truth or tool
+  std::string against;              ///< channels: truth or tool (empty: truth, not chosen)
   std::string thresholds;
   std::size_t worst = 5;
   bool quiet = false;  ///< no progress on stderr

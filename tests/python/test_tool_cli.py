@@ -286,6 +286,55 @@ class ToolCli(unittest.TestCase):
         self.assert_error(run("check", spec, "--lengths", back), "back.csv", "row 2", "column u1",
                           "u1 = 0.5 is below u0 = 1.5")
 
+    def test_options_without_effect_are_refused(self):
+        spec = self.write("bent.json", BENT)
+        lengths = self.write("len.csv", "u0,u1,length\n0,2,11\n")
+        values = self.write("v.csv", self.sample("--at", "0,0.5,1"))
+        cases = [
+            ((spec, "--lengths", lengths, "--unit", "rel"), ["--unit rel", "no --values file is given"]),
+            ((spec, "--lengths", lengths, "--max-value-error", "4"), ["--max-value-error", "no --values file"]),
+            ((spec, "--lengths", lengths, "--max-inverse-error", "4"), ["--max-inverse-error", "no --inverse file"]),
+            ((spec, "--lengths", lengths, "--max-at-length-error", "4"),
+             ["--max-at-length-error", "no --at-length file"]),
+            ((spec, "--lengths", lengths, "--max-length-error", "1e-15", "--max-error", "1"),
+             ["--max-error applies to the files without a limit of their own"]),
+            ((ARCH, "--values", values, "--against", "truth"), ["against = truth", "a channel spec's values at times"]),
+        ]
+        for args, words in cases:
+            with self.subTest(args=args):
+                self.assert_error(run("check", *args), *words)
+        # With a file of its own kind each takes effect.
+        p = run("check", spec, "--lengths", lengths, "--max-length-error", "1e-15")
+        self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+
+    def test_thousands_of_failing_rows_print_a_count_not_a_line_each(self):
+        us = ",".join(str(i / 1000) for i in range(1001))
+        lines = self.sample("--at", us, "--derivatives", "0").splitlines()
+        shifted = [lines[0]] + [",".join(c.split(",")[:2] + [repr(float(c.split(",")[2]) + 1e-6)] + c.split(",")[3:])
+                                for c in lines[1:]]
+        f = self.write("off.csv", "\n".join(shifted) + "\n")
+        p = run("check", ARCH, "--values", f, "--max-error", "4")
+        self.assertEqual(p.returncode, 1, p.stderr)
+        self.assertEqual(p.stdout.count("check: OVER"), 20)
+        self.assertIn("check: ... and 981 more (--json lists them all)", p.stdout)
+        p = run("check", ARCH, "--values", f, "--max-error", "4", "--json")
+        self.assertEqual(len(json.loads(p.stdout)["failures"]), 1001)
+        self.assertEqual(p.stderr.count("check: OVER"), 20)
+
+    def test_at_length_takes_a_tools_own_length_and_refuses_overflow(self):
+        spec = self.write("bent.json", BENT)
+        scaled = self.write("tool.csv", "s,L,x,y\n0,22,0,0\n5,22,1.5,2\n16,22,3,7\n")
+        p = run("check", spec, "--at-length", scaled, "--json")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        check = json.loads(p.stdout)["checks"][0]
+        self.assertEqual(check["tool_length"], 22)
+        self.assertEqual(check["tool_length_error"], 1)
+        self.assertLessEqual(check["summary"]["max"], 1e-30)
+        p = run("check", spec, "--at-length", scaled)
+        self.assertIn("the L column (s on its scale, asked at s / L of the way): 22, relative error 1", p.stdout)
+        far = self.write("far.csv", "x,y\n1.7e308,-1.7e308\n")
+        self.assert_error(run("check", spec, "--at-length", far), "far.csv", "row 2", "overflows double")
+
     def test_bad_input_names_file_row_column_and_value(self):
         cases = [
             ("", ["empty file"]),
