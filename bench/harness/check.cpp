@@ -730,8 +730,9 @@ std::vector<check_result> run_checks(const io::field& spec, const std::vector<ch
       // curve's 50-digit reference, which would ignore `against`.
       if (options.against == check_against::tool || options.against_given)
         throw invalid_input(inputs[i].table.file + ": checked by u against the curve's 50-digit reference; against = " +
-                            (options.against == check_against::tool ? "tool" : "truth") +
-                            " (check --against) applies to a channel spec's values at times (a t column, no u column)");
+                            std::string(options.against == check_against::tool ? "tool" : "truth") +
+                            " (check --against " + (options.against == check_against::tool ? "tool" : "truth") +
+                            ") applies to a channel spec's values at times (a t column, no u column)");
       by_u.push_back(&inputs[i]);
       at.push_back(i);
     }

@@ -39,6 +39,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <string>
@@ -134,6 +135,28 @@ struct counted_curve {
   [[nodiscard]] double rounding_bound(int order) const { return inner.rounding_bound(order); }
 };
 
+/// The length of the polygon of a Bezier spec's "points" (in double; none when it is not finite or
+/// the points are not Dim numbers each: the reader has refused such a spec already).
+template <int Dim>
+std::optional<double> control_polygon_length(const nlohmann::json& spec) {
+  if (!spec.contains("points") || !spec["points"].is_array()) return std::nullopt;
+  const nlohmann::json& pts = spec["points"];
+  double total = 0;
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    cb::point<double, Dim> d;
+    for (int k = 0; k < Dim; ++k) {
+      const nlohmann::json &a = pts[i], &b = pts[i + 1];
+      if (!a.is_array() || !b.is_array() || a.size() != Dim || b.size() != Dim || !a[k].is_number() ||
+          !b[k].is_number())
+        return std::nullopt;
+      d[k] = b[k].get<double>() - a[k].get<double>();
+    }
+    total += cb::safe_norm(d);
+  }
+  if (!std::isfinite(total)) return std::nullopt;
+  return total;
+}
+
 /// The length output of `spec` by the method and options of `a`. check_only: everything that
 /// refuses the request before the work (the curve, the method's options, its cost), without measuring.
 template <int Dim>
@@ -201,6 +224,19 @@ nlohmann::json length(const cb::io::field& spec, const length_args& a, bool chec
         throw cb::invalid_input(spec.path + ": length (" + a.method + ") " + cb::to_text(r.value) +
                                 " is shorter than the chords between the curve's breakpoints, " + cb::to_text(chords) +
                                 ": the method missed where the curve moves and has no bound to say so (" +
+                                al::to_text(r.reason) + ")");
+    }
+    // A Bezier curve, rational with positive weights too, is no longer than its control polygon
+    // (subdivision's new points are convex combinations of the old: each level's polygon is no
+    // longer, and the polygons converge to the curve). A result without a bound beyond it is
+    // certainly wrong (weights of 1e-300 on subnormal coordinates underflow in double).
+    if (r.status == al::result_status::not_guaranteed && spec.value.is_object() && spec.value.contains("type") &&
+        (spec.value["type"] == "bezier" || spec.value["type"] == "rational_bezier")) {
+      const std::optional<double> polygon = control_polygon_length<Dim>(spec.value);
+      if (polygon && r.value > *polygon * (1 + 1e-9))
+        throw cb::invalid_input(spec.path + ": length (" + a.method + ") " + cb::to_text(r.value) +
+                                " is longer than the curve's control polygon, " + cb::to_text(*polygon) +
+                                ": the method's double evaluation lost the curve and has no bound to say so (" +
                                 al::to_text(r.reason) + ")");
     }
     // A length at most degenerate_length_eps eps of the curve's size (the largest |P| at its
