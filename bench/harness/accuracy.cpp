@@ -118,6 +118,9 @@ json run_case(const case_info& c, bool quick, const peer_sweeps* peers) {
 int run_accuracy(const accuracy_options& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   check_results_path(opt.out);  // before minutes of work, not after
+  // A run with a failed case is not the suite: it goes beside --out, never over an earlier good run.
+  const std::string partial = partial_path(opt.out);
+  check_results_path(partial);
   std::vector<case_info> all = load_cases(opt.cases_dir);
   std::vector<case_info> cases;
   for (auto& c : all)
@@ -171,16 +174,20 @@ int run_accuracy(const accuracy_options& opt) {
                     {"threads", threads},
                     {"peers", opt.peers != nullptr ? opt.peers->versions() : json::object()},
                     {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}};
-  write_results(out, opt.out);
   std::size_t failed = 0;
   for (const auto& f : failures)
     if (!f.empty()) {
       std::cerr << "accuracy: case failed: " << f << "\n";
       ++failed;
     }
+  out["context"]["failed_cases"] = failed;
+  write_results(out, failed == 0 ? opt.out : partial);
   std::cerr << "accuracy: " << out["records"].size() << " records, " << out["orders"].size() << " orders from "
             << cases.size() - failed << " cases in " << std::setprecision(3) << out["context"]["seconds"].get<double>()
-            << " s -> " << opt.out << "\n";
+            << " s -> " << (failed == 0 ? opt.out : partial) << "\n";
+  if (failed > 0)
+    std::cerr << "accuracy: " << failed << (failed == 1 ? " case" : " cases") << " failed: " << opt.out
+              << " is left as it was; the cases that ran are in " << partial << "\n";
   return failed == 0 ? 0 : 1;
 }
 

@@ -139,11 +139,17 @@ std::string records_csv(const nlohmann::json& records) {
   return os.str();
 }
 
-std::string csv_path(const std::string& json_path) {
-  std::string p = json_path;
+namespace {
+/// FILE.json -> FILE; any other name as it is.
+std::string without_json(std::string p) {
   if (p.size() > 5 && p.ends_with(".json")) p.resize(p.size() - 5);
-  return p + ".csv";
+  return p;
 }
+}  // namespace
+
+std::string csv_path(const std::string& json_path) { return without_json(json_path) + ".csv"; }
+
+std::string partial_path(const std::string& json_path) { return without_json(json_path) + ".partial.json"; }
 
 void write_results(const nlohmann::json& results, const std::string& path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();

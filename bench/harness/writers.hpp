@@ -25,6 +25,8 @@ std::string records_csv(const nlohmann::json& records);
 
 /// The path of the CSV beside a results JSON: FILE.json -> FILE.csv, any other name + ".csv".
 std::string csv_path(const std::string& json_path);
+/// Where a run with a failed case writes its results: FILE.json -> FILE.partial.json beside it.
+std::string partial_path(const std::string& json_path);
 
 /// Checks before any work that write_results(…, path) can succeed: path and its CSV are each a
 /// regular file or a new path (check_output_path), and a file can be created beside them (the directory is created as

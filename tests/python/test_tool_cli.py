@@ -335,6 +335,30 @@ class ToolCli(unittest.TestCase):
         far = self.write("far.csv", "x,y\n1.7e308,-1.7e308\n")
         self.assert_error(run("check", spec, "--at-length", far), "far.csv", "row 2", "overflows double")
 
+    def test_accuracy_with_a_failed_case_leaves_the_earlier_results_and_writes_beside_them(self):
+        cases = os.path.join(self.dir, "cases")
+        os.makedirs(cases)
+        shutil.copy(ARCH, cases)
+        out = os.path.join(self.dir, "acc", "accuracy.json")
+        p = run("accuracy", "--quick", "--cases", cases, "--out", out, "--quiet")
+        self.assertEqual(p.returncode, 0, p.stderr)
+        with open(out, "rb") as f:
+            good = f.read()
+        with open(os.path.join(cases, "broken.json"), "w") as f:
+            # Read, but refused when run: its length is rounding noise at its coordinates.
+            json.dump({"name": "broken", "group": "test", "reason": "fails when run", "quick": True, "type": "circle",
+                       "center": [1e10, 1e10], "radius": 1e-150}, f)
+        p = run("accuracy", "--quick", "--cases", cases, "--out", out, "--quiet")
+        self.assertEqual(p.returncode, 1, p.stderr)
+        self.assertIn("accuracy: case failed: broken", p.stderr)
+        self.assertIn(out + " is left as it was; the cases that ran are in", p.stderr)
+        with open(out, "rb") as f:
+            self.assertEqual(f.read(), good)
+        with open(os.path.join(self.dir, "acc", "accuracy.partial.json")) as f:
+            partial = json.load(f)
+        self.assertEqual(partial["context"]["failed_cases"], 1)
+        self.assertEqual([c["name"] for c in partial["cases"]], ["arch_cubic_bezier"])
+
     def test_bad_input_names_file_row_column_and_value(self):
         cases = [
             ("", ["empty file"]),
