@@ -11,7 +11,9 @@
 #                              did not run, unless --allow-missing-peers is also given
 #   scripts/bench.sh --baseline DIR   then `curvebench compare DIR reports` (DIR: a copy of an
 #                              earlier reports/); every benchmark repeated 5 times, so that a
-#                              slowdown can be told from noise; exits 1 on a confident regression
+#                              slowdown can be told from noise; exits 1 on a confident regression;
+#                              a baseline that cannot be compared is refused (exit 2) before the
+#                              build (scripts/baseline_check.py) and again, by the tool, before the run
 # Every output is written under a temporary name and renamed, so an interrupted run never leaves a
 # half-written file. Progress is printed as cases and benchmarks finish.
 set -euo pipefail
@@ -53,6 +55,11 @@ if [[ -n "$baseline" ]]; then
          "(cp -r reports /tmp/base; scripts/bench.sh --baseline /tmp/base)" >&2
     exit 2
   fi
+  # A baseline cut short or of another kind is refused now, not after the build and the run.
+  if ! python3 "$root/scripts/baseline_check.py" "$baseline"; then
+    echo "bench.sh: --baseline $baseline cannot be compared (above)" >&2
+    exit 2
+  fi
 fi
 
 # A run to publish needs every optional peer (publish.py refuses it otherwise): said now, not after
@@ -83,6 +90,12 @@ if [[ "$(cat "$build/build.status")" != 0 ]]; then
   grep -E -A3 "error|Error" "$log" | head -n 60 >&2
   echo "bench.sh: the build failed; the whole log is $log" >&2
   exit 1
+fi
+
+# The tool's own reader on the baseline (what compare will do after the run), before the run.
+if [[ -n "$baseline" ]] && ! "$build/bench/curvebench" compare "$baseline" "$baseline" >/dev/null; then
+  echo "bench.sh: --baseline $baseline cannot be compared (curvebench compare above)" >&2
+  exit 2
 fi
 
 reports="$root/reports"

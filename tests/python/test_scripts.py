@@ -3,6 +3,7 @@ printed `set -euo pipefail`, a fixed line range having drifted from the comment)
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -86,6 +87,66 @@ class PublishNeedsEveryPeer(unittest.TestCase):
         self.assertIn("--publish: the optional peers above are not installed", p.stderr)
         self.assertIn("--allow-missing-peers", p.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.root, "build-bench")))
+
+
+class BaselineCheck(unittest.TestCase):
+    """`bench.sh --baseline DIR` refuses a baseline that cannot be compared before the build: one
+    cut short ran the whole 905 s and then reported "a confident regression"."""
+
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix="curvebench_baseline_")
+        self.script = os.path.join(ROOT, "scripts", "baseline_check.py")
+
+    def tearDown(self):
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def write(self, name, text):
+        with open(os.path.join(self.dir, name), "w", encoding="utf-8") as f:
+            f.write(text)
+
+    def check(self):
+        return subprocess.run([sys.executable, self.script, self.dir], capture_output=True, text=True, timeout=60)
+
+    def test_a_whole_baseline_passes(self):
+        self.write("accuracy.json", '{"schema": 1, "records": [{"case": "a"}]}')
+        self.write("bench_core.json", '{"context": {}, "benchmarks": [{"name": "b", "cpu_time": 1}]}')
+        p = self.check()
+        self.assertEqual(p.returncode, 0, p.stderr)
+
+    def test_what_compare_cannot_read_is_named(self):
+        cases = [
+            ({}, "no accuracy.json and no bench_*.json"),
+            ({"accuracy.json": '{"schema": 1, "records": [{"case": "a"}, {"ca'}, "not whole JSON"),
+            ({"accuracy.json": '{"records": [{"error": NaN}]}'}, "NaN is not JSON"),
+            ({"bench_x.json": '{"context": {}}'}, "holds neither"),
+            ({"accuracy.json": '{"records": {}}'}, '"records" is not an array'),
+            ({"accuracy.json": '{"records": [1]}'}, "records[0] is not an object"),
+        ]
+        for files, words in cases:
+            with self.subTest(files=files):
+                for name in os.listdir(self.dir):
+                    os.remove(os.path.join(self.dir, name))
+                for name, text in files.items():
+                    self.write(name, text)
+                p = self.check()
+                self.assertEqual(p.returncode, 1, p.stdout)
+                self.assertIn(words, p.stderr)
+                for name in files:
+                    self.assertIn(name, p.stderr)
+
+    def test_bench_sh_refuses_it_before_the_build(self):
+        self.write("accuracy.json", '{"records": [')
+        work = tempfile.mkdtemp(prefix="curvebench_bench_")
+        try:
+            shutil.copytree(os.path.join(ROOT, "scripts"), os.path.join(work, "scripts"))
+            p = subprocess.run(["bash", os.path.join(work, "scripts", "bench.sh"), "--quick", "--baseline", self.dir],
+                               capture_output=True, text=True, timeout=60)
+            self.assertEqual(p.returncode, 2, p.stderr)
+            self.assertIn("not whole JSON", p.stderr)
+            self.assertIn("cannot be compared", p.stderr)
+            self.assertFalse(os.path.exists(os.path.join(work, "build-bench")))
+        finally:
+            shutil.rmtree(work, ignore_errors=True)
 
 
 if __name__ == "__main__":
