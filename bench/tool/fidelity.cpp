@@ -68,7 +68,7 @@ CLI::App* add_fidelity(CLI::App& app, fidelity_args& a) {
   f->add_flag("--json", a.json, "JSON on stdout (the report's reports/fidelity.json)");
   f->add_flag("--require-agreement", a.require,
               "exit 1 when a channel disagrees, is refused without the recording saying it was, or is unverified "
-              "(recorded without the tool's values: not agreement), or when a recording has no channel evaluated");
+              "(recorded without the tool's values: not agreement); a recording with no channel evaluated is an error");
   f->footer(example("curvebench fidelity tests/data/recorded/animx_curves.json"));
   return f;
 }
@@ -76,6 +76,16 @@ CLI::App* add_fidelity(CLI::App& app, fidelity_args& a) {
 int run_fidelity(const fidelity_args& a) {
   std::vector<harness::fidelity_result> results;
   for (const std::string& path : a.recordings) results.push_back(harness::measure_fidelity(path));
+  // A recording with nothing compared proves nothing: "channels": [], or every channel refused or
+  // unverified, would pass the gate with nothing checked. Refused before anything is printed.
+  if (a.require)
+    for (const auto& r : results)
+      if (r.evaluated() == 0)
+        throw invalid_input(r.file + ": " +
+                            (r.channels.empty() ? std::string("holds no channel")
+                                                : "no channel was evaluated (" + std::to_string(r.refused) +
+                                                      " refused, " + std::to_string(r.unverified) + " unverified)") +
+                            ": --require-agreement needs at least one channel compared with the tool");
   if (a.json) {
     nlohmann::json j = harness::to_json(results);
     j["curvebench"] = version_line();  // the models measured: the published table names them
@@ -83,18 +93,7 @@ int run_fidelity(const fidelity_args& a) {
   } else
     for (const auto& r : results) print(r);
   int failed = 0;
-  for (const auto& r : results) {
-    // A recording with nothing compared proves nothing: "channels": [], or every channel refused or
-    // unverified, would otherwise pass the gate with nothing checked.
-    if (r.evaluated() == 0) {
-      if (a.require)
-        std::cerr << "curvebench: fidelity: " << r.file << ": "
-                  << (r.channels.empty() ? std::string("holds no channel")
-                                         : "no channel was evaluated (" + std::to_string(r.refused) + " refused, " +
-                                               std::to_string(r.unverified) + " unverified)")
-                  << ": --require-agreement needs at least one channel compared with the tool\n";
-      ++failed;
-    }
+  for (const auto& r : results)
     for (const auto& c : r.channels) {
       std::string why;
       if (c.unverified)  // not agreement, nor a disagreement: the tool gave no value to agree with
@@ -108,7 +107,6 @@ int run_fidelity(const fidelity_args& a) {
       if (a.require) std::cerr << "curvebench: fidelity: " << r.file << ": " << c.name << why << "\n";
       ++failed;
     }
-  }
   return a.require && failed > 0 ? 1 : 0;
 }
 
