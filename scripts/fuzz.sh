@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Fuzzing: builds the libFuzzer targets of tests/fuzz/ (spec, gate, csv, times, svg) with clang,
-# AddressSanitizer and UndefinedBehaviorSanitizer in build-fuzz/, then runs each for SECONDS.
+# Fuzzing: builds the libFuzzer targets of tests/fuzz/ (spec, gate, csv, times, svg, compare,
+# fidelity) with clang, AddressSanitizer and UndefinedBehaviorSanitizer in build-fuzz/, then runs
+# each for SECONDS.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   default 600 s per target, every target
 # Installs clang and libFuzzer when missing (non-interactive apt-get, as scripts/setup.sh does).
 # Each target starts from its seed corpus: tests/fuzz/seeds/<target>, tests/fuzz/regressions/<target>,
@@ -27,13 +28,13 @@ targets=()
 for arg in "$@"; do
   case "$arg" in
     -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
-    spec|gate|csv|times|svg) targets+=("$arg") ;;
+    spec|gate|csv|times|svg|compare|fidelity) targets+=("$arg") ;;
     *)
       if [[ "$arg" =~ ^[0-9]+$ && "$arg" -gt 0 ]]; then seconds=$arg
-      else echo "fuzz.sh: '$arg' is neither a number of seconds nor a target (spec, gate, csv, times, svg)" >&2; exit 2; fi ;;
+      else echo "fuzz.sh: '$arg' is neither a number of seconds nor a target (spec, gate, csv, times, svg, compare, fidelity)" >&2; exit 2; fi ;;
   esac
 done
-[[ ${#targets[@]} -eq 0 ]] && targets=(spec gate csv times svg)
+[[ ${#targets[@]} -eq 0 ]] && targets=(spec gate csv times svg compare fidelity)
 
 bash "$root/scripts/setup.sh" clang libfuzzer-14-dev
 

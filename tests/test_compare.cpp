@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -261,4 +262,147 @@ TEST(compare, bad_inputs_are_named) {
   fs::create_directories(empty);
   EXPECT_THAT(msg(empty.string()), HasSubstr("no accuracy.json and no bench_*.json"));
   fs::remove_all(dir);
+}
+
+namespace {
+
+/// U counted pair by pair, as the test defines it: a beats b, half for a tie.
+double u_by_pairs(const std::vector<double>& a, const std::vector<double>& b) {
+  double u = 0;
+  for (double x : a)
+    for (double y : b) u += x > y ? 1.0 : x == y ? 0.5 : 0.0;
+  return u;
+}
+
+}  // namespace
+
+TEST(compare, u_from_ranks_equals_the_pairwise_count_with_ties) {
+  // Random samples of 1 to 40 values drawn from few distinct values (many ties within and between
+  // the samples), and from many (few ties): U from one sort's ranks against the pairwise count.
+  std::mt19937 rng(20261207);
+  for (int trial = 0; trial < 400; ++trial) {
+    const int distinct = trial % 2 == 0 ? 5 : 1000;
+    std::uniform_int_distribution<int> size(1, 40), value(0, distinct - 1);
+    std::vector<double> a(static_cast<std::size_t>(size(rng))), b(static_cast<std::size_t>(size(rng)));
+    for (double& x : a) x = 0.25 * value(rng);
+    for (double& y : b) y = 0.25 * value(rng);
+    ASSERT_EQ(h::mann_whitney_u(a, b), u_by_pairs(a, b)) << "trial " << trial;
+    ASSERT_EQ(h::mann_whitney_u(a, b) + h::mann_whitney_u(b, a), static_cast<double>(a.size() * b.size()));
+    EXPECT_DOUBLE_EQ(h::mann_whitney_p(a, b), h::mann_whitney_p(b, a)) << "trial " << trial;
+  }
+  const std::vector<double> with_nan = {1, std::nan(""), 2}, one = {1};
+  EXPECT_THAT(curvebench::testing::message_of([&] { (void)h::mann_whitney_p(with_nan, one); }), HasSubstr("NaN"));
+}
+
+TEST(compare, u_of_two_hundred_thousand_a_side_is_exact) {
+  // 2e5 repetitions a side: 4e10 pairs, which the pairwise count took minutes for; the ranks give U
+  // exactly. a_i = i + 1/2 beats b_j = j for j <= i: U = n (n + 1) / 2. b against itself: every
+  // pair a tie, U = n^2 / 2 and no evidence (p = 1). Values in pairs, v = floor(i / 2) < m = n / 2,
+  // against the same plus one: each copy of v >= 1 beats the 2 (v - 1) values below it and ties 2,
+  // U = 2 sum_{v=1}^{m-1} (2 v - 1) = 2 (m - 1)^2.
+  const std::size_t n = 200000;
+  std::vector<double> a(n), b(n), pairs(n), shifted(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    a[i] = static_cast<double>(i) + 0.5;
+    b[i] = static_cast<double>(i);
+    pairs[i] = static_cast<double>(i / 2);
+    shifted[i] = static_cast<double>(i / 2 + 1);
+  }
+  const double nd = static_cast<double>(n);
+  EXPECT_EQ(h::mann_whitney_u(a, b), nd * (nd + 1) / 2);
+  EXPECT_EQ(h::mann_whitney_u(b, b), nd * nd / 2);
+  EXPECT_EQ(h::mann_whitney_p(b, b), 1.0);
+  const double m = nd / 2;
+  EXPECT_EQ(h::mann_whitney_u(pairs, shifted), 2 * (m - 1) * (m - 1));
+  // Shifting every value of one sample past the other: complete separation, p far below 1e-300.
+  for (double& x : a) x += nd;
+  EXPECT_EQ(h::mann_whitney_u(a, b), nd * nd);
+  EXPECT_LT(h::mann_whitney_p(a, b), 1e-300);
+}
+
+TEST(compare, runs_of_different_suites_are_refused_naming_both_files) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "curvebench_test_compare_suites";
+  fs::create_directories(dir);
+  // An accuracy.json as the runner writes it (harness/accuracy.cpp), one record, with the fields
+  // compare checks given per file.
+  const auto accuracy = [&](const std::string& name, const std::string& schema, const std::string& suite, int version,
+                            bool quick, const std::string& revision) {
+    std::ofstream(dir / name) << R"({"schema": )" << schema << R"(, "suite": {"name": ")" << suite
+                              << R"(", "version": )" << version << R"(, "cases": 1}, "context": {"quick": )"
+                              << (quick ? "true" : "false") << R"(, "revision": ")" << revision
+                              << R"(", "compiler": "gcc"}, "records": [{"case": "c", "quantity": "length",
+                                  "method": "gauss", "setting": "n=4", "error": 1e-9}]})";
+    return (dir / name).string();
+  };
+  const std::string base = accuracy("base.json", "1", "curvebench-cases", 4, true, "aaaa");
+  const auto refusal = [&](const std::string& now) {
+    return curvebench::testing::message_of([&] { (void)h::compare_runs(h::read_run(base), h::read_run(now)); });
+  };
+  // Another build of the same suite: compared (that is what compare is for).
+  const h::comparison same =
+      h::compare_runs(h::read_run(base), h::read_run(accuracy("new.json", "1", "curvebench-cases", 4, true, "bbbb")));
+  EXPECT_EQ(same.records_matched, 1u);
+  const std::string version = accuracy("v5.json", "1", "curvebench-cases", 5, true, "aaaa");
+  EXPECT_THAT(refusal(version),
+              HasSubstr(base + " and " + version + " are not runs of one suite: suite.version is 4 in " + base +
+                        " and 5 in " + version));
+  EXPECT_THAT(refusal(accuracy("mine.json", "1", "my-cases", 4, true, "aaaa")),
+              HasSubstr("suite.name is \"curvebench-cases\" in"));
+  EXPECT_THAT(refusal(accuracy("full.json", "1", "curvebench-cases", 4, false, "aaaa")),
+              HasSubstr("context.quick is true in " + base + " and false in"));
+  EXPECT_THAT(refusal(accuracy("schema2.json", "2", "curvebench-cases", 4, true, "aaaa")),
+              HasSubstr("\"schema\" is 1 in " + base + " and 2 in"));
+  // Both of a schema this build does not know: refused too, naming the file.
+  const std::string schema2 = (dir / "schema2.json").string();
+  EXPECT_THAT(
+      curvebench::testing::message_of([&] { (void)h::compare_runs(h::read_run(schema2), h::read_run(schema2)); }),
+      HasSubstr(schema2 + ": \"schema\" 2: this curvebench compares results of schema 1"));
+  // check --json output (the same record as a subject's) against accuracy results: another kind.
+  std::ofstream(dir / "check.json") << R"({"spec": "c.json", "name": "mine", "checks": [], "records": [
+      {"case": "c", "quantity": "length", "method": "gauss", "setting": "n=4", "error": 1e-9}]})";
+  EXPECT_THAT(refusal((dir / "check.json").string()),
+              HasSubstr("the kind is accuracy results in " + base + " and check --json output in"));
+  // Benchmarks: Google Benchmark's own schema version, where both files write one.
+  const auto bench = [&](const std::string& name, const std::string& context) {
+    std::ofstream(dir / name) << R"({"context": )" << context
+                              << R"(, "benchmarks": [{"name": "BM_a", "run_type": "iteration", "cpu_time": 10}]})";
+    return (dir / name).string();
+  };
+  const std::string b1 = bench("b1.json", R"({"json_schema_version": 1, "host_name": "a"})");
+  const std::string b2 = bench("b2.json", R"({"json_schema_version": 2, "host_name": "a"})");
+  const std::string b_none = bench("b_none.json", R"({"host_name": "b"})");
+  EXPECT_THAT(curvebench::testing::message_of([&] { (void)h::compare_runs(h::read_run(b1), h::read_run(b2)); }),
+              HasSubstr("context.json_schema_version is 1 in " + b1 + " and 2 in " + b2));
+  EXPECT_EQ(h::compare_runs(h::read_run(b1), h::read_run(b_none)).times.size(), 1u);  // an older writer: no version
+  fs::remove_all(dir);
+}
+
+TEST(compare, every_change_carries_its_errors_unit) {
+  // check --json of one subject, 17 then 7 digits: point errors in ulps of double, s(u) relative to L.
+  const h::comparison c = h::compare_runs(run_of("check_17_digits.json"), run_of("check_7_digits.json"));
+  ASSERT_FALSE(c.records.empty());
+  for (const auto& r : c.records) {
+    const bool relative = r.key.find("/s_of_u/") != std::string::npos;
+    EXPECT_EQ(r.unit, relative ? "rel-L" : "ulp-double") << r.key;
+  }
+  const nlohmann::json j = h::to_json(c);
+  for (const auto& r : j["records"]) EXPECT_TRUE(r["unit"].is_string()) << r.dump();
+  // The channel quantities are in eps of the model's precision, which the setting's bits names.
+  const auto unit = [](const std::string& quantity, const std::string& setting) {
+    curvebench::harness::record r;
+    r.quantity = quantity;
+    r.setting = setting;
+    return h::error_unit(r);
+  };
+  EXPECT_EQ(unit("length", "n=4"), "rel-L");
+  EXPECT_EQ(unit("u_of_s", "M=16"), "rel-L");
+  EXPECT_EQ(unit("eval", "derivative=1"), "ulp-double");
+  EXPECT_EQ(unit("channel_value", "bits=32"), "ulp-float");
+  EXPECT_EQ(unit("channel_time", "bits=64"), "ulp-double");
+  EXPECT_EQ(unit("channel_keys", ""), "ulp-double");
+  EXPECT_EQ(unit("channel_rotation", "bits=32"), "ulp-float-rad");
+  EXPECT_EQ(unit("channel_monotone", "bits=32"), "count");
+  EXPECT_EQ(unit("channel_value", "bits=320"), "ulp-double");  // a key=value, not a prefix of one
+  EXPECT_EQ(unit("mystery", ""), "");
 }

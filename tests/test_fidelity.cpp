@@ -137,3 +137,56 @@ TEST(fidelity, a_channel_the_tool_gave_no_values_for_is_unverified) {
   EXPECT_EQ(r.features[0].unverified, 1u);
   EXPECT_EQ(h::to_json({r})["recordings"][0]["unverified_channels"][0]["name"], "hermite");
 }
+
+TEST(fidelity, values_near_the_largest_double_are_measured_without_overflow) {
+  // Recorded +-1e308 against a model of 0 .. 5: the range, 2e308, passes double (it overflowed to
+  // infinity, and every error divided by it was 0: "1 of 1 agree, max error 0"). Taken of halves it
+  // is 1e308, so the error at t = 0 is (1e308 / 2) / 1e308 = 1/2 (the slope's reach, 0 there, is
+  // nothing beside it): a disagreement, measured.
+  const std::string big = R"({"name": "huge", "features": ["tangent:linear"], "spec": )" + std::string(maya_linear) +
+                          R"(, "t": [0, 10], "value": [1e308, -1e308]})";
+  const h::fidelity_result r = h::measure_fidelity(recording(big), "rec.json");
+  ASSERT_EQ(r.channels.size(), 1u);
+  EXPECT_TRUE(std::isinf(r.channels[0].scale));
+  EXPECT_DOUBLE_EQ(r.channels[0].error, 0.5);
+  EXPECT_FALSE(r.channels[0].agrees());
+  EXPECT_EQ(r.agree, 0u);
+  EXPECT_DOUBLE_EQ(r.max_error, 0.5);
+  EXPECT_EQ(h::to_json({r})["recordings"][0]["disagree"][0]["name"], "huge");
+  // One value of 1e308 and the model's: the gap alone passes double only through the halves too.
+  const std::string one =
+      R"({"name": "one", "features": [], "spec": )" + std::string(maya_linear) + R"(, "t": [10], "value": [-1.7e308]})";
+  const h::fidelity_result r1 = h::measure_fidelity(recording(one), "rec.json");
+  EXPECT_NEAR(r1.channels[0].error, (5 + 1.7e308) / (1.7e308 + 5), 1e-12);  // |5 - v| / (|v| + |t V'|)
+  EXPECT_FALSE(r1.channels[0].agrees());
+}
+
+TEST(fidelity, a_recorded_value_that_is_not_finite_is_refused_naming_the_channel) {
+  // JSON text has no NaN (and io::parse refuses a number past double), but a recording built in
+  // memory can hold one: refused naming the channel and the index, not measured as an error of 0.
+  for (const char* key : {"value", "t"}) {
+    nlohmann::json rec = recording(channel("late", "", maya_linear, "[0, 1.25, 2.5, 5, 5]"));
+    rec["channels"][0][key][3] = std::numeric_limits<double>::quiet_NaN();
+    const std::string msg = cb::testing::invalid_input_of([&] { (void)h::measure_fidelity(rec, "rec.json"); });
+    EXPECT_THAT(msg, HasSubstr("rec.json.channels[0]." + std::string(key) + "[3]: channel \"late\": " + key +
+                               "[3] is not a finite number"));
+    rec["channels"][0][key][3] = std::numeric_limits<double>::infinity();
+    EXPECT_THAT(cb::testing::invalid_input_of([&] { (void)h::measure_fidelity(rec, "rec.json"); }),
+                HasSubstr("channel \"late\""));
+    rec["channels"][0][key][3] = "5";
+    EXPECT_THAT(cb::testing::invalid_input_of([&] { (void)h::measure_fidelity(rec, "rec.json"); }),
+                HasSubstr("is not a finite number, got \"5\""));
+  }
+}
+
+TEST(fidelity, an_unverified_channel_is_no_disagreement_and_no_evaluation) {
+  const h::fidelity_result r =
+      h::measure_fidelity(recording(R"({"name": "hermite", "features": [], "spec": )" + std::string(maya_linear) +
+                                    R"(, "t": [0, 1], "unverified": "the tool does not evaluate these"})"),
+                          "rec.json");
+  EXPECT_EQ(r.evaluated(), 0u);
+  const nlohmann::json j = h::to_json({r})["recordings"][0];
+  EXPECT_TRUE(j["disagree"].empty());
+  EXPECT_EQ(j["unverified_channels"].size(), 1u);
+  EXPECT_EQ(h::measure_fidelity(recording(""), "rec.json").evaluated(), 0u);  // "channels": []
+}

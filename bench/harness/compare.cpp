@@ -9,10 +9,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <set>
+#include <string>
 #include <utility>
 
 namespace curvebench::harness {
@@ -136,16 +139,63 @@ void read_benchmarks(const nlohmann::json& j, const std::string& file, run_resul
   }
 }
 
+/// The member at a path of keys ("suite", "name"), or null when the file has none.
+nlohmann::json member_at(const nlohmann::json& j, std::initializer_list<const char*> keys) {
+  const nlohmann::json* at = &j;
+  for (const char* k : keys) {
+    if (!at->is_object() || !at->contains(k)) return nullptr;
+    at = &(*at)[k];
+  }
+  return *at;
+}
+
+results_file records_file_of(const nlohmann::json& j, const std::string& file) {
+  results_file f;
+  f.path = file;
+  f.schema = member_at(j, {"schema"});
+  f.suite_name = member_at(j, {"suite", "name"});
+  f.suite_version = member_at(j, {"suite", "version"});
+  f.quick = member_at(j, {"context", "quick"});
+  if (j.contains("checks"))
+    f.kind = "check --json output";
+  else if (j.contains("schema") || j.contains("suite"))
+    f.kind = member_at(j, {"context", "subject"}).is_null() ? "accuracy results" : "subject results";
+  else
+    f.kind = "records";
+  return f;
+}
+
+/// A field's value as the messages show it: its JSON (cut), or "none" when the file has none.
+std::string shown(const nlohmann::json& v) { return v.is_null() ? "none" : io::field::shown_value(v); }
+
+/// Refuses b and n unless they agree on every field compare checks (see the header).
+void check_same_suite(const results_file& b, const results_file& n) {
+  const auto refuse = [&](const std::string& field, const std::string& bv, const std::string& nv,
+                          const std::string& why) {
+    throw invalid_input(b.path + " and " + n.path + " are not runs of one suite: " + field + " is " + bv + " in " +
+                        b.path + " and " + nv + " in " + n.path + " (" + why + ")");
+  };
+  if (b.kind != n.kind)
+    refuse("the kind", b.kind, n.kind,
+           "compare compares runs of one kind: accuracy results with accuracy results, subject results with subject "
+           "results, check --json output with check --json output; benchmarks with benchmarks in either");
+  if (b.schema != n.schema)
+    refuse(b.kind == "Google Benchmark JSON" ? "context.json_schema_version" : "\"schema\"", shown(b.schema),
+           shown(n.schema), "the files' fields may not mean the same");
+  if (b.suite_name != n.suite_name)
+    refuse("suite.name", shown(b.suite_name), shown(n.suite_name), "runs of different case suites");
+  if (b.suite_version != n.suite_version)
+    refuse("suite.version", shown(b.suite_version), shown(n.suite_version),
+           "the suite's version changes when a case does, so one key may measure another curve: rerun the base with "
+           "this suite");
+  if (b.quick != n.quick)
+    refuse("context.quick", shown(b.quick), shown(n.quick),
+           "a quick run measures each key on fewer samples than a full run, so their errors differ without a "
+           "change: compare two quick or two full runs");
+}
+
 void read_file_into(const std::string& path, run_results& out) {
-  const nlohmann::json j = io::parse(read_input_file(path, "", max_results_bytes), path);
-  if (!j.is_object() || (!j.contains("records") && !j.contains("benchmarks")))
-    throw invalid_input(path +
-                        ": holds neither \"records\" (accuracy.json, check --json) nor \"benchmarks\" (Google "
-                        "Benchmark JSON)");
-  if (j.contains("records")) read_records(j, path, "records", out);
-  // accuracy.json's records of the peer libraries (GSL, Boost, ...): their errors compared too.
-  if (j.contains("peer_records")) read_records(j, path, "peer_records", out);
-  if (j.contains("benchmarks")) read_benchmarks(j, path, out);
+  read_results(io::parse(read_input_file(path, "", max_results_bytes), path), path, out);
 }
 
 }  // namespace
@@ -163,28 +213,52 @@ double mann_whitney_min_p(std::size_t n1, std::size_t n2) {
   return std::min(1.0, normal_two_sided((mu - 0.5) / sigma));
 }
 
+namespace {
+
+struct ranked {
+  double u = 0;        ///< pairs a > b plus half the ties between the samples
+  double tie_sum = 0;  ///< sum of t^3 - t over the tie groups, for the variance
+  bool ties = false;
+};
+
+ranked rank_u(std::span<const double> a, std::span<const double> b) {
+  const std::size_t n1 = a.size(), n2 = b.size();
+  // U from the ranks of one sort of both samples: each value's rank is the mean of the ranks its tie
+  // group spans, so a tie between the samples gives each side half, as the pairwise count does.
+  // Twice the ranks are integers (a group of ranks i + 1 .. j has mean (i + 1 + j) / 2), so the
+  // rank sum and U are exact (2 x (n1 + n2)^2 fits 64 bits for any sample that fits memory).
+  std::vector<std::pair<double, bool>> all;  // (value, from a)
+  all.reserve(n1 + n2);
+  for (double x : a) all.emplace_back(x, true);
+  for (double y : b) all.emplace_back(y, false);
+  for (const auto& [v, from_a] : all)
+    if (std::isnan(v))
+      throw invalid_input(std::string("the Mann-Whitney U test: sample ") + (from_a ? "a" : "b") +
+                          " holds NaN, which has no rank");
+  std::sort(all.begin(), all.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  ranked r;
+  std::uint64_t twice_rank_sum = 0;  // of a's values
+  for (std::size_t i = 0; i < all.size();) {
+    std::size_t j = i;
+    std::uint64_t in_a = 0;
+    while (j < all.size() && all[j].first == all[i].first) in_a += all[j++].second ? 1 : 0;
+    twice_rank_sum += in_a * (i + 1 + j);
+    const double t = static_cast<double>(j - i);
+    if (t > 1) r.ties = true, r.tie_sum += t * t * t - t;
+    i = j;
+  }
+  r.u = static_cast<double>(twice_rank_sum - static_cast<std::uint64_t>(n1) * (n1 + 1)) / 2;
+  return r;
+}
+
+}  // namespace
+
+double mann_whitney_u(std::span<const double> a, std::span<const double> b) { return rank_u(a, b).u; }
+
 double mann_whitney_p(std::span<const double> a, std::span<const double> b) {
   const std::size_t n1 = a.size(), n2 = b.size();
   if (n1 == 0 || n2 == 0) return 1;
-  double u = 0;
-  bool ties = false;
-  for (double x : a)
-    for (double y : b) {
-      if (x > y) u += 1;
-      if (x == y) u += 0.5, ties = true;
-    }
-  // Ties within a sample matter for the variance only.
-  std::vector<double> all(a.begin(), a.end());
-  all.insert(all.end(), b.begin(), b.end());
-  std::sort(all.begin(), all.end());
-  double tie_sum = 0;
-  for (std::size_t i = 0; i < all.size();) {
-    std::size_t j = i;
-    while (j < all.size() && all[j] == all[i]) ++j;
-    const double t = static_cast<double>(j - i);
-    if (t > 1) ties = true, tie_sum += t * t * t - t;
-    i = j;
-  }
+  const auto [u, tie_sum, ties] = rank_u(a, b);
   if (!ties && n1 <= exact_limit && n2 <= exact_limit) {
     const std::vector<double> c = u_counts(n1, n2);
     double total = 0, below = 0, above = 0;
@@ -201,6 +275,47 @@ double mann_whitney_p(std::span<const double> a, std::span<const double> b) {
   if (!(variance > 0)) return 1;  // every value equal
   const double z = std::max(0.0, std::abs(u - n1d * n2d / 2) - 0.5) / std::sqrt(variance);
   return std::min(1.0, normal_two_sided(z));
+}
+
+void read_results(const nlohmann::json& j, const std::string& path, run_results& out) {
+  if (!j.is_object() || (!j.contains("records") && !j.contains("benchmarks")))
+    throw invalid_input(path +
+                        ": holds neither \"records\" (accuracy.json, check --json) nor \"benchmarks\" (Google "
+                        "Benchmark JSON)");
+  if (j.contains("records")) {
+    read_records(j, path, "records", out);
+    out.record_files.push_back(records_file_of(j, path));
+  }
+  // accuracy.json's records of the peer libraries (GSL, Boost, ...): their errors compared too.
+  if (j.contains("peer_records")) read_records(j, path, "peer_records", out);
+  if (j.contains("benchmarks")) {
+    read_benchmarks(j, path, out);
+    results_file f;
+    f.path = path;
+    f.kind = "Google Benchmark JSON";
+    f.schema = member_at(j, {"context", "json_schema_version"});
+    out.benchmark_files.push_back(std::move(f));
+  }
+}
+
+std::string error_unit(const record& r) {
+  namespace q = vocab::quantities;
+  for (const vocab::quantity* relative : {&q::length, &q::s_of_u, &q::u_of_s})
+    if (r.quantity == relative->id) return "rel-L";
+  if (r.quantity == q::eval.id) return "ulp-double";  // points and channel values alike (check.hpp)
+  if (r.quantity == q::channel_monotone.id) return "count";
+  // The channel quantities are in eps of the model's precision, which the setting's bits names.
+  bool float_bits = false;
+  for (std::size_t at = 0; at <= r.setting.size();) {
+    const std::size_t comma = std::min(r.setting.find(',', at), r.setting.size());
+    float_bits = float_bits || r.setting.substr(at, comma - at) == "bits=32";
+    at = comma + 1;
+  }
+  const std::string eps = float_bits ? "ulp-float" : "ulp-double";
+  for (const vocab::quantity* ulps : {&q::channel_value, &q::channel_keys, &q::channel_time})
+    if (r.quantity == ulps->id) return eps;
+  if (r.quantity == q::channel_rotation.id) return eps + "-rad";
+  return "";
 }
 
 run_results read_run(const std::string& path) {
@@ -237,6 +352,18 @@ std::size_t comparison::regressions() const {
 }
 
 comparison compare_runs(const run_results& base, const run_results& now, const compare_options& o) {
+  // One suite, or nothing is compared (see the header): every records file of one run against
+  // every one of the other, then the benchmark files; then the schema this build reads.
+  for (const results_file& b : base.record_files)
+    for (const results_file& n : now.record_files) check_same_suite(b, n);
+  for (const results_file& b : base.benchmark_files)
+    for (const results_file& n : now.benchmark_files)
+      if (!b.schema.is_null() && !n.schema.is_null()) check_same_suite(b, n);
+  for (const run_results* run : {&base, &now})
+    for (const results_file& f : run->record_files)
+      if (!f.schema.is_null() && f.schema != 1)
+        throw invalid_input(f.path + ": \"schema\" " + shown(f.schema) +
+                            ": this curvebench compares results of schema 1, whose fields it knows");
   comparison c;
   c.base = base.path;
   c.now = now.path;
@@ -267,6 +394,7 @@ comparison compare_runs(const run_results& base, const run_results& now, const c
     record_change ch;
     ch.key = key;
     ch.where = now.record_where[i];
+    ch.unit = error_unit(n);
     ch.base_error = b.error;
     ch.new_error = n.error;
     ch.base_status = b.status;
@@ -362,6 +490,7 @@ nlohmann::json to_json(const comparison& c) {
   for (const record_change& r : c.records) {
     nlohmann::json j{{"key", r.key},
                      {"where", r.where},
+                     {"unit", r.unit.empty() ? nlohmann::json() : nlohmann::json(r.unit)},
                      {"base_error", num(r.base_error)},
                      {"new_error", num(r.new_error)},
                      {"base_status", r.base_status},

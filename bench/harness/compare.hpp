@@ -5,6 +5,23 @@
 // --json`, a subject's results (each holding "records", harness/record.hpp) and Google Benchmark
 // JSON files (holding "benchmarks"; a directory's bench_*.json). Both kinds may sit in one file.
 //
+// Only runs of one suite are compared: errors measured on other cases, other samples or fields of
+// another meaning would pass or fail by accident. When both runs hold records, every records file
+// of one must agree with every records file of the other on
+//   - its kind: accuracy results (accuracy.json: "schema" and "suite"), subject results (the same
+//     with context.subject), check --json output ("checks"), or a file of bare "records";
+//   - "schema" (this build compares schema 1 only);
+//   - suite.name and suite.version (harness/cases.hpp: the version changes when a case does, so a
+//     key of another version may measure another curve);
+//   - context.quick (a quick run samples fewer times and parameters: the same key's error is a
+//     maximum over other samples).
+// Benchmark files must agree on Google Benchmark's context.json_schema_version where both write
+// one. Anything else may differ, and is what a comparison is for: the curvebench revision, the
+// compiler, the flags, the machine, the date (context.revision, compiler, flags; Google Benchmark's
+// host and executable). A run of records against a run of benchmarks only is compared as it is
+// (nothing matches: the records are removed or added). A difference is invalid_input naming both
+// files, the field and both values.
+//
 // Records are matched by case, group, quantity, method, setting, subject and peer library (the k-th
 // record of a key in one run with the k-th in the other). A matched record regresses when
 //   - its error grew: new > base x (1 + max_error_growth) + floor, where floor is the rounding level
@@ -14,7 +31,8 @@
 //     not a regression;
 //   - it is no longer measured (a finite error became null);
 //   - its estimate stopped bounding its error (bounded true became false).
-// Errors are deterministic for one build, so these need no statistics.
+// Errors are deterministic for one build, so these need no statistics. Each change carries its
+// error's unit (error_unit below), in which both errors are written.
 //
 // Benchmarks are matched by run name. Their times (cpu_time per iteration, in ns) are the
 // repetitions of the run (entries of run_type "iteration"; an aggregate-only file gives its median
@@ -57,12 +75,26 @@ struct bench_times {
   std::vector<double> ns;  ///< cpu time per iteration of each repetition (aggregates only: the median), ns
 };
 
+/// What a results file says it is, the fields compare checks before matching anything (see the
+/// header); a field the file does not have is null.
+struct results_file {
+  std::string path;
+  std::string kind;              ///< "accuracy results", "subject results", "check --json output", "records",
+                                 ///< "Google Benchmark JSON"
+  nlohmann::json schema;         ///< "schema"; for benchmarks context.json_schema_version
+  nlohmann::json suite_name;     ///< suite.name
+  nlohmann::json suite_version;  ///< suite.version
+  nlohmann::json quick;          ///< context.quick
+};
+
 /// A run: its records and its benchmarks, and the files they came from.
 struct run_results {
   std::string path;
   std::vector<record> records;
   std::vector<std::string> record_where;  ///< "accuracy.json: records[3]" per record
   std::vector<bench_times> benchmarks;
+  std::vector<results_file> record_files;     ///< the files that gave records
+  std::vector<results_file> benchmark_files;  ///< the files that gave benchmarks
 };
 
 /// Reads a results file or directory (see the header). invalid_input naming the file and the entry
@@ -70,9 +102,22 @@ struct run_results {
 /// directory with no results file.
 [[nodiscard]] run_results read_run(const std::string& path);
 
+/// Adds the records and benchmarks of one results file already parsed (`file` names it in
+/// messages) to `out`, as read_run does for each file: the same errors.
+void read_results(const nlohmann::json& j, const std::string& file, run_results& out);
+
+/// The unit of a record's error, from its quantity and setting (vocabulary.hpp's docs say how each
+/// is measured): "rel-L" (relative to the curve's length: length, s_of_u, u_of_s), "ulp-double"
+/// (eps(double) times the curve's size or the channel's value range: eval, and the channel
+/// quantities at bits=64 or without bits), "ulp-float" (eps(float) times the same: the channel
+/// quantities at bits=32), "ulp-double-rad" / "ulp-float-rad" (a rotation angle in eps radians:
+/// channel_rotation), "count" (channel_monotone); "" for a quantity this build does not know.
+[[nodiscard]] std::string error_unit(const record& r);
+
 struct record_change {
   std::string key;                       ///< "case/quantity/method/setting" (and subject, peer) as the table shows it
   std::string where;                     ///< the new record's place
+  std::string unit;                      ///< the errors' unit (error_unit); "": unknown
   double base_error = 0, new_error = 0;  ///< NaN: not measured
   std::string base_status, new_status;
   bool bound_lost = false;
@@ -107,16 +152,25 @@ struct comparison {
   [[nodiscard]] std::size_t regressions() const;
 };
 
+/// Compares two runs read by read_run. invalid_input naming both files, the field and both values
+/// when they are not runs of one suite (see the header), naming the file for a schema other than 1,
+/// and when the runs share no record and no benchmark (nothing would be compared).
 [[nodiscard]] comparison compare_runs(const run_results& base, const run_results& now,
                                       const compare_options& options = {});
 
-/// The comparison as JSON (the options, counts, every change, warnings, "regressions").
+/// The comparison as JSON (the options, counts, every change with its error unit, warnings,
+/// "regressions").
 [[nodiscard]] nlohmann::json to_json(const comparison& c);
 
 /// The two-sided p-value of the Mann-Whitney U test of samples a and b: exact (the distribution of U
 /// counted over all orderings) when neither has more than 20 values and there are no ties, else
-/// the normal approximation with the tie correction and a continuity correction of 1/2.
+/// the normal approximation with the tie correction and a continuity correction of 1/2. U is the
+/// rank sum of a (average ranks over ties) less n1 (n1 + 1) / 2, which is the count of pairs a > b
+/// plus half the ties: one sort, O(n log n) (1e5 repetitions a side counted pair by pair took
+/// 18 s). invalid_input for a NaN, which has no rank.
 [[nodiscard]] double mann_whitney_p(std::span<const double> a, std::span<const double> b);
+/// The U statistic of a against b that mann_whitney_p tests: from the ranks, as above.
+[[nodiscard]] double mann_whitney_u(std::span<const double> a, std::span<const double> b);
 /// The smallest two-sided p the test can give for sizes n1 and n2 (complete separation, no ties).
 [[nodiscard]] double mann_whitney_min_p(std::size_t n1, std::size_t n2);
 

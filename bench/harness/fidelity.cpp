@@ -13,10 +13,29 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace curvebench::harness {
 
 namespace {
+
+/// The array `key` of recorded channel `c` (named `name` in messages): finite numbers only, each
+/// other element refused naming the channel and its index (a NaN or an infinity is no value a tool
+/// computed at a time, and an error measured against it would mean nothing).
+std::vector<double> recorded_numbers(const io::field& c, const char* key, const char* what, const std::string& name) {
+  const io::field list = c.member(key, what);
+  std::vector<double> out;
+  out.reserve(list.array_size());
+  for (std::size_t i = 0; i < list.array_size(); ++i) {
+    const io::field e = list.element(i);
+    if (!e.value.is_number() || !std::isfinite(e.value.get<double>()))
+      e.fail("channel \"" + validate::visible(name) + "\": " + key + "[" + std::to_string(i) +
+             "] is not a finite number, got " + e.shown());
+    out.push_back(e.value.get<double>());
+  }
+  return out;
+}
 
 /// Measures one channel of a recording; refused when its spec or the model refuses it.
 fidelity_channel measure_channel(const io::field& c) {
@@ -31,8 +50,8 @@ fidelity_channel measure_channel(const io::field& c) {
     out.reason = c.member("unverified").string();
     return out;
   }
-  const std::vector<double> ts = c.member("t", "the times the tool evaluated").reals<double>();
-  const std::vector<double> vs = c.member("value", "the tool's values at t").reals<double>();
+  const std::vector<double> ts = recorded_numbers(c, "t", "the times the tool evaluated", out.name);
+  const std::vector<double> vs = recorded_numbers(c, "value", "the tool's values at t", out.name);
   if (ts.size() != vs.size())
     c.fail("has " + std::to_string(ts.size()) + " times and " + std::to_string(vs.size()) +
            " values: one value per time");
@@ -42,6 +61,10 @@ fidelity_channel measure_channel(const io::field& c) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo, magnitude = 0;
   for (double v : vs) lo = std::min(lo, v), hi = std::max(hi, v), magnitude = std::max(magnitude, std::abs(v));
   out.scale = hi > lo ? hi - lo : (magnitude > 0 ? magnitude : 1.0);
+  // The same of halves, for when the range or a gap passes double: max - min of +-1e308 is
+  // infinite, and every error divided by it was 0, so a model far off "agreed". Halving is exact
+  // for the normal numbers such values are.
+  const double half_scale = hi > lo ? hi / 2 - lo / 2 : (magnitude > 0 ? magnitude / 2 : 0.5);
 
   const io::field spec = c.member("spec", "the channel as a curvebench channel spec");
   std::optional<channel_values> model;
@@ -59,8 +82,12 @@ fidelity_channel measure_channel(const io::field& c) {
     // cycle far out, a frame near 1e5), so the scale at t adds |t| |V'(t)| to the range.
     const std::optional<double> slope = model->at(ts[i], 1);
     const double reach = slope && std::isfinite(*slope) ? std::abs(ts[i] * *slope) : 0.0;
-    const double e =
-        m && std::isfinite(*m) ? std::abs(*m - vs[i]) / (out.scale + reach) : std::numeric_limits<double>::infinity();
+    double e = std::numeric_limits<double>::infinity();
+    if (m && std::isfinite(*m)) {
+      const double gap = std::abs(*m - vs[i]), room = out.scale + reach;
+      e = std::isfinite(gap) && std::isfinite(room) ? gap / room
+                                                    : std::abs(*m / 2 - vs[i] / 2) / (half_scale + reach / 2);
+    }
     if (i == 0 || e > out.error) {
       out.error = e;
       out.worst_t = ts[i];

@@ -11,7 +11,9 @@
 // Each channel's spec is read by curvebench's own reader and evaluated as the tool evaluates it
 // (harness::channel_values_of(spec, check_against::tool): the tool's solver and storage precision).
 // The channel's error is max over its times of |model - recorded| / (R + |t| |V'(t)|): R the
-// recorded values' range (their largest magnitude when they are all equal, 1 when that is 0), and
+// recorded values' range (their largest magnitude when they are all equal, 1 when that is 0; taken
+// of halves when it passes double, as for values of +-1e308, so that it never overflows to an
+// infinity that would make every error 0), and
 // |t| |V'(t)| (the model's slope) the reach of the time's own rounding, which both programs suffer
 // where t is large (a cycle wrapped a thousand periods out, a frame near 1e5). A
 // channel agrees when its error is at most agree_ulps eps of the model's precision (float for a
@@ -20,6 +22,10 @@
 // times the slope), so a disagreement above it is a different rule, not rounding.
 // A channel the reader or the model refuses counts as refused, with today's message (a channel
 // recorded as refused that the model now evaluates is measured like the others).
+// A time or a value that is not a finite number is refused (invalid_input naming the file, the
+// channel's index and name, and the element's index). A channel recorded as "unverified" is
+// neither agreement nor disagreement: it is counted apart (`curvebench fidelity
+// --require-agreement` fails on it as unverified, and on a recording with no channel evaluated).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -41,7 +47,7 @@ struct fidelity_channel {
   double worst_t = 0;           ///< the time of that error
   double model = 0;             ///< the model's value there
   double recorded = 0;          ///< the tool's value there
-  double scale = 1;             ///< the recorded values' range
+  double scale = 1;             ///< the recorded values' range (infinite past double: errors use halves)
   int bits = 64;                ///< the model's precision (32: float)
   bool refused = false;         ///< the spec was refused (reason below)
   std::string reason;           ///< why it was refused or is unverified
@@ -66,10 +72,12 @@ struct fidelity_result {
   std::vector<fidelity_feature> features;  ///< sorted by feature
   std::size_t agree = 0, refused = 0, unverified = 0;
   double max_error = 0;  ///< over the evaluated channels
+  [[nodiscard]] std::size_t evaluated() const { return channels.size() - refused - unverified; }
 };
 
 /// Reads one recording (path: for messages and the result) and measures every channel. Throws
-/// invalid_input for a file that is not a recording (naming the field); a channel's own spec errors
+/// invalid_input for a file that is not a recording (naming the field), and for a time or value
+/// that is not a finite number (naming the channel and the index); a channel's own spec errors
 /// make it refused, not the file.
 [[nodiscard]] fidelity_result measure_fidelity(const std::string& path);
 /// The same for a recording already read.

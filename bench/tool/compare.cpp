@@ -40,7 +40,11 @@ std::string record_line(const harness::record_change& r) {
   if (r.error_grew) why = "error grew";
   if (r.unmeasured) why = "no longer measured";
   if (r.bound_lost) why += std::string(why.empty() ? "" : ", ") + "estimate no longer bounds the error";
-  std::string line = (why.empty() ? "" : why + ": ") + r.key + ": error " + g(r.base_error) + " -> " + g(r.new_error);
+  // Each error with its unit (harness::error_unit): "9.92e+09 ulp-double" says what "9.92e+09" cannot.
+  const std::string unit = r.unit.empty() ? "" : " " + r.unit;
+  std::string line =
+      (why.empty() ? "" : why + ": ") + r.key + ": error " + g(r.base_error) + unit + " -> " + g(r.new_error) + unit;
+  if (r.unit.empty()) line += " (a quantity of no unit this build knows)";
   if (r.base_status != r.new_status) line += ", status " + r.base_status + " -> " + r.new_status;
   return line + " (" + r.where + ")";
 }
@@ -65,8 +69,9 @@ CLI::App* add_compare(CLI::App& app, compare_args& a) {
   auto* cmp = app.add_subcommand(
       "compare",
       "compare two runs (accuracy/check results, Google Benchmark JSON, or result directories such as reports/): "
-      "errors that grew, estimates that stopped bounding, benchmarks slower with a Mann-Whitney U test; exit 1 only "
-      "on a confident regression");
+      "errors that grew (each in its unit), estimates that stopped bounding, benchmarks slower with a Mann-Whitney U "
+      "test; exit 1 only on a confident regression. Runs of different suites are refused: another kind of file, "
+      "schema, suite name or version, or a quick run against a full one (the curvebench revision may differ)");
   cmp->add_option("base", a.base, "the baseline run: a results file or a directory (accuracy.json, bench_*.json)")
       ->required()
       ->check(CLI::ExistingPath);

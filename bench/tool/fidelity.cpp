@@ -5,9 +5,12 @@
 #include "harness/check_detail.hpp"
 #include "harness/fidelity.hpp"
 
+#include "curvebench/core/error.hpp"
+
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <string>
 
 namespace curvebench::tool {
 
@@ -25,7 +28,7 @@ std::string source_line(const nlohmann::json& s) {
 }
 
 void print(const harness::fidelity_result& r) {
-  const std::size_t evaluated = r.channels.size() - r.refused - r.unverified;
+  const std::size_t evaluated = r.evaluated();
   const int bits = r.channels.empty() ? 64 : r.channels.front().bits;
   std::cout << r.tool << " against " << source_line(r.source) << " (" << r.file << "):\n  " << r.agree << " of "
             << evaluated << " evaluated channels agree to " << harness::agree_ulps << " eps("
@@ -64,7 +67,8 @@ CLI::App* add_fidelity(CLI::App& app, fidelity_args& a) {
       ->check(CLI::ExistingFile);
   f->add_flag("--json", a.json, "JSON on stdout (the report's reports/fidelity.json)");
   f->add_flag("--require-agreement", a.require,
-              "exit 1 when a channel disagrees, or is refused without the recording saying it was");
+              "exit 1 when a channel disagrees, is refused without the recording saying it was, or is unverified "
+              "(recorded without the tool's values: not agreement); a recording with no channel evaluated is an error");
   f->footer(example("curvebench fidelity tests/data/recorded/animx_curves.json"));
   return f;
 }
@@ -72,6 +76,16 @@ CLI::App* add_fidelity(CLI::App& app, fidelity_args& a) {
 int run_fidelity(const fidelity_args& a) {
   std::vector<harness::fidelity_result> results;
   for (const std::string& path : a.recordings) results.push_back(harness::measure_fidelity(path));
+  // A recording with nothing compared proves nothing: "channels": [], or every channel refused or
+  // unverified, would pass the gate with nothing checked. Refused before anything is printed.
+  if (a.require)
+    for (const auto& r : results)
+      if (r.evaluated() == 0)
+        throw invalid_input(r.file + ": " +
+                            (r.channels.empty() ? std::string("holds no channel")
+                                                : "no channel was evaluated (" + std::to_string(r.refused) +
+                                                      " refused, " + std::to_string(r.unverified) + " unverified)") +
+                            ": --require-agreement needs at least one channel compared with the tool");
   if (a.json) {
     nlohmann::json j = harness::to_json(results);
     j["curvebench"] = version_line();  // the models measured: the published table names them
@@ -80,13 +94,19 @@ int run_fidelity(const fidelity_args& a) {
     for (const auto& r : results) print(r);
   int failed = 0;
   for (const auto& r : results)
-    for (const auto& c : r.channels)
-      if ((c.refused && !c.marked_refused) || (!c.refused && !c.agrees())) {
-        if (a.require)
-          std::cerr << "curvebench: fidelity: " << r.file << ": " << c.name
-                    << (c.refused ? " is refused but not recorded as refused" : " disagrees with the tool") << "\n";
-        ++failed;
-      }
+    for (const auto& c : r.channels) {
+      std::string why;
+      if (c.unverified)  // not agreement, nor a disagreement: the tool gave no value to agree with
+        why =
+            " is unverified (the tool recorded no values: " + validate::visible(c.reason) + "), which is not agreement";
+      else if (c.refused && !c.marked_refused)
+        why = " is refused but not recorded as refused";
+      else if (!c.refused && !c.agrees())
+        why = " disagrees with the tool";
+      if (why.empty()) continue;
+      if (a.require) std::cerr << "curvebench: fidelity: " << r.file << ": " << c.name << why << "\n";
+      ++failed;
+    }
   return a.require && failed > 0 ? 1 : 0;
 }
 

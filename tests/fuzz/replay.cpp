@@ -1,6 +1,7 @@
 // Replays saved inputs through a fuzz target without libFuzzer (targets.hpp), so the normal test
 // build checks every regression input and seed on every run:
-//   curvebench_fuzz_replay TARGET PATH...     TARGET: spec, gate, csv, times or svg; PATH: a file or a directory
+//   curvebench_fuzz_replay TARGET PATH...     TARGET: spec, gate, csv, times, svg, compare or fidelity (the
+//                                             last two where the harness is built); PATH: a file or a directory
 //                                             (its regular files, sorted, not recursively)
 // Prints each file before running it, so a violation (which aborts) is preceded by its file's name.
 // Exits 2 on a usage error or an unreadable path, 0 when every file passed.
@@ -21,23 +22,26 @@ struct target {
   std::string_view name;
   int (*run)(const std::uint8_t*, std::size_t);
 };
-constexpr target all_targets[] = {{"spec", curvebench::fuzz::spec_target},
-                                  {"gate", curvebench::fuzz::gate_target},
-                                  {"csv", curvebench::fuzz::csv_target},
-                                  {"times", curvebench::fuzz::times_target},
-                                  {"svg", curvebench::fuzz::svg_target}};
+constexpr target all_targets[] = {
+    {"spec", curvebench::fuzz::spec_target},       {"gate", curvebench::fuzz::gate_target},
+    {"csv", curvebench::fuzz::csv_target},         {"times", curvebench::fuzz::times_target},
+    {"svg", curvebench::fuzz::svg_target},
+#ifdef CURVEBENCH_FUZZ_HARNESS_TARGETS  // their readers are the harness library's (bench/)
+    {"compare", curvebench::fuzz::compare_target}, {"fidelity", curvebench::fuzz::fidelity_target},
+#endif
+};
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s spec|gate|csv|times|svg PATH...\n", argv[0]);
+    std::fprintf(stderr, "usage: %s spec|gate|csv|times|svg|compare|fidelity PATH...\n", argv[0]);
     return 2;
   }
   const target* t = nullptr;
   for (const auto& candidate : all_targets)
     if (candidate.name == argv[1]) t = &candidate;
   if (!t) {
-    std::fprintf(stderr, "replay: unknown target '%s' (spec, gate, csv, times, svg)\n", argv[1]);
+    std::fprintf(stderr, "replay: unknown target '%s' (spec, gate, csv, times, svg, compare, fidelity)\n", argv[1]);
     return 2;
   }
   std::vector<fs::path> files;

@@ -10,6 +10,10 @@
 //          the spec's tool model and its evaluation at those times (targets_times.cpp)
 //   svg    `length --svg`'s reader of SVG files (bench/tool/svg_file.hpp) and the path data parser
 //          with the svg_path family's build (targets_svg.cpp)
+//   compare   `curvebench compare`'s reader of results files (harness::read_results) and the
+//             comparison of two runs, harness::compare_runs (targets_compare.cpp)
+//   fidelity  `curvebench fidelity`'s reader of tool recordings, harness::measure_fidelity, with
+//             each channel's evaluation as the tool (targets_fidelity.cpp)
 //
 // A reader may refuse an input only with the exceptions the error policy documents
 // (core/error.hpp: invalid_input and its io::spec_error; std::domain_error outside a domain), with a
@@ -44,5 +48,7 @@ int gate_target(const std::uint8_t* data, std::size_t size);
 int csv_target(const std::uint8_t* data, std::size_t size);
 int times_target(const std::uint8_t* data, std::size_t size);
 int svg_target(const std::uint8_t* data, std::size_t size);
+int compare_target(const std::uint8_t* data, std::size_t size);
+int fidelity_target(const std::uint8_t* data, std::size_t size);
 
 }  // namespace curvebench::fuzz

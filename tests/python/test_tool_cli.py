@@ -113,6 +113,13 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(j["regressions"], 2)
         self.assertEqual({r["key"] for r in j["records"]},
                          {"arch/eval/my_bezier [smooth] (subject)", "arch/s_of_u/my_bezier [smooth] (subject)"})
+        # Each error in its unit, on the table and in --json: a bare 2.81e+08 says nothing.
+        self.assertEqual({r["key"]: r["unit"] for r in j["records"]},
+                         {"arch/eval/my_bezier [smooth] (subject)": "ulp-double",
+                          "arch/s_of_u/my_bezier [smooth] (subject)": "rel-L"})
+        table = run("compare", os.path.join(data, "check_17_digits.json"), os.path.join(data, "check_7_digits.json"))
+        self.assertIn("error 0.587 ulp-double -> 2.81e+08 ulp-double", table.stdout)
+        self.assertIn("error 8.05e-16 rel-L -> 8.79e-08 rel-L", table.stdout)
         # Even a 300 % margin fails it: the 7-digit subject's errors grew 1e8 times.
         loose = run("compare", os.path.join(data, "check_17_digits.json"), os.path.join(data, "check_7_digits.json"),
                     "--max-error-growth", "3")
@@ -898,6 +905,24 @@ class ToolCli(unittest.TestCase):
         self.assertTrue(j["curvebench"].startswith("curvebench "))
         rec["channels"] = rec["channels"][:1]
         self.assertEqual(run("fidelity", self.write("ok.json", json.dumps(rec)), "--require-agreement").returncode, 0)
+        # A channel the tool gave no values for is unverified, not a disagreement; under
+        # --require-agreement it fails as what it is, and a recording with nothing evaluated fails.
+        unverified = dict(rec, channels=rec["channels"] + [
+            {"name": "hermite", "features": [], "spec": spec, "t": [0, 5], "unverified": "no values"}])
+        path = self.write("unverified.json", json.dumps(unverified))
+        p = run("fidelity", path)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertIn("unverified: hermite: no values", p.stdout)
+        self.assertNotIn("disagrees", p.stdout)
+        p = run("fidelity", path, "--require-agreement")
+        self.assertEqual(p.returncode, 1)
+        self.assertIn("hermite is unverified", p.stderr)
+        self.assertNotIn("disagrees", p.stderr)
+        p = run("fidelity", self.write("none.json", json.dumps(dict(rec, channels=unverified["channels"][1:]))),
+                "--require-agreement")
+        self.assertEqual(p.returncode, 1)
+        self.assertIn("curvebench: error: ", p.stderr)
+        self.assertIn("no channel was evaluated (0 refused, 1 unverified)", p.stderr)
         rec["channels"][0]["value"] = [0]
         self.assert_error(run("fidelity", self.write("bad.json", json.dumps(rec))), "bad.json.channels[0]",
                           "3 times and 1 values")
