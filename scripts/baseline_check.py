@@ -4,7 +4,10 @@ each is whole JSON (no NaN or Infinity, which JSON does not have) holding a "rec
 "benchmarks" array of objects. `curvebench compare DIR DIR` after the build then reads it with the
 tool's own reader, before the run.
 
-  python3 scripts/baseline_check.py DIR
+  python3 scripts/baseline_check.py DIR [--quick | --full]
+
+With --quick or --full, the baseline's accuracy.json must be a run of that kind too (compare
+refuses a quick run against a full one: a quick run measures each key on fewer samples).
 
 Exits 0 when the baseline can be compared, 1 with a message naming the file and what is wrong
 (for a file cut short: the line and column where the JSON stops)."""
@@ -45,7 +48,7 @@ def check_file(path):
     return data
 
 
-def check_baseline(directory):
+def check_baseline(directory, mode=None):
     if not os.path.isdir(directory):
         raise BaselineError(f"{directory}: not a directory")
     names = sorted(n for n in os.listdir(directory)
@@ -53,16 +56,25 @@ def check_baseline(directory):
     if not names:
         raise BaselineError(f"{directory}: no accuracy.json and no bench_*.json (a copy of an earlier reports/)")
     for name in names:
-        check_file(os.path.join(directory, name))
+        data = check_file(os.path.join(directory, name))
+        if name == "accuracy.json" and mode is not None:
+            quick = data.get("context", {}).get("quick") if isinstance(data.get("context"), dict) else None
+            if quick is not (mode == "quick"):
+                raise BaselineError(f"{os.path.join(directory, name)}: a {'quick' if quick else 'full'} run "
+                                    f"(context.quick is {json.dumps(quick)}), and this run is {mode}: compare "
+                                    "compares two quick or two full runs")
     return names
 
 
 def main(argv):
-    if len(argv) != 1 or argv[0] in ("-h", "--help"):
+    if argv and argv[0] in ("-h", "--help"):
         print(__doc__)
-        return 0 if argv and argv[0] in ("-h", "--help") else 2
+        return 0
+    if len(argv) not in (1, 2) or (len(argv) == 2 and argv[1] not in ("--quick", "--full")):
+        print("usage: baseline_check.py DIR [--quick | --full]", file=sys.stderr)
+        return 2
     try:
-        check_baseline(argv[0])
+        check_baseline(argv[0], argv[1][2:] if len(argv) == 2 else None)
     except BaselineError as e:
         print(f"baseline_check.py: {e}", file=sys.stderr)
         return 1

@@ -56,7 +56,7 @@ if [[ -n "$baseline" ]]; then
     exit 2
   fi
   # A baseline cut short or of another kind is refused now, not after the build and the run.
-  if ! python3 "$root/scripts/baseline_check.py" "$baseline"; then
+  if ! python3 "$root/scripts/baseline_check.py" "$baseline" "$([[ $quick -eq 1 ]] && echo --quick || echo --full)"; then
     echo "bench.sh: --baseline $baseline cannot be compared (above)" >&2
     exit 2
   fi

@@ -134,6 +134,16 @@ class BaselineCheck(unittest.TestCase):
                 for name in files:
                     self.assertIn(name, p.stderr)
 
+    def test_a_quick_baseline_is_refused_for_a_full_run(self):
+        self.write("accuracy.json", '{"records": [], "context": {"quick": true}}')
+        p = subprocess.run([sys.executable, self.script, self.dir, "--full"], capture_output=True, text=True,
+                           timeout=60)
+        self.assertEqual(p.returncode, 1, p.stdout)
+        self.assertIn("a quick run (context.quick is true), and this run is full", p.stderr)
+        p = subprocess.run([sys.executable, self.script, self.dir, "--quick"], capture_output=True, text=True,
+                           timeout=60)
+        self.assertEqual(p.returncode, 0, p.stderr)
+
     def test_bench_sh_refuses_it_before_the_build(self):
         self.write("accuracy.json", '{"records": [')
         work = tempfile.mkdtemp(prefix="curvebench_bench_")
