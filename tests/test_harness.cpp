@@ -508,21 +508,30 @@ TEST(run_accuracy, returns_1_and_leaves_out_a_failed_case_0_when_all_run) {
   o.cases_dir = dir.path.string();
   o.out = (dir.path / "out" / "results.json").string();
   o.threads = 2;
+  // A run with a failed case is not the suite: it is written beside --out, which it never replaces.
   EXPECT_EQ(curvebench::harness::run_accuracy(o), 1);
-  json r = json::parse(read(o.out));
+  EXPECT_FALSE(std::filesystem::exists(o.out));
+  json r = json::parse(read(dir.path / "out" / "results.partial.json"));
   ASSERT_EQ(r["cases"].size(), 1u);
   EXPECT_EQ(r["cases"][0]["name"], "parabola");
   EXPECT_EQ(r["suite"]["cases"], 2);
+  EXPECT_EQ(r["context"]["failed_cases"], 1);
   for (const auto& rec : r["records"]) EXPECT_EQ(rec["case"], "parabola");
   EXPECT_EQ(r["context"]["compiler"], curvebench::harness::compiler_id());
   // The CSV beside it quotes the settings that hold a comma.
-  const std::string csv = read(dir.path / "out" / "results.csv");
+  const std::string csv = read(dir.path / "out" / "results.partial.csv");
   EXPECT_THAT(csv, HasSubstr(",length,composite_gauss,\"n=3,panels=4\","));
 
   o.only = "parabola";
   EXPECT_EQ(curvebench::harness::run_accuracy(o), 0);
   r = json::parse(read(o.out));
   EXPECT_EQ(r["suite"]["cases"], 1);
+  EXPECT_EQ(r["context"]["failed_cases"], 0);
+  // A later failing run leaves that good run as it was.
+  const std::string good = read(o.out);
+  o.only = "";
+  EXPECT_EQ(curvebench::harness::run_accuracy(o), 1);
+  EXPECT_EQ(read(o.out), good);
   o.only = "no_such_case";
   EXPECT_THROW((void)curvebench::harness::run_accuracy(o), invalid_input);
 }
