@@ -12,7 +12,6 @@
 #include <iomanip>
 #include <limits>
 #include <map>
-#include <numeric>
 #include <optional>
 #include <queue>
 #include <sstream>
@@ -38,7 +37,8 @@ struct case_reference<Dim>::impl {
     std::size_t first = 0, last = 0;  // the segments [first, last)
     std::size_t left = 0, right = 0;  // the children (a leaf: last == first + 1)
   };
-  std::vector<scan_box> boxes;                          // boxes[0]: the root
+  std::vector<scan_box> boxes;                          // the leaves (segment k at k), then the tree
+  std::size_t scan_root = 0;                            // the index of the tree's root in boxes
   double scan_size = 0;                                 // the largest sampled coordinate magnitude
   std::vector<real50> s_ref;                            // s(u_j) of set_s_parameters
   std::map<double, std::pair<real50, real50>> anchors;  // target s -> (u, s(u))
@@ -205,6 +205,7 @@ typename case_reference<Dim>::nearest_point case_reference<Dim>::nearest(const p
   struct sampled {
     double lo, u, hi, a, b, dist;  // a local minimum of the sampled distance, its neighbours, its segment
     double reach;                  // the longer chord to a neighbour: how much closer the curve may come
+    std::size_t segment;           // its segment's index
   };
   const std::span<const double> bp = cd.breakpoints();
   constexpr int samples = 32;
@@ -246,18 +247,7 @@ typename case_reference<Dim>::nearest_point case_reference<Dim>::nearest(const p
       boxes.push_back(bx);
       return boxes.size() - 1;
     };
-    if (n > 1) {
-      const std::size_t root = build(0, n);
-      std::swap(boxes[root], boxes.front());  // the root at 0, its old slot holding leaf 0
-      for (scan_box& bx : boxes) {            // re-point the children at the two moved boxes
-        if (bx.last - bx.first == 1) continue;
-        for (std::size_t* child : {&bx.left, &bx.right})
-          if (*child == root)
-            *child = 0;
-          else if (*child == 0)
-            *child = root;
-      }
-    }
+    impl_->scan_root = build(0, n);
   }
   const double size = impl_->scan_size;
   // The slack of the candidates' test below (keep), but for the best distance so far.
@@ -271,14 +261,13 @@ typename case_reference<Dim>::nearest_point case_reference<Dim>::nearest(const p
     return safe_norm(gap) * (1 - 1e-12) - 2 * bx.reach;
   };
   std::vector<sampled> minima;
-  std::vector<std::size_t> minimum_segment;
   double best = std::numeric_limits<double>::infinity();
   std::size_t scanned = 0;
   // Best first over the tree: a box whose bound exceeds 2 best + slack holds no candidate (the
   // test below, whose best can only be smaller), and neither does any box popped after it.
   using entry = std::pair<double, std::size_t>;
   std::priority_queue<entry, std::vector<entry>, std::greater<>> open;
-  if (!boxes.empty()) open.emplace(bound(boxes[0]), 0);
+  if (!boxes.empty()) open.emplace(bound(boxes[impl_->scan_root]), impl_->scan_root);
   while (!open.empty()) {
     const auto [key, at] = open.top();
     open.pop();
@@ -297,22 +286,13 @@ typename case_reference<Dim>::nearest_point case_reference<Dim>::nearest(const p
       const int lo = j > 0 ? j - 1 : 0, hi = j < samples ? j + 1 : samples;
       const double reach =
           std::max(safe_norm(point<double, Dim>(ps[lo] - ps[j])), safe_norm(point<double, Dim>(ps[hi] - ps[j])));
-      minima.push_back({us[lo], us[j], us[hi], bp[k], bp[k + 1], ds[j], reach});
-      minimum_segment.push_back(k);
+      minima.push_back({us[lo], us[j], us[hi], bp[k], bp[k + 1], ds[j], reach, k});
       best = std::min(best, ds[j]);
     }
   }
   // In the curve's order, as a scan of every segment would list them (ties below go to the first).
-  {
-    std::vector<std::size_t> order(minima.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t x, std::size_t y) { return minimum_segment[x] < minimum_segment[y]; });
-    std::vector<sampled> sorted;
-    sorted.reserve(order.size());
-    for (const std::size_t i : order) sorted.push_back(minima[i]);
-    minima = std::move(sorted);
-  }
+  std::stable_sort(minima.begin(), minima.end(),
+                   [](const sampled& x, const sampled& y) { return x.segment < y.segment; });
   // Between samples the curve may come closer than a sampled minimum by about the chord to its
   // neighbour (twice that, for the arc's bulge): a minimum that close to twice the best, plus the
   // double rounding of the distances (the curve's size), stays a candidate.
