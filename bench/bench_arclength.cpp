@@ -422,7 +422,7 @@ const bool registered = [] {
   register_benchmark(benchmark_name("u_of_s", peers::bisection_reintegration),
                      [](benchmark::State& s) { bisection_full_reintegration(s); });
   // Newton and the peer at the same tolerances (paired in the report by the setting tol); 1e-12 L
-  // is issue 14's target for Newton without a table.
+  // is the target for Newton without a table.
   al::parameterization_options<double> newton12 = newton;
   newton12.newton.relative_tolerance = 1e-12;
   register_benchmark(benchmark_name("u_of_s", methods::newton).arg("tol", 1e-12),

@@ -12,7 +12,7 @@
 //   --quick-suite   only the cases of the quick suite (scripts/bench.sh --quick)
 // Operation: vocab::operations::length (one arc length of the whole curve, set-up included), one
 // per iteration. Counters: vocab::counters::evaluations (curve-derivative evaluations per length).
-// u(s) on many segments (issue 32), on the cases of at least many_segments segments and on the
+// u(s) on many segments, on the cases of at least many_segments segments and on the
 // one-segment baseline_case: the Hermite table sized per segment to 1e-12 L, its build
 // (u_of_s_build_case/hermite_table_sized/case:<case>/tol:1e-12, one table per iteration, operation
 // table_build; counters table_intervals and evaluations) and its queries (u_of_s_case/..., operation
@@ -42,7 +42,7 @@ namespace al = curvebench::arclength;
 using cb::harness::case_info;
 namespace vocab = cb::harness::vocab;
 
-/// The sized Hermite table's target in the per-case u(s) benchmarks: issue 32's 1e-12 L.
+/// The sized Hermite table's target in the per-case u(s) benchmarks: 1e-12 L.
 constexpr double table_target = 1e-12;
 /// The cases whose u(s) table is timed: at least this many segments, and the one-segment baseline.
 constexpr std::size_t many_segments = 100;

@@ -1,4 +1,4 @@
-// Speed against GSL (issue 15) on the same data, in the same run, so report.py can show each of
+// Speed against GSL on the same data, in the same run, so report.py can show each of
 // ours as a ratio to GSL:
 //   natural_cubic_1d   ours (natural_cubic_spline, Dim 1, power form)   vs gsl_interp_cspline
 //                      (the same interpolant) and gsl_interp_akima (another interpolant a user

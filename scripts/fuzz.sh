@@ -5,7 +5,7 @@
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   default 600 s per target, every target
 # Installs clang and libFuzzer when missing (non-interactive apt-get, as scripts/setup.sh does).
 # Each target starts from its seed corpus: tests/fuzz/seeds/<target>, tests/fuzz/regressions/<target>,
-# bench/cases for the spec target (the regressions hold the extreme values of issue 16: 1e200,
+# bench/cases for the spec target (the regressions hold the extreme values: 1e200,
 # 1e-170, a 1e-300 knot span, far and one-ulp domains, zero length), and inputs larger than
 # libFuzzer's default length limit (JSON nested 100000 levels, a 100 kB string, a CSV header of
 # 20000 columns, SVG elements nested 20000 levels, 2000 paths, path data of 5000 commands) written

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The optional peers (issue 15): installs what they need (Debian packages by name, npm at exact versions, non-interactive)
+# The optional peers: installs what they need (Debian packages by name, npm at exact versions, non-interactive)
 # and runs their drivers on the case suite, writing reports/peers_<driver>.json, which
 # scripts/report.py joins into REPORT.md's Peers section when present. The C++ peers (GSL,
 # Boost.Math, Eigen) need nothing from here: the accuracy runner runs them in every
@@ -205,7 +205,7 @@ run_three() {
                    --tool "$tool" --work "$work/model" --out "$reports/peers_three.json"
 }
 
-# Arc length and point at length in npm libraries (issue 35), on shipped_request.py's request.
+# Arc length and point at length in npm libraries, on shipped_request.py's request.
 run_shipped_node() {
   /usr/bin/python3 "$root/scripts/peers/shipped_request.py" --tool "$tool" --cases "$root/bench/cases" --out "$work/request.json"
   node_driver shipped_node_driver --request "$work/request.json" --out "$work/shipped_node_driver.json"
@@ -235,13 +235,13 @@ run_shipped_browser() {
                    --out "$reports/peers_shipped_browser.json"
 }
 
-# lottie-web's layer position on a spatial Bezier with eased timing, in headless Chromium (issue 35).
+# lottie-web's layer position on a spatial Bezier with eased timing, in headless Chromium.
 run_lottie() {
   /usr/bin/python3 "$root/scripts/peers/lottie_driver.py" --lottie "$node_dir/node_modules/lottie-web" \
                    --tool "$tool" --work "$work" --out "$reports/peers_lottie.json"
 }
 
-# The native peers (issue 36): C++ drivers under bench/peers/, built once into build-peers/native
+# The native peers: C++ drivers under bench/peers/, built once into build-peers/native
 # with the CMake switch of each whose Debian package is installed (the project's compiler flags and
 # ccache). native_tool NAME prints the program's path when it is built.
 native_dir="$root/build-peers/native"
@@ -300,7 +300,7 @@ easing_run() {
                    --cases "$root/bench/cases" --curvebench-dir "$work/curvebench" --out "$reports/peers_$name.json"
 }
 
-# Qt 5 (issue 36): QPainterPath on the shipped request, QEasingCurve on the CSS cases (the channel
+# Qt 5: QPainterPath on the shipped request, QEasingCurve on the CSS cases (the channel
 # solver table, beside the easing peers).
 run_qt() {
   local exe spec specs=()
@@ -315,11 +315,11 @@ run_qt() {
                    "${specs[@]}" --tool "$tool" --out "$reports/peers_qt_tcb.json"
 }
 
-# OpenCASCADE's GCPnts and lib2geom's lengths (issue 36) on the shipped request.
+# OpenCASCADE's GCPnts and lib2geom's lengths on the shipped request.
 run_occt() { shipped_run occt "$(native_tool occt)"; }
 run_lib2geom() { shipped_run lib2geom "$(native_tool lib2geom)"; }
 # fontTools' two cubic length functions, Blender's Spline.calc_length and Follow Path, Godot 3's
-# Curve2D (issue 36) on the same request; Godot's bezier tracks in the channel solver table.
+# Curve2D on the same request; Godot's bezier tracks in the channel solver table.
 run_fonttools() { shipped_run fonttools /usr/bin/python3 "$root/scripts/peers/fonttools_driver.py"; }
 run_blender_length() { shipped_run blender_length /usr/bin/python3 "$root/scripts/peers/blender_length_driver.py"; }
 run_godot() {

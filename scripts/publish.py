@@ -155,7 +155,7 @@ def featured(records, times):
 
 
 def channel_summary(records, bench_rows):
-    """The keyframe-channel figures (issue 12): per time solver its worst value error over the corpus
+    """The keyframe-channel figures: per time solver its worst value error over the corpus
     in double (ulps of the value range, and the case) and float, monotonicity violations, ns per
     value (64 keys, random and sorted, double); curvebench's goal line; per glTF rotation method the
     worst angle error in double. None when the run has no channel records."""
@@ -349,7 +349,7 @@ def render_results(h, plots):
     def fastest(p, t):
         best = p[f"{t:g}"]
         return f"{best['method']} ({fmt(best['ns'])} ns)" if best else "none reached"
-    # A headline.json published before the segment counts and the excluded points (issue 32) renders
+    # A headline.json published before the segment counts and the excluded points renders
     # as it was published: the columns appear when the run's data carry them.
     with_segments = any("segments" in p for p in h["pareto"])
     md.append(table(["case"] + (["segments"] if with_segments else []) + [f"at {t:g}" for t in lib.TARGETS],

@@ -140,7 +140,7 @@ def rotation_rows(records):
 
 
 def goal_line(records):
-    """The curvebench solver's goal (issue 12): <= 4 ulps of the value range in double on the whole
+    """The curvebench solver's goal: <= 4 ulps of the value range in double on the whole
     corpus, no monotonicity violation, faster than every other solver reaching that accuracy."""
     v, case = worst(records, "channel_value", "curvebench", 64)
     if v is None:

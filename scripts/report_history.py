@@ -1,4 +1,4 @@
-"""The history of published runs (issue 34 item 6): docs/results/history.jsonl holds one line per
+"""The history of published runs: docs/results/history.jsonl holds one line per
 published revision, the headline figures of its run; `scripts/bench.sh --publish` (publish.py)
 appends the run it publishes (replacing the line of a revision published again), and the report
 (report.py, REPORT.md's "History" section) tables and plots those figures over the revisions, with

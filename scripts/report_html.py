@@ -1,5 +1,5 @@
 """REPORT.html: the report's Markdown (the lines report.py builds for REPORT.md) rendered as one
-self-contained page (issue 34, item 2).
+self-contained page.
 
 One source, two renderings: report.py builds the Markdown once; this module turns the same lines
 into HTML, so the page can say nothing the Markdown does not. What the page adds:

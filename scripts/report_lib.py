@@ -407,7 +407,7 @@ def segment_counts(acc):
 
 
 def table_per_segments(rows, segments):
-    """u(s) on many segments (issue 32): per case, the Hermite table sized per segment
+    """u(s) on many segments: per case, the Hermite table sized per segment
     (bench_arclength_cases' u_of_s_build_case and u_of_s_case rows): its cells, build time and time
     per query, and the ratio of that time to the one-segment case's of the same run. Returns the
     Markdown lines (none when the run has no such rows)."""
@@ -436,7 +436,7 @@ def table_per_segments(rows, segments):
           "The Hermite table sized per segment to its target (tol, relative to L), per case: its cells, the time "
           "to build it and the time per query (1024 random targets, tables built beforehand), and that time over "
           + (f"the one-segment case {base[0]}'s in the same run." if base else
-             "a one-segment case's (none in this run: no ratio).") + " Issue 32 asks for at most 2 on 1000 segments.",
+             "a one-segment case's (none in this run: no ratio).") + " The target is at most 2 on 1000 segments.",
           ""]
     md.append(table(["case", "segments", "tol", "cells", "build (ms)", "ns per query", "x one segment"], out))
     return md + [""]

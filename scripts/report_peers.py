@@ -1,4 +1,4 @@
-"""The "Peers" section of REPORT.md (issue 15): the libraries users would pick instead of
+"""The "Peers" section of REPORT.md: the libraries users would pick instead of
 curvebench, measured on the same cases against the same 50-digit references, error and time
 beside curvebench's own, and the findings where a peer does not do what its documentation says.
 
@@ -30,7 +30,7 @@ import report_lib as lib
 # An evaluation finding: a peer interpolating the case's own data in double whose values (or
 # derivatives) are this many eps(double) x size away from the exact curve has lost digits to its
 # algorithm, not to rounding: curvebench's default evaluation and GSL's cspline stay below 1 on
-# every case of the suite (quick run of issue 15), and SciPy's CubicSpline below 6.
+# every case of the suite (a quick run), and SciPy's CubicSpline below 6.
 EVAL_FINDING_ULPS = 100.0
 EPS_DOUBLE = 2.0 ** -52
 

@@ -1,4 +1,4 @@
-"""REPORT.md's "Arc length in shipped software" (issue 35): the arc length, point at length and
+"""REPORT.md's "Arc length in shipped software": the arc length, point at length and
 spacing of the SVG engines and JavaScript libraries people's paths actually go through, measured by
 scripts/peers/shipped_results.py against the same 50-digit reference as curvebench's own methods.
 

@@ -1,4 +1,4 @@
-"""The summary at the top of REPORT.md and its table of contents (issue 34, "the answers first").
+"""The summary at the top of REPORT.md and its table of contents ("the answers first").
 
 Built from the run's figures alone, with no name or number written in here:
   - per quantity, kind of curve (the records' "group") and size class (the case's segment count:

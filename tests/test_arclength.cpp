@@ -355,7 +355,7 @@ TEST(arclength, parent_false_positive_and_its_guards) {
   EXPECT_LE(abs(R(looked.value) - length), R(looked.error_estimate));
 }
 
-// Issue 16, bounded work: subdivision's default tolerance is relative to the curve's size (it was
+// Bounded work: subdivision's default tolerance is relative to the curve's size (it was
 // 1e-6 absolute: a curve of size 1e10 asked for 1e-16 relative and ran to depth 40, 2^40 leaves).
 // Scaling a curve by 2^33 (exact in binary) leaves the work unchanged; the result scales.
 TEST(arclength, subdivision_default_tolerance_is_relative_to_the_size) {
@@ -461,7 +461,7 @@ struct scaled_by_power_of_two {
 
 }  // namespace
 
-// Issue 16: with coordinates near 1e200 the squared speed overflowed (length null, status
+// With coordinates near 1e200 the squared speed overflowed (length null, status
 // rounding_limited), near 1e-170 it underflowed (length 0, converged). Every length method must
 // scale exactly: 2^664 ~ 1e200 and 2^-565 ~ 1e-170 make the squares of speeds and chords leave
 // double's range, while the lengths themselves are far inside it.

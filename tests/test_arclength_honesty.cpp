@@ -2,7 +2,7 @@
 // bench/cases/*.json where the accuracy runner (bench/tool/accuracy.cpp) caught them lying or
 // making things worse. The curves are the JSON files' control data, in double; the truth is the
 // 50-digit reference (reference/arc_length.hpp) of the same data converted exactly to real50.
-// The headline property (issue 4): a result whose status is converged has an error estimate >=
+// The headline property: a result whose status is converged has an error estimate >=
 // its true error; a method that cannot guarantee that says not_guaranteed with estimate +inf.
 #include "support/accuracy.hpp"
 #include "support/fixtures.hpp"
@@ -176,7 +176,7 @@ TEST(arclength_honesty, adaptive_gauss_kronrod_on_the_near_cusp_case) {
 
 // A speed zero between two samples of the minimum search: a degree-7 Bezier in 1D whose x' changes
 // sign at 0.971, between the samples at 15/16 and 1 (speeds 1.25 and 1.42, above the search's
-// depth threshold), is an exact cusp of |x'| that nothing split at. Stop 45's hostile sweep:
+// depth threshold), is an exact cusp of |x'| that nothing split at. Found by a hostile sweep:
 // adaptive Gauss-Kronrod at tol 1e-6 reported converged with 4.2e-7 for an error of 9.7e-7. The
 // velocity turning back between the samples (P'.P' < 0) now finds it.
 TEST(arclength_honesty, a_speed_zero_between_the_minimum_search_samples) {
@@ -208,7 +208,7 @@ TEST(arclength_honesty, a_speed_zero_between_the_minimum_search_samples) {
 // of |x'| whose Newton leaves its bracket, so it is kept as a split at the sample itself; x' then
 // changes sign at 0.7178, between that sample and the next, and the turn-back search skipped the
 // interval because a feature "was already found" at its left end. Adaptive Gauss-Kronrod at tol
-// 1e-6 reported converged with 0.127 for an error of 0.604 (stop 46's sweep). The length is the
+// 1e-6 reported converged with 0.127 for an error of 0.604. The length is the
 // total variation of x: mpmath, at 60 digits, from the roots of x' with the parameters j / 6
 // rounded to double as here (804179.455840778844456694718; with exact sixths it differs at 1e-16).
 TEST(arclength_honesty, a_speed_zero_next_to_a_sampled_minimum) {
@@ -244,7 +244,7 @@ TEST(arclength_honesty, a_speed_zero_next_to_a_sampled_minimum) {
 // changes sign at 2.997 in [2, 3]). The minimum search sampled P' at the end from the next segment
 // (an interior breakpoint belongs to the segment on its right), so it neither saw the zero nor the
 // speed falling towards the end: adaptive Gauss-Kronrod at its default tolerance reported 5.0e-12
-// for an error of 2.5e-10 (stop 45's sweep, the data scaled from 1e199 to 1).
+// for an error of 2.5e-10 (the data scaled from 1e199 to 1).
 TEST(arclength_honesty, a_speed_zero_at_the_end_of_an_inner_segment) {
   const std::vector<double> x{-6.700757927128534, -3.158883876802842, 8.66540424361275,   -1.5660329104651136,
                               9.240381668242193,  -8.447590356384088, 1.1615150530674943, 5.781883429807097};
@@ -581,7 +581,7 @@ ref::reference_arc_length<cb::lagrange<R, 2>> reference_of(const cb::lagrange<do
 
 }  // namespace
 
-// Defect 3 (issue 16, the full sweep): the nested 8-point rule on runge_lagrange_chebyshev said
+// Defect 3 (the full sweep): the nested 8-point rule on runge_lagrange_chebyshev said
 // converged with |Q2 - Q4| = 2.8e-4 L against a true error of 1.2e-3 L. The speed sqrt(1 + y'^2)
 // has a shallow minimum at x = 0 (speed 1 against 3.4 at most: not deep enough to split at) whose
 // branch points are at +-i/50, far closer to the real axis than the quarter panels are wide; the
@@ -607,7 +607,7 @@ TEST(arclength_honesty, fixed_gauss_nested_on_a_shallow_minimum_near_a_branch_po
   }
 }
 
-// Defect 4 (issue 16, the full sweep): on runge_lagrange_equispaced the double evaluation of P'
+// Defect 4 (the full sweep): on runge_lagrange_equispaced the double evaluation of P'
 // rounds by up to 3e7 eps (the wiggles' Lebesgue constant), a bias no quadrature or chord estimate
 // sees: adaptive G7-K15 at 1e-14 (cap_hit, estimate 7.8e-14 L, error 2.4e-13 L), subdivision at 1e-7
 // to 1e-9 L (cap_hit, estimates 0.6x to 0.8x of the errors), s(u) from segment lengths and Newton

@@ -47,7 +47,7 @@ using curvebench::harness::check_against;
 // 45 frames past the last key along a handle 0.83 frames long at frame 1e4); 2.5 away from far
 // frames (easing/sine/out, the sine's rounding near its end key); 8 leaves a factor 2.2.
 constexpr double value_tol = 8;
-// The issue's criterion (issue 31): the error relative to the channel's recorded value range; held
+// The fidelity criterion: the error relative to the channel's recorded value range; held
 // by every channel but those far from frame 0 (up to 2.7e-4 at frame 1e4, from Blender's
 // rounding of absolute frames in its handles, above; their frame-0 twins far/0/* hold it).
 constexpr double range_tol = 1e-5;
@@ -168,7 +168,7 @@ void reproduces(const nlohmann::json& doc, const std::set<std::string>& refusals
       const double e = std::abs(*v - blender) / (eps_f * scale);
       const double er = std::abs(*v - blender) / range;
       EXPECT_LE(e, value_tol) << name << " t=" << t << " Blender " << blender << " model " << *v;
-      // Away from far frames the time's rounding carries nothing: the issue's criterion holds.
+      // Away from far frames the time's rounding carries nothing: the fidelity criterion holds.
       if (!far) {
         EXPECT_LE(er, range_tol) << name << " t=" << t << " Blender " << blender << " model " << *v;
       }

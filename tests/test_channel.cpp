@@ -486,7 +486,7 @@ TEST(channel, vertical_tangents_and_zero_length_handles) {
 
 // A key's value is the key's, whatever its handles: out and in handles of dv 1.7e308 and -1.7e308
 // make the controls' second difference -3.4e308, past double's range, and the polynomial form met
-// 0 x inf at w = 0 and gave NaN at the key (issue 33's hostile sweep). Inside the segment double
+// 0 x inf at w = 0 and gave NaN at the key (found by a hostile sweep). Inside the segment double
 // still overflows in the intermediate terms (the 50-digit channel does not: sample prints its
 // truth; sample --as-tool says the tool's own evaluation overflows).
 TEST(channel, a_key_with_handles_near_the_range_keeps_its_value) {

@@ -116,7 +116,7 @@ TEST(channel_sweep, every_solver_in_both_precisions_with_vocabulary_ids) {
 
 TEST(channel_sweep, the_measure_sees_a_coarse_solver_and_passes_an_accurate_one) {
   const auto m = channel_records(run_bold_s());
-  // Issue 12's goal for curvebench's solver: within 4 ulps of the value range in double, monotone.
+  // The goal for curvebench's solver: within 4 ulps of the value range in double, monotone.
   EXPECT_LE(m.at("channel_value/curvebench/bits=64")["error"].get<double>(), 4);
   EXPECT_LE(m.at("channel_value/exact/bits=64")["error"].get<double>(), 4);
   EXPECT_EQ(m.at("channel_monotone/curvebench/bits=64")["error"].get<double>(), 0);

@@ -204,7 +204,7 @@ TEST(ChannelTools, KeysAToolCannotHoldAreRefusedWithTheReason) {
 }
 
 // Blender holds F-curves in float32: a finite double past float's range is refused naming the key's
-// field (before stop 48 it became inf, reported as "keys[0].value = inf: must be finite"); in double
+// field (it used to become inf, reported as "keys[0].value = inf: must be finite"); in double
 // the same keys are held.
 TEST(ChannelTools, BlenderRefusesKeysPastFloatRangeNamingTheField) {
   auto big = keys_at(0.4);

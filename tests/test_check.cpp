@@ -268,7 +268,7 @@ TEST(check, bad_columns_and_parameters_name_file_row_column_and_value) {
   EXPECT_THAT(msg("x,y\n0,0\n"), HasSubstr("no column u"));
 }
 
-// A fuzz finding of issue 16: the check core echoed every column name of a header in full (a 100 kB
+// A fuzz finding: the check core echoed every column name of a header in full (a 100 kB
 // name, or 20000 names, became a message of that size). Names are cut at 40 characters, lists at 12.
 TEST(check, column_errors_are_bounded_however_long_the_header) {
   const spec_doc s(arch);
@@ -324,7 +324,7 @@ TEST(check, lengths_against_the_polylines_exact_segments) {
 }
 
 // A claimed length of 1e300 is an error of 9.1e298 of L: its RMS is a number, not an overflowed
-// square (the sweep of stop 44 found `rms inf`, null in JSON, with exit 0).
+// square (a sweep found `rms inf`, null in JSON, with exit 0).
 TEST(check, the_rms_of_huge_errors_does_not_overflow) {
   const spec_doc s(bent);
   const check_result r = run_check(s.f, check_kind::lengths, parse_csv("u0,u1,length\n0,2,1e300\n0,2,11\n", "l.csv"));

@@ -47,7 +47,7 @@ json clean_results() {
 
 TEST(gate, passes_clean_results) { EXPECT_TRUE(check_gate(clean_results(), thresholds()).empty()); }
 
-// A record's "reason" (issue 32: why a status is not converged) is read by no rule: results with it,
+// A record's "reason" (why a status is not converged) is read by no rule: results with it,
 // text or null, or without it, or with a value of another type, are judged the same.
 TEST(gate, ignores_the_reason_of_a_record) {
   for (const json& reason : {json("table: chord sums' ratio outside [3, 6]"), json(), json(3), json::array()}) {
@@ -176,7 +176,7 @@ TEST(gate, the_full_sweep_gate_is_honesty_on_every_record) {
     auto breaches = check_gate(r, t, "results", "reports/thresholds_full.json");
     ASSERT_EQ(breaches.size(), 1u);
     EXPECT_THAT(breaches[0].message, HasSubstr("not honest"));
-    // An estimate below its error breaches whatever the file's "bounded" says (stop 47's sweep: a
+    // An estimate below its error breaches whatever the file's "bounded" says (formerly a
     // record claiming true beside an estimate 1e-30 and an error 1 passed).
     r["records"][i]["bounded"] = true;
     r["records"][i]["estimate"] = 1e-4;
@@ -186,7 +186,7 @@ TEST(gate, the_full_sweep_gate_is_honesty_on_every_record) {
   }
 }
 
-// ---- malformed files (issue 16): a typo must not switch the gate off -------------------------
+// ---- malformed files: a typo must not switch the gate off ------------------------------------
 
 namespace {
 /// The message of the invalid_input check_gate throws for these files, or "accepted".

@@ -324,7 +324,7 @@ TEST(run_case, records_use_vocabulary_ids_declared_settings_and_result_statuses)
     }
     EXPECT_EQ(keys, m->settings) << "every declared key, in order";
     EXPECT_TRUE(r["error"].is_number());
-    // Issue 32: a length record that is not converged names why (arclength/result.hpp's reason as
+    // A length record that is not converged names why (arclength/result.hpp's reason as
     // text); a converged one has null. (composite_gauss is never converged: the quick sweep has it.)
     if (q == hv::quantities::length.id) {
       if (status == "converged") {

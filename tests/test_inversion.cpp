@@ -307,7 +307,7 @@ TEST(inversion, table_methods_need_a_table_and_report_status) {
 }
 
 // A winding road through 1001 points (turning at random by up to 0.6 rad per key, steps of 0.5 to
-// 3): the centripetal Catmull-Rom of issue 32, in Real.
+// 3): the many-segment centripetal Catmull-Rom, in Real.
 template <class Real>
 cb::cardinal_spline<Real, 2> road(int keys) {
   cb::point_list<Real, 2> pts;
@@ -329,7 +329,7 @@ cb::cardinal_spline<Real, 2> road(int keys) {
   return cb::cardinal_spline<Real, 2>(pts, o);
 }
 
-// The sized tables of the many-segment tests: Hermite to issue 32's 1e-12 L, linear to 1e-8 L.
+// The sized tables of the many-segment tests: Hermite to 1e-12 L, linear to 1e-8 L.
 al::parameterization<cb::cardinal_spline<double, 2>> sized_table(const cb::cardinal_spline<double, 2>& c,
                                                                  al::inversion_method method) {
   al::parameterization_options<double> o;
@@ -338,9 +338,9 @@ al::parameterization<cb::cardinal_spline<double, 2>> sized_table(const cb::cardi
   return al::parameterization<cb::cardinal_spline<double, 2>>(c, o);
 }
 
-// Issue 32: on 1000 segments a table whose size was global stalled (M = 16 to 256: 7e-7 L; the
+// On 1000 segments a table whose size was global stalled (M = 16 to 256: 7e-7 L; the
 // automatic size stopped at its cap of 65536 cells, 2.2e-10 L). Sized per segment, best first, the
-// Hermite table reaches the issue's 1e-12 L, its measured error bounds the 50-digit error at 400
+// Hermite table reaches the target of 1e-12 L, its measured error bounds the 50-digit error at 400
 // targets (a quarter of them next to knots), and the linear table reaches 1e-8 L the same way.
 // Tolerances: the table's own bound plus its nodes' Newton tolerance (newton_tolerance_eps eps L),
 // as the round-trip tests take it.
@@ -373,7 +373,7 @@ TEST(inversion, many_segment_tables_are_sized_per_segment) {
   }
 }
 
-// Issue 32 item 5: on a table of many segments the query reads two copies of cells chosen by the
+// On a table of many segments the query reads two copies of cells chosen by the
 // bucket of s and checks that the one it takes holds s, falling back to bisection where a bucket
 // meets more than two cells. A road of 300 unit steps with one step of 1e-3 and a bump: its cells
 // range from 3e-2 to 8e-6 wide (the segments next to the short step are refined far more than the
@@ -423,7 +423,7 @@ TEST(inversion, table_lookup_finds_the_cell_of_every_s_on_unequal_cells) {
   }
 }
 
-// Issue 16, bounded work: the table's construction budget. At 4000 evaluations the smooth cubic
+// Bounded work: the table's construction budget. At 4000 evaluations the smooth cubic
 // (16 nodes ~ 700 evaluations, 32 nodes ~ 1300) affords one doubling but not the next: the table
 // stops measured, cap_hit, its error bound finite, and every u(s) is within that bound plus the
 // Newton tolerance of its nodes (the bound the round-trip suite uses), checked against 50 digits.
@@ -436,7 +436,7 @@ TEST(inversion, table_construction_budget_ends_in_cap_hit_with_an_honest_bound) 
   o.max_evaluations = 4000;
   const al::parameterization<poly2<double>> capped(c, o);
   EXPECT_EQ(capped.table_status(), al::result_status::cap_hit);
-  // Issue 32: the reason names the cap and the segment with the worst measured error (the only one).
+  // The reason names the cap and the segment with the worst measured error (the only one).
   EXPECT_EQ(capped.table_reason().what, al::reasons::table_cap);
   EXPECT_EQ(capped.table_reason().segment, 0u);
   EXPECT_LT(capped.table_intervals(), full.table_intervals());
@@ -453,7 +453,7 @@ TEST(inversion, table_construction_budget_ends_in_cap_hit_with_an_honest_bound) 
   EXPECT_LE(worst, bound) << "the table's bound does not cover its error";
   EXPECT_GT(worst, R(full.table_error()));  // the capped table is coarser than the full one
   // Smaller budgets: each table is measured (a finite bound that covers its error) or says it has
-  // no bound. (The size is per segment since stop 49: even at 60 evaluations one cell, halved once
+  // no bound. (The size is per segment: even at 60 evaluations one cell, halved once
   // with a node given min_node_evaluations, is measured.)
   for (std::size_t budget : {60u, 100u, 150u, 200u, 300u}) {
     o.max_evaluations = budget;
@@ -495,7 +495,7 @@ TEST(inversion, newton_budget_ends_in_cap_hit_with_an_honest_bound) {
     const double s = seg.length() * k / 8;
     const auto inv = al::newton_invert(c, seg, s, opt);
     EXPECT_EQ(inv.status, al::result_status::cap_hit) << "s = " << s;
-    EXPECT_EQ(inv.reason.what, al::reasons::newton_cap) << "s = " << s;  // issue 32: it says why
+    EXPECT_EQ(inv.reason.what, al::reasons::newton_cap) << "s = " << s;  // it says why
     EXPECT_LE(inv.evaluations, opt.max_evaluations + 31u);               // the first panel of a call is always computed
     ASSERT_TRUE(std::isfinite(inv.s_error_estimate));
     EXPECT_LE(abs(r.s(R(inv.u)) - R(s)), R(inv.s_error_estimate)) << "s = " << s;
@@ -587,7 +587,7 @@ TEST(inversion, length_prefix_bounds_hold_and_newton_from_it_converges) {
     const double s = seg.length() * k / 8;
     const auto inv = al::newton_invert(c, seg, s, starved);
     EXPECT_EQ(inv.status, al::result_status::cap_hit) << "s = " << s;
-    EXPECT_EQ(inv.reason.what, al::reasons::newton_cap) << "s = " << s;  // issue 32: it says why
+    EXPECT_EQ(inv.reason.what, al::reasons::newton_cap) << "s = " << s;  // it says why
     ASSERT_TRUE(std::isfinite(inv.s_error_estimate));
     EXPECT_LE(abs(r.s(R(inv.u)) - R(s)), R(inv.s_error_estimate)) << "s = " << s;
   }

@@ -59,7 +59,7 @@ TEST(io_json, errors_name_the_field_and_what_is_expected) {
             "spec.points[1]: expected an array of 2 numbers, got [3]");
   EXPECT_THAT(error_of([] { (void)io::parse("{\"points\": [1, 2", "case.json"); }),
               HasSubstr("case.json: not valid JSON"));
-  // A number beyond double's range is named by its path, as written (issue 16: it was a syntax
+  // A number beyond double's range is named by its path, as written (it was a syntax
   // error of the whole file, or an inf later echoed as null).
   EXPECT_EQ(error_of([] { (void)io::parse("{\"x\": [0, 1e999]}", "case.json"); }),
             "case.json.x[1]: the number 1e999 is beyond double's range (magnitudes up to about 1.8e308)");
@@ -70,7 +70,7 @@ TEST(io_json, spec_error_is_an_invalid_input) {
   EXPECT_THROW((void)io::root(j).member("points").point_dimension(), curvebench::invalid_input);
 }
 
-// Issue 33 item 5: a UTF-8 byte order mark was refused with the invisible character in the message.
+// A UTF-8 byte order mark was refused with the invisible character in the message.
 TEST(io_json, a_utf8_byte_order_mark_is_skipped) {
   const auto j = io::parse("\xEF\xBB\xBF{\"type\": \"bezier\"}", "bom.json");
   EXPECT_EQ(j["type"], "bezier");
@@ -78,7 +78,7 @@ TEST(io_json, a_utf8_byte_order_mark_is_skipped) {
   EXPECT_THROW((void)io::parse("{\"type\": \"bezier\"}\xEF\xBB\xBF", "bom.json"), curvebench::invalid_input);
 }
 
-// ---- hostile input (issue 16) ----------------------------------------------------------------
+// ---- hostile input ---------------------------------------------------------------------------
 
 namespace {
 /// `levels` arrays nested in one another, closed: valid JSON of that depth.

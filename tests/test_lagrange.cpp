@@ -371,7 +371,7 @@ TEST(lagrange, bad_input_is_rejected_with_a_clear_message) {
   EXPECT_THAT(message_of([&] { cb::lagrange<float, 1> c(y3, huge, cb::lagrange_algorithm::monomial); }),
               HasSubstr("is not finite (the Vandermonde system is too ill-conditioned for this Real)"));
   EXPECT_NO_THROW((cb::lagrange<float, 1>(y3, huge)));  // the barycentric form copes
-  // Issue 16: the point count is checked against the algorithm's limit before any work (1e5
+  // The point count is checked against the algorithm's limit before any work (1e5
   // monomial nodes threw a bare std::bad_alloc for an 80 GB matrix).
   const cb::point_list<double, 1> over(cb::max_monomial_points + 1, cb::point<double, 1>(1.0));
   EXPECT_EQ(message_of([&] { cb::lagrange<double, 1> c(over, cb::lagrange_algorithm::monomial); }),

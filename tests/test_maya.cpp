@@ -614,7 +614,7 @@ double worst_against_truth(ch::time_solver solver, double bound, bool check, con
   return worst;
 }
 
-// Cycle pre-infinity at whole periods before the first key (issue 31, measured with Autodesk
+// Cycle pre-infinity at whole periods before the first key (measured with Autodesk
 // AnimX built with 64-bit time on curves keyed on whole frames): Maya takes the last key's value
 // there, the end of the previous repeat; just after that time the repeat's start, the first
 // key's. Post-infinity and cycle_relative (continuous there) agree with the channel's rule. The

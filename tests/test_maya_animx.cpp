@@ -39,7 +39,7 @@ namespace {
 //    slope and a few eps of V; the model wraps with the same ratio and offsets (maya.hpp), and
 //    snaps to a key where AnimX's tick rounding does, so the side of a period boundary agrees.
 // Summed without cancellation that is about 16 eps of S; the bound is 32, twice that, for the
-// terms not counted (the root isolation's last bits). The issue that asked for this check (31)
+// terms not counted (the root isolation's last bits). The first comparison with AnimX
 // measured agreeing curves at 1.5e-14 of the range, about 70 eps of it. Measured worst over the
 // 112 recorded curves: 7.5 eps (linear infinity and auto tangents); the test prints it per feature.
 constexpr double tolerance_eps = 32;

@@ -345,7 +345,7 @@ TEST(reference, ill_conditioned_runge_interpolant_costs_thousands_not_millions_o
 
 // A conic of weight w moves its whole length within about 1/w of the parameter's ends: at w = 1e6
 // every node of a G30-K61 panel on [0, 1/2] misses the burst, both rules agree on almost nothing,
-// and the estimate said converged (the reference gave L = 1.41 for 2.83: sweep of issue 33). The
+// and the estimate said converged (the reference gave L = 1.41 for 2.83). The
 // chord check (arc >= chord) sends such panels on bisecting. Independent truth: the inscribed
 // polygon through P(m(i / N)), m(v) = 10 v^3 - 15 v^4 + 6 v^5 clustering the nodes at both ends
 // (the burst at w = 1e6 is ~5e-3 wide in v), Richardson-extrapolated from N = 4096 and 8192 (the
@@ -378,7 +378,7 @@ TEST(reference, a_burst_of_speed_narrower_than_the_nodes_is_found_by_the_chord) 
 }
 
 // A 1D curve's length is its total variation: the sum of |x(r_j+1) - x(r_j)| between the zeros r_j
-// of x' (closed form: x' is a quadratic per segment). This 1D Hermite spline (the sweep of issue 33)
+// of x' (closed form: x' is a quadratic per segment). This 1D Hermite spline (found by a sweep)
 // has end slopes 1e-6 of its chords, so x' vanishes about 1e-7 of a segment from each knot: inside
 // the first and last sampling intervals, where no sampled minimum brackets it, and at the middle
 // knot the next segment's P' was sampled. The reference missed those cusps: 27.010441700892218

@@ -12,7 +12,7 @@
 //   - for the other families, looseness only where their rounding is visible (data shifted far from
 //     the origin): bound <= 1000 x the largest error seen (see each test's measured ratios);
 //   - looseness: bound <= 1000 x the largest error seen, on the ill-conditioned cases (Runge through
-//     equispaced nodes, a degree-20 Bezier), which issue 16 asks for: a bound a thousand times the
+//     equispaced nodes, a degree-20 Bezier), which suffices: a bound a thousand times the
 //     error still adds only ~1e3 eps of the curve's size to an estimate. Measured (this machine):
 //     see each test's comment.
 #include "support/accuracy.hpp"
@@ -468,7 +468,7 @@ TEST(rounding_bound, zero_length_conic) {
 // A domain far from 0: each quadrature node u is placed within eps |u| of where its rule puts it,
 // which on [1e15, 1e15 + 1e5] is 1e-6 of the curve. The Gauss and Kronrod values share those nodes,
 // so their difference does not show it; adaptive_length returned an estimate of 8.3e-8 for an error
-// of 6.4e-7 here (issue 33's hostile sweep). Every bounded estimate of every length method must
+// of 6.4e-7 here (found by a hostile sweep). Every bounded estimate of every length method must
 // cover its error against the 50-digit length of the same curve (no margin: it is a bound).
 TEST(rounding_bound, far_domain_length_estimates_hold) {
   const std::vector<pt2<double>> cps{{0, 0}, {1, 2}, {3, 2}, {4, 0}};
@@ -504,7 +504,7 @@ TEST(rounding_bound, far_domain_length_estimates_hold) {
 
 // Speeds in the subnormal range: coordinates of 1e-21 over a domain of width 1e294 give |P'| ~
 // 1e-315, rounded to an absolute denorm_min / 2 per operation, which the curves' relative bounds
-// do not hold. Stop 45's sweep: adaptive_gk at tol 1e-6 said converged with 5.6e-28 for an error
+// do not hold. Found by a sweep: adaptive_gk at tol 1e-6 said converged with 5.6e-28 for an error
 // of 1.3e-27. underflow_floor (core/curve.hpp) makes every bounded estimate cover it.
 TEST(rounding_bound, subnormal_speeds_are_bounded) {
   const std::vector<double> x{2.813333840141927e-21, 8.195890247332922e-21, -8.219377760162278e-21,

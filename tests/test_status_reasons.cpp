@@ -1,4 +1,4 @@
-// Issue 32, item 2: every result of the arc-length length methods that is not converged names why
+// Every result of the arc-length length methods that is not converged names why
 // (arclength/result.hpp's status_reason: the failed bound or the cap, the segment and interval where
 // the method knows them, the quantity against its bound), and the nested Gauss rule keeps its bound
 // on many-segment splines by halving a piece that fails its order test (arclength/length.hpp).
@@ -360,7 +360,7 @@ TEST(status_reasons, every_method_names_every_status) {
   EXPECT_GT(named, 100);  // the walk does reach the statuses it checks
 }
 
-// The nested rule on many segments (issue 32): on the road, pieces fail the order test by being
+// The nested rule on many segments: on the road, pieces fail the order test by being
 // pre-asymptotic (observed ratios 8 to 13 where 16 is asked), and one such piece left the whole
 // length without a bound. Each is now halved and tried again, so the result is converged, and its
 // estimate must bound the error. The reference is adaptive Gauss-Kronrod (a different rule: G7-K15
@@ -406,7 +406,7 @@ TEST(status_reasons, nested_gauss_keeps_its_bound_on_many_segments) {
     }
 }
 
-// Issue 32's capped subdivision on many segments: with a tolerance it cannot reach within its budget
+// Capped subdivision on many segments: with a tolerance it cannot reach within its budget
 // it refines the piece with the largest bound first, so the capped result still carries a finite
 // bound, and that bound holds against adaptive Gauss-Kronrod at 1e-14 (its own estimate added).
 TEST(status_reasons, capped_subdivision_on_many_segments_is_within_its_bound) {

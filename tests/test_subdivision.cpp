@@ -1,9 +1,9 @@
-// Adaptive subdivision's error bound and its budget (issue 33 item 0, issue 32 item 3), and the
+// Adaptive subdivision's error bound and its budget, and the
 // honesty of every length method on curves whose speed spans many orders of magnitude.
 //
 // The family: the clamped natural cubic through (0,0,0), (1,2,1), (3,2,1) on knots 0, 1, 2 with
 // start slope (2,2,5) and end slope (k,1,0). For large k both segments swing out to ~k/4 in x and
-// turn in a hairpin whose speed falls from ~k to ~1. k = 77777771 is the input of issue 33, where
+// turn in a hairpin whose speed falls from ~k to ~1. k = 77777771 is the input scripts/fuzz.sh found, where
 // Parent's chord test said converged with an estimate of 0.0021 for an error of 656: the chords of
 // the halves and quarters of a piece across the tip agree while the tip is missed.
 // The truth is the 50-digit reference (reference/arc_length.hpp, Boost.Math's quadrature of the
@@ -115,7 +115,7 @@ const std::vector<double>& slopes() {
 
 }  // namespace
 
-// Issue 33, item 0: the input found by scripts/fuzz.sh (bench/cases/steep_end_slope_hairpin.json and
+// The input found by scripts/fuzz.sh (bench/cases/steep_end_slope_hairpin.json and
 // tests/fuzz/regressions/spec/steep_end_slope_hairpin.json hold the same spec). Before: 31965740.387
 // converged with estimate 0.0021 at 1e-6 (error 656), converged at 1e-4 and 1e-8 too, and cap_hit
 // with a finite estimate of 13 at the default target.
@@ -137,7 +137,7 @@ TEST(subdivision, issue_33_steep_end_slope_is_bounded) {
   EXPECT_TRUE(bounds(d, t));
 }
 
-// Issue 33, item 0: subdivision on the whole family, from its coarse targets to below its rounding
+// Subdivision on the whole family, from its coarse targets to below its rounding
 // floor: every estimate (converged, cap_hit or rounding_limited) bounds the error.
 TEST(subdivision, steep_end_slope_family_estimates_bound_the_error) {
   for (const double k : slopes()) {
@@ -161,7 +161,7 @@ TEST(subdivision, steep_end_slope_family_estimates_bound_the_error) {
   }
 }
 
-// Issue 33, item 0: every other length method on the same family. None of them lied here when this
+// Every other length method on the same family. None of them lied here when this
 // test was written (run with every setting below); it keeps them so.
 TEST(subdivision, steep_end_slope_family_other_methods_bound_the_error) {
   for (const double k : slopes()) {
@@ -188,7 +188,7 @@ TEST(subdivision, steep_end_slope_family_other_methods_bound_the_error) {
   }
 }
 
-// Issue 32, item 3: under a budget the piece with the largest bound is halved first, so a capped
+// Under a budget the piece with the largest bound is halved first, so a capped
 // result carries a finite bound, and the budget is never exceeded (every evaluation counted).
 TEST(subdivision, capped_runs_keep_a_finite_bound_within_the_budget) {
   const auto plain = steep_end<double>(77777771);
@@ -225,7 +225,7 @@ TEST(subdivision, capped_runs_keep_a_finite_bound_within_the_budget) {
   EXPECT_TRUE(std::isinf(r.error_estimate));
 }
 
-// Issue 32, item 3: best first spends a budget where the bound is. Uniform refinement (every piece
+// Best first spends a budget where the bound is. Uniform refinement (every piece
 // halved to min_depth, what a breadth-first or depth-first order reaches at best with the same
 // evaluations) is compared with the best-first run given exactly the evaluations the uniform one
 // used: its bound is at most the uniform one's, and on the hairpin, where the error sits in two
@@ -327,7 +327,7 @@ void expect_every_method_bounds(const C& c, const truth& t, const std::string& w
 
 }  // namespace
 
-// scripts/fuzz.sh (stop 47) found subdivision saying 123.2527 converged with an estimate of 1.2e-10
+// scripts/fuzz.sh found subdivision saying 123.2527 converged with an estimate of 1.2e-10
 // on two linear segments (0,0)-(6,1) and (65,5)-(7,3), whose length is sqrt(37) + sqrt(3368) =
 // 64.1172: its first bracket ran to the next segment's start. Forward differences counted the same
 // jump (value 123.2526, not_guaranteed by chance of its turn check).

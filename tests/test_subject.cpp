@@ -204,7 +204,7 @@ TEST(Subject, BadSubjectsAreNamed) {
 }
 
 // An inverse answer outside the domain is the subject's error, measured and recorded with a
-// finding naming it (issue 30: one float ulp past the end aborted the whole measurement and
+// finding naming it (one float ulp past the end aborted the whole measurement and
 // recorded nothing). Beyond the end u = 2 by d the row is measured as (|s(2) - s| + 6 d) / L, the
 // polyline's last segment having speed 6 and L = 11.
 TEST(Subject, InverseOutsideTheDomainIsAFindingNotAnAbort) {
@@ -229,7 +229,7 @@ TEST(Subject, InverseOutsideTheDomainIsAFindingNotAnAbort) {
 
 }  // namespace
 
-// A channel subject (issue 30): a keyframe channel checked by time through the subject API. The
+// A channel subject: a keyframe channel checked by time through the subject API. The
 // channel is linear from (0, 0) to (10, 5), held constant outside, so its value is
 // clamp(t, 0, 10) / 2 in closed form; halving in double is exact, so the exact subject's records
 // are 0 and a subject off by 2^-30 past t = 5 (and one slope off by 1/4) is reported at exactly

@@ -539,7 +539,7 @@ TEST(usd_accuracy, float_model_against_the_exact_twin) {
   EXPECT_LE(worst, model_float_bound);
 }
 
-// Issue 33 item 2: the loop counts are capped one by one (1e5), their product with the prototype
+// The loop counts are capped one by one (1e5), their product with the prototype
 // here, before anything is copied: 200 prototype knots looped 1e5 times each way would be 4e7 knots.
 TEST(usd_validation, inner_loops_are_capped_by_the_knots_they_bake) {
   ch::usd_spline<double> s;

@@ -1,6 +1,6 @@
-// The tool's input reader (harness/files.hpp, issue 33 item 2): every input file is read in chunks
+// The tool's input reader (harness/files.hpp): every input file is read in chunks
 // up to a limit, so an endless device or a huge file is refused with its size named.
-// The tool's output files (harness/writers.hpp, issue 33 item 1): results are written only to a
+// The tool's output files (harness/writers.hpp): results are written only to a
 // regular file or a new path, through a temporary file created exclusively beside it and renamed;
 // a directory, a symbolic link, a FIFO or a device is refused by name and left as it was. Before
 // this, `accuracy --out /dev/full` (as root) replaced the device with a 60 kB regular file.

@@ -5,7 +5,7 @@
 // Quantities (all errors relative to the case's reference length L, except "eval"):
 //   length   |L_method - L| / L
 //   s_of_u   max over parameters u_j of |s_method(u_j) - s(u_j)| / L
-//   u_of_s   max over targets s_j of |s(u_method(s_j)) - s_j| / L   (the |ds| measure of issue 4)
+//   u_of_s   max over targets s_j of |s(u_method(s_j)) - s_j| / L   (the |ds| measure)
 //   eval     max over parameters of |P_method(u) - P(u)|_inf / (eps(double) * scale), the
 //            evaluation error of each algorithm in units of double's epsilon times the curve's size
 //   channel_value, channel_keys, channel_monotone, channel_time   (cases of type "channel" only) a
@@ -20,7 +20,7 @@
 // query plus the set-up (tables, segment lengths) amortized over `amortized_queries` queries.
 // The reference is the same spec instantiated on real50 (exact twin of the double data) and
 // integrated by reference::reference_arc_length (Boost.Math, ~1e-45).
-// Peers (issue 15): the libraries users would pick instead (GSL's splines and QUADPACK, today) are
+// Peers: the libraries users would pick instead (GSL's splines and QUADPACK, today) are
 // run on every case they can represent by harness/sweep_peers.cpp and measured against the same
 // reference; their records go to "peer_records" (the record format plus "peer": true, "library",
 // "peer_status", the time per operation of the peer and of its curvebench "counterpart"), kept

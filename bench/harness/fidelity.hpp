@@ -1,4 +1,4 @@
-// Fidelity of the tool models (issue 31): how many channels recorded from the real tools (Blender,
+// Fidelity of the tool models: how many channels recorded from the real tools (Blender,
 // Autodesk AnimX for Maya, OpenUSD's Ts) each model reproduces, and to what error.
 //
 // A recording (tests/data/*.json, written by the drivers under scripts/peers/) is

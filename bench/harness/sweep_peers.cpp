@@ -1,4 +1,4 @@
-// The peer sweep (issue 15): the libraries users would pick instead of curvebench, run on the
+// The peer sweep: the libraries users would pick instead of curvebench, run on the
 // case's own data and measured against the same 50-digit reference (case_reference) as
 // curvebench's methods, so that their records and ours compare directly.
 //

@@ -1,4 +1,4 @@
-// The Boost.Math and Eigen peers of the accuracy runner (issue 15), the libraries the speed tables
+// The Boost.Math and Eigen peers of the accuracy runner, the libraries the speed tables
 // already time, now measured against the same 50-digit reference as curvebench's methods on every
 // case they can represent. Called by sweep_peers (harness/sweep_peers.cpp) for each case.
 //

@@ -163,7 +163,7 @@ inline constexpr peer eigen_spline_dynamic_degree{"peer_eigen_spline_dynamic_deg
                                                   "Spline<double, 3, Dynamic>"};
 inline constexpr peer bisection_reintegration{"peer_bisection_full_reintegration", "common practice",
                                               "u(s) by bisection on s(u) re-integrated from u0 (16-point Gauss)"};
-// GSL (issue 15): gsl_spline per coordinate on the spline's knots, and QUADPACK's adaptive
+// GSL: gsl_spline per coordinate on the spline's knots, and QUADPACK's adaptive
 // Gauss-Kronrod integrating the speed |P'(u)| over the whole domain (epsabs 0, epsrel = tol).
 inline constexpr peer gsl_cspline{"peer_gsl_cspline", "GSL", "gsl_spline, gsl_interp_cspline (natural cubic spline)"};
 inline constexpr peer gsl_cspline_periodic{"peer_gsl_cspline_periodic", "GSL",
@@ -180,7 +180,7 @@ inline constexpr peer gsl_qag_brent{"peer_gsl_qag_brent", "GSL",
                                     "u(s): gsl_root_fsolver_brent on s(u) - s, each s(u) a gsl_integration_qag "
                                     "(15-point Gauss-Kronrod) from the domain's start, epsrel = tol, until "
                                     "|s(u) - s| <= tol L"};
-// SciPy (issue 15; optional: scripts/peers.sh runs scripts/peers/scipy_driver.py, curvebench check
+// SciPy (optional: scripts/peers.sh runs scripts/peers/scipy_driver.py, curvebench check
 // measures it, the records come from reports/peers_scipy.json).
 inline constexpr peer scipy_cubic_spline{"peer_scipy_cubic_spline", "SciPy",
                                          "scipy.interpolate.CubicSpline (natural, clamped, not-a-knot, periodic)"};
@@ -193,7 +193,7 @@ inline constexpr peer scipy_quad{"peer_scipy_quad", "SciPy",
 inline constexpr peer scipy_quad_brentq{"peer_scipy_quad_brentq", "SciPy",
                                         "u(s): scipy.optimize.brentq on s(u) - s, each s(u) a scipy.integrate.quad "
                                         "from the domain's start (epsabs 0, epsrel = tol), xtol = tol x the domain"};
-// JavaScript easing evaluators (issue 15; optional: scripts/peers.sh runs
+// JavaScript easing evaluators (optional: scripts/peers.sh runs
 // scripts/peers/easing_driver.mjs on the CSS cubic-bezier cases, npm versions pinned).
 inline constexpr peer bezier_easing_3{"peer_bezier_easing_3", "bezier-easing",
                                       "bezier-easing 3.2.0: cubic-bezier easing, x(t) = x solved in closed form"};
@@ -218,7 +218,7 @@ inline constexpr peer blender_fcurve{"peer_blender_fcurve", "Blender",
 // loaded as GLBs by its GLTFLoader, evaluated by the animation track's interpolant (float32).
 inline constexpr peer three_gltf{"peer_three_gltf", "three",
                                  "three 0.187.0: GLTFLoader's animation track, track.createInterpolant().evaluate(t)"};
-// Arc length and point at length in shipped software (issue 35; optional: scripts/peers.sh runs
+// Arc length and point at length in shipped software (optional: scripts/peers.sh runs
 // scripts/peers/shipped_browser_driver.py and shipped_node_driver.mjs on shipped_request.py's
 // request, `curvebench check --at-length` measures them into reports/peers_shipped_*.json).
 inline constexpr peer chromium_path{"peer_chromium_path", "Chromium",
@@ -257,7 +257,7 @@ inline constexpr peer three_catmull_rom{
     "peer_three_catmull_rom", "three",
     "three: CatmullRomCurve3 (uniform, centripetal, chordal) getLength, getPointAt, "
     "getUtoTmapping, getSpacedPoints and getPoint"};
-// Native arc-length peers (issue 36; optional: bench/peers/<peer> under CURVEBENCH_PEER_*, run by
+// Native arc-length peers (optional: bench/peers/<peer> under CURVEBENCH_PEER_*, run by
 // scripts/peers.sh on the shipped request and measured the same way).
 inline constexpr peer qt_painterpath{"peer_qt_painterpath", "Qt",
                                      "Qt 5 (Debian): QPainterPath length, percentAtLength + pointAtPercent (absolute "

@@ -465,7 +465,7 @@ int run(int argc, char** argv) {
   gate->footer(tool::example("curvebench gate --results reports/accuracy.json --thresholds reports/thresholds.json"));
 
   // An empty value refused by every option that takes one, naming it: `--ease ''` ran as linear,
-  // `--threads ''` on all cores, `check --name ''` wrote records of method "" (stop 47's sweep). The
+  // `--threads ''` on all cores, `check --name ''` wrote records of method "" (found by a sweep). The
   // validator has no name, so the help's types stay as they are.
   const CLI::Validator given(
       [](std::string& text) { return text.empty() ? std::string("an empty value") : std::string(); }, "");

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Real Blender as a keyframe-channel peer (issues 12 and 15): the suite's channel cases that a
+"""Real Blender as a keyframe-channel peer: the suite's channel cases that a
 Blender F-curve can hold, evaluated by Blender itself (scripts/peers/blender_fcurves.py run by
 `blender -b`), beside curvebench's Blender model of the same keys and a 50-digit evaluation of the
 keys Blender ended up with, into reports/peers_blender.json (REPORT.md's Peers section).

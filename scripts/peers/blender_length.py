@@ -1,4 +1,4 @@
-"""Run inside Blender by scripts/peers/blender_length_driver.py (issue 36): Spline.calc_length() and the
+"""Run inside Blender by scripts/peers/blender_length_driver.py: Spline.calc_length() and the
 Follow Path position of Bezier curve objects built from the driver's input, written as JSON.
 
   blender -b --factory-startup --python scripts/peers/blender_length.py -- IN.json OUT.json

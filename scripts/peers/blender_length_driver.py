@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Arc length and the point at arc length as Blender's curve objects compute them (issue 36):
+"""Arc length and the point at arc length as Blender's curve objects compute them:
 Spline.calc_length() and the Follow Path constraint on Bezier curves built from the cases of a
 shipped-peer request, written as JSON (format curvebench-shipped-driver-1) for
 scripts/peers/shipped_results.py to measure.
@@ -12,7 +12,7 @@ blender 3.4) once for all cases, under a time limit (--timeout, default 600 s), 
 into runs. Peer peer_blender_calc_length, settings "" (resolution_u 12, Blender's default),
 "resolution=4" and "resolution=64".
 
-What Blender computes (issue 36, from its sources): each Bezier segment is sampled by forward
+What Blender computes (from its sources): each Bezier segment is sampled by forward
 differences at resolution_u points (float), and calc_length sums the chords of that polyline
 (float); coordinates are stored as float32. Follow Path places an object along the curve's path,
 built from the same evaluated polyline; with use_fixed_location, offset_factor is the fraction of

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Headless Chromium as an easing peer (issue 15): Blink's own CSS easing, reached through the Web
+"""Headless Chromium as an easing peer: Blink's own CSS easing, reached through the Web
 Animations API, at the query times of the CSS cases; written as JSON in the easing driver's format
 for scripts/peers/easing_results.py to measure against the same 50-digit truth.
 

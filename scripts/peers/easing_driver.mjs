@@ -1,4 +1,4 @@
-// The JavaScript easing evaluators as peers (issue 15): every CSS cubic-bezier() case of the suite
+// The JavaScript easing evaluators as peers: every CSS cubic-bezier() case of the suite
 // (bench/cases/*.json with "type": "channel", "tool": "css") evaluated by each package at the
 // query times, written as JSON for scripts/peers/easing_results.py to measure against a 50-digit
 // truth. scripts/peers.sh copies this file beside the pinned packages (build-peers/node, from

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Arc length as fontTools computes it (issue 36): the length functions of fontTools.misc.bezierTools
+"""Arc length as fontTools computes it: the length functions of fontTools.misc.bezierTools
 (Debian python3-fonttools, pure Python) on the cases of a shipped-peer request, written as JSON
 (format curvebench-shipped-driver-1) for scripts/peers/shipped_results.py to measure.
 

@@ -1,4 +1,4 @@
-// three.js as a glTF peer (issue 15): every glTF channel case of the suite (bench/cases/*.json with
+// three.js as a glTF peer: every glTF channel case of the suite (bench/cases/*.json with
 // "type": "channel", "tool": "gltf") written into a GLB held in memory, loaded by three's own
 // GLTFLoader and evaluated by the interpolant of the animation track the loader builds, at the
 // query times; written as JSON for scripts/peers/gltf_results.py to measure against the glTF 2.0

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Arc length, the point at arc length and keyframe easing as Godot 3.2 computes them (issue 36):
+"""Arc length, the point at arc length and keyframe easing as Godot 3.2 computes them:
 Curve2D's baked length and interpolate_baked() on the cases of a shipped-peer request, and
 Animation's bezier tracks on the CSS cubic-bezier() channel cases, run headless in Debian's
 godot3-server through scripts/peers/godot_driver.gd.
@@ -13,13 +13,13 @@ limit (--timeout, default 300 s); a missing program is an error naming the packa
 ways as binary doubles (GDScript prints floats with 6 digits, and its JSON parser is not the place to
 trust the last bit): the times and s Godot reads are exactly the doubles written here.
 
-What Godot 3.2 computes (issue 36, from its sources): Curve2D bakes points every bake_interval
+What Godot 3.2 computes (from its sources): Curve2D bakes points every bake_interval
 along each segment, placing each by 10 bisections on t, and takes the length as (N - 1) x interval
 plus the rest; Vector2 and the baked arrays are float32 (real_t), so every length and point is a
 float32. interpolate_baked(offset, cubic = false) (the default, measured here) interpolates
 linearly between the baked points; an offset past the end gives the last point.
 bezier_track_interpolate bisects t 10 times on the key pair's Bezier x(t), then interpolates
-linearly (issue 36), in float32.
+linearly, in float32.
 
 Curves: peer peer_godot_curve2d, settings "" (bake_interval 5, Godot's default), "bake_interval=1"
 and "bake_interval=0.1". A subpath's segments become Curve2D points with relative handles

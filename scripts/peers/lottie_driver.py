@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""lottie-web as a peer (issue 35): a layer moving along a spatial Bezier with eased timing, played
+"""lottie-web as a peer: a layer moving along a spatial Bezier with eased timing, played
 by lottie-web in headless Chromium and measured against the exact motion at 50 digits.
 
   lottie_driver.py --lottie PACKAGE --tool CURVEBENCH [--work DIR] --out FILE [--chromium PATH]

@@ -1,4 +1,4 @@
-// d3-ease as a peer (issue 15): its Penner easing functions evaluated on a grid of normalized
+// d3-ease as a peer: its Penner easing functions evaluated on a grid of normalized
 // times, written as JSON for scripts/peers/penner_results.py to measure against the definitions d3
 // documents, at 50 digits. scripts/peers.sh copies this file beside the pinned packages
 // (build-peers/node, from scripts/peers/node/package.json) and runs it there:

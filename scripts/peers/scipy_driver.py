@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""SciPy as a peer (issue 15): reads curvebench case specs, builds the same curve with SciPy where
+"""SciPy as a peer: reads curvebench case specs, builds the same curve with SciPy where
 SciPy has it, evaluates it at the accuracy runner's parameters and integrates its arc length, and
 writes what it computed for `curvebench check` to measure against the 50-digit reference.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""SVG arc length as real browsers ship it (issue 35, item 4): getTotalLength() and
+"""SVG arc length as real browsers ship it: getTotalLength() and
 getPointAtLength() of headless Chromium and Firefox ESR on the cases of a shipped-peer request,
 written as JSON (format curvebench-shipped-driver-1) for scripts/peers/shipped_results.py to measure.
 

@@ -1,4 +1,4 @@
-// Arc length and point at length as shipped npm libraries compute them (issue 35, item 4): each
+// Arc length and point at length as shipped npm libraries compute them: each
 // case of a request (scripts/peers/shipped_request.py: SVG path data, the Bezier when the case is
 // one, the arc lengths s to ask for) is handed to each library through its own API; the lengths and
 // points it returns are written as JSON for scripts/peers/shipped_results.py to measure against

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The request of the arc-length peers (issue 35): which paths the drivers measure, and where.
+"""The request of the arc-length peers: which paths the drivers measure, and where.
 
   shipped_request.py --cases DIR --tool CURVEBENCH --out FILE [--only NAME,...]
 
@@ -41,7 +41,7 @@ Blender's NURBS splines):
    non-decreasing vector, "start" and "end": curvebench's first and last point of the curve (where
    s = 0 and s = L are: a periodic curve's start), "length", "s", "spaced"}
 
-The drivers (shipped_node_driver.mjs, shipped_browser_driver.py and issue 36's) answer it;
+The drivers (shipped_node_driver.mjs, shipped_browser_driver.py and the native and Python peers') answer it;
 shipped_results.py measures their answers with `curvebench check --at-length`.
 """
 import argparse

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Measures the arc-length peers' answers (issue 35) against the 50-digit reference of each case.
+"""Measures the arc-length peers' answers against the 50-digit reference of each case.
 
   shipped_results.py --driver FILE --request FILE --cases DIR --tool CURVEBENCH --work DIR --out FILE
 

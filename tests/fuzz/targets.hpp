@@ -1,4 +1,4 @@
-// curvebench's fuzz targets (issue 16): one function per reader a user's file reaches, each taking
+// curvebench's fuzz targets: one function per reader a user's file reaches, each taking
 // one input's bytes, running them through that reader the way the `curvebench` tool does, and
 // checking properties that must hold for every input.
 //

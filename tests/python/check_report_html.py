@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""REPORT.html in headless Chromium (Debian's `chromium`), issue 34 item 2:
+"""REPORT.html in headless Chromium (Debian's `chromium`):
   - the page loads without a console error, an uncaught exception or a failed resource;
   - it loads nothing beside itself (the page's resource timing lists no script, style, font or image);
   - the summary's table shows, cell for cell, the table report_summary.py builds from the accuracy

@@ -1,4 +1,4 @@
-"""The hostile-input suite of issue 16: every class of bad or extreme input as one case file in
+"""The hostile-input suite: every class of bad or extreme input as one case file in
 tests/hostile/*.json, run through the curvebench tool with its expected exit code, the words its
 message must contain and a wall-time bound that catches a hang.
 

@@ -1,4 +1,4 @@
-"""The lib2geom peer driver (bench/peers/lib2geom/lib2geom_driver.cpp, issue 36) on its recorded
+"""The lib2geom peer driver (bench/peers/lib2geom/lib2geom_driver.cpp) on its recorded
 output (tests/data/peers/lib2geom/, README there: source, version, command), so that the output's
 parsing and joining is tested in CI where lib2geom is not installed: validated against its request
 with shipped_results.validate, checked against hand-worked values, and, with CURVEBENCH_TOOL set

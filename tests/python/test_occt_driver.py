@@ -1,4 +1,4 @@
-"""The OpenCASCADE peer driver (bench/peers/occt/occt_driver.cpp, issue 36) on its recorded output
+"""The OpenCASCADE peer driver (bench/peers/occt/occt_driver.cpp) on its recorded output
 (tests/data/peers/occt/, README there: source, version, command), so that the output's parsing and
 joining is tested in CI where OCCT is not installed: validated against its request with
 shipped_results.validate, checked against hand-worked values, and, with CURVEBENCH_TOOL set (ctest

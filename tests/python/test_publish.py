@@ -101,7 +101,7 @@ class Headline(unittest.TestCase):
         page = publish.render_results(h, [])
         self.assertIn("| cr | 1000 | gauss n=2 (20 ns) | none reached | none reached |", page)
         self.assertIn("| length | composite_gauss | 6.5 | 5 | 7 | 3 | 6 | 4 |", page)
-        # a headline published before issue 32 renders as it was
+        # a headline published before the segment counts and excluded points renders as it was
         old = dict(h, pareto=[{k: v for k, v in h["pareto"][0].items() if k != "segments"}],
                    orders=[{k: v for k, v in o.items() if k != "excluded"} for o in h["orders"]])
         page = publish.render_results(old, [])
@@ -267,7 +267,7 @@ class Publish(unittest.TestCase):
         self.assertIn("peers_three.json (scripts/peers.sh)", page)  # the versions table names each driver
 
     def test_the_many_segment_u_of_s_table_is_published(self):
-        # Issue 32 item 5: the time per u(s) query on many segments against one segment, in the same
+        # The time per u(s) query on many segments against one segment, in the same
         # run, on the published page as REPORT.md gives it (report_lib.table_per_segments).
         make_run(self.reports)
         self.peers(report_peers.OPTIONAL_DRIVERS)
@@ -311,7 +311,7 @@ class CheckedIn(unittest.TestCase):
         self.assertFalse(self.h["run"]["quick"])
 
     def test_the_page_opens_with_the_summary_then_the_contents(self):
-        # Issue 34: the published page, like REPORT.md, answers first (its summary), then lists its sections.
+        # The published page, like REPORT.md, answers first (its summary), then lists its sections.
         with open(os.path.join(ROOT, "docs", "results.md"), encoding="utf-8") as f:
             sections = [line for line in f.read().splitlines() if line.startswith("## ")]
         self.assertEqual(sections[:3], ["## Summary", "## Contents", "## Machine and run"])

@@ -1,4 +1,4 @@
-"""The Qt 5 peer driver (bench/peers/qt/curvebench_peer_qt.cpp, issue 36): its recorded outputs
+"""The Qt 5 peer driver (bench/peers/qt/curvebench_peer_qt.cpp): its recorded outputs
 (tests/data/peers/qt/, see the README there) parsed and joined as scripts/peers.sh does, so CI checks
 them without Qt installed.
 

@@ -114,7 +114,7 @@ class ChannelSection(unittest.TestCase):
         self.assertNotIn("rotation_slerp", rc.solver_order(rc.channel_records(records)))
 
     def test_the_error_time_plot_puts_both_precisions_in_one_unit(self):
-        # Issue 30 item 3: 4 ulps of double and 4 ulps of float are not the same error; as a
+        # 4 ulps of double and 4 ulps of float are not the same error; as a
         # fraction of the value range they are 4 x 2^-52 and 4 x 2^-23.
         self.assertEqual(rc.relative_to_range(4, 64), 4 * 2.0 ** -52)
         self.assertEqual(rc.relative_to_range(4, 32), 4 * 2.0 ** -23)

@@ -1,4 +1,4 @@
-"""Tests of scripts/report_history.py (issue 34 item 6): the history line of a run is built from its
+"""Tests of scripts/report_history.py: the history line of a run is built from its
 headline data; the history file is read strictly (a bad line is named); publishing appends one line
 per revision (a revision published again replaces its line); REPORT.md tables and plots the figures
 over the runs with the current run last; the checked-in docs/results/history.jsonl holds the line

@@ -1,4 +1,4 @@
-"""Unit tests of scripts/report_summary.py (REPORT.md's summary and contents, issue 34) on small
+"""Unit tests of scripts/report_summary.py (REPORT.md's summary and contents) on small
 synthetic records whose answers are known by hand: the cheapest method reaching each target on every
 case of a group, by time where the benchmarks join and by evaluations otherwise; "none reaches it";
 the best peer of a group; the peers' worst findings; the tool models' fidelity; the contents' links.

@@ -1,4 +1,4 @@
-"""scripts/safe_output.py, the one write path of the scripts' outputs (issue 33 item 1): a new path
+"""scripts/safe_output.py, the one write path of the scripts' outputs: a new path
 and a regular file are replaced whole with no temporary left; a FIFO, a symbolic link, a directory
 are refused by name and left as they were; a device is refused by the check alone (were the check
 broken, a write would replace it with a regular file when run as root)."""

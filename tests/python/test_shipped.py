@@ -1,4 +1,4 @@
-"""The arc-length peers' pipeline (issue 35) with the tool itself (CURVEBENCH_TOOL; ctest shipped):
+"""The arc-length peers' pipeline with the tool itself (CURVEBENCH_TOOL; ctest shipped):
 scripts/peers/shipped_request.py's request, shipped_results.py's measurement through `curvebench
 check --at-length`, and scripts/report_shipped.py's section.
 

@@ -1,4 +1,4 @@
-// What the native peer drivers of issue 36 share (bench/peers/{qt,occt,lib2geom}): the machine and
+// What the native peer drivers share (bench/peers/{qt,occt,lib2geom}): the machine and
 // package facts they record beside their numbers (cpu_model, debian_version), their timing loop
 // (best_ns), the all-or-nothing write of their output (write_json) and the measuring of one call of
 // a peer library in a forked child under a time limit (run_isolated), so that a crash, a hang or a

@@ -1,4 +1,4 @@
-// curvebench_peer_2geom: the lib2geom peer of issue 36 (Inkscape's 2Geom: arc length and point at
+// curvebench_peer_2geom: the native lib2geom peer (Inkscape's 2Geom: arc length and point at
 // arc length as a vector editor computes them), answering a "curvebench-shipped-request-1" with a
 // "curvebench-shipped-driver-1" document (format: scripts/peers/shipped_results.py).
 //

@@ -1,4 +1,4 @@
-// curvebench_peer_occt: the OpenCASCADE peer of issue 36 (arc length and point at arc length as a CAD
+// curvebench_peer_occt: the native OpenCASCADE peer (arc length and point at arc length as a CAD
 // kernel computes them), answering a "curvebench-shipped-request-1" with a
 // "curvebench-shipped-driver-1" document (format: scripts/peers/shipped_results.py): its "cases"
 // (SVG path segments as 2D Geom curves) and its "splines" (B-spline and NURBS curves, below).

@@ -1,4 +1,4 @@
-// curvebench_peer_qt: Qt 5's arc length, point at length and easing curves as peers (issue 36).
+// curvebench_peer_qt: Qt 5's arc length, point at length and easing curves as peers.
 //
 // Usage
 //   curvebench_peer_qt paths  --request REQ.json --out OUT.json [--quick]

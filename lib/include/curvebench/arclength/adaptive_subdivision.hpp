@@ -11,7 +11,7 @@
 // chord as value, a tolerance of 1e-8 left errors of 5e-9, with the midpoint they are far below the
 // bound, which is still the bracket's half-width. The chord
 // test of Parent (compare a chord with its halves') bounded nothing: on a hairpin (a clamped natural
-// cubic with end slope 7.8e7, issue 33) the halves and quarters agree while the tip is missed, and it
+// cubic with end slope 7.8e7) the halves and quarters agree while the tip is missed, and it
 // reported 0.0021 for an error of 656. For a piece of higher degree or a rational one the polygon is
 // the bound of its Hermite cubic, off by O(h^4): with look_ahead (default), each halving checks that
 // the halves' polygons do not exceed their parent's (a theorem for cubics), and any excess is added
@@ -20,7 +20,7 @@
 // P' at a segment's right end is taken just inside it (interior breakpoints belong to the segment on
 // their right), at b - d with d a few ulps, its error bounded with |P''| there (one more evaluation);
 // P there is the limit from the left (value_from_left, core/curve.hpp), so that a jump between
-// segments that do not meet (a composite_bezier may have them) is not measured: until stop 48 the
+// segments that do not meet (a composite_bezier may have them) is not measured: previously the
 // first bracket of such a segment ran from its start to the next segment's, and a 2-segment curve
 // with a gap of 59 was reported 123.25 converged with an estimate of 1.2e-10 (L = 64.12).
 // The target is max(tolerance, relative_tolerance * size), size the length of the polygon through

@@ -208,7 +208,7 @@ class forward_difference_table {
   // observed order between log2 3 and log2 6 around the theoretical 2 (see the header); or both
   // differences are rounding. And the 4h chords resolve the curve: consecutive ones within a
   // segment turn by at most 60 degrees (16 chords of the cubic Bezier (0,0), (1,1), (0.5,1), (1,0)
-  // turn by up to 52). Where they turn back (a hairpin the grid straddles, issue 33: a clamped
+  // turn by up to 52). Where they turn back (a hairpin the grid straddles: a clamped
   // natural cubic with end slope 1e4 to 1e10, 128 steps) the missed tip makes every chord sum short
   // by an amount that varies erratically with the grid, and the ratio test passed by coincidence
   // with an estimate 0.7x of the error.

@@ -14,7 +14,7 @@
 // method the table is built for), and the segment with the largest measured error is halved next
 // (best first) until every segment's error is below table_tolerance * L (or at the resolution of u
 // in Real, far from 0: rounding_limited), or max_table_intervals or the construction's evaluation
-// budget (2^25) stops it (cap_hit). Until stop 49 M was global and uniform, doubled for the
+// budget (2^25) stops it (cap_hit). Formerly M was global and uniform, doubled for the
 // hardest segment, and capped at 2^16: a 1000-segment centripetal Catmull-Rom stopped at 4e-9 L
 // (measured 2.2e-10 L); per segment it reaches 1e-12 L.
 // Degenerate curves (length 0 or rounding noise of their size) have s(u) but no u(s).

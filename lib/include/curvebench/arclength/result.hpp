@@ -16,7 +16,7 @@
 //   not_guaranteed  the method has no error bound for this result (a fixed rule asked for no
 //                   comparison, a table without a coarser table, a step that could not be checked);
 //                   the error estimate is then +infinity, never a made-up number.
-// Every status but converged names why (issue 32): `reason`, a status_reason, says which bound failed
+// Every status but converged names why: `reason`, a status_reason, says which bound failed
 // or which cap stopped the method (a static text), on which segment [breakpoint i, breakpoint i+1]
 // and parameter interval where the method knows it, and the quantity against the bound it failed.
 // It holds a string_view and numbers only, no allocation (gauss_length without an estimate is

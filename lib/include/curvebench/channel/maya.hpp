@@ -80,7 +80,7 @@
 // last key's out tangent's angle; a step type there is slope 0, not settled by AnimX), cycle,
 // cycle_relative (Cycle with Offset: each period shifted by v_last - v_first) and oscillate (the
 // period next to the keyed range mirrored), wrapped as AnimX wraps them (measured against AnimX's
-// values, tests/data/animx_curves.json, issue 31): with T = t_last - t_first and r = (t - t_end) / T
+// values, tests/data/animx_curves.json): with T = t_last - t_first and r = (t - t_end) / T
 // computed in Real (t_end the first key before the keys, the last after), N = |trunc(r)| + 1 and
 // the fraction f = T |r - trunc(r)|, the time evaluated is t_last - f before the keys and
 // t_first + f after them (cycle, cycle_relative), for oscillate t_first + f before and t_last - f

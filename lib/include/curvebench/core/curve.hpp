@@ -74,7 +74,7 @@ concept declares_rounding_bound = curve<C> && requires(const C& c, int order) {
 /// results stay normal numbers; a derivative in the subnormal range (coordinates of 1e-21 over a
 /// domain of width 1e294: |P'| ~ 1e-315) is rounded to an absolute denorm_min / 2 per operation,
 /// and an evaluation of up to 2^20 such operations (de Casteljau of degree 60 takes about 2^12)
-/// stays within this. Negligible elsewhere; stop 45's sweep found adaptive_gk converged with an
+/// stays within this. Negligible elsewhere; a sweep found adaptive_gk converged with an
 /// estimate 2.4x below the error on such a curve.
 template <class Real>
 [[nodiscard]] Real underflow_floor() {

@@ -122,7 +122,7 @@ point_list<Real, Dim> spec_points(const field& spec) {
 /// The dimension of a spec's points (a generator's: helix 3, the others 2).
 inline int points_dimension(const field& spec) {
   // The type quoted as the messages quote a user's string (cut to 80 characters): an unknown type
-  // reaches here before the build names it (a 9 kB type made a 6 kB message, fuzz spec, stop 46).
+  // reaches here before the build names it (a 9 kB type made a 6 kB message, fuzz spec).
   const std::string type = field::shown_string(spec.member("type").string());
   const field pts = spec.member("points", "every spec of type " + type + " has points");
   if (pts.value.is_object()) {

@@ -1,6 +1,6 @@
 // SVG's basic shapes as the path data SVG 2 defines for them (section 10, "equivalent path"), so
 // that a <circle>, <ellipse>, <rect>, <line>, <polyline> or <polygon> is measured as the path it
-// draws (issue 35, item 1):
+// draws:
 //   circle   cx, cy, r: moveto (cx + r, cy), then four arcs of a quarter each with sweep-flag 1
 //            through (cx, cy + r), (cx - r, cy), (cx, cy - r), back to the start, and Z;
 //   ellipse  cx, cy, rx, ry likewise (rx or ry absent, SVG 2's "auto": the other one);

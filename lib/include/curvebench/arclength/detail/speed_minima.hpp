@@ -86,7 +86,7 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(
   // The last sample is taken a few ulps inside b: at an interior breakpoint c.derivative(b) is the
   // next segment's (breakpoints belong to the segment on their right), whose velocity made a
   // Kochanek-Bartels segment ending at a near-cusp look like one that turns back at its end, and hid
-  // the near-cusp just past its end (an error 47x the estimate in stop 45's sweep).
+  // the near-cusp just past its end (an error 47x the estimate).
   const Real resolution = Real(4) * epsilon<Real>() * (abs(a) + abs(b) + (b - a));
   Real dmax(0);
   for (std::size_t k = 0; k <= samples; ++k) {
@@ -154,11 +154,11 @@ std::vector<speed_minimum<typename C::real_type>> speed_features(
   // speed in between, however high the speed at both samples: a 1D curve's x' changing sign at
   // 0.98 between samples at 0.9375 and 1 (speeds 1.25 and 1.42) is an exact cusp of |x'| that the
   // sample test above cannot see, and adaptive Gauss-Kronrod then reported 4.2e-7 for an error of
-  // 9.7e-7 (stop 45's sweep). Refined by Newton from the slower sample, else from the middle.
+  // 9.7e-7. Refined by Newton from the slower sample, else from the middle.
   // Searched unless a feature was already found inside (us[k], us[k + 1]): a sampled minimum whose
   // Newton left its bracket is kept at the sample itself, us[k], and must not hide a zero just
   // after it (a 1D Lagrange curve lost its zero at 0.718 behind the sample at 0.6875: 0.127
-  // reported for an error of 0.604, stop 46's sweep).
+  // reported for an error of 0.604).
   auto reversal = [&](std::size_t k) {
     if (!(scaled(d1s[k]).dot(scaled(d1s[k + 1])) < Real(0)) || out.back().u > us[k]) return;
     speed_model<Real> m = refine(g[k] <= g[k + 1] ? us[k] : us[k + 1], us[k], us[k + 1]);

@@ -58,7 +58,7 @@ channel::maya_curve<Real> maya_curve_of(const field& spec) {
         k.member(side).fail("x = " + to_text(static_cast<double>(x)) +
                             ": a fixed tangent's x must be > 0 (the vector points forwards in time)");
       // In double, as Maya holds it, whatever Real: at 50 digits 1e300 / 1e-300 is finite, and the
-      // truth sampled a spec that the tool model (and `length`) refused (stop 47's sweep).
+      // truth sampled a spec that the tool model (and `length`) refused.
       if (!std::isfinite(static_cast<double>(y) / static_cast<double>(x)))
         k.member(side).fail("the slope y / x = " + to_text(static_cast<double>(y)) + " / " +
                             to_text(static_cast<double>(x)) + " overflows double");
