@@ -85,7 +85,7 @@ TEST(check_times, the_truth_of_a_css_easing_is_its_closed_form) {
 }
 
 // WebKit's solver (the css tool's own evaluation) is what `sample --as-tool` prints and what
-// `check --against tool` compares with; at t = 1e-5 it is off the truth by 1.7e-4 (issue 30: it
+// `check --against tool` compares with; at t = 1e-5 it is off the truth by 1.7e-4 (it
 // prints 0.0630783 where the curve's value is 0.0632506). A CSV of the truth checks at <= 0.5 ulp
 // against the truth and fails against the tool, and the other way round.
 TEST(check_times, truth_and_tool_are_kept_apart) {
@@ -144,7 +144,43 @@ TEST(check_times, reports_an_injected_error_in_every_unit_and_the_time_error) {
   const std::vector<std::string> over = rows_over(r, 100);  // row 3: 819 ulps; row 4: its dvalue
   ASSERT_EQ(over.size(), 2u);
   EXPECT_THAT(over[0], HasSubstr("row 3 (t = 3)"));
-  EXPECT_THAT(over[0], HasSubstr("ulps of double x the value range"));
+  EXPECT_THAT(over[0], HasSubstr("ulps of double x max(|value|, value range)"));
+}
+
+// A channel far from zero with a small range (a location at 1.0 moving by 0.08): a float engine
+// one float ulp off at 1.0 has stored the value as well as a float can, and the ulp units say 1
+// (ulps of max(|value|, range)), where ulps of the range alone said 1 / 0.08 = 12.5; rel keeps the
+// range (the motion's size). The records keep ulps of double of the same scale and carry the
+// check's own figure: the truth 1 + 0.08 t / 10 is exact at t = 0 and t = 10, so every figure
+// below is exact.
+TEST(check_times, ulp_units_scale_by_the_value_itself_where_it_exceeds_the_range) {
+  const spec_doc s(R"({"type": "channel", "tool": "exact", "keys": [
+    {"time": 0, "value": 1, "interpolation": "linear"}, {"time": 10, "value": 1.08}]})");
+  const double ulp_f = std::numeric_limits<float>::epsilon();  // the ulp of float at 1.0
+  const std::string csv = "t,value\n0," + g17(1.0 + ulp_f) + "\n10,1.08\n";
+  check_options o;
+  o.unit = value_unit::ulp_float;
+  const check_result r = times(s, csv, o);
+  EXPECT_DOUBLE_EQ(r.size, 0.08);
+  EXPECT_DOUBLE_EQ(r.rows[0].scale, 1.0);
+  EXPECT_DOUBLE_EQ(r.rows[0].error, 1.0);
+  ASSERT_FALSE(r.records.empty());
+  EXPECT_EQ(r.records[0]["unit"], "ulp-float");
+  EXPECT_DOUBLE_EQ(r.records[0]["error_in_unit"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(r.records[0]["error"].get<double>(), ulp_f / eps);  // 2^29 ulps of double at 1.0
+  o.unit = value_unit::rel;
+  const check_result rel = times(s, csv, o);
+  EXPECT_DOUBLE_EQ(rel.rows[0].error, ulp_f / 0.08);
+  EXPECT_DOUBLE_EQ(rel.records[0]["error_in_unit"].get<double>(), ulp_f / 0.08);
+  EXPECT_DOUBLE_EQ(rel.records[0]["error"].get<double>(), ulp_f / eps);  // the records' scale is the ulp one
+  // A channel crossing zero keeps the range where the value is small: one float ulp of the range
+  // at a value of 0 is 1, not the 1 / ulp(0) of ulps of the value alone.
+  const spec_doc z(R"({"type": "channel", "tool": "exact", "keys": [
+    {"time": 0, "value": -1, "interpolation": "linear"}, {"time": 10, "value": 1}]})");
+  o.unit = value_unit::ulp_float;
+  const check_result rz = times(z, "t,value\n5," + g17(2 * ulp_f) + "\n", o);
+  EXPECT_DOUBLE_EQ(rz.rows[0].scale, 2.0);
+  EXPECT_DOUBLE_EQ(rz.rows[0].error, 1.0);
 }
 
 // The unit follows the digits the CSV carries: a float program's %.9g is read in float ulps (its

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <string>
@@ -405,4 +406,40 @@ TEST(compare, every_change_carries_its_errors_unit) {
   EXPECT_EQ(unit("channel_monotone", "bits=32"), "count");
   EXPECT_EQ(unit("channel_value", "bits=320"), "ulp-double");  // a key=value, not a prefix of one
   EXPECT_EQ(unit("mystery", ""), "");
+}
+
+// A check's records carry the figure the check printed in its own unit (harness/check.hpp:
+// "unit", "error_in_unit"); compare shows the change in that unit, the records' ulps of double
+// beside it. A float engine's 18.5 float ulps is 18.5 x 2^29 = 9.93e9 ulps of double: printed
+// alone, that figure did not say what the check had said.
+TEST(compare, a_checks_records_are_shown_in_the_checks_unit) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "curvebench_test_compare_check_unit";
+  fs::create_directories(dir);
+  const double ratio = std::numeric_limits<float>::epsilon() / std::numeric_limits<double>::epsilon();
+  const auto write = [&](const std::string& name, double float_ulps, const std::string& unit) {
+    nlohmann::json rec{{"case", "walk"},      {"group", "channel"},         {"quantity", "eval"},
+                       {"method", "mine"},    {"setting", ""},              {"error", float_ulps * ratio},
+                       {"estimate", nullptr}, {"bounded", nullptr},         {"evaluations", 10},
+                       {"status", "not_guaranteed"}, {"subject", true},     {"unit", unit},
+                       {"error_in_unit", float_ulps}};
+    std::ofstream(dir / name) << nlohmann::json{{"spec", "walk.json"}, {"name", "mine"},
+                                                {"checks", nlohmann::json::array()}, {"records", {rec}}};
+    return (dir / name).string();
+  };
+  const h::comparison c = h::compare_runs(h::read_run(write("a.json", 12.3, "ulp-float")),
+                                          h::read_run(write("b.json", 18.5, "ulp-float")));
+  ASSERT_EQ(c.records.size(), 1u);
+  EXPECT_EQ(c.records[0].unit, "ulp-double");
+  EXPECT_EQ(c.records[0].check_unit, "ulp-float");
+  EXPECT_DOUBLE_EQ(c.records[0].new_in_unit, 18.5);
+  EXPECT_TRUE(c.records[0].error_grew);
+  EXPECT_EQ(h::to_json(c)["records"][0]["check_unit"], "ulp-float");
+  // Checks in different units: no common figure of the check's, the records' alone.
+  const h::comparison mixed =
+      h::compare_runs(h::read_run(write("c.json", 1, "rel")), h::read_run(write("d.json", 18.5, "ulp-float")));
+  ASSERT_EQ(mixed.records.size(), 1u);
+  EXPECT_EQ(mixed.records[0].check_unit, "");
+  EXPECT_TRUE(std::isnan(mixed.records[0].new_in_unit));
+  fs::remove_all(dir);
 }

@@ -100,6 +100,12 @@ void warn_digits(check_result& res, const csv_table& t, const std::vector<std::s
                        "s; write them with %.17g (double) or %.9g (float), or choose --unit";
 }
 
+nlohmann::json with_unit(nlohmann::json record, value_unit u, double error_in_unit) {
+  record["unit"] = std::string(to_string(u));
+  record["error_in_unit"] = finite_or_null(error_in_unit);
+  return record;
+}
+
 void summarize(check_result& res, std::size_t worst) {
   check_summary& s = res.summary;
   s.rows = res.rows.size();
@@ -257,8 +263,8 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
   if (cached) cache_s(ref, std::span<const double>(us).subspan(size_grid), t, o);  // the rows' u
 
   constexpr double eps = std::numeric_limits<double>::epsilon();
-  double worst_point = 0, worst_s = 0;
-  std::vector<double> worst_derivative(static_cast<std::size_t>(K), 0.0);
+  double worst_point = 0, worst_s = 0, worst_point_in_unit = 0;
+  std::vector<double> worst_derivative(static_cast<std::size_t>(K), 0.0), worst_derivative_in_unit = worst_derivative;
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const auto& row = t.rows[r];
     check_row cr;
@@ -271,6 +277,7 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
     cr.error = in_unit(cr.absolute, res.size, res.unit);
     cr.relative = cr.absolute / res.size;
     worst_point = std::max(worst_point, cr.point_ulps);
+    worst_point_in_unit = std::max(worst_point_in_unit, cr.error);
     if (K > 0) cr.derivative_ulps.assign(static_cast<std::size_t>(K), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t oi = 0; oi < orders.size(); ++oi) {
       const int k = orders[oi];
@@ -280,7 +287,9 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
       const double e = a / res.derivative_sizes[ki] / eps;
       cr.derivative_ulps[ki] = e;
       worst_derivative[ki] = std::max(worst_derivative[ki], e);
-      cr.error = std::max(cr.error, in_unit(a, res.derivative_sizes[ki], res.unit));
+      const double in = in_unit(a, res.derivative_sizes[ki], res.unit);
+      worst_derivative_in_unit[ki] = std::max(worst_derivative_in_unit[ki], in);
+      cr.error = std::max(cr.error, in);
       cr.relative = std::max(cr.relative, a / res.derivative_sizes[ki]);
     }
     if (cs != csv_table::npos) {
@@ -293,10 +302,14 @@ check_result check_values(case_reference<Dim>& ref, const csv_table& t, const ch
   }
   detail::warn_digits(res, t, value_columns);
   const auto n = static_cast<double>(t.rows.size());
-  res.records.push_back(subject_record(o.case_name, o.group, "eval", o.name, "", worst_point, n));
-  for (int k : orders)
-    res.records.push_back(subject_record(o.case_name, o.group, "eval", o.name, "derivative=" + std::to_string(k),
-                                         worst_derivative[static_cast<std::size_t>(k - 1)], n));
+  res.records.push_back(detail::with_unit(subject_record(o.case_name, o.group, "eval", o.name, "", worst_point, n),
+                                          res.unit, worst_point_in_unit));
+  for (int k : orders) {
+    const auto ki = static_cast<std::size_t>(k - 1);
+    res.records.push_back(detail::with_unit(subject_record(o.case_name, o.group, "eval", o.name,
+                                                           "derivative=" + std::to_string(k), worst_derivative[ki], n),
+                                            res.unit, worst_derivative_in_unit[ki]));
+  }
   if (cs != csv_table::npos)
     res.records.push_back(subject_record(o.case_name, o.group, "s_of_u", o.name, "", worst_s, n));
   return res;
@@ -592,6 +605,7 @@ nlohmann::json row_json(const check_result& res, const check_row& r) {
     case check_kind::times: {
       j["t"] = r.t;
       j["absolute"] = r.absolute;
+      j["scale"] = r.scale;
       j["time_error"] = finite_or_null(r.time_error);
       nlohmann::json d = nlohmann::json::array();
       for (double e : r.derivative_errors) d.push_back(finite_or_null(e));
@@ -669,7 +683,8 @@ double in_unit(double absolute, double scale, value_unit u) {
 std::string unit_text(const check_result& r) {
   if (r.kind == check_kind::lengths || r.kind == check_kind::inverse || r.kind == check_kind::at_length)
     return "relative to L";
-  const char* of = r.kind == check_kind::times ? "the value range" : "size";
+  const bool ulp = r.unit == value_unit::ulp_double || r.unit == value_unit::ulp_float;
+  const char* of = r.kind != check_kind::times ? "size" : ulp ? "max(|value|, value range)" : "the value range";
   switch (r.unit) {
     case value_unit::ulp_double: return std::string("ulps of double x ") + of;
     case value_unit::ulp_float: return std::string("ulps of float x ") + of;

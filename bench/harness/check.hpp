@@ -42,16 +42,20 @@
 //   times    abs = |value - V(t)|, V the channel at 50 digits at the user's t (exactly as read): the
 //            truth (the spec's tool rules, the time solver "exact"), or with against = tool the
 //            tool's own evaluation (its default or the spec's solver, in its storage precision:
-//            float for Blender, at float(t)); error = abs in the unit, scale = the value range of
-//            the truth over the rows' times and 65 times across the keys (max |V| when the range
-//            is 0, 1 when that is 0 too); dvalue, d2value in the unit of their own scale (a cell
+//            float for Blender, at float(t)); error = abs in the unit of the row's scale: range =
+//            the value range of the truth over the rows' times and 65 times across the keys (max
+//            |V| when the range is 0, 1 when that is 0 too); the row's scale is max(|V(t)|, range)
+//            in the ulp units (a stored value is rounded to an ulp of itself, so an ulp of the
+//            value is the least a float engine can miss by) and in the records, range in rel and
+//            abs (the motion's size); dvalue, d2value in the unit of their own scale (a cell
 //            where the truth's derivative is unbounded is not checked: NaN in derivative_errors,
 //            counted in unchecked). time_error = abs / |V'(t)|: how late or early the user's value
 //            is, to first order (infinite where V' = 0 or is unbounded).
 // Units of the values kinds (value_unit): ulp-double (eps(double) x scale), ulp-float
 // (eps(float) x scale), rel (x scale), abs; by default ulp-double unless every value cell of the
 // table carries at most 9 significant digits (a float's %.9g), then ulp-float (csv_table::digits;
-// tables built in memory: ulp-double). The records stay in ulps of double whatever the unit.
+// tables built in memory: ulp-double). The records stay in ulps of double whatever the unit; the
+// values and times records also carry "unit" and "error_in_unit", their error as the check printed it.
 // Every difference is taken in 50 digits. Parameters outside the domain, s outside [0, L], unknown
 // or missing columns, a row whose error overflows double: invalid_input naming the file, row,
 // column and value.
@@ -132,6 +136,7 @@ struct check_row {
                                           ///< inverse: |s(u) - s| (in the curve's units)
   std::vector<double> derivative_errors;  ///< times: dvalue, d2value in the unit (NaN: not checked)
   double time_error = 0;                  ///< times: abs / |V'(t)| (infinite where V' is 0 or unbounded)
+  double scale = 0;                       ///< times: the value's scale in the unit (max(|V(t)|, range) or range)
   double s_true = 0;                      ///< at_length: s(u*) at the curve's point u* nearest the user's
   double off_curve = 0;                   ///< at_length: |q - P(u*)| / L
 };

@@ -150,9 +150,15 @@ check_result check_times(const io::field& spec, const csv_table& t, const check_
       res.derivative_sizes[k] = dscale[k] > 0 ? dscale[k] : 1.0;
     }
 
+  // The ulp units (and the records, in ulps of double) scale a row's value error by max(|V(t)|,
+  // range): a float or double holds a value to half an ulp of the value itself, so a location at
+  // 1.0 moving by 0.08 cannot be stored closer than ulps of 1.0, and a range alone would count that
+  // storage rounding as 12.5 float ulps; the range keeps values near zero (a channel crossing 0)
+  // from being judged relative to nothing. rel and abs keep the range: the motion's own size.
+  const bool ulp_unit = res.unit == value_unit::ulp_double || res.unit == value_unit::ulp_float;
   constexpr double eps = std::numeric_limits<double>::epsilon();
-  double worst_value = 0;
-  std::array<double, max_order> worst_derivative{};
+  double worst_value = 0, worst_value_in_unit = 0;
+  std::array<double, max_order> worst_derivative{}, worst_derivative_in_unit{};
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const auto& row = t.rows[r];
     check_row cr;
@@ -162,9 +168,12 @@ check_result check_times(const io::field& spec, const csv_table& t, const check_
     if (!v || !isfinite(*v))
       throw invalid_input(t.where(r, ct) + ": " + num(cr.t) + ": the channel's value is not representable there");
     cr.absolute = static_cast<double>(abs(real50(row[cv]) - *v));
-    cr.error = in_unit(cr.absolute, res.size, res.unit);
-    cr.relative = cr.absolute / res.size;
-    worst_value = std::max(worst_value, cr.absolute / res.size / eps);  // scale first (in_unit)
+    const double value_scale = std::max(std::abs(static_cast<double>(*v)), res.size);
+    cr.scale = ulp_unit ? value_scale : res.size;
+    cr.error = in_unit(cr.absolute, cr.scale, res.unit);
+    cr.relative = cr.absolute / cr.scale;
+    worst_value = std::max(worst_value, cr.absolute / value_scale / eps);  // scale first (in_unit)
+    worst_value_in_unit = std::max(worst_value_in_unit, cr.error);
     const std::optional<real50> slope = ref(cr.t, 1);
     cr.time_error = cr.absolute == 0                           ? 0.0
                     : slope && isfinite(*slope) && *slope != 0 ? cr.absolute / std::abs(static_cast<double>(*slope))
@@ -179,6 +188,7 @@ check_result check_times(const io::field& spec, const csv_table& t, const check_
       }
       const double a = static_cast<double>(abs(real50(row[cd[k]]) - *d));
       cr.derivative_errors[k] = in_unit(a, res.derivative_sizes[k], res.unit);
+      worst_derivative_in_unit[k] = std::max(worst_derivative_in_unit[k], cr.derivative_errors[k]);
       cr.error = std::max(cr.error, cr.derivative_errors[k]);
       cr.relative = std::max(cr.relative, a / res.derivative_sizes[k]);
       worst_derivative[k] = std::max(worst_derivative[k], a / res.derivative_sizes[k] / eps);
@@ -188,11 +198,13 @@ check_result check_times(const io::field& spec, const csv_table& t, const check_
   }
   warn_digits(res, t, value_columns);
   const auto n = static_cast<double>(t.rows.size());
-  res.records.push_back(subject_record(o.case_name, o.group, "eval", o.name, "", worst_value, n));
+  res.records.push_back(
+      with_unit(subject_record(o.case_name, o.group, "eval", o.name, "", worst_value, n), res.unit, worst_value_in_unit));
   for (std::size_t k = 0; k < max_order; ++k)
     if (cd[k] != csv_table::npos)
-      res.records.push_back(subject_record(o.case_name, o.group, "eval", o.name, "derivative=" + std::to_string(k + 1),
-                                           worst_derivative[k], n));
+      res.records.push_back(with_unit(subject_record(o.case_name, o.group, "eval", o.name,
+                                                     "derivative=" + std::to_string(k + 1), worst_derivative[k], n),
+                                      res.unit, worst_derivative_in_unit[k]));
   return res;
 }
 

@@ -23,6 +23,10 @@ void choose_unit(check_result& res, const csv_table& t, const std::vector<std::s
 /// res.digits_warning when the table's digits cannot carry the unit's precision and its errors are
 /// as large as that rounding could make them (call after the rows).
 void warn_digits(check_result& res, const csv_table& t, const std::vector<std::size_t>& value_columns);
+/// A values or times record that also says what the check printed: "unit" (the check's unit,
+/// "ulp-float") and "error_in_unit" (the largest row error of the record's quantity in it), so that
+/// `compare` can show a check's figures as the check did. "error" stays in ulps of double.
+[[nodiscard]] nlohmann::json with_unit(nlohmann::json record, value_unit u, double error_in_unit);
 /// The summary and the worst rows of res.
 void summarize(check_result& res, std::size_t worst);
 

@@ -397,6 +397,19 @@ comparison compare_runs(const run_results& base, const run_results& now, const c
     ch.unit = error_unit(n);
     ch.base_error = b.error;
     ch.new_error = n.error;
+    const auto check_unit = [](const record& r) {
+      const auto u = r.extra.find("unit");
+      return u != r.extra.end() && u->is_string() && r.extra.contains("error_in_unit") ? u->get<std::string>() : "";
+    };
+    const auto in_unit = [](const record& r) {
+      const auto e = r.extra.find("error_in_unit");
+      return e->is_number() ? e->get<double>() : std::numeric_limits<double>::quiet_NaN();
+    };
+    if (const std::string u = check_unit(n); !u.empty() && u == check_unit(b)) {
+      ch.check_unit = u;
+      ch.base_in_unit = in_unit(b);
+      ch.new_in_unit = in_unit(n);
+    }
     ch.base_status = b.status;
     ch.new_status = n.status;
     const double margin = floor_of(n.quantity, o);
@@ -493,6 +506,9 @@ nlohmann::json to_json(const comparison& c) {
                      {"unit", r.unit.empty() ? nlohmann::json() : nlohmann::json(r.unit)},
                      {"base_error", num(r.base_error)},
                      {"new_error", num(r.new_error)},
+                     {"check_unit", r.check_unit.empty() ? nlohmann::json() : nlohmann::json(r.check_unit)},
+                     {"base_in_unit", num(r.base_in_unit)},
+                     {"new_in_unit", num(r.new_in_unit)},
                      {"base_status", r.base_status},
                      {"new_status", r.new_status},
                      {"error_grew", r.error_grew},

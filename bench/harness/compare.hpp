@@ -54,6 +54,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -119,6 +120,10 @@ struct record_change {
   std::string where;                     ///< the new record's place
   std::string unit;                      ///< the errors' unit (error_unit); "": unknown
   double base_error = 0, new_error = 0;  ///< NaN: not measured
+  /// A check's record ("unit" and "error_in_unit" on both sides, the same unit): the errors as the
+  /// check printed them, in check_unit ("ulp-float", "rel", ...); "" and NaN otherwise.
+  std::string check_unit;
+  double base_in_unit = std::numeric_limits<double>::quiet_NaN(), new_in_unit = base_in_unit;
   std::string base_status, new_status;
   bool bound_lost = false;
   bool error_grew = false;

@@ -42,8 +42,12 @@ std::string record_line(const harness::record_change& r) {
   if (r.bound_lost) why += std::string(why.empty() ? "" : ", ") + "estimate no longer bounds the error";
   // Each error with its unit (harness::error_unit): "9.92e+09 ulp-double" says what "9.92e+09" cannot.
   const std::string unit = r.unit.empty() ? "" : " " + r.unit;
-  std::string line =
-      (why.empty() ? "" : why + ": ") + r.key + ": error " + g(r.base_error) + unit + " -> " + g(r.new_error) + unit;
+  std::string line = (why.empty() ? "" : why + ": ") + r.key + ": error ";
+  // A check's figures in the unit the check printed them (its --unit), the records' beside them.
+  if (!r.check_unit.empty())
+    line += g(r.base_in_unit) + " " + r.check_unit + " -> " + g(r.new_in_unit) + " " + r.check_unit + " (records: ";
+  line += g(r.base_error) + unit + " -> " + g(r.new_error) + unit;
+  if (!r.check_unit.empty()) line += ")";
   if (r.unit.empty()) line += " (a quantity of no unit this build knows)";
   if (r.base_status != r.new_status) line += ", status " + r.base_status + " -> " + r.new_status;
   return line + " (" + r.where + ")";

@@ -62,8 +62,8 @@ class ToolCli(unittest.TestCase):
 
     def test_a_sample_table_the_system_does_not_take_is_an_error(self):
         # sample holds its table and writes it at the end; restoring std::cout's buffer after the
-        # write cleared the failure, so a table past the pipe's first 4 kB was lost with exit 0
-        # (stop 47's sweep). A curve and a channel, 10,001 rows each.
+        # write cleared the failure, so a table past the pipe's first 4 kB was lost with exit 0.
+        # A curve and a channel, 10,001 rows each.
         spec = self.write("line.json", '{"type": "channel", "tool": "exact", "keys": [{"time": 0, "value": 0, '
                                        '"interpolation": "linear"}, {"time": 10, "value": 5}]}')
         for args in (["sample", spec, "--frames", "0:10:0.001"], ["sample", ARCH, "--count", "10001"]):
@@ -127,6 +127,28 @@ class ToolCli(unittest.TestCase):
         self.assert_error(run("compare", self.write("x.json", '{"y": 1}'), os.path.join(data, "run1")),
                           "x.json: holds neither \"records\"")
 
+    def test_compare_shows_a_checks_records_in_the_checks_unit(self):
+        # Blender's own values of an exported channel, then the same values 1e-5 off: the check
+        # prints float ulps (--unit ulp-float), and so must compare, the records' ulps of double
+        # beside them (the records stay in ulps of double whatever the unit).
+        data = os.path.join(ROOT, "tests", "data", "blender_export")
+        spec = os.path.join(data, "easesAction.location.1.json")
+        with open(os.path.join(data, "easesAction.location.1.blender.csv")) as f:
+            lines = [ln for ln in f.read().splitlines() if not ln.startswith("#")]
+        off = [lines[0]] + ["%s,%.9g" % (t, float(v) + 1e-5) for t, v in (ln.split(",") for ln in lines[1:])]
+        runs = []
+        for name, text in (("good.csv", "\n".join(lines) + "\n"), ("off.csv", "\n".join(off) + "\n")):
+            p = run("check", spec, "--values", self.write(name, text), "--against", "tool", "--unit", "ulp-float",
+                    "--json")
+            self.assertEqual(p.returncode, 0, p.stderr)
+            record = json.loads(p.stdout)["records"][0]
+            self.assertEqual(record["unit"], "ulp-float")
+            runs.append(self.write(name + ".json", p.stdout))
+        table = run("compare", *runs)
+        self.assertEqual(table.returncode, 1, table.stdout + table.stderr)
+        self.assertRegex(table.stdout, r"error [0-9.e+-]+ ulp-float -> [0-9.e+-]+ ulp-float "
+                                       r"\(records: [0-9.e+-]+ ulp-double -> [0-9.e+-]+ ulp-double\)")
+
     def test_at_file_takes_a_byte_order_mark_and_refuses_a_column_named_twice(self):
         bom = os.path.join(self.dir, "bom.csv")
         with open(bom, "wb") as f:
@@ -161,7 +183,7 @@ class ToolCli(unittest.TestCase):
         u, s, x, y = row.split(",")
         self.assertEqual((u, x, y), ("0.5", "2", "1.5"))  # the arch's closed form at 1/2: exact
         self.assertAlmostEqual(float(s), 2.6341827715092569, delta=1e-14)  # s(1/2) = L/2 by symmetry
-        # Issue 30 items 1 and 2: the truth and the tool's own evaluation, apart and named; the CSV
+        # The truth and the tool's own evaluation, apart and named; the CSV
         # sample writes is what sample --at-file and check --values read back. cubic-bezier(0, 1,
         # 0, 1) at t = 1e-5 is 1 - (1 - cbrt(1e-5))^3 = 0.0632506 exactly; WebKit's table and
         # Newton give 0.0630783.
@@ -385,10 +407,10 @@ class ToolCli(unittest.TestCase):
                 self.assert_error(run("check", ARCH, "--values", self.write(name, text)), name, *words)
         self.assert_error(run("check", ARCH), "--values")
 
-    # ---- hostile input (issue 16) ---------------------------------------------------------------
+    # ---- hostile input --------------------------------------------------------------------------
 
     def test_long_sample_prints_progress_on_stderr_only_and_quiet_silences_it(self):
-        # Issue 16: runs over a second report "case k of n, percent, elapsed" on stderr; stdout stays
+        # Runs over a second report "case k of n, percent, elapsed" on stderr; stdout stays
         # the CSV. 400000 samples of the 1e5-segment Lissajous take several seconds here.
         spec = os.path.join(CASES, "lissajous_many_segments_1e5.json")
         p = run("sample", spec, "--count", "400000")
@@ -402,7 +424,7 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(q.stdout, p.stdout)
 
     def test_long_length_and_check_print_progress_and_quiet_silences_it(self):
-        # Issue 16: length reports its evaluations against the method's budget, check its rows; both
+        # length reports its evaluations against the method's budget, check its rows; both
         # on stderr once a run takes over a second. 6e7 evaluations of the 1e5-segment Lissajous
         # (composite Gauss, 20 points x 30 panels) take a few seconds here.
         spec = os.path.join(CASES, "lissajous_many_segments_1e5.json")
@@ -453,7 +475,7 @@ class ToolCli(unittest.TestCase):
                           "more than the limit of 67108864")
 
     def test_length_names_the_reason_of_a_status_not_converged(self):
-        # Issue 32: "reason" beside "status" says why a result is not converged (the failed bound or
+        # "reason" beside "status" says why a result is not converged (the failed bound or
         # cap, the segment and interval where the method knows them, the quantity against its
         # bound); null when converged.
         spec = os.path.join(CASES, "arch_cubic_bezier.json")
@@ -729,11 +751,11 @@ class ToolCli(unittest.TestCase):
         self.assert_error(run("sample", order, "--at", "0.5"), "order.json: ", "keys[1].time = 0")
 
     def test_channel_specs_sample_at_times(self):
-        # Issue 12: --at, --frames and --range give times for channel specs: t, value, dvalue, d2value.
+        # --at, --frames and --range give times for channel specs: t, value, dvalue, d2value.
         spec = os.path.join(CASES, "channel_regression_limit.json")
         p = run("sample", spec, "--at", "0,4.5,9,12", "--derivatives", "2")
         self.assertEqual(p.returncode, 0, p.stderr)
-        # Issue 30 item 2: a first comment line says what the values are (the truth by default).
+        # A first comment line says what the values are (the truth by default).
         self.assertTrue(p.stdout.startswith("# curvebench sample: the channel at 50 digits"), p.stdout[:200])
         rows = p.stdout.splitlines()[1:]
         self.assertEqual(rows[0], "t,value,dvalue,d2value")
@@ -744,7 +766,7 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(f.returncode, 0, f.stderr)
         self.assertEqual(len(f.stdout.splitlines()), 7)
         self.assertEqual(f.stdout.splitlines()[-1], "1,1")
-        # Issue 30 item 6: --frames A:B steps by 1 (its errors name --frames), and a decimal grid
+        # --frames A:B steps by 1 (its errors name --frames), and a decimal grid
         # prints the decimals it names (0.3, not 0.30000000000000004).
         g = run("sample", spec, "--frames", "1:4", "--derivatives", "0")
         self.assertEqual(g.returncode, 0, g.stderr)
@@ -816,7 +838,7 @@ class ToolCli(unittest.TestCase):
         self.assertEqual(len(rows), 6)  # spaces around a number are fine, as in every numeric cell
 
     def test_sample_by_arclength_reports_its_table_and_takes_a_target(self):
-        # Issue 32: the u(s) table is sized per segment to --table-tol; its size, measured error,
+        # The u(s) table is sized per segment to --table-tol; its size, measured error,
         # status and build time go to stderr, the samples to stdout.
         road = self.write("road.json", json.dumps({"type": "catmull_rom", "alpha": 0.5, "points": [
             [k, (k * 7919 % 13) / 4.0] for k in range(201)]}))
@@ -969,7 +991,7 @@ class ToolCli(unittest.TestCase):
                 tail = [line for line in p.stdout.splitlines() if line.strip()][-2:]
                 self.assertEqual(tail[0], "Example:")
                 self.assertTrue(tail[1].startswith(f"  curvebench {sub} "), tail[1])
-                # Issue 30 item 6: the files an example reads exist (from the repository's root):
+                # The files an example reads exist (from the repository's root):
                 # its spec, thresholds and cases (values.csv is what sample's example writes, and
                 # easing.csv sample's channel example, reports/accuracy.json what accuracy's writes).
                 words = tail[1].split()
@@ -996,7 +1018,7 @@ class ToolCli(unittest.TestCase):
         # Without the installed layout, the source tree's cases.
         p = run("list", "cases")
         self.assertIn(f"cases ({CASES})", p.stdout)
-        # Issue 30 item 6: every row's name, group and reason stand apart, the longest name too.
+        # Every row's name, group and reason stand apart, the longest name too.
         names = {os.path.splitext(f)[0] for f in os.listdir(CASES) if f.endswith(".json")}
         rows = [r for r in p.stdout.splitlines() if r.startswith("  ")]
         self.assertEqual(len(rows), len(names))
@@ -1006,7 +1028,7 @@ class ToolCli(unittest.TestCase):
             self.assertTrue(r[2 + len(name):].startswith("  "), r)
 
     def test_length_help_shows_defaults_and_the_estimate_unit(self):
-        # Issue 30 item 6: `length --help` hid the defaults of --n and --tol and whether the estimate
+        # `length --help` hid the defaults of --n and --tol and whether the estimate
         # is absolute.
         h = run("length", "--help")
         self.assertEqual(h.returncode, 0, h.stderr)
