@@ -206,7 +206,7 @@ TEST(io_spec, malformed_specs_name_the_field) {
               HasSubstr("spec: unknown field \"swep\" for type \"arc\""));
   EXPECT_THAT(error_of(R"(["not", "an", "object"])"), HasSubstr("spec: expected an object"));
   // An unknown type without points: its dimension is asked of the points before the build names
-  // the type, and that message quoted the whole type (a 9 kB type gave 6 kB: fuzz spec, stop 46).
+  // the type, and that message quoted the whole type (a 9 kB type gave 6 kB: fuzz spec).
   // Cut to 80 characters as every quoted string is: the message stays under 200.
   const std::string long_type(9000, '[');
   const std::string e = error_of(R"({"type": "catmull_)" + long_type + R"("})");
@@ -214,21 +214,25 @@ TEST(io_spec, malformed_specs_name_the_field) {
   EXPECT_THAT(e, HasSubstr("points is missing (every spec of type \"catmull_[[["));
 }
 
-// end "duplicate" (issue 30: game engines clamp the index, so P_-1 = P_0 and P_n+1 = P_n): the
-// uniform Catmull-Rom through every point, from the first to the last on [1, n], whose slope at a
-// point is half the chord between its neighbours: at the ends half the end chord.
+// end "duplicate" (game engines clamp the index, so P_-1 = P_0 and P_n+1 = P_n): the uniform
+// Catmull-Rom through every point, from the first to the last on [0, n-1] with u = i at point i (the
+// engine's own parameter), whose slope at a point is half the chord between its neighbours: at the
+// ends half the end chord.
 TEST(io_spec, catmull_rom_end_duplicate_is_the_engines_clamped_index) {
   const cb::point_list<double, 2> pts{{0, 0}, {1, 2}, {3, 3}, {4, 0}};
   const auto j = io::parse(R"({"type": "catmull_rom", "points": [[0,0],[1,2],[3,3],[4,0]], "end": "duplicate"})");
   const auto c = io::curve_from_spec<double, 2>(io::root(j));
-  EXPECT_EQ(c.domain().lo, 1.0);
-  EXPECT_EQ(c.domain().hi, 4.0);
-  for (int i = 0; i < 4; ++i) EXPECT_EQ(c(1.0 + i), pts[static_cast<std::size_t>(i)]) << i;
+  EXPECT_EQ(c.domain().lo, 0.0);
+  EXPECT_EQ(c.domain().hi, 3.0);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(c(static_cast<double>(i)), pts[static_cast<std::size_t>(i)]) << i;
   // Slopes in u (unit knot spacing): (P_1 - P_0) / 2 = (0.5, 1) at the start, (P_3 - P_2) / 2 =
   // (0.5, -1.5) at the end, (P_2 - P_0) / 2 = (1.5, 1.5) at P_1: exact in double.
-  EXPECT_EQ(c.derivative(1.0, 1), (cb::point<double, 2>{0.5, 1}));
-  EXPECT_EQ(c.derivative(4.0, 1), (cb::point<double, 2>{0.5, -1.5}));
-  EXPECT_EQ(c.derivative(2.0, 1), (cb::point<double, 2>{1.5, 1.5}));
+  EXPECT_EQ(c.derivative(0.0, 1), (cb::point<double, 2>{0.5, 1}));
+  EXPECT_EQ(c.derivative(3.0, 1), (cb::point<double, 2>{0.5, -1.5}));
+  EXPECT_EQ(c.derivative(1.0, 1), (cb::point<double, 2>{1.5, 1.5}));
+  // Between points, the uniform Catmull-Rom segment of P_-1 = P_0, P_0, P_1, P_2 at its middle:
+  // (-P_-1 + 9 P_0 + 9 P_1 - P_2) / 16 = (8 P_0 + 9 P_1 - P_2) / 16 = (6, 15) / 16, exact in double.
+  EXPECT_EQ(c(0.5), (cb::point<double, 2>{6.0 / 16, 15.0 / 16}));
   // The same at 50 digits, and the refusals name the field.
   const auto c50 = io::curve_from_spec<cb::real50, 2>(io::root(j));
   EXPECT_EQ(c50(cb::real50(2.5)), (cb::point<cb::real50, 2>(c(2.5))));

@@ -40,11 +40,13 @@ inline constexpr std::string_view end_doc =
     "phantom (extrapolated end points, default), one_sided (2nd-order differences), tangents, closed, "
     "control_points (the textbook form: the first and last points only shape the end segments, the curve "
     "runs from the second point to the second-to-last on [u_1, u_n-2]; at least 4 points), duplicate (game "
-    "engines' clamped index: P_-1 = P_0 and P_n+1 = P_n, the end slope half the end chord's; uniform knots "
-    "only, alpha 0)";
+    "engines' clamped index: P_-1 = P_0 and P_n+1 = P_n, the end slope half the end chord's; u = i at point i, "
+    "the curve on [0, n-1] as an engine indexes it; uniform knots only, alpha 0)";
 
 /// end "duplicate" as control_points with the end points repeated (computed once in double): the
-/// curve runs from the first point to the last on uniform knots 1 .. n. A repeated point is a
+/// curve runs from the first point to the last on the knots -1, 0, 1, ..., n, so that u = i at
+/// point i and the domain is [0, n-1], the parameter an engine's clamped index gives (without them
+/// the repeated first point took u = 0 and the curve started at u = 1). A repeated point is a
 /// zero-length chord, so alpha > 0 (and given knots) are refused, naming the field.
 inline json resolve_duplicate_ends(json r, const field& spec) {
   if (!spec.has("end") || spec.member("end").string() != "duplicate") return r;
@@ -55,6 +57,9 @@ inline json resolve_duplicate_ends(json r, const field& spec) {
   if (!p.is_array() || p.size() < 2) spec.member("points").fail("end \"duplicate\" needs at least 2 points");
   p.insert(p.begin(), p.front());
   p.push_back(p.back());
+  json knots = json::array();
+  for (std::size_t i = 0; i < p.size(); ++i) knots.push_back(static_cast<double>(i) - 1);
+  r["knots"] = knots;
   r["end"] = "control_points";
   return r;
 }
