@@ -147,21 +147,21 @@ TEST(check_times, reports_an_injected_error_in_every_unit_and_the_time_error) {
   EXPECT_THAT(over[0], HasSubstr("ulps of double x max(|value|, value range)"));
 }
 
-// A channel far from zero with a small range (a location at 1.0 moving by 0.08): a float engine
+// A channel far from zero with a small range (a location at 1.0 moving by 0.125): a float engine
 // one float ulp off at 1.0 has stored the value as well as a float can, and the ulp units say 1
-// (ulps of max(|value|, range)), where ulps of the range alone said 1 / 0.08 = 12.5; rel keeps the
+// (ulps of max(|value|, range)), where ulps of the range alone said 1 / 0.125 = 8; rel keeps the
 // range (the motion's size). The records keep ulps of double of the same scale and carry the
-// check's own figure: the truth 1 + 0.08 t / 10 is exact at t = 0 and t = 10, so every figure
-// below is exact.
+// check's own figure: the keys and the range are dyadic, so every figure below is exact and
+// compared to within EXPECT_DOUBLE_EQ's 4 ulps.
 TEST(check_times, ulp_units_scale_by_the_value_itself_where_it_exceeds_the_range) {
   const spec_doc s(R"({"type": "channel", "tool": "exact", "keys": [
-    {"time": 0, "value": 1, "interpolation": "linear"}, {"time": 10, "value": 1.08}]})");
+    {"time": 0, "value": 1, "interpolation": "linear"}, {"time": 10, "value": 1.125}]})");
   const double ulp_f = std::numeric_limits<float>::epsilon();  // the ulp of float at 1.0
-  const std::string csv = "t,value\n0," + g17(1.0 + ulp_f) + "\n10,1.08\n";
+  const std::string csv = "t,value\n0," + g17(1.0 + ulp_f) + "\n10,1.125\n";
   check_options o;
   o.unit = value_unit::ulp_float;
   const check_result r = times(s, csv, o);
-  EXPECT_DOUBLE_EQ(r.size, 0.08);
+  EXPECT_DOUBLE_EQ(r.size, 0.125);
   EXPECT_DOUBLE_EQ(r.rows[0].scale, 1.0);
   EXPECT_DOUBLE_EQ(r.rows[0].error, 1.0);
   ASSERT_FALSE(r.records.empty());
@@ -170,8 +170,8 @@ TEST(check_times, ulp_units_scale_by_the_value_itself_where_it_exceeds_the_range
   EXPECT_DOUBLE_EQ(r.records[0]["error"].get<double>(), ulp_f / eps);  // 2^29 ulps of double at 1.0
   o.unit = value_unit::rel;
   const check_result rel = times(s, csv, o);
-  EXPECT_DOUBLE_EQ(rel.rows[0].error, ulp_f / 0.08);
-  EXPECT_DOUBLE_EQ(rel.records[0]["error_in_unit"].get<double>(), ulp_f / 0.08);
+  EXPECT_DOUBLE_EQ(rel.rows[0].error, ulp_f / 0.125);
+  EXPECT_DOUBLE_EQ(rel.records[0]["error_in_unit"].get<double>(), ulp_f / 0.125);
   EXPECT_DOUBLE_EQ(rel.records[0]["error"].get<double>(), ulp_f / eps);  // the records' scale is the ulp one
   // A channel crossing zero keeps the range where the value is small: one float ulp of the range
   // at a value of 0 is 1, not the 1 / ulp(0) of ulps of the value alone.
