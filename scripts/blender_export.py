@@ -6,7 +6,8 @@ Run inside Blender (--python-exit-code: without it Blender exits 0 when the scri
 
 Writes one spec per F-curve of every action, OUT_DIR/<action>.<data path>.<index>.json, in the
 "blender" tool's format (keys with their handles, handle types, interpolation, easing and its
-parameters; extrapolation; auto-handle smoothing; the Cycles modifier), and OUT_DIR/index.json
+parameters; extrapolation; auto-handle smoothing; the Cycles modifier; "handles": "stored", since
+Blender evaluates the handles it stored, not their rules' results), and OUT_DIR/index.json
 listing them with Blender's version and the file. Names that clean to the same file name (actions
 "Walk.001" and "Walk_001", or names differing only in case) get a suffix "-2", "-3", ... in the order
 exported, so that no channel overwrites another. An F-curve with a key that is not a finite number
@@ -20,7 +21,10 @@ half frame of the scene's range widened by 10 frames on each side (extrapolation
 included; t,value: float32 results written exactly), so that
     curvebench check OUT_DIR/X.json --values OUT_DIR/X.blender.csv --against tool
 shows whether curvebench reproduces Blender on this scene, and `curvebench sample OUT_DIR/X.json
---frames A:B` gives the truth to check an engine's values against.
+--frames A:B` gives the truth to check an engine's values against. Each spec is also a case: it
+carries "group": "channel" and a "reason" naming the .blend file and Blender's version, so that
+`curvebench accuracy --cases OUT_DIR` measures every method on the scene's channels (the case
+reader takes index.json for the folder's index, not a case).
 
 The mapping from Blender's F-curve to the spec (spec_of) does not import bpy and is tested with
 plain Python on recorded F-curves (tests/python/test_blender_export.py).
@@ -50,8 +54,9 @@ class ExportError(ValueError):
     """An F-curve the blender tool's spec cannot hold; the message says why."""
 
 
-def spec_of(fcurve, name):
-    """The channel spec of an F-curve read by blender_fcurves.read_fcurve (Blender's names)."""
+def spec_of(fcurve, name, source=""):
+    """The channel spec of an F-curve read by blender_fcurves.read_fcurve (Blender's names); source
+    names the .blend file and Blender's version in the case's reason."""
     if fcurve.get("modifiers"):
         raise ExportError("modifiers " + ", ".join(fcurve["modifiers"]) + " are not modelled (only Cycles)")
     if not fcurve["keys"]:
@@ -72,7 +77,9 @@ def spec_of(fcurve, name):
             for p in PARAMETERS.get(k["interpolation"], ()):
                 key[p] = k[p]
         keys.append(key)
-    spec = {"name": name, "type": "channel", "tool": "blender", "keys": keys,
+    spec = {"name": name, "group": "channel",
+            "reason": f"the F-curve {name}" + (f" of {source}" if source else "") + ", exported by blender_export.py",
+            "type": "channel", "tool": "blender", "handles": "stored", "keys": keys,
             "extrapolation": fcurve["extrapolation"].lower(),
             "smoothing": fcurve.get("auto_smoothing", "CONT_ACCEL").lower()}
     cy = fcurve.get("cycles")
@@ -154,7 +161,8 @@ def export(bpy, out_dir, with_values):
                     raise ExportError(why)
                 if fc.mute:
                     raise ExportError("the F-curve is muted")
-                spec = spec_of(blender_fcurves.read_fcurve(fc), name)
+                spec = spec_of(blender_fcurves.read_fcurve(fc), name,
+                               f"{index['file']} (Blender {index['blender_version']})")
             except ExportError as e:
                 index["skipped"].append({"name": name, "why": str(e)})
                 print(f"blender_export.py: {name}: skipped: {e}", file=sys.stderr)

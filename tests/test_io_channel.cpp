@@ -250,7 +250,7 @@ TEST(io_channel, curve_view_and_registry) {
   EXPECT_EQ(c(2.0)[1], 1.0);
 }
 
-// Issue 33 item 3: a field of another tool was silently dropped (an exact channel with Maya's
+// A field of another tool was silently dropped (an exact channel with Maya's
 // "post": "cycle" did not cycle; "keys" on css, "easing" on exact). It is refused, naming the tools
 // it belongs to and the spec's own.
 TEST(io_channel, a_field_of_another_tool_is_refused_naming_its_tools) {
@@ -363,7 +363,7 @@ TEST(io_channel, blender_tool_reproduces_blenders_recorded_values) {
     const std::string name = c.at("name");
     // The aligned fixtures store Blender's result of a request whose inputs differ (test_blender
     // restores them). Every other recorded channel is modelled (cyclic auto_clamped curves under
-    // cont_accel too, since issue 31): a refusal fails the test.
+    // cont_accel too): a refusal fails the test.
     if (name.find("aligned") != std::string::npos) {
       ++skipped;
       continue;
@@ -412,6 +412,27 @@ TEST(io_channel, blender_tool_curve_view_refuses_eased_segments) {
   const auto c = cb::io::curve_from_spec<double, 2>(spec_of(plain));
   EXPECT_EQ(c(1.0)[0], 5.0);
   EXPECT_EQ(c(1.0)[1], 3.0);
+}
+
+// "handles": "stored" evaluates every handle as given, as Blender evaluates the handles it stored;
+// the default (by_type) recomputes auto_clamped ones. Keys (0, 0) and (10, 1) with handles at
+// (4, 2) and (6, 2): stored, the time cubic is symmetric, so t = 5 is u = 1/2 and the value is
+// (0 + 3 * 2 + 3 * 2 + 1) / 8 = 1.625; by type, both ends are flat (auto_clamped end keys under
+// constant extrapolation), value 0.5. Both exact in float (dyadic), so the tolerance is 0.
+TEST(io_channel, blender_stored_handles_are_evaluated_as_given) {
+  const std::string keys =
+      R"("keys": [{"time": 0, "value": 0, "handle_left": [-4, -2], "handle_right": [4, 2]},
+                  {"time": 10, "value": 1, "handle_left": [6, 2], "handle_right": [14, 0]}])";
+  const auto at5 = [&](const std::string& handles) {
+    const nlohmann::json j =
+        nlohmann::json::parse(R"({"type": "channel", "tool": "blender", )" + handles + keys + "}");
+    return cb::io::channel_model_of_spec<float>(spec_of(j)).at(5.0f, 0);
+  };
+  EXPECT_EQ(at5(R"("handles": "stored", )"), 1.625f);
+  EXPECT_EQ(at5(""), 0.5f);
+  EXPECT_EQ(at5(R"("handles": "by_type", )"), 0.5f);
+  const std::string msg = cbt::message_of([&] { (void)at5(R"("handles": "rules", )"); });
+  EXPECT_THAT(msg, ::testing::AllOf(::testing::HasSubstr("spec.json.handles"), ::testing::HasSubstr("stored")));
 }
 
 TEST(io_channel, usd_tool_matches_the_model_and_its_50_digit_twin) {
@@ -524,7 +545,7 @@ TEST(io_channel, blender_numbers_past_float_are_named) {
 }
 
 // A channel held in float (the accuracy sweep's float runs) from data past float's range: the field
-// and the number as written are named (stop 48's sweep saw "keys[0].value = inf: must be finite" in
+// and the number as written are named (a hostile sweep saw "keys[0].value = inf: must be finite" in
 // the records of an exact channel with values of 1e300), every tool alike; double holds it.
 TEST(io_channel, numbers_past_float_are_named_when_held_in_float) {
   const auto message = [](const std::string& tool, const std::string& keys) {

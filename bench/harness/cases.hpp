@@ -21,7 +21,7 @@ namespace curvebench::harness {
 inline constexpr const char* suite_name = "curvebench-cases";
 inline constexpr int suite_version = 4;  // 2: conic_ellipse_arc and rational_cubic_weighted added;
                                          // 3: catmull_rom_centripetal_end_controls_2d added;
-                                         // 4: the svg_* corpus of issue 35 added
+                                         // 4: the svg_* corpus added
 
 struct case_info {
   std::string name;
@@ -34,13 +34,15 @@ struct case_info {
 };
 
 /// All *.json cases of a directory, sorted by name. Each must be a valid spec with name (equal to
-/// the file's stem), group and reason; errors name the file and field.
+/// the file's stem), group and reason; errors name the file and field. A file named index.json is
+/// the directory's index, not a case (scripts/blender_export.py writes one beside its specs, which
+/// are cases), so no case is named "index".
 inline std::vector<case_info> load_cases(const std::string& dir) {
   namespace fs = std::filesystem;
   if (!fs::is_directory(dir)) throw invalid_input("cases: " + dir + " is not a directory");
   std::vector<case_info> out;
   for (const auto& entry : fs::directory_iterator(dir)) {
-    if (entry.path().extension() != ".json") continue;
+    if (entry.path().extension() != ".json" || entry.path().filename() == "index.json") continue;
     const std::string file = entry.path().string();
     // A case is a file: a FIFO named *.json blocked the whole run at its open (no writer), and a
     // directory or device is no case either. A symbolic link to a regular file is one.

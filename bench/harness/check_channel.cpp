@@ -74,8 +74,10 @@ channel_reference channel_reference_of(const io::field& spec, check_against agai
     using Storage = typename Tool::storage_type;
     out.at = reference_of(io::channel_model_of_spec<Storage>(spec));
     out.bits = static_cast<int>(sizeof(Storage) * 8);
-    const std::string solver =
+    std::string solver =
         spec.has("solver") ? spec.member("solver").string() : std::string(channel::to_string(Tool::default_solver));
+    if constexpr (requires { Tool::own_solver; })
+      if (!spec.has("solver")) solver = std::string(Tool::own_solver);
     out.what = "tool " + tool + "'s own evaluation (solver " + solver + ", in " +
                (sizeof(Storage) == 4 ? "float at float(t)" : "double") + ")";
   });

@@ -74,11 +74,16 @@
 // v_first); mirror: every odd repeat mirrored, as channel's oscillate); t_last + N T and t_first -
 // N T still belong to the repeats; beyond them (or with mode none) the curve's own extrapolation.
 // Precision: Blender stores keys and handles in float32 and its values are float32.
-// blender_model<float>(fcurve) with an accurate time solver (the default, exact; curvebench,
-// isolate_brent and table_newton do as well) reproduces Blender's values to float rounding of the
-// value scale; closed_form solved in float does not where long handles make the cubic cancel, so
-// Blender's own root is not float-limited (tests/test_blender.cpp measures every solver against the
-// recorded values). blender_model<real50>(fcurve) is the 50-digit truth of the same description.
+// blender_model<float>(fcurve) forms a Bezier segment's value as Blender does: the handles
+// corrected in float, the root of the time cubic of the absolute float control times found as
+// Blender finds it (blender_root: float coefficients, Cardano's formula in double) and rounded to
+// float, then the value cubic in float power form, each operation rounded (no FMA contraction).
+// With the stored handles (stored_handles) it gives Blender's values bit for bit on the Bezier,
+// constant and linear segments (tests/test_blender.cpp on tests/data/blender_fcurves.json,
+// tests/data/blender_export); Penner eases within 0.46 float ulps; with the handles recomputed by
+// their rules, to float rounding of the value scale. A named time solver replaces Blender's root
+// (tests/test_blender.cpp measures each against the recorded values). blender_model<real50>(fcurve)
+// is the 50-digit truth of the same description (solver exact).
 // Validation (invalid_input naming the key index and field, with the value): no keys; non-finite
 // numbers; keys not in increasing time order; handle_left after or handle_right before its key;
 // enum values outside their lists; aligned on one side only, auto / auto_clamped on one side beside
@@ -103,10 +108,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -229,6 +236,11 @@ struct blender_fcurve {
   blender_extrapolation extrapolation = blender_extrapolation::constant;
   auto_smoothing smoothing = auto_smoothing::cont_accel;
   blender_cycles cycles{};
+  /// The handles are the ones Blender stored (an F-curve exported from a .blend): they are evaluated
+  /// as they are, whatever their types, as Blender evaluates an F-curve; Blender applies the handle
+  /// rules when keys are edited, in its own float order of operations, which the rules here
+  /// reproduce to a few float roundings only (tests/test_blender.cpp, handle_tol).
+  bool stored_handles = false;
 };
 
 namespace detail {
@@ -789,12 +801,13 @@ void blender_smooth_mixed(std::vector<blender_key<Real>>& k, const blender_neigh
 }  // namespace detail
 
 /// The keys with Blender's handle rules applied (see the header): auto, auto_clamped, vector and
-/// aligned handles recomputed, free handles as given. Validates the description.
+/// aligned handles recomputed, free handles as given; every handle as given when the F-curve's
+/// handles are the stored ones (stored_handles). Validates the description.
 template <class Real>
 [[nodiscard]] std::vector<blender_key<Real>> blender_handles(const blender_fcurve<Real>& c) {
   detail::validate_fcurve(c);
   std::vector<blender_key<Real>> k = c.keys;
-  if (k.size() < 2) return k;
+  if (k.size() < 2 || c.stored_handles) return k;
   const bool accel = c.smoothing == auto_smoothing::cont_accel;
   const bool linear = c.extrapolation == blender_extrapolation::linear;
   // Blender takes the handles as cyclic only when both end keys are auto on both sides.
@@ -828,11 +841,14 @@ class blender_evaluator {
  public:
   using real_type = Real;
 
-  blender_evaluator(const blender_fcurve<Real>& curve, time_solver solver)
+  /// solver: the time solver of the Bezier segments; none (the default) is Blender's own in the
+  /// float model (blender_root) and exact in every other precision.
+  blender_evaluator(const blender_fcurve<Real>& curve, std::optional<time_solver> solver)
       : keys_(blender_handles(curve)),
+        solver_(solver),
         cycles_(curve.cycles),
         linear_(curve.extrapolation == blender_extrapolation::linear),
-        channel_(make_channel(keys_, curve, solver)) {}
+        channel_(make_channel(keys_, curve, solver.value_or(time_solver::exact))) {}
 
   [[nodiscard]] Real value(const Real& t) const { return eval(t, 0); }
   /// d^order v / dt^order, order 0, 1 or 2 (channel.hpp's and penner.hpp's rules).
@@ -848,6 +864,7 @@ class blender_evaluator {
 
  private:
   std::vector<blender_key<Real>> keys_;
+  std::optional<time_solver> solver_;
   blender_cycles cycles_;
   bool linear_;
   channel<Real> channel_;
@@ -938,8 +955,141 @@ class blender_evaluator {
         return penner_ease(penner_family_of(k0.interpolation), k0.easing, k0.params, Real(t - k0.time), k0.value,
                            Real(k1.value - k0.value), Real(k1.time - k0.time), order);
       }
+      if constexpr (std::is_same_v<Real, float>)
+        if (order == 0 && k0.interpolation == blender_interpolation::bezier && t > k0.time)
+          return bezier_value(i, t);
     }
     return order == 0 ? channel_.value(t) : channel_.derivative(t, order);
+  }
+
+  /// A float that is the rounded result of the operation that made it: stored through a volatile,
+  /// so that no compiler fuses a product into the next sum (an FMA rounds once where Blender's
+  /// float arithmetic rounds twice, and the emulation must not depend on the target's contraction).
+  static float rounded(float x) {
+    volatile float r = x;
+    return r;
+  }
+
+  /// A double that is the rounded result of the operation that made it (see rounded(float)).
+  static double rounded(double x) {
+    volatile double r = x;
+    return r;
+  }
+  /// A cube root as Blender takes it: exp(log(|d|) / 3) with d's sign, 0 at 0 (not std::cbrt,
+  /// whose last bits differ).
+  static double blender_cube_root(double d) {
+    if (d == 0.0) return 0.0;
+    return d < 0.0 ? -std::exp(rounded(std::log(-d) / 3.0)) : std::exp(rounded(std::log(d) / 3.0));
+  }
+
+  /// Blender's root u of the time cubic with float control times q0..q3 at frame x: the power
+  /// coefficients formed in float (c0 = q0 - x, c1 = 3 (q1 - q0), c2 = 3 ((q0 - 2 q1) + q2),
+  /// c3 = (q3 - q0) + 3 (q1 - q2)), then solved in double by Cardano's formula (one real root) or
+  /// the trigonometric one (three), a quadratic or a linear equation where the leading
+  /// coefficients are exactly 0, each root rounded to float and the first in [-1e-10, 1.000001]
+  /// taken; none when no root lies there. Measured: with the stored handles it gives Blender
+  /// 3.4.1's recorded values bit for bit (tests/test_blender.cpp), where the exact root of the
+  /// same cubic rounded to float differs from Blender's root by a float ulp on 3 % of them.
+  [[nodiscard]] static std::optional<float> blender_root(float x, float q0, float q1, float q2, float q3) {
+    const double c0 = rounded(q0 - x);
+    const double c1 = rounded(3.0f * rounded(q1 - q0));
+    const double c2 = rounded(3.0f * rounded(rounded(q0 - rounded(2.0f * q1)) + q2));
+    const double c3 = rounded(rounded(q3 - q0) + rounded(3.0f * rounded(q1 - q2)));
+    const auto in_segment = [](float r) { return r >= static_cast<float>(-1.0e-10) && r <= 1.000001f; };
+    std::array<double, 3> roots{};
+    std::size_t n = 0;
+    if (c3 != 0.0) {
+      const double a = rounded(rounded(c2 / c3) / 3.0), b = rounded(c1 / c3), c = rounded(c0 / c3);
+      const double aa = rounded(a * a);
+      const double p = rounded(rounded(b / 3.0) - aa);
+      const double q = rounded(rounded(rounded(rounded(2.0 * aa) * a) - rounded(a * b)) + c) / 2.0;
+      const double ppp = rounded(rounded(p * p) * p);
+      const double d = rounded(rounded(q * q) + ppp);
+      if (d > 0.0) {
+        const double r = std::sqrt(d);
+        roots[n++] = rounded(rounded(blender_cube_root(rounded(-q + r)) + blender_cube_root(rounded(-q - r))) - a);
+        // Blender tests only this root: a cubic with one real root has no other.
+      } else if (d == 0.0) {
+        const double r = blender_cube_root(-q);
+        roots[n++] = rounded(rounded(2.0 * r) - a);
+        roots[n++] = rounded(-r - a);
+      } else {
+        const double phi = std::acos(rounded(-q / std::sqrt(-ppp)));
+        const double r = std::sqrt(-p);
+        const double cp = std::cos(phi / 3.0);
+        const double sq = std::sqrt(rounded(3.0 - rounded(rounded(3.0 * cp) * cp)));
+        roots[n++] = rounded(rounded(rounded(2.0 * r) * cp) - a);
+        roots[n++] = rounded(rounded(-r * rounded(cp + sq)) - a);
+        roots[n++] = rounded(rounded(-r * rounded(cp - sq)) - a);
+      }
+    } else if (c2 != 0.0) {
+      const double disc = rounded(rounded(c1 * c1) - rounded(rounded(4.0 * c2) * c0));
+      if (disc > 0.0) {
+        const double r = std::sqrt(disc);
+        roots[n++] = rounded(-c1 - r) / rounded(2.0 * c2);
+        roots[n++] = rounded(-c1 + r) / rounded(2.0 * c2);
+      } else if (disc == 0.0) {
+        roots[n++] = -c1 / rounded(2.0 * c2);
+      }
+    } else if (c1 != 0.0) {
+      roots[n++] = -c0 / c1;
+    } else if (c0 == 0.0) {
+      roots[n++] = 0.0;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto r = static_cast<float>(roots[k]);
+      if (in_segment(r)) return r;
+    }
+    return std::nullopt;
+  }
+
+  /// The value of Bezier segment i at time t (inside it) in float as Blender forms it: the handles
+  /// as stored (corrected as make_channel does, in float), the root u of the time cubic of those
+  /// absolute control times (Blender's own, blender_root, unless a solver was chosen: then that
+  /// solver's in double, where float times are exact) rounded to float,
+  /// then the value cubic in power form, c0 + u c1 + u^2 c2 + u^3 c3, with c1 = 3 (y1 - y0), c2 =
+  /// 3 (y0 - 2 y1 + y2), c3 = y3 - y0 + 3 (y1 - y2) formed in float and summed left to right.
+  /// de Casteljau's rounding of the same cubic at the root of the float-relative control times was
+  /// up to 2 float ulps from Blender's values (tests/data/blender_export, stepsAction.rotation_euler.2
+  /// at t = 6.5 to 7.5).
+  [[nodiscard]] float bezier_value(std::size_t i, float t) const {
+    const blender_key<float>& k0 = keys_[i];
+    const blender_key<float>& k1 = keys_[i + 1];
+    // Blender returns the first key's value where the four values lie within FLT_EPSILON of each
+    // other (absolute: |y0 - y3|, |y1 - y2| and |y2 - y3|, on the handles before correction).
+    const float eps = std::numeric_limits<float>::epsilon();
+    if (std::abs(k0.value - k1.value) < eps && std::abs(k0.handle_right.value - k1.handle_left.value) < eps &&
+        std::abs(k1.handle_left.value - k1.value) < eps)
+      return k0.value;
+    const float h = k1.time - k0.time;
+    // Blender's handle correction (make_channel's): a handle longer in time than the segment is
+    // shortened along itself to the segment's duration.
+    const auto corrected = [h](const blender_key<float>& k, blender_point<float> p) {
+      const float dt = std::abs(k.time - p.time);
+      if (dt > h) {
+        const float fac = h / dt;
+        p.time = rounded(k.time - rounded(fac * rounded(k.time - p.time)));
+        p.value = rounded(k.value - rounded(fac * rounded(k.value - p.value)));
+      }
+      return p;
+    };
+    const blender_point<float> p1 = corrected(k0, k0.handle_right), p2 = corrected(k1, k1.handle_left);
+    float u = 0;
+    if (solver_) {
+      const double t0 = k0.time;
+      const time_cubic<double> x{0.0, double(p1.time) - t0, double(p2.time) - t0, double(k1.time) - t0};
+      u = static_cast<float>(solve_time(*solver_, x, double(t) - t0).u);
+    } else {
+      const std::optional<float> r = blender_root(t, k0.time, p1.time, p2.time, k1.time);
+      if (!r) return 0.0f;  // Blender's value where its solver finds no root in the segment
+      u = *r;
+    }
+    const float y0 = k0.value, y1 = p1.value, y2 = p2.value, y3 = k1.value;
+    const float c1 = rounded(3.0f * rounded(y1 - y0));
+    const float c2 = rounded(3.0f * rounded(rounded(y0 - rounded(2.0f * y1)) + y2));
+    const float c3 = rounded(rounded(y3 - y0) + rounded(3.0f * rounded(y1 - y2)));
+    const float uu = rounded(u * u);
+    return rounded(rounded(rounded(y0 + rounded(u * c1)) + rounded(uu * c2)) + rounded(rounded(uu * u) * c3));
   }
 
   [[nodiscard]] Real eval(const Real& t, int order) const {
@@ -983,7 +1133,7 @@ class blender_evaluator {
 /// the default solver, exact, is the one that reproduces Blender best in float (see the header).
 template <class Real>
 [[nodiscard]] blender_evaluator<Real> blender_model(const blender_fcurve<Real>& curve,
-                                                    time_solver solver = time_solver::exact) {
+                                                    std::optional<time_solver> solver = std::nullopt) {
   return blender_evaluator<Real>(curve, solver);
 }
 
@@ -994,6 +1144,7 @@ template <class To, class From>
   out.extrapolation = c.extrapolation;
   out.smoothing = c.smoothing;
   out.cycles = c.cycles;
+  out.stored_handles = c.stored_handles;
   for (const auto& k : c.keys) {
     blender_key<To> b;
     b.time = To(k.time);

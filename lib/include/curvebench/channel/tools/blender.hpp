@@ -1,6 +1,7 @@
 // The "blender" tool: a Blender F-curve (channel/blender.hpp: blender_fcurve, the handle rules,
 // Penner easing, the Cycles modifier and blender_evaluator) as Blender evaluates it; Blender
-// stores and evaluates in float32 (storage_bits 32), solver exact. The view is the channel of the
+// stores and evaluates in float32 (storage_bits 32), with its own root finding of a Bezier
+// segment's time cubic (blender_root; default_solver, exact, is the truth's). The view is the channel of the
 // keys after the handle rules, each handle limited to its segment's duration; an eased segment
 // appears there as its chord (its values are Penner's, not the view's).
 // from_keys: free handles at the absolute positions key + handle (computed in double, then
@@ -14,6 +15,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -35,6 +37,8 @@ struct blender {
       "modelled): auto_clamped beside a free handle on one key";
   using storage_type = float;
   static constexpr time_solver default_solver = time_solver::exact;
+  /// What solves a Bezier segment's time in the float model when the spec names no solver.
+  static constexpr std::string_view own_solver = "Blender's own (float), exact at 50 digits";
 
   /// The words for a number Blender cannot hold (its F-curves are float32), after the field's name:
   /// "1e+300 is past float's range (3.4e38): ...". The spec parser and fcurve_of_keys say the same.
@@ -50,7 +54,10 @@ struct blender {
     static constexpr std::string_view name = blender::name;
     static constexpr int storage_bits = storage_bits_of<blender::storage_type>;
 
-    explicit model(const blender_fcurve<Real>& c, time_solver solver = default_solver) : evaluator_(c, solver) {}
+    /// solver: none (the default) is Blender's own root finding in float and exact at other
+    /// precisions (blender_evaluator); a solver named in the spec replaces both.
+    explicit model(const blender_fcurve<Real>& c, std::optional<time_solver> solver = std::nullopt)
+        : evaluator_(c, solver) {}
 
     [[nodiscard]] Real value(const Real& t) const { return evaluator_.value(t); }
     [[nodiscard]] Real derivative(const Real& t, int order) const { return evaluator_.derivative(t, order); }

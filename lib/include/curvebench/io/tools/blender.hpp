@@ -1,8 +1,9 @@
 // The spec of tool "blender" (channel/tools/blender.hpp): a Blender F-curve (channel/blender.hpp):
-// keys with absolute handle_left / handle_right, handle types, interpolation (constant, linear,
+// keys with absolute handle_left / handle_right, handle types (the handles recomputed by their
+// rules, or with handles: stored evaluated as given), interpolation (constant, linear,
 // bezier or a Penner family) with easing and back / amplitude / period; extrapolation constant or
 // linear, auto-handle smoothing, the Cycles modifier; evaluated in the precision asked (float is
-// Blender's own), solver default exact. An eased segment has no curve view (the planar curve is
+// Blender's own, with Blender's root finding unless the spec names a solver; exact at other precisions). An eased segment has no curve view (the planar curve is
 // refused naming the key; `sample --at` evaluates it).
 #pragma once
 
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -97,6 +99,8 @@ channel::blender_fcurve<Real> blender_fcurve_of(const field& spec) {
     if (k.has("period")) b.params.period = number(k, "period");
     c.keys.push_back(b);
   }
+  if (spec.has("handles"))
+    c.stored_handles = spec.member("handles").one_of({"by_type", "stored"}) == "stored";
   if (spec.has("extrapolation"))
     c.extrapolation = spec.member("extrapolation").one_of({"constant", "linear"}) == "linear"
                           ? channel::blender_extrapolation::linear
@@ -139,6 +143,10 @@ struct tool_spec<channel::tools::blender> {
        "handle_right_type (free, aligned, vector, auto, auto_clamped), interpolation (constant, linear, "
        "bezier, sine, quad, cubic, quart, quint, expo, circ, back, bounce, elastic), easing (auto, in, out, "
        "in_out), back, amplitude, period}, ...]"},
+      {"handles",
+       "by_type (the default: auto, auto_clamped, vector and aligned handles recomputed by Blender's rules) "
+       "or stored (every handle as given, as Blender evaluates the handles it stored; "
+       "scripts/blender_export.py writes stored)"},
       {"extrapolation", "constant or linear"},
       {"smoothing", "auto-handle smoothing, none or cont_accel (the default, as for new F-curves)"},
       {"cycles",
@@ -150,8 +158,10 @@ struct tool_spec<channel::tools::blender> {
 
   template <class Real>
   static channel::tools::blender::model<Real> parse(const field& spec) {
-    return channel::tools::blender::model<Real>(detail::blender_fcurve_of<Real>(spec),
-                                                detail::solver_of(spec, channel::tools::blender::default_solver));
+    // No solver named: Blender's own root finding in float, exact at other precisions.
+    std::optional<channel::time_solver> solver;
+    if (spec.has("solver")) solver = detail::solver_of(spec, channel::tools::blender::default_solver);
+    return channel::tools::blender::model<Real>(detail::blender_fcurve_of<Real>(spec), solver);
   }
 
   // Blender's eased segments are Penner's functions of time, not (t(u), v(u)) cubics: the
