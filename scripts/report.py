@@ -20,8 +20,9 @@ of contents (report_summary.py), then the sections. REPORT.html is the same Mark
 self-contained page (report_html.py): sortable, filterable tables and every plot inline as SVG.
 Exits 1, naming the benchmark, on a benchmark the vocabulary does not describe. Every file is
 written under a temporary name and renamed, so an interrupted run never leaves a half-written
-report. Uses Debian's python3-matplotlib (run with /usr/bin/python3); the pure helpers are in
-report_lib.py (tested by tests/python).
+report. Needs matplotlib (Debian's python3-matplotlib: /usr/bin/python3, the shebang's); under a
+python3 without it, it exits 1 naming the module and the interpreters that have it. The pure
+helpers are in report_lib.py (tested by tests/python).
 """
 import argparse
 import glob
@@ -32,6 +33,53 @@ import sys
 from collections import defaultdict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+
+def interpreters_with(module):
+    """The other python3 interpreters of this machine (/usr/bin/python3 and every python3 on PATH)
+    that can import `module`, each once: told apart by their real executable and sys.prefix, so a
+    venv (a link to the system's python3 with its own prefix) is not the system's interpreter."""
+    import shutil
+    import subprocess
+    seen, out = {(os.path.realpath(sys.executable), sys.prefix)}, []
+    dirs = os.environ.get("PATH", "").split(os.pathsep)
+    for candidate in ["/usr/bin/python3"] + [shutil.which("python3", path=d) for d in dirs]:
+        if not candidate or not os.path.exists(candidate):
+            continue
+        # -E: PYTHONPATH and the like are this process's, not the candidate's own setting.
+        try:
+            ask = f"import sys, {module}; print(sys.executable); print(sys.prefix)"
+            p = subprocess.run([candidate, "-E", "-c", ask], capture_output=True, text=True, timeout=60)
+        except (OSError, subprocess.SubprocessError):
+            continue
+        said = p.stdout.split("\n")
+        if p.returncode != 0 or len(said) < 2:
+            continue
+        key = (os.path.realpath(said[0]), said[1])
+        if key not in seen:
+            seen.add(key)
+            out.append(candidate)
+    return out
+
+
+def require(module, why):
+    """Imports `module`, or exits 1 naming it, this interpreter and the interpreters that have it:
+    `python3 scripts/report.py` under a python3 without it (a pyenv or venv one) says what to run."""
+    import importlib
+    try:
+        return importlib.import_module(module)
+    except ImportError as e:
+        others = interpreters_with(module)
+        fix = (f"run it with {others[0]} (which has it): {others[0]} {' '.join(sys.argv)}" if others
+               else f"install it for this interpreter ({sys.executable} -m pip install {module}) or Debian's "
+                    f"python3-{module} and run /usr/bin/python3 {' '.join(sys.argv)}")
+        print(f"report.py: this python3 ({sys.executable}, Python {sys.version.split()[0]}) cannot import "
+              f"'{module}' ({why}): {e}; {fix}", file=sys.stderr)
+        sys.exit(1)
+
+
+# The one module beyond the standard library (numpy comes with it); Pillow is optional (png_bytes).
+require("matplotlib", "the report's plots")
 import report_lib as lib  # noqa: E402
 import safe_output  # noqa: E402
 import report_peers  # noqa: E402
