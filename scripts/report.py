@@ -17,7 +17,8 @@ Inputs (all in the reports directory, all produced by scripts):
 REPORT.md opens with a summary built from these figures (per quantity, kind and size of curve the
 cheapest method reaching each error target, each peer's worst finding, each tool model's fidelity) and a table
 of contents (report_summary.py), then the sections. REPORT.html is the same Markdown rendered as one
-self-contained page (report_html.py): sortable, filterable tables and every plot inline as SVG.
+page (report_html.py): sortable, filterable tables, the plots it shows embedded as PNG and the
+per-case galleries linked to their files under plots/.
 Exits 1, naming the benchmark, on a benchmark the vocabulary does not describe. Every file is
 written under a temporary name and renamed, so an interrupted run never leaves a half-written
 report. Needs matplotlib (Debian's python3-matplotlib: /usr/bin/python3, the shebang's); under a
@@ -94,9 +95,6 @@ from report_lib import TARGETS, pareto_front  # noqa: E402
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
-# SVG text as text (a tenth of the size of glyphs as paths) and ids that do not change between runs.
-matplotlib.rcParams["svg.fonttype"] = "none"
-matplotlib.rcParams["svg.hashsalt"] = "curvebench"
 import matplotlib.pyplot as plt  # noqa: E402
 
 # Seed 001's property table as printed (EECS 487 lecture notes); data to show beside the measured one.
@@ -113,9 +111,9 @@ def atomic_write(path, text):
     safe_output.write_text(path, text)
 
 
-# Every figure of the run as SVG text, by its link in the Markdown ('plots/NAME.png'): REPORT.html
-# embeds them (report_html.py), so the page needs no file beside it.
-SVGS = {}
+# Every figure of the run as PNG bytes, by its link in the Markdown ('plots/NAME.png'): REPORT.html
+# embeds those the Markdown shows and links the galleries' files (report_html.py).
+PLOTS = {}
 
 
 def png_bytes(fig):
@@ -142,9 +140,7 @@ def atomic_savefig(fig, path):
         with open(tmp, "wb") as f:
             f.write(data)
     safe_output.write_with(path, write)
-    svg = io.StringIO()
-    fig.savefig(svg, format="svg", bbox_inches="tight")
-    SVGS[f"plots/{os.path.basename(path)}"] = svg.getvalue()
+    PLOTS[f"plots/{os.path.basename(path)}"] = data
     plt.close(fig)
 
 
@@ -669,7 +665,7 @@ def main():
     summary = report_summary.summary_of_run(acc, report_dir, all_rows, vocab, fidelity)
     md = report_summary.link_details(head + summary + report_summary.toc(summary, md) + md)
     atomic_write(os.path.join(report_dir, "REPORT.md"), "\n".join(md) + "\n")
-    atomic_write(os.path.join(report_dir, "REPORT.html"), report_html.render(md, SVGS))
+    atomic_write(os.path.join(report_dir, "REPORT.html"), report_html.render(md, PLOTS))
     print(f"report.py: wrote {os.path.join(report_dir, 'REPORT.md')} and REPORT.html")
     return 0
 
