@@ -87,6 +87,7 @@ import report_peers  # noqa: E402
 import report_shipped  # noqa: E402
 import report_channel  # noqa: E402
 import report_summary  # noqa: E402
+import report_checks  # noqa: E402
 import report_history  # noqa: E402
 import report_html  # noqa: E402
 import publish  # noqa: E402
@@ -478,19 +479,29 @@ def main():
     ap.add_argument("--history", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
                                                       report_history.HISTORY),
                     help="the published runs' history (default: the checkout's docs/results/history.jsonl)")
+    ap.add_argument("--checks", nargs="+", metavar="FILE", default=[],
+                    help="your own `curvebench check ... --json` result files: the report's section \"Your checks\" "
+                         "lists each check in its own unit with its gate and verdict, the summary counts them (passed, "
+                         "over their gate), and their records join \"Your implementations\"; with only these (no "
+                         "accuracy.json, benchmarks or vocabulary.json in REPORTS) the report is of them alone")
     args = ap.parse_args()
     report_dir = os.path.abspath(args.reports)
     plot_dir = os.path.join(report_dir, "plots")
     os.makedirs(plot_dir, exist_ok=True)
 
     vocab_path = args.vocabulary or os.path.join(report_dir, "vocabulary.json")
+    bench_files = sorted(glob.glob(os.path.join(report_dir, "bench_*.json")))
     try:
-        vocab = lib.load_vocabulary(vocab_path)
-        bench_context, bench_rows = lib.load_benchmark_files(
-            sorted(glob.glob(os.path.join(report_dir, "bench_*.json"))), vocab)
+        checks = report_checks.load(args.checks)
+        if args.checks and not args.vocabulary and not bench_files and not os.path.exists(vocab_path):
+            # A report of the user's checks alone: no benchmark to describe, no vocabulary needed.
+            vocab = lib.Vocabulary({"quantities": [], "methods": [], "peers": [], "operations": [], "counters": []})
+        else:
+            vocab = lib.load_vocabulary(vocab_path)
+        bench_context, bench_rows = lib.load_benchmark_files(bench_files, vocab)
         times = lib.case_times(bench_rows)
         history = report_history.load(args.history)
-    except (OSError, lib.ReportError) as e:
+    except (OSError, lib.ReportError, report_checks.ChecksError) as e:
         print(f"report.py: {e}", file=sys.stderr)
         return 1
     acc_path = os.path.join(report_dir, "accuracy.json")
@@ -501,6 +512,7 @@ def main():
     records, orders = acc.get("records", []), acc.get("orders", [])
     # A user's own implementations (subject records) get their own section, beside ours.
     records, subjects = lib.split_subjects(records)
+    subjects += report_checks.records(checks)
     ctx = acc.get("context", {})
     segments = lib.segment_counts(acc)
 
@@ -524,7 +536,30 @@ def main():
     ]))
     md += ["", "Absolute times on a shared machine are noisy; compare the ratios, measured in the same run.", ""]
 
-    md += ["## Speed per operation", ""]
+    # The sections in the order of the summary's answers that are not the method table's (whose
+    # figures are the long sections below): the user's own results, what shipped software and the
+    # peers get wrong, the tool models' fidelity.
+    md += report_checks.section(checks)
+    if subjects:
+        md += ["", "## Your implementations (subjects) beside curvebench's methods", ""]
+        md.append("Records of a user's own implementation (`curvebench check`, or the subject API "
+                  "harness/subject.hpp) against the same 50-digit reference, beside curvebench's own records of "
+                  "the same case and quantity (eval in eps x size, the others relative to L):")
+        md.append("")
+        md.append(table(["case", "quantity", "subject", "error", "curvebench's most accurate", "its error",
+                         "curvebench's cheapest at least as accurate"],
+                        lib.subject_rows(records, subjects)))
+    md += report_shipped.section(acc, report_dir, plot_dir, plt, atomic_savefig)
+    md += report_peers.peers_section(acc, report_dir, [r for r in bench_rows if r["family"] != lib.CASE_FAMILY],
+                                     vocab)
+    fidelity_path = os.path.join(report_dir, "fidelity.json")
+    fidelity = None
+    if os.path.exists(fidelity_path):
+        with open(fidelity_path, encoding="utf-8") as f:
+            fidelity = json.load(f)
+    md += report_channel.fidelity_section(fidelity, list(vocab.tools.values()))
+
+    md += ["", "## Speed per operation", ""]
     bench_rows = [r for r in bench_rows if r["family"] != lib.CASE_FAMILY]
     if bench_rows:
         ops = sorted({r["operation"] for r in bench_rows})
@@ -542,7 +577,9 @@ def main():
                               lib.display_algorithm(o, vocab), lib.display_algorithm(p, vocab), o["ns_per_op"], ratio]
                              for o, p, ratio in headlines]))
             md.append("")
-        md += ["", "### Fastest at an error target (benchmarks with a relative error counter)", ""]
+        md += ["", "### Fastest at an error target (benchmarks with a relative error counter)", "",
+               "One benchmark curve per family, timed: a measurement, not a recommendation (the Summary's table "
+               "answers per kind and size of curve).", ""]
         md.append(fastest_at_target(bench_rows, vocab))
         md += ["", "### Against the floor (hand-written kernels for the same work)", ""]
         md.append(floor_section(bench_rows, vocab))
@@ -565,7 +602,8 @@ def main():
         else:
             md.append("No results.")
         if quantity == "u_of_s":
-            md += [""] + lib.table_per_segments(all_rows, segments)
+            md += [""] + report_summary.with_many_segments_answer(lib.table_per_segments(all_rows, segments),
+                                                                  report_summary.run_recommendations(acc, all_rows))
 
     md += ["", "## Evaluation-algorithm accuracy", ""]
     ev = [r for r in records if r["quantity"] == "eval"]
@@ -579,26 +617,6 @@ def main():
 
     md += report_channel.channel_section(acc, bench_rows, plot_dir, plt, atomic_savefig,
                                          report_channel.tool_names(vocab))
-
-    fidelity_path = os.path.join(report_dir, "fidelity.json")
-    fidelity = None
-    if os.path.exists(fidelity_path):
-        with open(fidelity_path, encoding="utf-8") as f:
-            fidelity = json.load(f)
-    md += report_channel.fidelity_section(fidelity, list(vocab.tools.values()))
-
-    if subjects:
-        md += ["", "## Your implementations (subjects) beside curvebench's methods", ""]
-        md.append("Records of a user's own implementation (`curvebench check`, or the subject API "
-                  "harness/subject.hpp) against the same 50-digit reference, beside curvebench's own records of "
-                  "the same case and quantity (eval in eps x size, the others relative to L):")
-        md.append("")
-        md.append(table(["case", "quantity", "subject", "error", "curvebench's most accurate", "its error",
-                         "curvebench's cheapest at least as accurate"],
-                        lib.subject_rows(records, subjects)))
-
-    md += report_peers.peers_section(acc, report_dir, bench_rows, vocab)
-    md += report_shipped.section(acc, report_dir, plot_dir, plt, atomic_savefig)
 
     md += ["", "## Convergence orders", ""]
     if orders:
@@ -662,7 +680,7 @@ def main():
     md.append(honesty_section(records) if records else "No results.")
     md += report_history.section(history, current, plot_dir, plt, atomic_savefig)
     md.append("")
-    summary = report_summary.summary_of_run(acc, report_dir, all_rows, vocab, fidelity)
+    summary = report_summary.summary_of_run(acc, report_dir, all_rows, vocab, fidelity, checks)
     md = report_summary.link_details(head + summary + report_summary.toc(summary, md) + md)
     atomic_write(os.path.join(report_dir, "REPORT.md"), "\n".join(md) + "\n")
     atomic_write(os.path.join(report_dir, "REPORT.html"), report_html.render(md, PLOTS))
