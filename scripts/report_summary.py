@@ -496,10 +496,14 @@ def fidelity_answer(fidelity, tools):
 
 
 def subjects_answer(subjects):
-    """Per implementation (the records' method) its records and its largest error per quantity."""
+    """Per implementation (the records' method) its records and its largest error per quantity, in
+    the unit the check printed it in where the record says ("unit", "error_in_unit": a values or
+    times check's), else the record's own (eval in ulps of double x size, the others / L)."""
     by = defaultdict(lambda: defaultdict(list))
     for r in subjects:
-        if _number(r.get("error")):
+        if isinstance(r.get("unit"), str) and _number(r.get("error_in_unit")):
+            by[r["method"]][f"{r['quantity']} ({r['unit']})"].append(r["error_in_unit"])
+        elif _number(r.get("error")):
             by[r["method"]][r["quantity"]].append(r["error"])
 
     def worst(q, es):
