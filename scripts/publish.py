@@ -205,6 +205,8 @@ def headline(acc, bench_context, bench_rows, vocab, run):
         "orders": orders_summary(acc.get("orders", [])),
         "honesty": honesty(records),
         "channel": channel_summary(records, bench_rows),
+        # The recommendations, as the summary of REPORT.md and docs/results.md makes them (one function).
+        "recommendations": report_summary.run_recommendations(acc, bench_rows),
     }
 
 
@@ -259,7 +261,15 @@ def render_readme(h):
         lines += [f"  {describe_peer(p)};" for p in peers]
         lines[-1] = lines[-1][:-1] + "."
     uos = [t for t in h["targets"] if t["family"] == "u_of_s" and t["best"] is not None]
-    if uos:
+    if "recommendations" in h:
+        answers = report_summary.answer_lines(h["recommendations"])
+        if answers:
+            lines.append(f"- **The method for an error target** (the answer of docs/results.md's Summary at "
+                         f"{report_summary.target_text(report_summary.ANSWER_TARGET)}, for the kind of curve with "
+                         "the most cases of each size; every kind, size and target is there):")
+            lines += [f"  {a};" for a in answers]
+            lines[-1] = lines[-1][:-1] + "."
+    elif uos:  # a headline.json published before the recommendations were in it renders as it was published
         lines.append("- **u(s), fastest reaching |ds| / L** (one curve, benchmarks): " + "; ".join(
             f"{t['target']:g}: `{t['best']}` {fmt(t['best_ns'])} ns"
             + (f" (`{t['peer']}` {fmt(t['peer_ns'])} ns)" if t["peer"] else "")
@@ -340,6 +350,9 @@ def render_results(h, plots):
     if h.get("shipped_section"):  # REPORT.md's "Arc length in shipped software" (report_shipped.py)
         md += h["shipped_section"]
     md += ["", "## Fastest reaching an error target (benchmarks)", ""]
+    if "recommendations" in h:  # a headline.json published before them renders as it was published
+        md += ["One benchmark curve per family, timed: a measurement, not a recommendation (the Summary's table "
+               "answers per kind and size of curve).", ""]
     md.append(table(["family", "error counter", "target", "fastest", "ns per op", "fastest peer", "ns per op"],
                     [[t["family"], t["counter"], f"{t['target']:g}", t["best"] or "none reached", t["best_ns"],
                       t["peer"] or "-", t["peer_ns"]] for t in h["targets"]]))
@@ -407,7 +420,10 @@ def render_results(h, plots):
     # The page opens with REPORT.md's summary of the same run (report_summary.py) and the contents,
     # as REPORT.md does; the summary's "Details:" link this page's sections that hold its figures.
     summary = (h.get("summary") or []) + [""]
-    return "\n".join(report_summary.link_details(head + summary + report_summary.toc(summary, md) + md))
+    # The fidelity block is appended after (replace_fidelity): its section is linked as the page will have it.
+    page = report_summary.link_details(head + summary + report_summary.toc(summary, md) + md,
+                                       later=rc.fidelity_section(None, [])[:2])
+    return "\n".join(page)
 
 
 def choose_plots(plot_dir, ranked=()):
@@ -460,9 +476,11 @@ def run_sections(report_dir, acc, bench_rows, vocab, allow_missing_peers):
                            + "; install them with scripts/peers.sh and run again, or publish without them "
                              "(scripts/bench.sh --publish --allow-missing-peers; docs/results.md then names them)")
     rows = [r for r in bench_rows if r["family"] != lib.CASE_FAMILY]
+    many = report_summary.with_many_segments_answer(lib.table_per_segments(bench_rows, lib.segment_counts(acc)),
+                                                    report_summary.run_recommendations(acc, bench_rows))
     return {"summary": report_summary.summary_of_run(acc, report_dir, bench_rows, vocab, load_fidelity(report_dir)),
             "peers_section": report_peers.peers_section(acc, report_dir, rows, vocab), "peers_missing": missing,
-            "u_of_s_many": lib.table_per_segments(bench_rows, lib.segment_counts(acc))}
+            "u_of_s_many": many}
 
 
 def publish(report_dir, docs_dir, readme, allow_quick=False, allow_missing_peers=False):

@@ -17,11 +17,13 @@ Inputs (all in the reports directory, all produced by scripts):
 REPORT.md opens with a summary built from these figures (per quantity, kind and size of curve the
 cheapest method reaching each error target, each peer's worst finding, each tool model's fidelity) and a table
 of contents (report_summary.py), then the sections. REPORT.html is the same Markdown rendered as one
-self-contained page (report_html.py): sortable, filterable tables and every plot inline as SVG.
+page (report_html.py): sortable, filterable tables, the plots it shows embedded as PNG and the
+per-case galleries linked to their files under plots/.
 Exits 1, naming the benchmark, on a benchmark the vocabulary does not describe. Every file is
 written under a temporary name and renamed, so an interrupted run never leaves a half-written
-report. Uses Debian's python3-matplotlib (run with /usr/bin/python3); the pure helpers are in
-report_lib.py (tested by tests/python).
+report. Needs matplotlib (Debian's python3-matplotlib: /usr/bin/python3, the shebang's); under a
+python3 without it, it exits 1 naming the module and the interpreters that have it. The pure
+helpers are in report_lib.py (tested by tests/python).
 """
 import argparse
 import glob
@@ -32,12 +34,60 @@ import sys
 from collections import defaultdict
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+
+def interpreters_with(module):
+    """The other python3 interpreters of this machine (/usr/bin/python3 and every python3 on PATH)
+    that can import `module`, each once: told apart by their real executable and sys.prefix, so a
+    venv (a link to the system's python3 with its own prefix) is not the system's interpreter."""
+    import shutil
+    import subprocess
+    seen, out = {(os.path.realpath(sys.executable), sys.prefix)}, []
+    dirs = os.environ.get("PATH", "").split(os.pathsep)
+    for candidate in ["/usr/bin/python3"] + [shutil.which("python3", path=d) for d in dirs]:
+        if not candidate or not os.path.exists(candidate):
+            continue
+        # -E: PYTHONPATH and the like are this process's, not the candidate's own setting.
+        try:
+            ask = f"import sys, {module}; print(sys.executable); print(sys.prefix)"
+            p = subprocess.run([candidate, "-E", "-c", ask], capture_output=True, text=True, timeout=60)
+        except (OSError, subprocess.SubprocessError):
+            continue
+        said = p.stdout.split("\n")
+        if p.returncode != 0 or len(said) < 2:
+            continue
+        key = (os.path.realpath(said[0]), said[1])
+        if key not in seen:
+            seen.add(key)
+            out.append(candidate)
+    return out
+
+
+def require(module, why):
+    """Imports `module`, or exits 1 naming it, this interpreter and the interpreters that have it:
+    `python3 scripts/report.py` under a python3 without it (a pyenv or venv one) says what to run."""
+    import importlib
+    try:
+        return importlib.import_module(module)
+    except ImportError as e:
+        others = interpreters_with(module)
+        fix = (f"run it with {others[0]} (which has it): {others[0]} {' '.join(sys.argv)}" if others
+               else f"install it for this interpreter ({sys.executable} -m pip install {module}) or Debian's "
+                    f"python3-{module} and run /usr/bin/python3 {' '.join(sys.argv)}")
+        print(f"report.py: this python3 ({sys.executable}, Python {sys.version.split()[0]}) cannot import "
+              f"'{module}' ({why}): {e}; {fix}", file=sys.stderr)
+        sys.exit(1)
+
+
+# The one module beyond the standard library (numpy comes with it); Pillow is optional (png_bytes).
+require("matplotlib", "the report's plots")
 import report_lib as lib  # noqa: E402
 import safe_output  # noqa: E402
 import report_peers  # noqa: E402
 import report_shipped  # noqa: E402
 import report_channel  # noqa: E402
 import report_summary  # noqa: E402
+import report_checks  # noqa: E402
 import report_history  # noqa: E402
 import report_html  # noqa: E402
 import publish  # noqa: E402
@@ -46,9 +96,6 @@ from report_lib import TARGETS, pareto_front  # noqa: E402
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
-# SVG text as text (a tenth of the size of glyphs as paths) and ids that do not change between runs.
-matplotlib.rcParams["svg.fonttype"] = "none"
-matplotlib.rcParams["svg.hashsalt"] = "curvebench"
 import matplotlib.pyplot as plt  # noqa: E402
 
 # Seed 001's property table as printed (EECS 487 lecture notes); data to show beside the measured one.
@@ -65,9 +112,9 @@ def atomic_write(path, text):
     safe_output.write_text(path, text)
 
 
-# Every figure of the run as SVG text, by its link in the Markdown ('plots/NAME.png'): REPORT.html
-# embeds them (report_html.py), so the page needs no file beside it.
-SVGS = {}
+# Every figure of the run as PNG bytes, by its link in the Markdown ('plots/NAME.png'): REPORT.html
+# embeds those the Markdown shows and links the galleries' files (report_html.py).
+PLOTS = {}
 
 
 def png_bytes(fig):
@@ -94,9 +141,7 @@ def atomic_savefig(fig, path):
         with open(tmp, "wb") as f:
             f.write(data)
     safe_output.write_with(path, write)
-    svg = io.StringIO()
-    fig.savefig(svg, format="svg", bbox_inches="tight")
-    SVGS[f"plots/{os.path.basename(path)}"] = svg.getvalue()
+    PLOTS[f"plots/{os.path.basename(path)}"] = data
     plt.close(fig)
 
 
@@ -434,19 +479,29 @@ def main():
     ap.add_argument("--history", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
                                                       report_history.HISTORY),
                     help="the published runs' history (default: the checkout's docs/results/history.jsonl)")
+    ap.add_argument("--checks", nargs="+", metavar="FILE", default=[],
+                    help="your own `curvebench check ... --json` result files: the report's section \"Your checks\" "
+                         "lists each check in its own unit with its gate and verdict, the summary counts them (passed, "
+                         "over their gate), and their records join \"Your implementations\"; with only these (no "
+                         "accuracy.json, benchmarks or vocabulary.json in REPORTS) the report is of them alone")
     args = ap.parse_args()
     report_dir = os.path.abspath(args.reports)
     plot_dir = os.path.join(report_dir, "plots")
     os.makedirs(plot_dir, exist_ok=True)
 
     vocab_path = args.vocabulary or os.path.join(report_dir, "vocabulary.json")
+    bench_files = sorted(glob.glob(os.path.join(report_dir, "bench_*.json")))
     try:
-        vocab = lib.load_vocabulary(vocab_path)
-        bench_context, bench_rows = lib.load_benchmark_files(
-            sorted(glob.glob(os.path.join(report_dir, "bench_*.json"))), vocab)
+        checks = report_checks.load(args.checks)
+        if args.checks and not args.vocabulary and not bench_files and not os.path.exists(vocab_path):
+            # A report of the user's checks alone: no benchmark to describe, no vocabulary needed.
+            vocab = lib.Vocabulary({"quantities": [], "methods": [], "peers": [], "operations": [], "counters": []})
+        else:
+            vocab = lib.load_vocabulary(vocab_path)
+        bench_context, bench_rows = lib.load_benchmark_files(bench_files, vocab)
         times = lib.case_times(bench_rows)
         history = report_history.load(args.history)
-    except (OSError, lib.ReportError) as e:
+    except (OSError, lib.ReportError, report_checks.ChecksError) as e:
         print(f"report.py: {e}", file=sys.stderr)
         return 1
     acc_path = os.path.join(report_dir, "accuracy.json")
@@ -457,6 +512,7 @@ def main():
     records, orders = acc.get("records", []), acc.get("orders", [])
     # A user's own implementations (subject records) get their own section, beside ours.
     records, subjects = lib.split_subjects(records)
+    subjects += report_checks.records(checks)
     ctx = acc.get("context", {})
     segments = lib.segment_counts(acc)
 
@@ -480,7 +536,30 @@ def main():
     ]))
     md += ["", "Absolute times on a shared machine are noisy; compare the ratios, measured in the same run.", ""]
 
-    md += ["## Speed per operation", ""]
+    # The sections in the order of the summary's answers that are not the method table's (whose
+    # figures are the long sections below): the user's own results, what shipped software and the
+    # peers get wrong, the tool models' fidelity.
+    md += report_checks.section(checks)
+    if subjects:
+        md += ["", "## Your implementations (subjects) beside curvebench's methods", ""]
+        md.append("Records of a user's own implementation (`curvebench check`, or the subject API "
+                  "harness/subject.hpp) against the same 50-digit reference, beside curvebench's own records of "
+                  "the same case and quantity (eval in eps x size, the others relative to L):")
+        md.append("")
+        md.append(table(["case", "quantity", "subject", "error", "curvebench's most accurate", "its error",
+                         "curvebench's cheapest at least as accurate"],
+                        lib.subject_rows(records, subjects)))
+    md += report_shipped.section(acc, report_dir, plot_dir, plt, atomic_savefig)
+    md += report_peers.peers_section(acc, report_dir, [r for r in bench_rows if r["family"] != lib.CASE_FAMILY],
+                                     vocab)
+    fidelity_path = os.path.join(report_dir, "fidelity.json")
+    fidelity = None
+    if os.path.exists(fidelity_path):
+        with open(fidelity_path, encoding="utf-8") as f:
+            fidelity = json.load(f)
+    md += report_channel.fidelity_section(fidelity, list(vocab.tools.values()))
+
+    md += ["", "## Speed per operation", ""]
     bench_rows = [r for r in bench_rows if r["family"] != lib.CASE_FAMILY]
     if bench_rows:
         ops = sorted({r["operation"] for r in bench_rows})
@@ -498,7 +577,9 @@ def main():
                               lib.display_algorithm(o, vocab), lib.display_algorithm(p, vocab), o["ns_per_op"], ratio]
                              for o, p, ratio in headlines]))
             md.append("")
-        md += ["", "### Fastest at an error target (benchmarks with a relative error counter)", ""]
+        md += ["", "### Fastest at an error target (benchmarks with a relative error counter)", "",
+               "One benchmark curve per family, timed: a measurement, not a recommendation (the Summary's table "
+               "answers per kind and size of curve).", ""]
         md.append(fastest_at_target(bench_rows, vocab))
         md += ["", "### Against the floor (hand-written kernels for the same work)", ""]
         md.append(floor_section(bench_rows, vocab))
@@ -521,7 +602,8 @@ def main():
         else:
             md.append("No results.")
         if quantity == "u_of_s":
-            md += [""] + lib.table_per_segments(all_rows, segments)
+            md += [""] + report_summary.with_many_segments_answer(lib.table_per_segments(all_rows, segments),
+                                                                  report_summary.run_recommendations(acc, all_rows))
 
     md += ["", "## Evaluation-algorithm accuracy", ""]
     ev = [r for r in records if r["quantity"] == "eval"]
@@ -535,26 +617,6 @@ def main():
 
     md += report_channel.channel_section(acc, bench_rows, plot_dir, plt, atomic_savefig,
                                          report_channel.tool_names(vocab))
-
-    fidelity_path = os.path.join(report_dir, "fidelity.json")
-    fidelity = None
-    if os.path.exists(fidelity_path):
-        with open(fidelity_path, encoding="utf-8") as f:
-            fidelity = json.load(f)
-    md += report_channel.fidelity_section(fidelity, list(vocab.tools.values()))
-
-    if subjects:
-        md += ["", "## Your implementations (subjects) beside curvebench's methods", ""]
-        md.append("Records of a user's own implementation (`curvebench check`, or the subject API "
-                  "harness/subject.hpp) against the same 50-digit reference, beside curvebench's own records of "
-                  "the same case and quantity (eval in eps x size, the others relative to L):")
-        md.append("")
-        md.append(table(["case", "quantity", "subject", "error", "curvebench's most accurate", "its error",
-                         "curvebench's cheapest at least as accurate"],
-                        lib.subject_rows(records, subjects)))
-
-    md += report_peers.peers_section(acc, report_dir, bench_rows, vocab)
-    md += report_shipped.section(acc, report_dir, plot_dir, plt, atomic_savefig)
 
     md += ["", "## Convergence orders", ""]
     if orders:
@@ -618,10 +680,10 @@ def main():
     md.append(honesty_section(records) if records else "No results.")
     md += report_history.section(history, current, plot_dir, plt, atomic_savefig)
     md.append("")
-    summary = report_summary.summary_of_run(acc, report_dir, all_rows, vocab, fidelity)
+    summary = report_summary.summary_of_run(acc, report_dir, all_rows, vocab, fidelity, checks)
     md = report_summary.link_details(head + summary + report_summary.toc(summary, md) + md)
     atomic_write(os.path.join(report_dir, "REPORT.md"), "\n".join(md) + "\n")
-    atomic_write(os.path.join(report_dir, "REPORT.html"), report_html.render(md, SVGS))
+    atomic_write(os.path.join(report_dir, "REPORT.html"), report_html.render(md, PLOTS))
     print(f"report.py: wrote {os.path.join(report_dir, 'REPORT.md')} and REPORT.html")
     return 0
 

@@ -6,18 +6,24 @@ into HTML, so the page can say nothing the Markdown does not. What the page adds
   - every table sortable (click a column's heading; numbers sort by value, "1.2e-10 (3 evals)" by
     its leading number) and filterable (a text box over all cells, and a list of the values of each
     column named case, family, method, algorithm, peer, tool, group or quantity);
-  - every plot inline as SVG (report.py renders each figure as SVG as well as PNG): a link to
-    plots/NAME.png becomes the figure, in a closed <details> where the Markdown has a list of links;
+  - the plots: an image the Markdown shows (![alt](plots/NAME.png): the convergence panels, the
+    history, the shipped-software sweeps) is embedded as its PNG (a data: URI, so the page shows it
+    alone); a list item that is only a link to a plot of the run (the per-case galleries, a few
+    hundred plots in a full run) becomes a closed <details> whose image is the file plots/NAME.png
+    beside the page, loaded lazily when opened. Every plot inline as SVG made the quick run's page
+    10.6 MB, 94 % of it the 237 SVGs; with the galleries linked it is about 1 MB (docs/DESIGN.md);
   - headings carry GitHub's anchors (report_summary.heading_anchors), so the summary's and the
     contents' links work the same on GitHub and in the page.
-No network and no server: no external script, style sheet, font or image; the page's script and
-style are inline. The grammar rendered is the one report.py, report_summary.py, report_peers.py,
-report_channel.py and report_history.py write: headings, pipe tables, "- " lists (two levels),
-paragraphs, ``` fences, and inline `code`, **bold**, [text](link) and ![alt](image).
+No network and no server: no external script, style sheet or font, and no image but the run's own
+plots/ files; the page's script and style are inline. The grammar rendered is the one report.py,
+report_summary.py, report_peers.py, report_channel.py and report_history.py write: headings, pipe
+tables, "- " lists (two levels), paragraphs, ``` fences, and inline `code`, **bold**, [text](link)
+and ![alt](image).
 Pure functions: tests/python/test_report_html.py, and tests/python/check_report_html.py in headless
 Chromium (the page loads without a console error, sorting reorders, the summary's numbers are the
 JSON's; a screenshot is kept).
 """
+import base64
 import html
 import re
 
@@ -31,7 +37,6 @@ MAX_CHOICES = 300
 
 _INLINE = re.compile(r"`([^`]*)`|!\[([^\]]*)\]\(([^)\s]*)\)|\[([^\]]*)\]\(([^)\s]*)\)|\*\*(.+?)\*\*")
 _SEPARATOR = re.compile(r"^\|(\s*:?-{3,}:?\s*\|)+\s*$")
-_ID = re.compile(r'\bid="([^"]+)"')
 
 
 def plot_key(link):
@@ -46,35 +51,25 @@ def shown_text(cell):
     return re.sub(r"\*\*(.+?)\*\*", r"\1", re.sub(r"`([^`]*)`", r"\1", text)).strip()
 
 
-def scoped_svg(svg, prefix):
-    """An SVG document as an element of the page: the XML prologue dropped, every id (and every
-    reference to one) prefixed, so that the figures' markers and clip paths never collide."""
-    start = svg.find("<svg")
-    if start < 0:
-        raise ValueError("not an SVG document")
-    body = svg[start:]
-    ids = set(_ID.findall(body))
-    if not ids:
-        return body
-
-    def rename(m):
-        name = m.group(2)
-        return m.group(1) + (prefix + name if name in ids else name)
-    body = re.sub(r'(\bid=")([^"]+)', rename, body)
-    return re.sub(r'(url\(#|href="#)([^)"]+)', rename, body)
-
-
 class _Page:
-    def __init__(self, svgs):
-        self.svgs = svgs
+    def __init__(self, plots):
+        self.plots = plots
         self.out = []
         self.figures = 0
         self.tables = 0
 
-    def figure(self, key, caption):
+    def figure(self, key, caption, embedded=True):
+        """The plot `key` ('plots/NAME.png'): embedded as its PNG bytes, or the file beside the page,
+        loaded when shown (a closed <details> is not shown until opened)."""
         self.figures += 1
-        svg = scoped_svg(self.svgs[key], f"f{self.figures}-")
-        return f'<figure class="plot">{svg}<figcaption>{html.escape(caption)}</figcaption></figure>'
+        alt = html.escape(caption, quote=True)
+        if embedded:
+            data = base64.b64encode(self.plots[key]).decode("ascii")
+            img = f'<img src="data:image/png;base64,{data}" alt="{alt}">'
+        else:
+            img = f'<img src="{html.escape(key, quote=True)}" loading="lazy" alt="{alt}">'
+        return (f'<figure class="plot">{img}<figcaption>{html.escape(caption)} '
+                f'(<a href="{html.escape(key, quote=True)}">{html.escape(key)}</a>)</figcaption></figure>')
 
     def inline(self, text):
         """Inline Markdown to HTML; everything else escaped."""
@@ -87,7 +82,7 @@ class _Page:
                 parts.append(f"<code>{html.escape(code)}</code>")
             elif image is not None:
                 key = plot_key(image)
-                if key in self.svgs:
+                if key in self.plots:
                     parts.append(self.figure(key, alt))
                 else:  # not a figure of this run: named, never loaded (no network, no file)
                     parts.append(f"<em>[image: {html.escape(alt)} ({html.escape(image)})]</em>")
@@ -128,9 +123,10 @@ def split_row(line):
     return [c.strip().replace("\\|", "|") for c in re.split(r"(?<!\\)\|", inner)]
 
 
-def body_html(lines, svgs):
-    """The HTML of the Markdown lines (headings with their anchors, tables, lists, paragraphs)."""
-    page = _Page(svgs)
+def body_html(lines, plots):
+    """The HTML of the Markdown lines (headings with their anchors, tables, lists, paragraphs);
+    plots: {'plots/NAME.png': its PNG bytes} of the run's figures."""
+    page = _Page(plots)
     lines = report_summary.flat(lines)
     found = {index: (level, text, anchor) for index, level, text, anchor in report_summary.headings(lines)}
     out, para, i = page.out, [], 0
@@ -197,9 +193,9 @@ def list_html(lines, i, page):
     def item(text):
         only = re.fullmatch(r"\[([^\]]*)\]\(([^)\s]*)\)", text.strip())
         key = plot_key(only.group(2)) if only else None
-        if key in page.svgs:
+        if key in page.plots:
             return (f'<li><details><summary>{html.escape(only.group(1))}</summary>'
-                    f"{page.figure(key, only.group(1))}</details></li>")
+                    f"{page.figure(key, only.group(1), embedded=False)}</details></li>")
         return f"<li>{page.inline(text)}</li>"
     for is_nested, text in items:
         if is_nested and html_items:
@@ -232,7 +228,7 @@ table.data th{background:#f0f0f4;cursor:pointer;user-select:none;position:sticky
 table.data th[aria-sort=ascending]::after{content:" \\25b2"}
 table.data th[aria-sort=descending]::after{content:" \\25bc"}
 table.data tbody tr:nth-child(even){background:#fafafc}
-figure.plot{margin:.5em 0}figure.plot svg{max-width:100%;height:auto}figcaption{font-size:12px;color:#555}
+figure.plot{margin:.5em 0}figure.plot img{max-width:100%;height:auto}figcaption{font-size:12px;color:#555}
 details{margin:.2em 0}details summary{cursor:pointer}
 """
 
@@ -301,10 +297,10 @@ SCRIPT = r"""
 """
 
 
-def render(lines, svgs, title="curvebench report"):
-    """The whole page: lines the report's Markdown lines, svgs {'plots/NAME.png': svg text} of the
-    figures the Markdown links to (a link to a plot without one is named, not embedded)."""
-    body, _ = body_html(lines, svgs)
+def render(lines, plots, title="curvebench report"):
+    """The whole page: lines the report's Markdown lines, plots {'plots/NAME.png': PNG bytes} of the
+    figures the run wrote beside it (a link to a plot not among them stays a link)."""
+    body, _ = body_html(lines, plots)
     return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
             "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
             f"<title>{html.escape(title)}</title><style>{STYLE}</style></head>\n<body>\n{body}\n"

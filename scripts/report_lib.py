@@ -401,6 +401,12 @@ def featured_cases(per_case_points, count):
     return ranked[:count]
 
 
+def versions_text(versions):
+    """A driver's {library: version} as the report lists it ("chromium Chromium 156, firefox not
+    run"): a null version is a peer the driver could not run (not installed), said so."""
+    return ", ".join(f"{k} {v if v is not None else 'not run'}" for k, v in (versions or {}).items())
+
+
 def segment_counts(acc):
     """{case: its segment count} from the accuracy document's cases list ("-" where one has none)."""
     return {c["name"]: c.get("segments", "-") for c in acc.get("cases", []) if "name" in c}

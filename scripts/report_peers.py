@@ -98,10 +98,10 @@ def version_rows(acc, peer_files):
     counts = defaultdict(int)
     for r in acc.get("peer_records", []):
         counts[r.get("library", "").split(" ")[0]] += 1
-    rows = [[f"{lib_name} {version}", "accuracy runner (always)", counts.get(lib_name, 0)]
+    rows = [[lib.versions_text({lib_name: version}), "accuracy runner (always)", counts.get(lib_name, 0)]
             for lib_name, version in sorted(acc.get("context", {}).get("peers", {}).items())]
     for path, data in peer_files:
-        versions = ", ".join(f"{k} {v}" for k, v in data.get("versions", {}).items())
+        versions = lib.versions_text(data.get("versions"))
         # The shipped-software drivers' measurements are rows of their own section (report_shipped.py).
         rows.append([versions, f"{os.path.basename(path)} (scripts/peers.sh)",
                      len(data["peer_records"]) + len(data.get("rows", []))])

@@ -318,7 +318,7 @@ def section(acc, report_dir, plot_dir=None, plt=None, savefig=None, link_prefix=
            "Errors are relative to the true length L; times are the drivers' own (best of repeated passes, per "
            "call; a build is the parse or table construction, timed apart).", ""]
     versions = [[os.path.basename(p), data.get("driver", "-"),
-                 ", ".join(f"{k} {v}" for k, v in data.get("versions", {}).items()), data.get("cpu", "-")]
+                 lib.versions_text(data.get("versions")), data.get("cpu", "-")]
                 for p, data in files]
     md.append(table(["file", "driver", "versions", "CPU"], versions))
     cr_rows = catmull_rom_rows(rows)

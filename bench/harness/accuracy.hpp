@@ -17,7 +17,9 @@
 // Eval records name the evaluation algorithm, have the setting "" and the status "not_guaranteed":
 // an evaluation gives no error estimate of its own.)
 // Costs: length records count the evaluations of one call; s_of_u and u_of_s records count one
-// query plus the set-up (tables, segment lengths) amortized over `amortized_queries` queries.
+// query plus the set-up (tables, segment lengths) amortized over `amortized_queries` queries, and
+// carry the two apart: "query_evaluations" (a query's own, the mean over the targets) and
+// "build_evaluations" (the set-up's, once), so that a reader can find where a table pays off.
 // The reference is the same spec instantiated on real50 (exact twin of the double data) and
 // integrated by reference::reference_arc_length (Boost.Math, ~1e-45).
 // Peers: the libraries users would pick instead (GSL's splines and QUADPACK, today) are

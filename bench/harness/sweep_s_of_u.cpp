@@ -33,10 +33,11 @@ void sweep_s_of_u(record_sink& k, const any_curve<double, Dim>& c, case_referenc
       est = std::max(est, r.error_estimate / L);
       evals += static_cast<double>(r.evaluations);
     }
-    k.add(
-        q, m::segments_adaptive, setting(m::segments_adaptive, {}), err, est,
-        evals / static_cast<double>(us.size()) + static_cast<double>(p.construction_evaluations()) / amortized_queries,
-        al::to_string(p.length_result().status), al::to_text(p.length_result().reason));
+    const double per_query = evals / static_cast<double>(us.size());
+    const double build = static_cast<double>(p.construction_evaluations());
+    k.add(q, m::segments_adaptive, setting(m::segments_adaptive, {}), err, est, per_query + build / amortized_queries,
+          al::to_string(p.length_result().status), al::to_text(p.length_result().reason));
+    k.annotate({{"query_evaluations", per_query}, {"build_evaluations", build}});
   }
   k.begin();
   for (std::size_t steps : w.table_steps) {
@@ -47,6 +48,7 @@ void sweep_s_of_u(record_sink& k, const any_curve<double, Dim>& c, case_referenc
     k.add(q, m::forward_difference, setting(m::forward_difference, {{"steps", steps}}), err,
           std::numeric_limits<double>::quiet_NaN(), static_cast<double>(t.evaluations()) / amortized_queries,
           al::to_string(al::result_status::not_guaranteed), std::string(al::reasons::chord_table_no_estimate));
+    k.annotate({{"query_evaluations", 0.0}, {"build_evaluations", static_cast<double>(t.evaluations())}});
   }
   k.end(q, m::forward_difference);
 }

@@ -42,9 +42,12 @@ void sweep_u_of_s(record_sink& k, const any_curve<double, Dim>& c, case_referenc
         est = none;
       else if (run.table_estimate)
         est = *run.table_estimate / L;
+      const double per_query = query / static_cast<double>(targets.size());
       k.add(q, *row.method, format_setting(row, v), err, est,
-            query / static_cast<double>(targets.size()) + run.construction_evaluations / amortized_queries,
-            al::to_string(status), reason);
+            per_query + run.construction_evaluations / amortized_queries, al::to_string(status), reason);
+      // The cost's two parts apart: where a table competes with a per-query method, the report gives
+      // the query count at which the table's build pays off (scripts/report_summary.py, break_even).
+      k.annotate({{"query_evaluations", per_query}, {"build_evaluations", run.construction_evaluations}});
     }
     k.end(q, *row.method);
   });

@@ -1,14 +1,18 @@
 #!/usr/bin/python3
 """REPORT.html in headless Chromium (Debian's `chromium`):
   - the page loads without a console error, an uncaught exception or a failed resource;
-  - it loads nothing beside itself (the page's resource timing lists no script, style, font or image);
+  - it loads nothing but its own plots (the page's resource timing lists no script, style or font, and
+    no image but a data: URI or a file under the report's plots/);
   - the summary's table shows, cell for cell, the table report_summary.py builds from the accuracy
     JSON the report came from (recomputed here from that JSON, not read back from REPORT.md);
   - clicking a column's heading sorts the rows by it (numbers by value), a second click reverses,
     and the text filter hides the rows that do not match;
-  - a screenshot of the page is written (the test's artifact);
+  - screenshots of the page's top (the summary) and of a deep link (REPORT.html#DEEP_ANCHOR, the
+    shipped-software section, far down the page) are written (the test's artifacts), neither blank
+    and not the same picture (the link scrolled): not_blank() says what blank is;
   - a control run (the page without its script, a console error planted) must fail those checks.
   check_report_html.py --reports DIR --screenshot PNG [--chromium PATH] [--work DIR]
+(the deep link's screenshot is PNG with "-deep" before its extension)
   check_report_html.py --tool CURVEBENCH --only TEXT --reports DIR --screenshot PNG ...
 DIR holds REPORT.html and the inputs report.py read (accuracy.json, vocabulary.json, bench_*.json).
 With --tool, DIR is made first: the tool's quick accuracy run of the cases named by --only, its
@@ -151,10 +155,62 @@ def key(text):
     return float(m.group(1))
 
 
-def check(result, head, rows):
+# The section a deep link is checked on: on every report (it says "Not run" without the drivers' files),
+# and far down the page.
+DEEP_ANCHOR = "arc-length-in-shipped-software"
+# A screenshot is blank below these: a page of white (or of one colour) has 1 colour and no ink; a
+# heading and a line of anti-aliased text already make dozens of grey levels and well over 0.2 % of
+# the pixels non-white (a 1400 x 2200 window: 6160 pixels, about two lines of 12 px text).
+MIN_COLOURS = 16
+MIN_INK = 0.002
+
+
+def not_blank(png_path):
+    """None when the screenshot shows something (more than MIN_COLOURS colours and MIN_INK of its
+    pixels not white), else why it is blank."""
+    from PIL import Image
+    with Image.open(png_path) as im:
+        rgb = im.convert("RGB")
+        colours = rgb.getcolors(maxcolors=1 << 24)
+        n = rgb.width * rgb.height
+    white = sum(c for c, v in colours if v == (255, 255, 255))
+    ink = (n - white) / n
+    if len(colours) <= MIN_COLOURS or ink < MIN_INK:
+        return f"{png_path} is blank: {len(colours)} colours, {100 * ink:.3f} % of its pixels not white"
+    return None
+
+
+# Headless Chromium's --screenshot of a scrolled page is blank: it paints the document's first
+# window-height of pixels and shows the scrolled-to part of the viewport (a plain page of 200
+# headings, file.html#h150, is one white colour; #h10 shows ink only below the scroll offset), so
+# REPORT.html#anchor itself cannot be photographed. The deep link's screenshot is of a copy whose
+# script, once the browser has found the link's target, drops what precedes the target's section
+# and scrolls back to the top: the section the link opens, drawn as the page draws it.
+ISOLATE_TARGET = """<script>
+window.addEventListener("load", function () {
+  var id = decodeURIComponent(location.hash.slice(1)), t = id && document.getElementById(id);
+  if (!t) { document.body.textContent = ""; return; }  // no target: a blank screenshot, a failure
+  while (t.parentNode !== document.body) t = t.parentNode;
+  var b = document.body;
+  while (b.firstChild && b.firstChild !== t) b.removeChild(b.firstChild);
+  window.scrollTo(0, 0);
+});
+</script>"""
+
+
+def own_plot(url, report_dir):
+    """Whether a resource the page loaded is one of the run's plots: a PNG under report_dir/plots."""
+    if url.startswith("data:image/png;base64,"):
+        return True
+    m = re.fullmatch(r"file://(/.*/plots/[^/]+\.png)", url)
+    plots = os.path.realpath(os.path.join(report_dir, "plots"))
+    return bool(m) and os.path.dirname(os.path.realpath(m.group(1))) == plots
+
+
+def check(result, head, rows, report_dir="."):
     """The failures (strings) of the probe's result against the expected summary."""
     bad = [f"page: {p}" for p in result.get("problems", [])]
-    bad += [f"the page loaded {u}" for u in result.get("resources", []) if not u.startswith("data:")]
+    bad += [f"the page loaded {u}" for u in result.get("resources", []) if not own_plot(u, report_dir)]
     if not result.get("tables"):
         bad.append("no table on the page")
     if "sorted_heading" not in result:
@@ -169,8 +225,9 @@ def check(result, head, rows):
         if (result.get("aria_ascending"), result.get("aria_descending")) != ("ascending", "descending"):
             bad.append(f"aria-sort {result.get('aria_ascending')}, {result.get('aria_descending')}")
         term = result["filter_term"].lower()
+        words = term.split()  # the page's filter: every word of the box somewhere in the row
         for r in result["filter_rows"]:
-            if r["hidden"] == (term in r["text"].lower()):
+            if r["hidden"] == all(w in r["text"].lower() for w in words):
                 bad.append(f"filter '{term}': row {'hidden' if r['hidden'] else 'shown'} wrongly: {r['text'][:80]}")
                 break
         shown = sum(1 for r in result["filter_rows"] if not r["hidden"])
@@ -213,18 +270,21 @@ def chromium_command(chromium, work, *args):
             f"--user-data-dir={os.path.join(work, 'profile')}", *args]
 
 
-def probe(chromium, work, page, head, rows):
-    """(the probe's result or None, the failures) of page loaded in Chromium with the probes added."""
+def probe(chromium, work, page, head, rows, report_dir):
+    """(the probe's result or None, the failures) of page loaded in Chromium with the probes added;
+    its relative links (the plots' files) resolve in report_dir, as REPORT.html's do."""
     path = os.path.abspath(os.path.join(work, "probe.html"))
+    base = f'<base href="file://{html.escape(os.path.abspath(report_dir), quote=True)}/">'
     with open(path, "w", encoding="utf-8") as f:
-        f.write(page.replace("<head>", "<head>" + PROBE_HEAD, 1).replace("</body>", PROBE_TAIL + "</body>", 1))
+        f.write(page.replace("<head>", "<head>" + base + PROBE_HEAD, 1)
+                .replace("</body>", PROBE_TAIL + "</body>", 1))
     proc = subprocess.run(chromium_command(chromium, work, "--dump-dom", "file://" + path),
                           capture_output=True, text=True, timeout=300)
     m = re.search(r'<pre id="check-report-html">(.*?)</pre>', proc.stdout, re.S)
     if not m:
         return None, [f"the probe wrote no result (exit {proc.returncode}): {proc.stderr[-2000:]}"]
     result = json.loads(html.unescape(m.group(1)))
-    return result, check(result, head, rows)
+    return result, check(result, head, rows, report_dir)
 
 
 def main():
@@ -253,27 +313,50 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         work = a.work or tmp
         os.makedirs(work, exist_ok=True)
-        result, bad = probe(chromium, work, page, head, rows)
+        result, bad = probe(chromium, work, page, head, rows, a.reports)
         # The control: the same page with its script replaced by a console error must fail the
         # console and the sorting checks, or this check could not see them.
         planted = page.replace(report_html.SCRIPT, 'console.error("planted by the control run");', 1)
-        _, control = probe(chromium, work, planted, head, rows)
+        _, control = probe(chromium, work, planted, head, rows, a.reports)
         for must in ("page: console.error: planted by the control run", "did not sort ascending"):
             if not any(must in c for c in control):
                 bad.append(f"the control run (no page script, a planted console error) did not report '{must}': "
                            f"{control}")
+        if f'id="{DEEP_ANCHOR}"' not in page:
+            bad.append(f"the page has no heading #{DEEP_ANCHOR}")
         os.makedirs(os.path.dirname(os.path.abspath(a.screenshot)), exist_ok=True)
-        shot = subprocess.run(chromium_command(chromium, work, f"--screenshot={os.path.abspath(a.screenshot)}",
-                                               "--window-size=1400,2200", "file://" + os.path.abspath(page_path)),
-                              capture_output=True, text=True, timeout=300)
-        if not os.path.exists(a.screenshot) or os.path.getsize(a.screenshot) == 0:
-            bad.append(f"no screenshot written (exit {shot.returncode}): {shot.stderr[-500:]}")
+        stem, ext = os.path.splitext(os.path.abspath(a.screenshot))
+        deep_page = os.path.abspath(os.path.join(work, "deep.html"))
+        base = f'<base href="file://{html.escape(os.path.abspath(a.reports), quote=True)}/">'
+        with open(deep_page, "w", encoding="utf-8") as f:
+            f.write(page.replace("<head>", "<head>" + base, 1).replace("</body>", ISOLATE_TARGET + "</body>", 1))
+        shots = ((os.path.abspath(a.screenshot), "file://" + os.path.abspath(page_path)),
+                 (f"{stem}-deep{ext or '.png'}", "file://" + deep_page + "#" + DEEP_ANCHOR))
+        for shot_path, url in shots:
+            fragment = url[url.find("#"):] if "#" in url else ""
+            if os.path.exists(shot_path):
+                os.remove(shot_path)
+            command = chromium_command(chromium, work, f"--screenshot={shot_path}", "--window-size=1400,2200", url)
+            shot = subprocess.run(command, capture_output=True, text=True, timeout=300)
+            if not os.path.exists(shot_path) or os.path.getsize(shot_path) == 0:
+                bad.append(f"no screenshot of REPORT.html{fragment} written (exit {shot.returncode}): "
+                           f"{shot.stderr[-500:]}")
+                continue
+            blank = not_blank(shot_path)
+            if blank:
+                bad.append(f"the screenshot of REPORT.html{fragment}: {blank}")
+        if all(os.path.exists(p) for p, _ in shots):
+            with open(shots[0][0], "rb") as f, open(shots[1][0], "rb") as g:
+                if f.read() == g.read():
+                    bad.append(f"REPORT.html#{DEEP_ANCHOR} shows the same picture as the page's top: the link "
+                               "did not scroll to its section")
     for b in bad:
         print(f"check_report_html: {b}", file=sys.stderr)
     if bad or result is None:
         return 1
     print(f"check_report_html: {result['tables']} tables; sorted '{result['sorted_heading']}'; summary {len(rows)} "
-          f"rows as in the JSON; {len(result['summary_links'])} summary links; screenshot {a.screenshot}")
+          f"rows as in the JSON; {len(result['summary_links'])} summary links; screenshots {a.screenshot} "
+          f"and its -deep twin (#{DEEP_ANCHOR}), neither blank")
     return 0
 
 

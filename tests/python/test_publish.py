@@ -258,6 +258,8 @@ class Publish(unittest.TestCase):
         # with its "Details:" links to the sections of this page (report_summary.link_details).
         without_links = "\n".join(line for line in page.split("\n") if not line.startswith("Details: "))
         for section in (h["summary"], h["peers_section"]):
+            # the summary's links to sections resolved against this page's headings
+            section = report_summary.resolve_section_links(section, page.split("\n"))
             self.assertIn("\n".join(report_summary.flat(section)).replace("\n\n\n", "\n\n"),
                           without_links.replace("\n\n\n", "\n\n"))
         self.assertIn("Details: [Peers: the libraries users would pick instead]"
@@ -298,6 +300,102 @@ class Publish(unittest.TestCase):
         self.assertIn("\n## u(s) on many segments\n", page)
         self.assertIn("\n".join(h["u_of_s_many"][1:]).strip(), page)
         self.assertIn("| road | 1000 | 1e-12 | 266304 | - | 7.5 | 1.25 |", page)
+
+
+class OneAnswer(unittest.TestCase):
+    """The README's headline, docs/results.md and REPORT.md give the same recommendation from the
+    same records (report_summary.run_recommendations), with the break-even query count of a table
+    against a per-query method computed from the records' build and query evaluations. The summary
+    said newton where the README and the many-segment section said hermite_table before."""
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, self.tmp)
+        self.reports = os.path.join(self.tmp, "reports")
+        self.docs = os.path.join(self.tmp, "docs")
+        os.makedirs(self.reports)
+        self.readme = os.path.join(self.tmp, "README.md")
+        with open(self.readme, "w", encoding="utf-8") as f:
+            f.write(f"intro\n{publish.BEGIN}\n{publish.END}\n")
+        make_run(self.reports)
+
+    def with_road(self, table_build):
+        """A 1000-segment road in the run: newton (1000 evaluations a query, 5e4 to build) and the
+        sized Hermite table (none a query, table_build to build), both under 1e-10; evaluations is
+        the query's plus the build amortized over 1000 queries, as the accuracy runner writes it."""
+        path = os.path.join(self.reports, "accuracy.json")
+        with open(path, encoding="utf-8") as f:
+            acc = json.load(f)
+        acc["cases"] = [c for c in acc["cases"] if c["name"] != "road"] + [
+            {"name": "road", "family": "composite_bezier", "group": "road", "segments": 1000}]
+        acc["records"] = [r for r in acc["records"] if r["case"] != "road"]
+        for c in acc["cases"]:  # every case as the accuracy runner writes it, with its group (REPORT.md's References)
+            c.setdefault("group", "smooth")
+        for method, err, query, build in (("newton", 1e-13, 1000.0, 5e4),
+                                          ("hermite_table_sized", 3e-13, 0.0, table_build)):
+            acc["records"].append({"case": "road", "group": "road", "quantity": "u_of_s", "method": method,
+                                   "setting": "tol=1e-12", "error": err, "estimate": 2 * err, "bounded": True,
+                                   "evaluations": query + build / 1000, "status": "converged",
+                                   "query_evaluations": query, "build_evaluations": build})
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(acc, f)
+
+    def pages(self):
+        h = publish.publish(self.reports, self.docs, self.readme, allow_missing_peers=True)
+        with open(self.readme, encoding="utf-8") as f:
+            readme = f.read()
+        with open(os.path.join(self.docs, "results.md"), encoding="utf-8") as f:
+            results = f.read()
+        import report_fixture
+        with open(os.path.join(self.reports, "accuracy.json"), encoding="utf-8") as f:
+            acc = json.load(f)
+        report = report_fixture.run_report(self, acc)
+        return h, readme, results, report
+
+    def road_answer(self, h):
+        (line,) = [a for a in report_summary.answer_lines(h["recommendations"]) if a.startswith("`u_of_s`")]
+        return line
+
+    def test_readme_results_and_report_agree_and_the_break_even_comes_from_the_records(self):
+        self.with_road(2.2e6)
+        h, readme, results, report = self.pages()
+        line = self.road_answer(h)
+        # newton is the cheaper at the records' 1000 queries; the table pays off past
+        # (2.2e6 - 5e4) / (1000 - 0) = 2150 queries
+        self.assertEqual(line, "`u_of_s`, 100+ segments (road, 1 case): newton tol=1e-12 (1.05e+03 evals); by query "
+                               "count: newton tol=1e-12 (1e+03 evals a query, 5.00e+04 to build) up to 2150 queries, "
+                               "then hermite_table_sized tol=1e-12 (0 evals a query, 2.20e+06 to build)")
+        self.assertIn(f"  {line};", readme)  # an item of the headline
+        for page in (results, report):
+            summary = page[page.index("## Summary"):page.index("## Contents")]
+            self.assertIn(f"  - {line}", summary)
+            self.assertIn("| `u_of_s` | road | 100+ segments | 1 |", summary)
+            self.assertIn("newton tol=1e-12 (1.05e+03 evals); by query count: newton tol=1e-12 (1e+03 evals a query, "
+                          "5.00e+04 to build) up to 2150 queries", summary)
+        self.assertNotIn("u(s), fastest reaching", readme)  # the one-curve benchmark no longer answers it
+        # A cheaper table build moves the break-even: (1.3e6 - 5e4) / 1000 = 1250 queries.
+        self.with_road(1.3e6)
+        h, readme, results, report = self.pages()
+        line = self.road_answer(h)
+        self.assertIn("up to 1250 queries, then hermite_table_sized tol=1e-12 (0 evals a query, 1.30e+06 to build)",
+                      line)
+        for page in (readme, results, report):
+            self.assertIn(line, page)
+
+    def test_records_without_the_split_say_so_and_give_no_break_even(self):
+        self.with_road(2.2e6)
+        path = os.path.join(self.reports, "accuracy.json")
+        with open(path, encoding="utf-8") as f:
+            acc = json.load(f)
+        for r in acc["records"]:
+            r.pop("query_evaluations", None)
+            r.pop("build_evaluations", None)
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(acc, f)
+        h, readme, results, report = self.pages()
+        self.assertEqual(self.road_answer(h),
+                         "`u_of_s`, 100+ segments (road, 1 case): newton tol=1e-12 (1.05e+03 evals)")
+        self.assertIn("do not carry `build_evaluations` and `query_evaluations` apart", report)
 
 
 class CheckedIn(unittest.TestCase):

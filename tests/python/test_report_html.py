@@ -1,6 +1,7 @@
 """Unit tests of scripts/report_html.py (REPORT.html from the report's Markdown) and of the anchors and
 summary links of scripts/report_summary.py it relies on; the page itself in headless Chromium is
 check_report_html.py (ctest report_html_chromium). Run by ctest (report_py)."""
+import base64
 import html
 import os
 import re
@@ -16,10 +17,7 @@ import report_html  # noqa: E402
 import report_summary  # noqa: E402
 import report_fixture  # noqa: E402
 
-SVG = ('<?xml version="1.0" encoding="utf-8"?>\n<!DOCTYPE svg>\n<svg xmlns="http://www.w3.org/2000/svg" '
-       'xmlns:xlink="http://www.w3.org/1999/xlink"><defs><path id="m0" d="M 0 0 L 1 1"/>'
-       '<clipPath id="p1"><rect width="1" height="1"/></clipPath></defs>'
-       '<g clip-path="url(#p1)"><use xlink:href="#m0" x="2"/></g></svg>')
+PNG = b"\x89PNG\r\n\x1a\n not decoded by the renderer"  # the bytes are only base64-encoded
 
 
 class Elements(HTMLParser):
@@ -108,28 +106,33 @@ class Rendering(unittest.TestCase):
         ids = [a["id"] for t, a in parse(body).tags if t in ("h2", "h3")]
         self.assertEqual(ids, ["summary", "b", "b-1"])
 
-    def test_plots_are_inline_svg_with_ids_of_their_own(self):
+    def test_shown_plots_are_embedded_and_gallery_plots_link_their_files(self):
         md = ["- [case one](plots/one.png)", "- [no plot](plots/missing.png)", "", "![conv](plots/two.png)"]
-        body, page = report_html.body_html(md, {"plots/one.png": SVG, "plots/two.png": SVG})
+        body, page = report_html.body_html(md, {"plots/one.png": PNG, "plots/two.png": PNG})
         self.assertEqual(page.figures, 2)
-        self.assertNotIn("<?xml", body)
-        ids = re.findall(r'\bid="([^"]+)"', body)
-        self.assertEqual(len(ids), len(set(ids)), ids)  # the same SVG twice, no id twice
-        for ref in re.findall(r'(?:url\(#|href="#)([^)"]+)', body):
-            self.assertIn(ref, ids)
+        imgs = [a for t, a in parse(body).tags if t == "img"]
+        self.assertEqual(len(imgs), 2)
+        # The gallery's plot: the file beside the page, fetched when its <details> is opened.
+        self.assertEqual((imgs[0]["src"], imgs[0]["loading"], imgs[0]["alt"]), ("plots/one.png", "lazy", "case one"))
         self.assertIn("<details><summary>case one</summary><figure", body)
+        # The image the Markdown shows: its own bytes, so the page shows it without the file.
+        self.assertEqual(imgs[1]["src"], "data:image/png;base64," + base64.b64encode(PNG).decode())
         self.assertIn('<a href="plots/missing.png">no plot</a>', body)  # a link, not an embedded file
 
     def test_lists_nest_and_continue(self):
         body, _ = report_html.body_html(["- a", "  - b", "  more", "- c"], {})
         self.assertEqual(body, "<ul><li>a<ul><li>b more</li></ul></li><li>c</li></ul>")
 
-    def test_the_page_loads_nothing_from_outside(self):
-        page = report_html.render(["# R", "- [x](plots/one.png)"], {"plots/one.png": SVG})
+    def test_the_page_loads_nothing_but_its_own_plots(self):
+        page = report_html.render(["# R", "- [x](plots/one.png)", "", "![y](plots/two.png)"],
+                                  {"plots/one.png": PNG, "plots/two.png": PNG})
         p = parse(page)
         for tag, attrs in p.tags:
-            self.assertNotIn(tag, ("link", "img", "iframe", "object", "embed"))
-            self.assertNotIn("src", attrs, tag)
+            self.assertNotIn(tag, ("link", "iframe", "object", "embed"))
+            if tag == "img":
+                self.assertRegex(attrs["src"], r"^(data:image/png;base64,|plots/[^/]+\.png$)")
+            else:
+                self.assertNotIn("src", attrs, tag)
         self.assertNotRegex(page, r"@import|url\(\s*['\"]?(?:https?:|//)")
 
 
@@ -158,6 +161,28 @@ class FromTheReport(unittest.TestCase):
         self.assertIn("gauss n=4 (4 evals)", html.unescape(page))
         self.assertIn('<h2 id="summary">', page)
         self.assertIn("Details: [", md)
+
+    def test_the_page_stays_small_its_galleries_linked_not_embedded(self):
+        # Every plot inline as SVG made the quick run's page 10.6 MB; the galleries' plots are now
+        # the files beside it (1.26 MB on the quick run of 81 cases, docs/DESIGN.md).
+        d = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, d)
+        acc = {"context": {"revision": "r1"}, "suite": {"name": "s", "version": 1, "cases": 30},
+               "cases": [{"name": f"c{i}", "group": "bezier", "family": "bezier", "segments": 1} for i in range(30)],
+               "records": [{"case": f"c{i}", "quantity": q, "method": m, "setting": st, "error": e * (1 + i),
+                            "evaluations": n, "estimate": 2 * e, "bounded": True}
+                           for i in range(30) for q in ("length", "u_of_s")
+                           for m, st, e, n in (("gauss", "n=4", 3e-7, 4), ("gauss", "n=12", 2e-11, 12))]}
+        report_fixture.run_report(self, acc, directory=d)
+        size = os.path.getsize(os.path.join(d, "REPORT.html"))
+        with open(os.path.join(d, "REPORT.html"), encoding="utf-8") as f:
+            page = f.read()
+        plots = os.listdir(os.path.join(d, "plots"))
+        self.assertGreaterEqual(len(plots), 60)  # a plot per case and quantity
+        linked = re.findall(r'<img src="(plots/[^"]+)" loading="lazy"', page)
+        self.assertEqual(len(linked), len([p for p in plots if p.startswith(("length_", "u_of_s_"))]))
+        self.assertLess(size, 3_000_000)
+        self.assertLess(size, 200_000, "60 plots linked, not embedded: the page is its tables and text")
 
     def test_chromium_check_compares_the_page_with_the_json(self):
         # The comparison of check_report_html.py, without Chromium: a row the page shows differently

@@ -280,6 +280,72 @@ class Contents(unittest.TestCase):
                           "- [Contents](#contents-1)", "- [Notes](#notes)", "- [Notes](#notes-1)", ""])
 
 
+class ByQueryCount(unittest.TestCase):
+    """The cheapest u(s) method for N queries, build + N x query evaluations, known by hand."""
+
+    def rows(self, table_build):
+        # newton: 100 a query, 1e3 to build; polished table: 10 a query, 2e4; sized table: 0, table_build
+        out = []
+        for case in ("r1", "r2"):
+            for m, st, q, b in (("newton", "tol=1e-12", 100.0, 1e3), ("hermite_table_polished", "M=512", 10.0, 2e4),
+                                ("hermite_table_sized", "tol=1e-12", 0.0, table_build)):
+                out.append(rec(case, m, st, 1e-13, q + b / 1000, quantity="u_of_s", query_evaluations=q,
+                               build_evaluations=b))
+        return rs.recommendation_rows(out, [], targets=(1e-10,))
+
+    def test_each_method_is_cheapest_from_its_break_even_count_on(self):
+        (cell,) = cells(self.rows(1e6), "u_of_s")
+        ranges = [(round(r["from"], 6), r["choice"]["method"]) for r in cell["by_queries"]]
+        # newton until (2e4 - 1e3) / (100 - 10) = 211.1 queries, the polished table until
+        # (1e6 - 2e4) / (10 - 0) = 98000, then the sized table
+        self.assertEqual(ranges, [(1.0, "newton"), (round(19000 / 90, 6), "hermite_table_polished"),
+                                  (98000.0, "hermite_table_sized")])
+        self.assertIn("newton tol=1e-12 (100 evals a query, 1e+03 to build) up to 212 queries, then "
+                      "hermite_table_polished M=512 (10 evals a query, 2.00e+04 to build) up to 98000 queries, then "
+                      "hermite_table_sized tol=1e-12 (0 evals a query, 1.00e+06 to build)", rs.cell_text(cell))
+        # at the records' 1000 queries the polished table is the cheapest: the pick agrees with the ranges
+        self.assertEqual(cell["ours"]["method"], "hermite_table_polished")
+
+    def test_a_cheap_enough_table_is_the_answer_whatever_the_count(self):
+        # a sized table built for less than newton's prefix and free per query dominates: no ranges
+        (cell,) = cells(self.rows(500.0), "u_of_s")
+        self.assertIsNone(cell["by_queries"])
+        self.assertTrue(cell["split"])
+        self.assertEqual(cell["ours"]["method"], "hermite_table_sized")
+
+
+class Answers(unittest.TestCase):
+    def test_the_worst_engine_per_quantity_and_none_measured(self):
+        shipped = [{"peer": "peer_chromium", "case": "a", "setting": "", "length_error": 1e-3, "point_error": 2e-5},
+                   {"peer": "peer_firefox", "case": "b", "setting": "", "length_error": 4e-2, "point_error": 1e-6},
+                   {"peer": "peer_skia", "case": "a", "setting": "tolerance=1e-9", "length_error": 9.0}]
+        text = rs.engine_answer(shipped, [], [], ["shipped_browser"])
+        # Skia's 9 is at a setting, not its defaults: the defaults' worst are named
+        self.assertIn("length: worst firefox, 0.04 of L on b", text)
+        self.assertIn("point at length: worst chromium, 2.00e-05 of L on a", text)
+        self.assertNotIn("skia", text)
+        self.assertEqual(rs.engine_answer([], [], [], []),
+                         "none were measured in this run (no peer records and no reports/peers_*.json: "
+                         "scripts/peers.sh). No browser or shipped engine was measured (no "
+                         "reports/peers_shipped_*.json).")
+
+    def test_fidelity_names_the_verified_the_disagreeing_and_the_unrecorded(self):
+        fid = {"recordings": [{"tool": "blender", "channels": 10, "refused": 0, "unverified": 0, "agree": 10,
+                               "max_error": 0.1, "file": "b.json"},
+                              {"tool": "maya", "channels": 8, "refused": 1, "unverified": 1, "agree": 4,
+                               "max_error": 30.0, "file": "m.json"}]}
+        self.assertEqual(rs.fidelity_answer(fid, ["exact", "blender", "maya", "usd"]),
+                         "verified against every recording: blender (10 of 10 channels); not verified: maya (2 of 6 "
+                         "channels disagree, largest error 30 x scale); no recording of the real tool: usd.")
+        self.assertIn("none measured", rs.fidelity_answer(None, ["blender"]))
+
+    def test_section_links_resolve_to_the_section_not_the_summarys_subsection(self):
+        page = ["## Summary", "- " + rs.section_link("fidelity", "fidelity") + " " + rs.section_link("x", "shipped"),
+                "### Tool models against the real tools", "## Tool models against the real tools"]
+        self.assertEqual(rs.resolve_section_links(page)[1],
+                         "- [fidelity](#tool-models-against-the-real-tools-1) x")  # no shipped section: text
+
+
 @unittest.skipUnless(importlib.util.find_spec("matplotlib"), "report.py plots with matplotlib")
 class ReportScript(unittest.TestCase):
     """report.py puts the summary and the contents right after the title and the "generated" line."""

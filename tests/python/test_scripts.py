@@ -53,6 +53,31 @@ class FuzzHelp(unittest.TestCase):
             self.assertIn("'" + arg + "'", p.stderr)
 
 
+class ReportNeedsMatplotlib(unittest.TestCase):
+    """`python3 scripts/report.py` under a python3 without matplotlib (a venv made from the system's
+    python3 without its packages) exits 1 naming the module, itself and the interpreter that has it,
+    where it used to end in a bare ImportError traceback."""
+
+    def test_a_python3_without_matplotlib_is_told_which_one_has_it(self):
+        with_it = subprocess.run(["/usr/bin/python3", "-c", "import matplotlib"], capture_output=True)
+        if with_it.returncode != 0:
+            self.skipTest("/usr/bin/python3 has no matplotlib here")
+        d = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, d)
+        made = subprocess.run(["/usr/bin/python3", "-m", "venv", "--without-pip", os.path.join(d, "venv")],
+                              capture_output=True, text=True, timeout=120)
+        if made.returncode != 0:
+            self.skipTest(f"no venv module: {made.stderr[-200:]}")
+        python = os.path.join(d, "venv", "bin", "python3")
+        p = subprocess.run([python, os.path.join(ROOT, "scripts", "report.py"), "--reports", d],
+                           capture_output=True, text=True, timeout=300)
+        self.assertEqual(p.returncode, 1, p.stderr)
+        self.assertNotIn("Traceback", p.stderr)
+        self.assertIn(f"this python3 ({python}", p.stderr)
+        self.assertIn("cannot import 'matplotlib'", p.stderr)
+        self.assertIn("run it with /usr/bin/python3 (which has it)", p.stderr)
+
+
 class PublishNeedsEveryPeer(unittest.TestCase):
     """`peers.sh --check` names every driver that would be skipped and exits 1; `bench.sh --publish`
     asks it first and refuses (exit 2) before installing or building anything, where it used to find

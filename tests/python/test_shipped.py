@@ -145,6 +145,24 @@ class Pure(unittest.TestCase):
         self.assertIn("2geom (tolerance=1e-08)** is outside its documented length tolerance on 1 case(s): on c", md[0])
         self.assertIn("bounds the error by 1.00e-08", md[0])
 
+    def test_a_browser_that_did_not_run_is_listed_as_not_run(self):
+        # The browser driver writes a null version for a browser it could not start; the versions
+        # row read "firefox None", and the Peers section's versions table likewise.
+        d = tempfile.mkdtemp()
+        self.addCleanup(__import__("shutil").rmtree, d)
+        row = {"peer": "peer_chromium", "case": "c", "setting": "", "length": 1.0, "true_length": 1.0,
+               "length_error": 0.0}
+        doc = {"driver": "shipped_browser", "versions": {"chromium": "Chromium 156", "firefox": None}, "cpu": "x",
+               "peer_records": [], "rows": [row]}
+        with open(os.path.join(d, "peers_shipped_browser.json"), "w", encoding="utf-8") as f:
+            json.dump(doc, f)
+        md = "\n".join(report_shipped.section({}, d))
+        self.assertIn("| chromium Chromium 156, firefox not run |", md)
+        self.assertNotIn("None", md)
+        import report_peers
+        rows = report_peers.version_rows({"context": {"peers": {"GSL": None}}}, report_peers.load_peer_files(d))
+        self.assertEqual([r[0] for r in rows], ["GSL not run", "chromium Chromium 156, firefox not run"])
+
     def test_the_section_says_not_run_without_results(self):
         md = report_shipped.section({}, tempfile.mkdtemp())
         self.assertIn("## Arc length in shipped software", md)
