@@ -42,8 +42,8 @@ constexpr double handle_tol = 8;
 //    |v| + max |key or handle value| + (|t| + |t_first| + T) |dv/dt|: the values' magnitudes plus
 //    the time's rounding carried by the slope (and the cycles' wrapped time, T the period). Both
 //    sides are float32 evaluations of the same formulas with handles recomputed by their rules,
-//    which differ from Blender's by rounding; with Blender's own root finding (the default; each
-//    solver in its place is printed below, the exact one measured 2.12); 4 leaves a factor 2.
+//    which differ from Blender's by rounding; measured 2.07 with Blender's own root finding (the
+//    default; each solver in its place is printed below, exact 2.12); 4 leaves a factor 1.9.
 constexpr double value_tol = 4;
 //  - truth_tol: the float model (Blender's arithmetic) against the real50 truth of the same float
 //    description, same scale: the float rounding of the handles, the solver and the value;

@@ -418,17 +418,25 @@ TEST(compare, a_checks_records_are_shown_in_the_checks_unit) {
   fs::create_directories(dir);
   const double ratio = std::numeric_limits<float>::epsilon() / std::numeric_limits<double>::epsilon();
   const auto write = [&](const std::string& name, double float_ulps, const std::string& unit) {
-    nlohmann::json rec{{"case", "walk"},      {"group", "channel"},         {"quantity", "eval"},
-                       {"method", "mine"},    {"setting", ""},              {"error", float_ulps * ratio},
-                       {"estimate", nullptr}, {"bounded", nullptr},         {"evaluations", 10},
-                       {"status", "not_guaranteed"}, {"subject", true},     {"unit", unit},
+    nlohmann::json rec{{"case", "walk"},
+                       {"group", "channel"},
+                       {"quantity", "eval"},
+                       {"method", "mine"},
+                       {"setting", ""},
+                       {"error", float_ulps * ratio},
+                       {"estimate", nullptr},
+                       {"bounded", nullptr},
+                       {"evaluations", 10},
+                       {"status", "not_guaranteed"},
+                       {"subject", true},
+                       {"unit", unit},
                        {"error_in_unit", float_ulps}};
-    std::ofstream(dir / name) << nlohmann::json{{"spec", "walk.json"}, {"name", "mine"},
-                                                {"checks", nlohmann::json::array()}, {"records", {rec}}};
+    std::ofstream(dir / name) << nlohmann::json{
+        {"spec", "walk.json"}, {"name", "mine"}, {"checks", nlohmann::json::array()}, {"records", {rec}}};
     return (dir / name).string();
   };
-  const h::comparison c = h::compare_runs(h::read_run(write("a.json", 12.3, "ulp-float")),
-                                          h::read_run(write("b.json", 18.5, "ulp-float")));
+  const h::comparison c =
+      h::compare_runs(h::read_run(write("a.json", 12.3, "ulp-float")), h::read_run(write("b.json", 18.5, "ulp-float")));
   ASSERT_EQ(c.records.size(), 1u);
   EXPECT_EQ(c.records[0].unit, "ulp-double");
   EXPECT_EQ(c.records[0].check_unit, "ulp-float");

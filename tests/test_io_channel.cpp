@@ -424,8 +424,7 @@ TEST(io_channel, blender_stored_handles_are_evaluated_as_given) {
       R"("keys": [{"time": 0, "value": 0, "handle_left": [-4, -2], "handle_right": [4, 2]},
                   {"time": 10, "value": 1, "handle_left": [6, 2], "handle_right": [14, 0]}])";
   const auto at5 = [&](const std::string& handles) {
-    const nlohmann::json j =
-        nlohmann::json::parse(R"({"type": "channel", "tool": "blender", )" + handles + keys + "}");
+    const nlohmann::json j = nlohmann::json::parse(R"({"type": "channel", "tool": "blender", )" + handles + keys + "}");
     return cb::io::channel_model_of_spec<float>(spec_of(j)).at(5.0f, 0);
   };
   EXPECT_EQ(at5(R"("handles": "stored", )"), 1.625f);

@@ -200,8 +200,8 @@ check_result check_times(const io::field& spec, const csv_table& t, const check_
   }
   warn_digits(res, t, value_columns);
   const auto n = static_cast<double>(t.rows.size());
-  res.records.push_back(
-      with_unit(subject_record(o.case_name, o.group, "eval", o.name, "", worst_value, n), res.unit, worst_value_in_unit));
+  res.records.push_back(with_unit(subject_record(o.case_name, o.group, "eval", o.name, "", worst_value, n), res.unit,
+                                  worst_value_in_unit));
   for (std::size_t k = 0; k < max_order; ++k)
     if (cd[k] != csv_table::npos)
       res.records.push_back(with_unit(subject_record(o.case_name, o.group, "eval", o.name,

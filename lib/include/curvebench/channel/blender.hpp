@@ -956,8 +956,7 @@ class blender_evaluator {
                            Real(k1.value - k0.value), Real(k1.time - k0.time), order);
       }
       if constexpr (std::is_same_v<Real, float>)
-        if (order == 0 && k0.interpolation == blender_interpolation::bezier && t > k0.time)
-          return bezier_value(i, t);
+        if (order == 0 && k0.interpolation == blender_interpolation::bezier && t > k0.time) return bezier_value(i, t);
     }
     return order == 0 ? channel_.value(t) : channel_.derivative(t, order);
   }

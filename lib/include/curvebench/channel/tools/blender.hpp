@@ -37,8 +37,9 @@ struct blender {
       "modelled): auto_clamped beside a free handle on one key";
   using storage_type = float;
   static constexpr time_solver default_solver = time_solver::exact;
-  /// What solves a Bezier segment's time in the float model when the spec names no solver.
-  static constexpr std::string_view own_solver = "Blender's own (float), exact at 50 digits";
+  /// What solves a Bezier segment's time in the float model when the spec names no solver (the
+  /// 50-digit truth: default_solver).
+  static constexpr std::string_view own_solver = "Blender's own";
 
   /// The words for a number Blender cannot hold (its F-curves are float32), after the field's name:
   /// "1e+300 is past float's range (3.4e38): ...". The spec parser and fcurve_of_keys say the same.

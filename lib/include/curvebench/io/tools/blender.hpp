@@ -3,8 +3,8 @@
 // rules, or with handles: stored evaluated as given), interpolation (constant, linear,
 // bezier or a Penner family) with easing and back / amplitude / period; extrapolation constant or
 // linear, auto-handle smoothing, the Cycles modifier; evaluated in the precision asked (float is
-// Blender's own, with Blender's root finding unless the spec names a solver; exact at other precisions). An eased segment has no curve view (the planar curve is
-// refused naming the key; `sample --at` evaluates it).
+// Blender's own, with Blender's root finding unless the spec names a solver; exact at other precisions). An eased
+// segment has no curve view (the planar curve is refused naming the key; `sample --at` evaluates it).
 #pragma once
 
 #include "curvebench/channel/blender.hpp"
@@ -99,8 +99,7 @@ channel::blender_fcurve<Real> blender_fcurve_of(const field& spec) {
     if (k.has("period")) b.params.period = number(k, "period");
     c.keys.push_back(b);
   }
-  if (spec.has("handles"))
-    c.stored_handles = spec.member("handles").one_of({"by_type", "stored"}) == "stored";
+  if (spec.has("handles")) c.stored_handles = spec.member("handles").one_of({"by_type", "stored"}) == "stored";
   if (spec.has("extrapolation"))
     c.extrapolation = spec.member("extrapolation").one_of({"constant", "linear"}) == "linear"
                           ? channel::blender_extrapolation::linear
