@@ -961,18 +961,21 @@ class blender_evaluator {
     return order == 0 ? channel_.value(t) : channel_.derivative(t, order);
   }
 
-  /// A float that is the rounded result of the operation that made it: stored through a volatile,
-  /// so that no compiler fuses a product into the next sum (an FMA rounds once where Blender's
-  /// float arithmetic rounds twice, and the emulation must not depend on the target's contraction).
-  static float rounded(float x) {
-    volatile float r = x;
+  /// A float or double that is the rounded result of the operation that made it: stored through a
+  /// volatile, so that no compiler fuses a product into the next sum (an FMA rounds once where
+  /// Blender's arithmetic rounds twice, and the emulation must not depend on the target's contraction).
+  template <class F>
+  static F rounded(F x) {
+    volatile F r = x;
     return r;
   }
 
-  /// A double that is the rounded result of the operation that made it (see rounded(float)).
-  static double rounded(double x) {
-    volatile double r = x;
-    return r;
+  /// The power-form coefficients c1, c2, c3 of the cubic Bezier p0..p3 (c0 = p0) as Blender forms
+  /// them in float, for its time and its value cubic alike: c1 = 3 (p1 - p0), c2 = 3 ((p0 - 2 p1) +
+  /// p2), c3 = (p3 - p0) + 3 (p1 - p2).
+  static std::array<float, 3> power_coefficients(float p0, float p1, float p2, float p3) {
+    return {rounded(3.0f * rounded(p1 - p0)), rounded(3.0f * rounded(rounded(p0 - rounded(2.0f * p1)) + p2)),
+            rounded(rounded(p3 - p0) + rounded(3.0f * rounded(p1 - p2)))};
   }
   /// A cube root as Blender takes it: exp(log(|d|) / 3) with d's sign, 0 at 0 (not std::cbrt,
   /// whose last bits differ).
@@ -982,18 +985,16 @@ class blender_evaluator {
   }
 
   /// Blender's root u of the time cubic with float control times q0..q3 at frame x: the power
-  /// coefficients formed in float (c0 = q0 - x, c1 = 3 (q1 - q0), c2 = 3 ((q0 - 2 q1) + q2),
-  /// c3 = (q3 - q0) + 3 (q1 - q2)), then solved in double by Cardano's formula (one real root) or
-  /// the trigonometric one (three), a quadratic or a linear equation where the leading
+  /// coefficients formed in float (c0 = q0 - x, the others power_coefficients'), then solved in double by Cardano's
+  /// formula (one real root) or the trigonometric one (three), a quadratic or a linear equation where the leading
   /// coefficients are exactly 0, each root rounded to float and the first in [-1e-10, 1.000001]
   /// taken; none when no root lies there. Measured: with the stored handles it gives Blender
   /// 3.4.1's recorded values bit for bit (tests/test_blender.cpp), where the exact root of the
   /// same cubic rounded to float differs from Blender's root by a float ulp on 3 % of them.
   [[nodiscard]] static std::optional<float> blender_root(float x, float q0, float q1, float q2, float q3) {
     const double c0 = rounded(q0 - x);
-    const double c1 = rounded(3.0f * rounded(q1 - q0));
-    const double c2 = rounded(3.0f * rounded(rounded(q0 - rounded(2.0f * q1)) + q2));
-    const double c3 = rounded(rounded(q3 - q0) + rounded(3.0f * rounded(q1 - q2)));
+    const auto [f1, f2, f3] = power_coefficients(q0, q1, q2, q3);
+    const double c1 = f1, c2 = f2, c3 = f3;
     const auto in_segment = [](float r) { return r >= static_cast<float>(-1.0e-10) && r <= 1.000001f; };
     std::array<double, 3> roots{};
     std::size_t n = 0;
@@ -1043,11 +1044,11 @@ class blender_evaluator {
   }
 
   /// The value of Bezier segment i at time t (inside it) in float as Blender forms it: the handles
-  /// as stored (corrected as make_channel does, in float), the root u of the time cubic of those
-  /// absolute control times (Blender's own, blender_root, unless a solver was chosen: then that
-  /// solver's in double, where float times are exact) rounded to float,
-  /// then the value cubic in power form, c0 + u c1 + u^2 c2 + u^3 c3, with c1 = 3 (y1 - y0), c2 =
-  /// 3 (y0 - 2 y1 + y2), c3 = y3 - y0 + 3 (y1 - y2) formed in float and summed left to right.
+  /// as stored, corrected in Blender's order of operations (make_channel's correction of the same
+  /// rule is in relative handles, rounded otherwise), the root u of the time cubic of those absolute
+  /// control times (Blender's own, blender_root, unless a solver was chosen: then that solver's in
+  /// double, where float times are exact) rounded to float, then the value cubic in power form,
+  /// y0 + u c1 + u^2 c2 + u^3 c3 (power_coefficients), summed left to right.
   /// de Casteljau's rounding of the same cubic at the root of the float-relative control times was
   /// up to 2 float ulps from Blender's values (tests/data/blender_export, stepsAction.rotation_euler.2
   /// at t = 6.5 to 7.5).
@@ -1061,8 +1062,8 @@ class blender_evaluator {
         std::abs(k1.handle_left.value - k1.value) < eps)
       return k0.value;
     const float h = k1.time - k0.time;
-    // Blender's handle correction (make_channel's): a handle longer in time than the segment is
-    // shortened along itself to the segment's duration.
+    // Blender's handle correction: a handle longer in time than the segment is shortened along
+    // itself to the segment's duration.
     const auto corrected = [h](const blender_key<float>& k, blender_point<float> p) {
       const float dt = std::abs(k.time - p.time);
       if (dt > h) {
@@ -1083,10 +1084,8 @@ class blender_evaluator {
       if (!r) return 0.0f;  // Blender's value where its solver finds no root in the segment
       u = *r;
     }
-    const float y0 = k0.value, y1 = p1.value, y2 = p2.value, y3 = k1.value;
-    const float c1 = rounded(3.0f * rounded(y1 - y0));
-    const float c2 = rounded(3.0f * rounded(rounded(y0 - rounded(2.0f * y1)) + y2));
-    const float c3 = rounded(rounded(y3 - y0) + rounded(3.0f * rounded(y1 - y2)));
+    const float y0 = k0.value;
+    const auto [c1, c2, c3] = power_coefficients(y0, p1.value, p2.value, k1.value);
     const float uu = rounded(u * u);
     return rounded(rounded(rounded(y0 + rounded(u * c1)) + rounded(uu * c2)) + rounded(rounded(uu * u) * c3));
   }
@@ -1129,7 +1128,8 @@ class blender_evaluator {
 };
 
 /// The evaluator of an F-curve as Blender computes it (Real = float) or its truth (Real = real50);
-/// the default solver, exact, is the one that reproduces Blender best in float (see the header).
+/// no solver (the default) is Blender's own root finding in float and exact at other precisions
+/// (see the header).
 template <class Real>
 [[nodiscard]] blender_evaluator<Real> blender_model(const blender_fcurve<Real>& curve,
                                                     std::optional<time_solver> solver = std::nullopt) {
