@@ -683,8 +683,9 @@ double in_unit(double absolute, double scale, value_unit u) {
 std::string unit_text(const check_result& r) {
   if (r.kind == check_kind::lengths || r.kind == check_kind::inverse || r.kind == check_kind::at_length)
     return "relative to L";
-  const bool ulp = r.unit == value_unit::ulp_double || r.unit == value_unit::ulp_float;
-  const char* of = r.kind != check_kind::times ? "size" : ulp ? "max(|value|, value range)" : "the value range";
+  const char* of = r.kind != check_kind::times ? "size"
+                   : detail::is_ulp(r.unit)    ? "max(|value|, value range)"
+                                               : "the value range";
   switch (r.unit) {
     case value_unit::ulp_double: return std::string("ulps of double x ") + of;
     case value_unit::ulp_float: return std::string("ulps of float x ") + of;

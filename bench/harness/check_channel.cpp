@@ -157,7 +157,6 @@ check_result check_times(const io::field& spec, const csv_table& t, const check_
   // 1.0 moving by 0.08 cannot be stored closer than ulps of 1.0, and a range alone would count that
   // storage rounding as 12.5 float ulps; the range keeps values near zero (a channel crossing 0)
   // from being judged relative to nothing. rel and abs keep the range: the motion's own size.
-  const bool ulp_unit = res.unit == value_unit::ulp_double || res.unit == value_unit::ulp_float;
   constexpr double eps = std::numeric_limits<double>::epsilon();
   double worst_value = 0, worst_value_in_unit = 0;
   std::array<double, max_order> worst_derivative{}, worst_derivative_in_unit{};
@@ -171,7 +170,7 @@ check_result check_times(const io::field& spec, const csv_table& t, const check_
       throw invalid_input(t.where(r, ct) + ": " + num(cr.t) + ": the channel's value is not representable there");
     cr.absolute = static_cast<double>(abs(real50(row[cv]) - *v));
     const double value_scale = std::max(std::abs(static_cast<double>(*v)), res.size);
-    cr.scale = ulp_unit ? value_scale : res.size;
+    cr.scale = is_ulp(res.unit) ? value_scale : res.size;
     cr.error = in_unit(cr.absolute, cr.scale, res.unit);
     cr.relative = cr.absolute / cr.scale;
     worst_value = std::max(worst_value, cr.absolute / value_scale / eps);  // scale first (in_unit)

@@ -23,6 +23,9 @@ void choose_unit(check_result& res, const csv_table& t, const std::vector<std::s
 /// res.digits_warning when the table's digits cannot carry the unit's precision and its errors are
 /// as large as that rounding could make them (call after the rows).
 void warn_digits(check_result& res, const csv_table& t, const std::vector<std::size_t>& value_columns);
+/// Whether u is an ulp unit (ulp-double, ulp-float): the units whose times rows are scaled by
+/// max(|V(t)|, range) rather than the range, and said so.
+[[nodiscard]] inline bool is_ulp(value_unit u) { return u == value_unit::ulp_double || u == value_unit::ulp_float; }
 /// A values or times record that also says what the check printed: "unit" (the check's unit,
 /// "ulp-float") and "error_in_unit" (the largest row error of the record's quantity in it), so that
 /// `compare` can show a check's figures as the check did. "error" stays in ulps of double.
